@@ -1,0 +1,56 @@
+# tribolab: one-command set-up on a fresh Debian 12 machine.
+#   make demo   install what is needed, build, run both case studies, write the report
+#   make test   install what is needed, build, run every test (plus an ASan+UBSan build)
+#   make bench  build and run the benchmarks in bench/
+BUILD      ?= build
+ASAN_BUILD ?= build-asan
+DEMO_OUT   ?= demo-out
+JOBS       ?= $(shell nproc)
+SUDO       := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
+
+# Debian packages the build, the tests and the report need (see docs/design.md).
+DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
+  libgtest-dev libgmock-dev libbenchmark-dev \
+  libboost-dev libeigen3-dev libceres-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
+  libpugixml-dev libzip-dev clang libclang-rt-14-dev
+
+CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+
+.PHONY: deps build test test-fast asan demo bench clean
+
+deps:
+	@missing=""; for p in $(DEB_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing$$missing"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	else echo "make deps: all Debian packages present"; fi
+
+build: deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Every test through CTest, then the same tests built with AddressSanitizer + UBSan.
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	$(MAKE) asan
+
+asan: deps
+	cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_SANITIZE=ON -DTRIBOLAB_BENCH=OFF
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+
+test-fast: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+demo: build
+	$(BUILD)/bin/tribolab demo --out $(DEMO_OUT)
+
+bench: build
+	@for b in $(BUILD)/bench/*_bench; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
+
+clean:
+	rm -rf $(BUILD) $(ASAN_BUILD) $(DEMO_OUT)

@@ -1,0 +1,33 @@
+// The command-line layer: each area registers its subcommands on the root CLI11 app.
+// Commands parse options into the library's option structs, call the core, and print
+// through print_result(); errors propagate as exceptions to main(), which turns them
+// into one line on stderr and a non-zero exit (SPEC section 5).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace tribolab::cli {
+
+/// Registers `tribolab incline ...`.
+void register_incline(CLI::App& root);
+/// Registers `tribolab bounce ...`.
+void register_bounce(CLI::App& root);
+/// Registers `tribolab track ...`.
+void register_track(CLI::App& root);
+/// Registers `tribolab demo`.
+void register_demo(CLI::App& root);
+
+/// Prints a command's result: the JSON object on one line of stdout with --json, else an
+/// aligned "key  value" listing for people (nested objects as dotted keys).
+void print_result(const nlohmann::json& result, bool as_json);
+
+/// Adds the `--json` flag to a command.
+void add_json_flag(CLI::App& cmd, bool& flag);
+
+/// Runs the program; returns the process exit code. Exposed for in-process tests.
+int run(int argc, char** argv);
+
+}  // namespace tribolab::cli

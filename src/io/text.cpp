@@ -1,0 +1,81 @@
+#include "io/text.hpp"
+
+#include "numerics/error.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace tribolab::io {
+
+std::string_view trim(std::string_view s) {
+  const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::optional<double> parse_optional_double(std::string_view text, const std::string& where,
+                                            bool decimal_comma) {
+  const std::string_view t = trim(text);
+  if (t.empty()) return std::nullopt;
+  return parse_double(t, where, decimal_comma);
+}
+
+double parse_double(std::string_view text, const std::string& where, bool decimal_comma) {
+  std::string t(trim(text));
+  if (decimal_comma) {
+    const auto pos = t.find(',');
+    if (pos != std::string::npos && t.find(',', pos + 1) == std::string::npos) t[pos] = '.';
+  }
+  std::string shown(t.substr(0, 40));
+  if (t.empty()) throw InputError(where, "expected a number, found an empty field");
+  const char* first = t.data();
+  const char* last = t.data() + t.size();
+  if (*first == '+') ++first;
+  double value = 0;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec == std::errc::result_out_of_range) {
+    throw InputError(where, "number out of range: '" + shown + "'");
+  }
+  if (ec != std::errc() || ptr != last) {
+    throw InputError(where, "malformed number '" + shown + "'");
+  }
+  if (!std::isfinite(value)) throw InputError(where, "number must be finite, got '" + shown + "'");
+  return value;
+}
+
+std::vector<std::string> split(std::string_view line, char delim) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto pos = line.find(delim, start);
+    if (pos == std::string_view::npos) {
+      out.emplace_back(line.substr(start));
+      return out;
+    }
+    out.emplace_back(line.substr(start, pos - start));
+    start = pos + 1;
+  }
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw InputError(path, "read error");
+  return ss.str();
+}
+
+std::string format_number(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[64];
+  auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 12);
+  return std::string(buf, ptr);
+}
+
+}  // namespace tribolab::io

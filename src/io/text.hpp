@@ -1,0 +1,31 @@
+// Small text utilities shared by the file readers: strict number parsing with locations,
+// splitting and trimming.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tribolab::io {
+
+/// Parses a whole field as a finite double ("1.5", "-2e-3"). With decimal_comma, a single
+/// ',' is read as the decimal point ("1,5"). Throws InputError(where, ...) naming the text.
+double parse_double(std::string_view text, const std::string& where, bool decimal_comma = false);
+
+/// Like parse_double but returns nullopt for an empty (or all-blank) field.
+std::optional<double> parse_optional_double(std::string_view text, const std::string& where,
+                                            bool decimal_comma = false);
+
+std::string_view trim(std::string_view s);
+
+/// Splits on `delim`; keeps empty fields ("a,,b" -> {"a", "", "b"}).
+std::vector<std::string> split(std::string_view line, char delim);
+
+/// Reads a whole file; throws InputError naming the path when it cannot be read.
+std::string read_file(const std::string& path);
+
+/// Formats a double with up to 12 significant digits, shortest form ("0.1", "1e-09").
+std::string format_number(double v);
+
+}  // namespace tribolab::io

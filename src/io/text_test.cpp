@@ -1,0 +1,53 @@
+#include "io/text.hpp"
+
+#include "numerics/error.hpp"
+
+#include <gtest/gtest.h>
+
+namespace tribolab::io {
+namespace {
+
+TEST(Text, ParsesPlainAndSignedNumbers) {
+  EXPECT_DOUBLE_EQ(parse_double("1.5", "x"), 1.5);
+  EXPECT_DOUBLE_EQ(parse_double(" +2e-3 ", "x"), 2e-3);
+  EXPECT_DOUBLE_EQ(parse_double("-7", "x"), -7.0);
+}
+
+TEST(Text, DecimalCommaOnlyWhenAsked) {
+  EXPECT_DOUBLE_EQ(parse_double("1,25", "x", true), 1.25);
+  EXPECT_THROW(parse_double("1,25", "x", false), InputError);
+}
+
+TEST(Text, MalformedNumberNamesTheLocation) {
+  try {
+    parse_double("1.2.3", "data.csv:7");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "data.csv:7: malformed number '1.2.3'");
+  }
+  EXPECT_THROW(parse_double("nan", "x"), InputError);
+  EXPECT_THROW(parse_double("inf", "x"), InputError);
+  EXPECT_THROW(parse_double("", "x"), InputError);
+  EXPECT_THROW(parse_double("1e999", "x"), InputError);
+}
+
+TEST(Text, EmptyFieldIsMissingNotZero) {
+  EXPECT_FALSE(parse_optional_double("  ", "x").has_value());
+  EXPECT_DOUBLE_EQ(*parse_optional_double("3", "x"), 3.0);
+}
+
+TEST(Text, SplitKeepsEmptyFields) {
+  const auto f = split("a,,b,", ',');
+  ASSERT_EQ(f.size(), 4u);
+  EXPECT_EQ(f[1], "");
+  EXPECT_EQ(f[3], "");
+}
+
+TEST(Text, FormatNumberIsShortestRoundTrip) {
+  EXPECT_EQ(format_number(0.1), "0.1");
+  EXPECT_EQ(format_number(1e-9), "1e-09");
+  EXPECT_EQ(format_number(2.0), "2");
+}
+
+}  // namespace
+}  // namespace tribolab::io
