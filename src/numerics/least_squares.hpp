@@ -1,0 +1,122 @@
+// Nonlinear least squares with parameter uncertainties, on top of Ceres Solver.
+//
+// One parameter block of P unknowns, N residuals r_i(p). The solver minimises
+// (1/2) sum rho(r_i^2) (rho = identity or a robust loss), then estimates the covariance of p
+// from the Jacobian at the optimum: C = s^2 (J^T J)^-1, where s^2 = sum r_i^2 / (N - P_free)
+// when the residuals are unscaled (measurement noise unknown, estimated from the fit), or 1
+// when the caller has already divided each residual by its standard deviation.
+// Confidence intervals use Student's t with N - P_free degrees of freedom.
+// See docs/theory.md#fitting.
+#pragma once
+
+#include <ceres/dynamic_autodiff_cost_function.h>
+#include <ceres/dynamic_numeric_diff_cost_function.h>
+
+#include <Eigen/Dense>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribolab::numerics {
+
+enum class RobustLoss { none, huber, cauchy, soft_l1 };
+
+struct FitOptions {
+  int max_iterations = 200;
+  double function_tolerance = 1e-14;
+  double parameter_tolerance = 1e-12;
+  double gradient_tolerance = 1e-14;
+  RobustLoss loss = RobustLoss::none;
+  double loss_scale = 1.0;  ///< residual size at which the robust loss bends, residual units
+  /// true: residuals are already divided by their standard deviations (covariance not
+  /// rescaled); false: the noise level is estimated from the residuals.
+  bool residuals_are_normalized = false;
+
+  std::string validate() const;
+};
+
+/// One unknown: name, starting value, optional bounds, and whether it is held fixed.
+struct FitParameter {
+  std::string name;
+  double initial = 0.0;
+  std::optional<double> lower, upper;
+  bool fixed = false;
+};
+
+enum class FitStatus {
+  converged,          ///< a minimum was found and its covariance computed
+  no_convergence,     ///< the solver stopped without meeting the tolerances
+  not_identifiable,   ///< the data cannot determine all free parameters (singular J^T J)
+  too_few_points,     ///< fewer residuals than free parameters
+  failed,             ///< the model could not be evaluated at the starting point
+};
+
+struct FitResult {
+  FitStatus status = FitStatus::failed;
+  std::string message;                ///< one line, for people
+  int iterations = 0;
+  std::vector<std::string> names;
+  std::vector<double> values;         ///< best-fit parameters
+  std::vector<double> sigma;          ///< standard errors (0 for fixed parameters)
+  Eigen::MatrixXd covariance;         ///< P x P, zero rows/cols for fixed parameters
+  std::vector<double> residuals;      ///< r_i at the optimum
+  double cost = 0.0;                  ///< (1/2) sum r_i^2 at the optimum (no robust loss)
+  double rms = 0.0;                   ///< sqrt(sum r_i^2 / N)
+  int dof = 0;                        ///< N - number of free parameters
+  double noise_scale = 1.0;           ///< s used to scale the covariance
+
+  bool ok() const { return status == FitStatus::converged; }
+  /// Half-width of the two-sided confidence interval at `level` (e.g. 0.95) for parameter i.
+  double ci_half_width(std::size_t i, double level = 0.95) const;
+  /// Index of a parameter by name; throws InputError if absent.
+  std::size_t index(const std::string& name) const;
+  double value(const std::string& name) const { return values[index(name)]; }
+  double sigma_of(const std::string& name) const { return sigma[index(name)]; }
+};
+
+/// Residual function for numeric differentiation: fills r[0..N) from p[0..P); returns false
+/// when the model cannot be evaluated at p (the solver then backs off).
+using ResidualFunction = std::function<bool(const double* p, double* r)>;
+
+/// Solves with central-difference Jacobians (for models that cannot be templated).
+FitResult fit_least_squares(const ResidualFunction& residuals, int num_residuals,
+                            const std::vector<FitParameter>& parameters,
+                            const FitOptions& options = {});
+
+/// Solves with automatic differentiation: `functor` has
+///   template <class T> bool operator()(const T* p, T* r) const;
+template <class Functor>
+FitResult fit_least_squares_autodiff(const Functor& functor, int num_residuals,
+                                     const std::vector<FitParameter>& parameters,
+                                     const FitOptions& options = {});
+
+namespace detail {
+FitResult solve_with_cost(std::unique_ptr<ceres::CostFunction> cost, int num_residuals,
+                          const std::vector<FitParameter>& parameters, const FitOptions& options);
+
+template <class Functor>
+struct AutoDiffAdapter {
+  const Functor* f;
+  template <class T>
+  bool operator()(T const* const* params, T* residuals) const {
+    return (*f)(params[0], residuals);
+  }
+};
+}  // namespace detail
+
+template <class Functor>
+FitResult fit_least_squares_autodiff(const Functor& functor, int num_residuals,
+                                     const std::vector<FitParameter>& parameters,
+                                     const FitOptions& options) {
+  using Adapter = detail::AutoDiffAdapter<Functor>;
+  auto cost = std::make_unique<ceres::DynamicAutoDiffCostFunction<Adapter, 8>>(
+      new Adapter{&functor});
+  cost->AddParameterBlock(static_cast<int>(parameters.size()));
+  cost->SetNumResiduals(num_residuals);
+  return detail::solve_with_cost(std::move(cost), num_residuals, parameters, options);
+}
+
+}  // namespace tribolab::numerics

@@ -1,0 +1,154 @@
+#include "numerics/least_squares.hpp"
+#include "numerics/polyfit.hpp"
+
+#include "numerics/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace tribolab::numerics {
+namespace {
+
+// y = A exp(-t / tau) + c sampled at 50 points with Gaussian noise.
+struct DecayData {
+  std::vector<double> t, y;
+  DecayData(double A, double tau, double c, double noise, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> n(0.0, noise);
+    for (int i = 0; i < 50; ++i) {
+      t.push_back(0.1 * i);
+      y.push_back(A * std::exp(-t.back() / tau) + c + n(rng));
+    }
+  }
+};
+
+struct DecayResidual {
+  const DecayData* d;
+  template <class T>
+  bool operator()(const T* p, T* r) const {
+    for (std::size_t i = 0; i < d->t.size(); ++i) {
+      r[i] = p[0] * exp(-T(d->t[i]) / p[1]) + p[2] - T(d->y[i]);
+    }
+    return true;
+  }
+};
+
+FitParameter param(const char* name, double initial) {
+  FitParameter p;
+  p.name = name;
+  p.initial = initial;
+  return p;
+}
+
+std::vector<FitParameter> decay_start() {
+  std::vector<FitParameter> p{param("A", 1.0), param("tau", 1.0), param("c", 0.0)};
+  p[1].lower = 0.01;
+  return p;
+}
+
+TEST(LeastSquares, RecoversNoiseFreeParametersExactly) {
+  const DecayData d(2.0, 0.7, 0.3, 0.0, 1);
+  const FitResult r = fit_least_squares_autodiff(DecayResidual{&d}, 50, decay_start());
+  ASSERT_TRUE(r.ok()) << r.message;
+  // Noise-free data: the optimum is exact up to the solver's tolerances (1e-12 relative).
+  EXPECT_NEAR(r.value("A"), 2.0, 1e-9);
+  EXPECT_NEAR(r.value("tau"), 0.7, 1e-9);
+  EXPECT_NEAR(r.value("c"), 0.3, 1e-9);
+}
+
+TEST(LeastSquares, NumericAndAutomaticDerivativesAgree) {
+  const DecayData d(2.0, 0.7, 0.3, 0.01, 2);
+  const DecayResidual f{&d};
+  const FitResult a = fit_least_squares_autodiff(f, 50, decay_start());
+  const FitResult n = fit_least_squares([&](const double* p, double* r) { return f(p, r); }, 50,
+                                        decay_start());
+  ASSERT_TRUE(a.ok() && n.ok());
+  for (int i = 0; i < 3; ++i) {
+    // Same minimum; central differences give Jacobians good to ~1e-8 relative.
+    EXPECT_NEAR(a.values[i], n.values[i], 1e-7 * (1 + std::abs(a.values[i])));
+    EXPECT_NEAR(a.sigma[i], n.sigma[i], 1e-4 * a.sigma[i]);
+  }
+}
+
+TEST(LeastSquares, ConfidenceIntervalsCoverTheTruthNinetyFivePercent) {
+  // 400 independent noisy data sets; the 95% interval of tau must contain the truth in
+  // 95% of them. Binomial sd = sqrt(400 * .95 * .05) = 4.4 runs: accept 380 +- 3 sd.
+  int covered = 0;
+  const int runs = 400;
+  for (int s = 0; s < runs; ++s) {
+    const DecayData d(2.0, 0.7, 0.3, 0.05, 100 + s);
+    const FitResult r = fit_least_squares_autodiff(DecayResidual{&d}, 50, decay_start());
+    ASSERT_TRUE(r.ok()) << r.message;
+    const std::size_t i = r.index("tau");
+    covered += std::abs(r.values[i] - 0.7) <= r.ci_half_width(i, 0.95);
+  }
+  EXPECT_NEAR(covered, 380, 13.2) << covered << " of " << runs;
+}
+
+TEST(LeastSquares, FixedParameterStaysAndHasNoSigma) {
+  const DecayData d(2.0, 0.7, 0.3, 0.01, 3);
+  auto params = decay_start();
+  params[2].initial = 0.3;
+  params[2].fixed = true;
+  const FitResult r = fit_least_squares_autodiff(DecayResidual{&d}, 50, params);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_EQ(r.value("c"), 0.3);
+  EXPECT_EQ(r.sigma_of("c"), 0.0);
+  EXPECT_EQ(r.dof, 48);
+}
+
+TEST(LeastSquares, UnidentifiableParametersAreReported) {
+  // y = (a * b) t: only the product is determined by the data.
+  const std::vector<double> t{0, 1, 2, 3}, y{0, 2, 4, 6};
+  const FitResult r = fit_least_squares(
+      [&](const double* p, double* res) {
+        for (int i = 0; i < 4; ++i) res[i] = p[0] * p[1] * t[i] - y[i];
+        return true;
+      },
+      4, {param("a", 1.0), param("b", 1.5)});
+  EXPECT_EQ(r.status, FitStatus::not_identifiable) << r.message;
+}
+
+TEST(LeastSquares, TooFewPointsIsReported) {
+  const FitResult r = fit_least_squares(
+      [](const double* p, double* res) {
+        res[0] = p[0] + p[1];
+        return true;
+      },
+      1, {param("a", 1.0), param("b", 1.0)});
+  EXPECT_EQ(r.status, FitStatus::too_few_points);
+}
+
+TEST(PolyFit, ExactOnPolynomialData) {
+  std::vector<double> x, y;
+  for (int i = 0; i < 10; ++i) {
+    x.push_back(0.05 * i);
+    y.push_back(0.55 + 1.06 * x.back() - 4.74 * x.back() * x.back());
+  }
+  const PolyFit f = fit_polynomial(x, y, 2);
+  EXPECT_NEAR(f.coef[0], 0.55, 1e-12);
+  EXPECT_NEAR(f.coef[1], 1.06, 1e-11);
+  EXPECT_NEAR(f.coef[2], -4.74, 1e-10);
+  EXPECT_NEAR(f.r_squared, 1.0, 1e-12);
+}
+
+TEST(PolyFit, StandardErrorMatchesTextbookLineFormula) {
+  // For a straight line, sigma_slope = s / sqrt(sum (x - mean)^2) exactly.
+  const std::vector<double> x{0, 1, 2, 3, 4, 5}, y{0.1, 0.9, 2.2, 2.8, 4.1, 5.2};
+  const PolyFit f = fit_polynomial(x, y, 1);
+  double mx = 2.5, sxx = 0;
+  for (double v : x) sxx += (v - mx) * (v - mx);
+  EXPECT_NEAR(f.sigma[1], f.noise / std::sqrt(sxx), 1e-14);
+}
+
+TEST(PolyFit, RejectsDegenerateData) {
+  const std::vector<double> x{1, 1, 1, 1}, y{1, 2, 3, 4};
+  EXPECT_THROW(fit_polynomial(x, y, 1), InputError);
+  const std::vector<double> x2{1, 2}, y2{1, 2};
+  EXPECT_THROW(fit_polynomial(x2, y2, 1), InputError);
+}
+
+}  // namespace
+}  // namespace tribolab::numerics

@@ -1,0 +1,74 @@
+#include "numerics/polyfit.hpp"
+
+#include "numerics/error.hpp"
+
+#include <boost/math/distributions/students_t.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace tribolab::numerics {
+
+double PolyFit::operator()(double x) const {
+  double y = 0;
+  for (std::size_t k = coef.size(); k-- > 0;) y = y * x + coef[k];
+  return y;
+}
+
+double PolyFit::ci_half_width(int k, double level) const {
+  if (dof <= 0) return std::numeric_limits<double>::quiet_NaN();
+  const boost::math::students_t t(dof);
+  return boost::math::quantile(boost::math::complement(t, (1.0 - level) / 2.0)) * sigma.at(k);
+}
+
+PolyFit fit_polynomial(std::span<const double> x, std::span<const double> y, int degree,
+                       const std::string& what) {
+  TRIBOLAB_ASSERT(x.size() == y.size(), "x and y sizes differ");
+  TRIBOLAB_ASSERT(degree >= 0, "negative degree");
+  const int n = static_cast<int>(x.size());
+  const int p = degree + 1;
+  if (n < p + 1) {
+    throw InputError(what + ": a degree-" + std::to_string(degree) + " fit needs at least " +
+                     std::to_string(p + 1) + " points, got " + std::to_string(n));
+  }
+  Eigen::MatrixXd A(n, p);
+  Eigen::VectorXd b(n);
+  for (int i = 0; i < n; ++i) {
+    require_finite(x[i], what + " x value");
+    require_finite(y[i], what + " y value");
+    double xk = 1.0;
+    for (int k = 0; k < p; ++k) {
+      A(i, k) = xk;
+      xk *= x[i];
+    }
+    b(i) = y[i];
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+  if (qr.rank() < p) {
+    throw InputError(what + ": the x values cannot determine a degree-" + std::to_string(degree) +
+                     " fit (too few distinct values)");
+  }
+  const Eigen::VectorXd c = qr.solve(b);
+  const Eigen::VectorXd r = b - A * c;
+  PolyFit f;
+  f.n = n;
+  f.dof = n - p;
+  f.coef.assign(c.data(), c.data() + p);
+  const double ss_res = r.squaredNorm();
+  const double mean = b.mean();
+  const double ss_tot = (b.array() - mean).square().sum();
+  f.r_squared = ss_tot > 0 ? 1.0 - ss_res / ss_tot : 1.0;
+  f.rms = std::sqrt(ss_res / n);
+  f.noise = std::sqrt(ss_res / f.dof);
+  // Cov(c) = s^2 (A^T A)^-1, computed from R of the QR: (A^T A)^-1 = P R^-1 R^-T P^T.
+  const Eigen::MatrixXd R =
+      qr.matrixR().topLeftCorner(p, p).template triangularView<Eigen::Upper>();
+  const Eigen::MatrixXd Rinv = R.inverse();
+  const Eigen::MatrixXd cov_perm = Rinv * Rinv.transpose();
+  const auto& perm = qr.colsPermutation();
+  f.covariance = perm * cov_perm * perm.transpose() * (f.noise * f.noise);
+  for (int k = 0; k < p; ++k) f.sigma.push_back(std::sqrt(std::max(0.0, f.covariance(k, k))));
+  return f;
+}
+
+}  // namespace tribolab::numerics

@@ -1,0 +1,36 @@
+// Linear least squares for polynomials y = c0 + c1 x + ... + cd x^d, with the covariance of
+// the coefficients, R^2 and the residual noise. Used for the seeds' trend lines (x–t lines,
+// y–t parabolas, v–t slopes, a_N against sin(theta)). Solved by column-pivoted Householder QR
+// (Eigen), never by the normal equations. See docs/theory.md#fitting.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace tribolab::numerics {
+
+struct PolyFit {
+  std::vector<double> coef;    ///< c0..cd, in the units of y / x^k
+  std::vector<double> sigma;   ///< standard errors of coef (noise estimated from residuals)
+  Eigen::MatrixXd covariance;  ///< (d+1) x (d+1)
+  double r_squared = 0.0;      ///< coefficient of determination (as Excel's trend line)
+  double rms = 0.0;            ///< sqrt(sum r^2 / n)
+  double noise = 0.0;          ///< sqrt(sum r^2 / (n - d - 1)), estimated y noise
+  int n = 0;                   ///< points used
+  int dof = 0;                 ///< n - d - 1
+
+  double operator()(double x) const;
+  /// Half-width of the two-sided interval at `level` for coefficient k (Student t, dof).
+  double ci_half_width(int k, double level = 0.95) const;
+};
+
+/// Fits a polynomial of `degree` to (x, y). Throws InputError when fewer than degree + 2
+/// points are given (no noise estimate) or when the x values cannot determine the
+/// coefficients (e.g. all equal). `what` names the data in the message.
+PolyFit fit_polynomial(std::span<const double> x, std::span<const double> y, int degree,
+                       const std::string& what = "data");
+
+}  // namespace tribolab::numerics
