@@ -266,11 +266,11 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
       default: gv[1] = 1.0; break;
     }
   };
-  double max_d = 0;
+  PeakTracker peak_d;
   auto observer = [&](double tt, const State& st) {
     const Eval e = model.eval(st, cur_mode, cur_s);
     peak.add(tt, e.nf.N);
-    max_d = std::max(max_d, e.d);
+    peak_d.add(tt, std::max(e.d, 0.0));
     if (history) {
       ContactSample smp;
       smp.t = tt;
@@ -358,7 +358,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   r.restitution = r.in.vy != 0 ? -r.out.vy / r.in.vy : std::numeric_limits<double>::quiet_NaN();
   r.peak_force = peak.peak;
   r.t_peak = peak.t_peak;
-  r.max_penetration = max_d;
+  r.max_penetration = peak_d.peak;
   r.impulse_normal = ball.mass * (r.out.vy - r.in.vy) + ball.mass * options.g * t;
   r.impulse_tangential = ball.mass * (r.out.vx - r.in.vx);
   const Support sp_out = support(ball, r.out.theta);

@@ -90,7 +90,7 @@ struct ContactResult {
   double contact_duration = 0;  ///< first touch to separation, s
   double peak_force = 0;        ///< max N, N (refined between samples by a parabola)
   double t_peak = 0;            ///< time of the peak force, s
-  double max_penetration = 0;   ///< max d over the samples, m
+  double max_penetration = 0;   ///< max d, m (refined between samples by a parabola)
   double impulse_normal = 0;    ///< integral of N dt = m (vy_out - vy_in) + m g T, N s
   double impulse_tangential = 0;  ///< integral of f dt = m (vx_out - vx_in), N s
   double v_in_normal = 0;       ///< approach speed of the contact point at touch, m/s

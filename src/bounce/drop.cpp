@@ -115,11 +115,12 @@ DropResult simulate_drop(const Ball& ball, const NormalLawSpec& law, const Frict
       b.t_cross_release = c0 >= 0 ? t : t + (s.vy - disc) / g;
       if (r.first_above_release < 0) r.first_above_release = static_cast<int>(r.bounces.size());
     }
-    const double rise = b.apex_height - s.y;
+    // Energy above the lowest resting position (centre at b), as a height.
+    const double spare = kinetic_energy(ball, s).total() / (ball.mass * g) + s.y - ball.b;
     r.bounces.push_back(b);
-    if (rise < options.rest_height) {
+    if (spare < options.rest_height) {
       r.status = DropStatus::rest;
-      r.message = "rebound lower than rest_height: the ball is taken to be at rest";
+      r.message = "mechanical energy within rest_height of rest: the ball is taken to be at rest";
       return r;
     }
     if (r.bounces.size() >= options.max_bounces) {

@@ -22,8 +22,8 @@ struct DropRelease {
 
 struct DropOptions {
   std::size_t max_bounces = 5;   ///< stop after this many contacts
-  /// A rebound whose apex rises less than this above the take-off height ends the drop
-  /// (the ball is taken to be at rest), m.
+  /// The drop ends (status rest) when, at a take-off, the mechanical energy exceeds that of
+  /// the ball lying flat (centre at b) by less than m g rest_height, m.
   double rest_height = 1e-4;
   FlightOptions flight{};        ///< g here is used for the whole drop
   ContactOptions contact{};      ///< its g is overwritten by flight.g
