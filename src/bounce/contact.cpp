@@ -342,7 +342,8 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
       case Mode::spring_elastic: {
         const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
         mode = Mode::spring_slip;
-        s = trial != 0 ? sign_of(trial) : 1.0;
+        // With no load (N clamped to 0) the cap is 0 and u = 0: slide the way the point moves.
+        s = trial != 0 ? sign_of(trial) : (e.v_t != 0 ? sign_of(e.v_t) : 1.0);
         break;
       }
       case Mode::spring_slip:

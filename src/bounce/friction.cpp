@@ -23,8 +23,8 @@ std::optional<FrictionKind> parse_friction_kind(std::string_view name) {
 std::string FrictionModel::validate() const {
   if (!std::isfinite(mu) || !(mu >= 0)) return "mu: friction coefficient must be >= 0";
   if (!std::isfinite(slip_scale) || !(slip_scale > 0)) return "slip-scale: must be positive (m/s)";
-  if (!std::isfinite(k_t) || !(k_t > 0)) return "k_t: tangential stiffness must be positive";
-  if (!std::isfinite(c_t) || !(c_t >= 0)) return "c_t: tangential damping must be >= 0";
+  if (!std::isfinite(k_t) || !(k_t > 0)) return "k-t: tangential stiffness must be positive (N/m)";
+  if (!std::isfinite(c_t) || !(c_t >= 0)) return "c-t: tangential damping must be >= 0 (N s/m)";
   return {};
 }
 
