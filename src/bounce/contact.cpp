@@ -220,9 +220,12 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
       choose_after_stop(x);
     }
   } else {
+    // Decide with the load just after touch, N(0+): a Hooke dashpot jumps to D d_dot there,
+    // and a spring put on that cap would gain energy from nothing.
     const Eval e = model.eval(x, Mode::spring_elastic, 0);
+    const double N0 = law.eval(std::numeric_limits<double>::min(), e.d_dot).N;
     const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
-    if (friction.mu * e.nf.N - std::abs(trial) > 0 || e.v_t == 0) {
+    if (friction.mu * N0 - std::abs(trial) > 0 || e.v_t == 0) {
       mode = Mode::spring_elastic;
     } else {
       mode = Mode::spring_slip;
@@ -342,8 +345,16 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
       case Mode::spring_elastic: {
         const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
         mode = Mode::spring_slip;
-        // With no load (N clamped to 0) the cap is 0 and u = 0: slide the way the point moves.
-        s = trial != 0 ? sign_of(trial) : (e.v_t != 0 ? sign_of(e.v_t) : 1.0);
+        // The slip goes the way the trial force points. When it is zero to rounding (no
+        // load: N clamped to 0, cap 0), the way it is about to point: its rate
+        // k_t v_t + c_t a_t, or failing that the slip velocity.
+        const double scale = friction.k_t * std::abs(x[iU]) + friction.c_t * std::abs(e.v_t);
+        if (std::abs(trial) > 1e-9 * scale && trial != 0) {
+          s = sign_of(trial);
+        } else {
+          const double rate = friction.k_t * e.v_t + friction.c_t * model.slip_accel(e, x[iW]);
+          s = rate != 0 ? sign_of(rate) : (e.v_t != 0 ? sign_of(e.v_t) : 1.0);
+        }
         break;
       }
       case Mode::spring_slip:

@@ -105,6 +105,48 @@ TEST(Contact, EnergyNeverGainedWithDampingAndFriction) {
         EXPECT_NEAR(r.energy_residual, 0, tol) << to_string(k);
       }
     }
+    // Tangential spring with a damper.
+    FrictionModel damped = friction(FrictionKind::spring);
+    damped.c_t = 20;
+    for (const BodyState& s : random_touches(15, 5)) {
+      const ContactResult r = simulate_contact(ball, law, damped, s);
+      ASSERT_EQ(r.status, ContactStatus::separated)
+          << r.message << " theta " << s.theta << " vx " << s.vx << " vy " << s.vy << " omega " << s.omega
+          << " law " << to_string(law.model) << " phases " << r.n_phases;
+      const double tol = 1e-8 * energy_scale(r);
+      EXPECT_LE(r.energy_out.total(), r.energy_in.total() + r.work_gravity + tol);
+      EXPECT_GE(r.dissipated_friction, -tol);
+    }
+  }
+}
+
+TEST(Contact, EveryLawAndFrictionSeparatesOnRandomImpacts) {
+  // Robustness: no chattering between stick and slip, no integrator failure, across laws
+  // (including Hooke's force jump at touch and force-free end) and friction models.
+  const Ball ball;
+  std::vector<NormalLawSpec> laws(5);
+  laws[1].model = NormalModel::hooke;
+  laws[1].n = 1;
+  laws[1].restitution = 0.5;
+  laws[2].model = NormalModel::flores;
+  laws[2].restitution = 0.6;
+  laws[3].model = NormalModel::gonthier;
+  laws[3].restitution = 0.8;
+  laws[4] = hertz();
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> mu(0, 1.5), ct(0, 50);
+  for (const NormalLawSpec& law : laws) {
+    for (FrictionKind k : {FrictionKind::coulomb, FrictionKind::regularized, FrictionKind::spring}) {
+      for (const BodyState& s : random_touches(25, 6)) {
+        FrictionModel f = friction(k, mu(rng));
+        f.c_t = ct(rng);
+        const ContactResult r = simulate_contact(ball, law, f, s);
+        EXPECT_EQ(r.status, ContactStatus::separated)
+            << r.message << " " << to_string(law.model) << " " << to_string(k) << " theta " << s.theta
+            << " vx " << s.vx << " vy " << s.vy << " omega " << s.omega << " mu " << f.mu << " c_t " << f.c_t;
+        EXPECT_LT(r.n_phases, 50u);
+      }
+    }
   }
 }
 
