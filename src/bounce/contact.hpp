@@ -70,7 +70,7 @@ std::string_view to_string(ContactStatus s);
 /// One history sample (caller-provided buffer; one per accepted step and per event).
 struct ContactSample {
   double t = 0;       ///< s from first touch
-  BodyState state;    ///< centre position relative to the touch point's x... (x from 0), velocities
+  BodyState state;    ///< centre position (x from the touch's x), orientation and velocities
   double d = 0;       ///< penetration, m
   double d_dot = 0;   ///< penetration rate, m/s
   double N = 0;       ///< normal force, N

@@ -1,5 +1,8 @@
 #include "bounce/geometry.hpp"
 
+#include "numerics/error.hpp"
+#include "numerics/roots.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -60,6 +63,21 @@ double collision_angle_deg(const Ball& ball, double theta, int direction) {
   const double rx = sp.X, ry = -sp.Y;
   const double cross = rx * ty - ry * tx, dot = rx * tx + ry * ty;
   return std::atan2(std::abs(cross), dot) * 180.0 / std::numbers::pi;
+}
+
+double theta_for_collision_angle(const Ball& ball, double angle_deg, int direction) {
+  if (!(angle_deg >= 0 && angle_deg <= 180)) {
+    throw InputError("collision angle", "must lie in [0, 180] degrees");
+  }
+  constexpr double half = std::numbers::pi / 2;
+  if (angle_deg == 0) return direction * half;
+  if (angle_deg == 180) return -direction * half;
+  // On (-pi/2, pi/2) with direction +1 the angle decreases from 180 to 0.
+  auto f = [&](double th) { return collision_angle_deg(ball, th, +1) - angle_deg; };
+  const double lo = std::nextafter(-half, 0.0), hi = std::nextafter(half, 0.0);
+  const numerics::RootResult r = numerics::find_root(f, lo, hi);
+  if (!r.converged) throw InputError("collision angle", "no orientation found");
+  return direction * r.x;
 }
 
 }  // namespace tribolab::bounce

@@ -56,6 +56,12 @@ PointVelocity contact_point_velocity(const Ball& ball, double theta, double vx, 
 /// precise definition, including the tie-break when the major axis is vertical.
 double collision_angle_deg(const Ball& ball, double theta, int direction);
 
+/// Inverse of collision_angle_deg on the branch theta in [-pi/2, pi/2] (direction +1; mirrored
+/// for -1), where the angle falls monotonically from 180 to 0 deg: the orientation, rad, at
+/// which the ball touches with the given collision angle (0..180 deg). For sweeps over the
+/// seed's collision angle (figures 53-56).
+double theta_for_collision_angle(const Ball& ball, double angle_deg, int direction);
+
 /// Wraps an angle to (-pi, pi].
 double wrap_angle(double theta);
 

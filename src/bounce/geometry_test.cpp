@@ -119,6 +119,25 @@ TEST(Geometry, CollisionAngleKnownValues) {
     EXPECT_NEAR(collision_angle_deg(ball, th, +1), collision_angle_deg(ball, -th, -1), 1e-12) << th;
 }
 
+TEST(Geometry, CollisionAngleInverseRoundTrips) {
+  const Ball ball;
+  double prev = -1;
+  for (double th = -1.55; th < 1.56; th += 0.05) {
+    const double ang = collision_angle_deg(ball, th, +1);
+    if (prev >= 0) {
+      EXPECT_LT(ang, prev) << th;  // monotone on the branch
+    }
+    prev = ang;
+  }
+  for (double ang = 5; ang < 180; ang += 5) {
+    for (int dir : {+1, -1}) {
+      const double th = theta_for_collision_angle(ball, ang, dir);
+      // TOMS 748 to the last bits of theta; the angle is a smooth function of it.
+      EXPECT_NEAR(collision_angle_deg(ball, th, dir), ang, 1e-9) << ang << " " << dir;
+    }
+  }
+}
+
 TEST(Geometry, BallValidationNamesTheField) {
   Ball b;
   b.b = 0.2;
