@@ -102,6 +102,19 @@ TEST(Drop, TrajectorySamplesAreContinuous) {
   }
 }
 
+TEST(Drop, DampedFlatBallComesToRest) {
+  // Seed's law, central (e ~ 0.4 at these speeds, lower as they fall): the energy above rest
+  // shrinks by ~e^2 per bounce and drops below m g rest_height well before 50 bounces.
+  DropRelease rel;
+  rel.height = 0.5;
+  DropOptions o;
+  o.max_bounces = 50;
+  const DropResult r = simulate_drop(Ball{}, NormalLawSpec{}, FrictionModel{}, rel, o);
+  EXPECT_EQ(r.status, DropStatus::rest) << r.message;
+  EXPECT_LT(r.bounces.size(), 50u);
+  EXPECT_EQ(r.first_above_release, -1);
+}
+
 TEST(Drop, ReleaseThroughTheFloorIsAnInputError) {
   DropRelease rel;
   rel.height = 0.05;
