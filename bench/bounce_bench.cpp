@@ -1,0 +1,176 @@
+// Benchmarks of the bounce engine (docs/benchmarks.md#bounce): one contact per normal law and
+// per friction mode, the first-contact search, and the seed's own method — explicit steps of
+// 1 microsecond (seed 001, 實驗四 (二)) — as the baseline at equal accuracy.
+#include "bounce/contact.hpp"
+#include "bounce/flight.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using namespace tribolab::bounce;
+
+// The reference impact: the seed's fitted law, seed-like state (axis 30 deg, 4 m/s down,
+// 0.5 m/s forward, 40 rad/s).
+BodyState reference_touch() {
+  BodyState s;
+  s.theta = 30 * std::acos(-1.0) / 180;
+  s.vx = 0.5;
+  s.vy = -4;
+  s.omega = 40;
+  return s;
+}
+
+NormalLaw law_for(NormalModel m) {
+  NormalLawSpec spec;
+  spec.model = m;
+  if (m == NormalModel::hertz) {
+    spec.n = 1.5;
+    spec.D = 0;
+  } else if (m == NormalModel::hooke) {
+    spec.n = 1;
+    spec.restitution = 0.5;
+  } else if (m != NormalModel::hunt_crossley) {
+    spec.restitution = 0.5;
+  }
+  const Ball ball;
+  const BodyState s = reference_touch();
+  return resolve(spec, -contact_point_velocity(ball, s.theta, s.vx, s.vy, s.omega).vy, ball.mass);
+}
+
+/// The seed's method: explicit steps of dt with f = -mu N sign(v_t), velocities first then
+/// positions (symplectic Euler), until the penetration returns to zero.
+ContactResult seed_euler(const Ball& ball, const NormalLaw& law, double mu, const BodyState& in, double dt,
+                         double g = 9.8) {
+  double y = support(ball, in.theta).Y, th = in.theta, vx = in.vx, vy = in.vy, w = in.omega;
+  double t = 0;
+  for (;;) {
+    const Support sp = support(ball, th);
+    const double d = sp.Y - y;
+    if (t > 0 && d <= 0) break;
+    const double d_dot = -(vy + w * sp.X);
+    const double N = law.eval(d, d_dot).N;
+    const double v_t = vx + w * sp.Y;
+    const double f = v_t > 0 ? -mu * N : (v_t < 0 ? mu * N : 0.0);
+    vx += f / ball.mass * dt;
+    vy += (N / ball.mass - g) * dt;
+    w += (sp.X * N + sp.Y * f) / ball.inertia * dt;
+    y += vy * dt;
+    th += w * dt;
+    t += dt;
+  }
+  ContactResult r;
+  r.out.vx = vx;
+  r.out.vy = vy;
+  r.out.omega = w;
+  r.contact_duration = t;
+  return r;
+}
+
+const ContactResult& reference() {
+  static const ContactResult ref = simulate_contact(Ball{}, law_for(NormalModel::hunt_crossley), FrictionModel{},
+                                                    reference_touch(), contact_options_with_tolerance(1e-13));
+  return ref;
+}
+
+/// Error of the outgoing state against the reference, m/s (omega scaled by b to a speed).
+double error_of(const ContactResult& r) {
+  const ContactResult& ref = reference();
+  return std::max({std::abs(r.out.vx - ref.out.vx), std::abs(r.out.vy - ref.out.vy),
+                   std::abs(r.out.omega - ref.out.omega) * Ball{}.b});
+}
+
+void BM_ContactLaw(benchmark::State& state) {
+  const auto model = static_cast<NormalModel>(state.range(0));
+  const NormalLaw law = law_for(model);
+  const Ball ball;
+  const BodyState s = reference_touch();
+  ContactResult r;
+  for (auto _ : state) {
+    r = simulate_contact(ball, law, FrictionModel{}, s);
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetLabel(std::string(to_string(model)));
+  state.counters["steps"] = static_cast<double>(r.steps);
+  state.counters["rhs_calls"] = static_cast<double>(r.rhs_calls);
+}
+BENCHMARK(BM_ContactLaw)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+
+void BM_ContactFriction(benchmark::State& state) {
+  FrictionModel f;
+  f.kind = static_cast<FrictionKind>(state.range(0));
+  const NormalLaw law = law_for(NormalModel::hunt_crossley);
+  const Ball ball;
+  const BodyState s = reference_touch();
+  ContactResult r;
+  for (auto _ : state) {
+    r = simulate_contact(ball, law, f, s);
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetLabel(std::string(to_string(f.kind)));
+  state.counters["steps"] = static_cast<double>(r.steps);
+  state.counters["phases"] = static_cast<double>(r.n_phases);
+}
+BENCHMARK(BM_ContactFriction)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+
+// Our solver at several tolerances, with the error it reaches (counter "error", m/s).
+void BM_ContactTolerance(benchmark::State& state) {
+  const double tol = std::pow(10.0, -static_cast<double>(state.range(0)));
+  const NormalLaw law = law_for(NormalModel::hunt_crossley);
+  const ContactOptions o = contact_options_with_tolerance(tol);
+  const Ball ball;
+  const BodyState s = reference_touch();
+  ContactResult r;
+  for (auto _ : state) {
+    r = simulate_contact(ball, law, FrictionModel{}, s, o);
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["error"] = error_of(r);
+  state.counters["steps"] = static_cast<double>(r.steps);
+}
+BENCHMARK(BM_ContactTolerance)->DenseRange(3, 12, 1)->Unit(benchmark::kMicrosecond);
+
+// The seed's method; range(0) = step in nanoseconds (1000 = the seed's 1 us).
+void BM_SeedEuler(benchmark::State& state) {
+  const double dt = static_cast<double>(state.range(0)) * 1e-9;
+  const NormalLaw law = law_for(NormalModel::hunt_crossley);
+  const Ball ball;
+  const BodyState s = reference_touch();
+  ContactResult r;
+  for (auto _ : state) {
+    r = seed_euler(ball, law, 0.5, s, dt);
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["error"] = error_of(r);
+  state.counters["steps"] = r.contact_duration / dt;
+}
+BENCHMARK(BM_SeedEuler)->Arg(1000)->Arg(100)->Arg(10)->Unit(benchmark::kMicrosecond);
+
+// Independent contacts on every thread: the solver shares nothing and allocates nothing.
+void BM_ContactThreads(benchmark::State& state) {
+  const NormalLaw law = law_for(NormalModel::hunt_crossley);
+  const Ball ball;
+  BodyState s = reference_touch();
+  s.omega += state.thread_index();
+  for (auto _ : state) benchmark::DoNotOptimize(simulate_contact(ball, law, FrictionModel{}, s));
+}
+BENCHMARK(BM_ContactThreads)->Threads(1)->Threads(2)->UseRealTime()->Unit(benchmark::kMicrosecond);
+
+void BM_FirstContact(benchmark::State& state) {
+  const Ball ball;
+  const double omega = static_cast<double>(state.range(0));
+  FlightResult r;
+  for (auto _ : state) {
+    r = first_contact_from_apex(ball, 0.7, omega, 0.2);
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["iterations"] = static_cast<double>(r.iterations);
+}
+BENCHMARK(BM_FirstContact)->Arg(0)->Arg(40)->Arg(500)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

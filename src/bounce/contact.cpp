@@ -1,0 +1,398 @@
+#include "bounce/contact.hpp"
+
+#include "numerics/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tribolab::bounce {
+
+std::string ContactOptions::validate() const {
+  if (!std::isfinite(g) || !(g >= 0)) return "g: gravitational acceleration must be >= 0";
+  if (auto e = integrator.validate(); !e.empty()) return e;
+  if (!std::isfinite(max_duration) || !(max_duration > 0)) return "max contact duration must be positive";
+  if (max_phases == 0) return "max phases must be positive";
+  return {};
+}
+
+ContactOptions contact_options_with_tolerance(double tol) {
+  ContactOptions o;
+  o.integrator.abs_tol = tol;
+  o.integrator.rel_tol = tol;
+  return o;
+}
+
+std::string_view to_string(PhaseKind k) {
+  switch (k) {
+    case PhaseKind::slip_positive: return "slip+";
+    case PhaseKind::slip_negative: return "slip-";
+    case PhaseKind::stick: return "stick";
+    case PhaseKind::smooth: return "smooth";
+  }
+  return "?";
+}
+
+std::string_view to_string(ContactStatus s) {
+  switch (s) {
+    case ContactStatus::separated: return "separated";
+    case ContactStatus::max_duration: return "max_duration";
+    case ContactStatus::failed: return "failed";
+  }
+  return "?";
+}
+
+KineticEnergy kinetic_energy(const Ball& ball, const BodyState& s) {
+  return {0.5 * ball.mass * s.vx * s.vx, 0.5 * ball.mass * s.vy * s.vy,
+          0.5 * ball.inertia * s.omega * s.omega};
+}
+
+namespace {
+
+// State: x, y, theta, vx, vy, omega, u (tangential spring elongation), W_n, W_f.
+constexpr std::size_t kN = 9;
+using State = Vec<kN>;
+enum : std::size_t { iX, iY, iTh, iVx, iVy, iW, iU, iWn, iWf };
+
+enum class Mode { free, coulomb_slip, coulomb_stick, regularized, spring_elastic, spring_slip };
+
+struct Eval {
+  Support sp;
+  double d = 0, d_dot = 0, v_t = 0;
+  NormalLaw::Force nf;
+  double f = 0;       // tangential force, N
+  double f_req = 0;   // Coulomb: force that keeps v_t = 0, N
+  double ax = 0, ay = 0, alpha = 0;
+};
+
+struct Model {
+  const Ball& ball;
+  const NormalLaw& law;
+  const FrictionModel& fr;
+  double g;
+  double inv_m, inv_I;
+
+  Eval eval(const State& x, Mode mode, double s) const {
+    Eval e;
+    e.sp = support(ball, x[iTh]);
+    const double w = x[iW];
+    e.d = e.sp.Y - x[iY];
+    e.d_dot = -(x[iVy] + w * e.sp.X);
+    e.v_t = x[iVx] + w * e.sp.Y;
+    e.nf = law.eval(e.d, e.d_dot);
+    const double N = e.nf.N;
+    const double mu = fr.mu;
+    switch (mode) {
+      case Mode::free: e.f = 0; break;
+      case Mode::coulomb_slip:
+      case Mode::spring_slip: e.f = -s * mu * N; break;
+      case Mode::coulomb_stick: e.f = required_force(e.sp, w, N); break;
+      case Mode::regularized: e.f = -mu * N * std::tanh(e.v_t / fr.slip_scale); break;
+      case Mode::spring_elastic: e.f = -(fr.k_t * x[iU] + fr.c_t * e.v_t); break;
+    }
+    if (mode == Mode::coulomb_stick || mode == Mode::coulomb_slip)
+      e.f_req = required_force(e.sp, w, N);
+    e.ax = e.f * inv_m;
+    e.ay = N * inv_m - g;
+    e.alpha = (e.sp.X * N + e.sp.Y * e.f) * inv_I;
+    return e;
+  }
+
+  // Tangential force that keeps v_t = vx + omega Y constant: d/dt v_t = f/m + alpha Y +
+  // omega^2 Y' = 0 with alpha = (X N + Y f)/I and Y' = -X (docs/theory.md#bounce-friction).
+  double required_force(const Support& sp, double w, double N) const {
+    return sp.X * (w * w - sp.Y * N * inv_I) / (inv_m + sp.Y * sp.Y * inv_I);
+  }
+
+  // Rate of change of N along the motion (clamped parts give 0).
+  double force_rate(const Eval& e, double w) const {
+    const double d_ddot = -(e.ay + e.alpha * e.sp.X - w * w * e.sp.d2Y);
+    return e.nf.dN_dd * e.d_dot + e.nf.dN_ddot * d_ddot;
+  }
+
+  // Acceleration of the slip velocity.
+  double slip_accel(const Eval& e, double w) const { return e.ax + e.alpha * e.sp.Y + w * w * e.sp.dY; }
+};
+
+PhaseKind kind_of(Mode m, double s) {
+  switch (m) {
+    case Mode::coulomb_slip:
+    case Mode::spring_slip: return s > 0 ? PhaseKind::slip_positive : PhaseKind::slip_negative;
+    case Mode::coulomb_stick:
+    case Mode::spring_elastic: return PhaseKind::stick;
+    default: return PhaseKind::smooth;
+  }
+}
+
+double sign_of(double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
+
+/// Running peak of N(t) from samples, refined by the parabola through a local maximum.
+struct PeakTracker {
+  double t0 = 0, n0 = -1, t1 = 0, n1 = -1;
+  double peak = 0, t_peak = 0;
+  void add(double t, double n) {
+    if (n1 >= 0 && t <= t1) return;  // duplicate sample at a phase boundary
+    if (n > peak) {
+      peak = n;
+      t_peak = t;
+    }
+    if (n0 >= 0 && n1 >= n0 && n1 >= n && n1 > 0) {
+      const double h0 = t0 - t1, h2 = t - t1;
+      const double d0 = (n0 - n1) / h0, d2 = (n - n1) / h2;
+      const double c = (d2 - d0) / (h2 - h0);
+      const double b = d0 - c * h0;
+      if (c < 0) {
+        const double tau = -b / (2 * c);
+        if (tau >= h0 && tau <= h2) {
+          const double v = n1 - b * b / (4 * c);
+          if (v > peak) {
+            peak = v;
+            t_peak = t1 + tau;
+          }
+        }
+      }
+    }
+    t0 = t1;
+    n0 = n1;
+    t1 = t;
+    n1 = n;
+  }
+};
+
+}  // namespace
+
+ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                               const BodyState& touch, const ContactOptions& options,
+                               std::vector<ContactSample>* history) {
+  if (auto e = ball.validate(); !e.empty()) throw InputError(e);
+  if (auto e = friction.validate(); !e.empty()) throw InputError(e);
+  if (auto e = options.validate(); !e.empty()) throw InputError(e);
+  if (!(law.K > 0) || !(law.n >= 1) || !(law.D >= 0) || !std::isfinite(law.K + law.n + law.D))
+    throw InputError("normal law: need K > 0, n >= 1, D >= 0");
+  for (double v : {touch.x, touch.theta, touch.vx, touch.vy, touch.omega})
+    require_finite(v, "incoming state");
+
+  const Model model{ball, law, friction, options.g, 1 / ball.mass, 1 / ball.inertia};
+  ContactResult r;
+  r.law = law;
+  r.in = touch;
+  r.in.y = support(ball, touch.theta).Y;
+  {
+    const PointVelocity pv = contact_point_velocity(ball, touch.theta, touch.vx, touch.vy, touch.omega);
+    r.v_in_normal = -pv.vy;
+    r.v_t_in = pv.vx;
+    if (!(pv.vy < 0)) {
+      throw InputError("incoming state", "the contact point must approach the floor at first touch "
+                                         "(vy + omega X = " + std::to_string(pv.vy) + " m/s, need < 0)");
+    }
+  }
+  State x{};
+  x[iX] = r.in.x;
+  x[iY] = r.in.y;
+  x[iTh] = r.in.theta;
+  x[iVx] = r.in.vx;
+  x[iVy] = r.in.vy;
+  x[iW] = r.in.omega;
+
+  // Initial friction mode (docs/theory.md#bounce-friction, "phase selection").
+  Mode mode = Mode::free;
+  double s = 0;
+  const bool frictionless = friction.mu == 0;
+  auto choose_after_stop = [&](const State& st) {
+    // Coulomb, v_t = 0: stick if the required force fits in the cone, else slip against it.
+    const Eval e = model.eval(st, Mode::coulomb_stick, 0);
+    if (std::abs(e.f_req) <= friction.mu * e.nf.N) {
+      mode = Mode::coulomb_stick;
+    } else {
+      mode = Mode::coulomb_slip;
+      s = -sign_of(e.f_req);
+    }
+  };
+  if (frictionless) {
+    mode = Mode::free;
+  } else if (friction.kind == FrictionKind::regularized) {
+    mode = Mode::regularized;
+  } else if (friction.kind == FrictionKind::coulomb) {
+    if (r.v_t_in != 0) {
+      mode = Mode::coulomb_slip;
+      s = sign_of(r.v_t_in);
+    } else {
+      choose_after_stop(x);
+    }
+  } else {
+    // Decide with the load just after touch, N(0+): a Hooke dashpot jumps to D d_dot there,
+    // and a spring put on that cap would gain energy from nothing.
+    const Eval e = model.eval(x, Mode::spring_elastic, 0);
+    const double N0 = law.eval(std::numeric_limits<double>::min(), e.d_dot).N;
+    const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
+    if (friction.mu * N0 - std::abs(trial) > 0 || e.v_t == 0) {
+      mode = Mode::spring_elastic;
+    } else {
+      mode = Mode::spring_slip;
+      s = trial != 0 ? sign_of(trial) : sign_of(e.v_t);
+      x[iU] = (s * friction.mu * e.nf.N - friction.c_t * e.v_t) / friction.k_t;
+    }
+  }
+
+  PeakTracker peak;
+  double t = 0;
+  double h = options.integrator.initial_step;
+  Mode cur_mode = mode;
+  double cur_s = s;
+
+  auto rhs = [&](const State& st, State& dx, double) {
+    const Eval e = model.eval(st, cur_mode, cur_s);
+    dx[iX] = st[iVx];
+    dx[iY] = st[iVy];
+    dx[iTh] = st[iW];
+    dx[iVx] = e.ax;
+    dx[iVy] = e.ay;
+    dx[iW] = e.alpha;
+    dx[iU] = cur_mode == Mode::spring_elastic ? e.v_t : 0.0;
+    dx[iWn] = (e.nf.N - e.nf.elastic) * e.d_dot;
+    dx[iWf] = -e.f * e.v_t;
+  };
+  auto guards = [&](double, const State& st, std::array<double, 2>& gv) {
+    const Eval e = model.eval(st, cur_mode, cur_s);
+    gv[0] = e.d;  // separation
+    const double muN = friction.mu * e.nf.N;
+    switch (cur_mode) {
+      case Mode::coulomb_slip: gv[1] = cur_s * e.v_t; break;
+      case Mode::coulomb_stick: gv[1] = muN - std::abs(e.f_req); break;
+      case Mode::spring_elastic:
+        gv[1] = muN - std::abs(friction.k_t * st[iU] + friction.c_t * e.v_t);
+        break;
+      case Mode::spring_slip:
+        gv[1] = cur_s * (friction.k_t * e.v_t + friction.c_t * model.slip_accel(e, st[iW])) -
+                friction.mu * model.force_rate(e, st[iW]);
+        break;
+      default: gv[1] = 1.0; break;
+    }
+  };
+  PeakTracker peak_d;
+  auto observer = [&](double tt, const State& st) {
+    const Eval e = model.eval(st, cur_mode, cur_s);
+    peak.add(tt, e.nf.N);
+    peak_d.add(tt, std::max(e.d, 0.0));
+    if (history) {
+      ContactSample smp;
+      smp.t = tt;
+      smp.state = {st[iX], st[iY], st[iTh], st[iVx], st[iVy], st[iW]};
+      smp.d = e.d;
+      smp.d_dot = e.d_dot;
+      smp.N = e.nf.N;
+      smp.f = e.f;
+      smp.v_t = e.v_t;
+      smp.phase = kind_of(cur_mode, cur_s);
+      history->push_back(smp);
+    }
+  };
+  if (history) history->clear();
+
+  bool done = false;
+  while (!done) {
+    if (r.n_phases >= options.max_phases) {
+      r.status = ContactStatus::failed;
+      r.message = "too many stick/slip phase changes";
+      break;
+    }
+    cur_mode = mode;
+    cur_s = s;
+    const PhaseEnd<kN> end = integrate_phase<kN, 2>(rhs, guards, observer, t, x,
+                                                    options.max_duration, h, options.integrator);
+    r.steps += end.steps;
+    r.rhs_calls += end.rhs_calls;
+    if (r.n_phases < kMaxStoredPhases) r.phases[r.n_phases] = {kind_of(cur_mode, cur_s), t, end.t};
+    ++r.n_phases;
+    t = end.t;
+    x = end.x;
+    if (end.next_step > 0) h = end.next_step;
+    switch (end.status) {
+      case PhaseStatus::reached_end:
+        r.status = ContactStatus::max_duration;
+        r.message = "still in contact after max_duration";
+        done = true;
+        continue;
+      case PhaseStatus::max_steps:
+      case PhaseStatus::non_finite:
+      case PhaseStatus::step_underflow:
+        r.status = ContactStatus::failed;
+        r.message = end.status == PhaseStatus::max_steps ? "integrator step budget exhausted"
+                                                         : "integrator failed (non-finite state or step underflow)";
+        done = true;
+        continue;
+      case PhaseStatus::guard: break;
+    }
+    if (end.guard == 0) {
+      r.status = ContactStatus::separated;
+      r.message = "separated";
+      done = true;
+      continue;
+    }
+    // Friction phase change at the guard.
+    const Eval e = model.eval(x, cur_mode, cur_s);
+    switch (cur_mode) {
+      case Mode::coulomb_slip:
+        x[iVx] = -x[iW] * e.sp.Y;  // v_t = 0 exactly (the event is located to rounding)
+        choose_after_stop(x);
+        if (mode == Mode::coulomb_slip && s == cur_s) s = -cur_s;  // must reverse
+        break;
+      case Mode::coulomb_stick:
+        mode = Mode::coulomb_slip;
+        s = -sign_of(e.f_req);
+        if (s == 0) s = 1;
+        break;
+      case Mode::spring_elastic: {
+        const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
+        mode = Mode::spring_slip;
+        // The slip goes the way the trial force points. When it is zero to rounding (no
+        // load: N clamped to 0, cap 0), the way it is about to point: its rate
+        // k_t v_t + c_t a_t, or failing that the slip velocity.
+        const double scale = friction.k_t * std::abs(x[iU]) + friction.c_t * std::abs(e.v_t);
+        if (std::abs(trial) > 1e-9 * scale && trial != 0) {
+          s = sign_of(trial);
+        } else {
+          const double rate = friction.k_t * e.v_t + friction.c_t * model.slip_accel(e, x[iW]);
+          s = rate != 0 ? sign_of(rate) : (e.v_t != 0 ? sign_of(e.v_t) : 1.0);
+        }
+        break;
+      }
+      case Mode::spring_slip:
+        mode = Mode::spring_elastic;
+        x[iU] = (cur_s * friction.mu * e.nf.N - friction.c_t * e.v_t) / friction.k_t;
+        break;
+      default: break;
+    }
+  }
+
+  r.out = {x[iX], x[iY], x[iTh], x[iVx], x[iVy], x[iW]};
+  r.contact_duration = t;
+  r.restitution = r.in.vy != 0 ? -r.out.vy / r.in.vy : std::numeric_limits<double>::quiet_NaN();
+  r.peak_force = peak.peak;
+  r.t_peak = peak.t_peak;
+  r.max_penetration = peak_d.peak;
+  r.impulse_normal = ball.mass * (r.out.vy - r.in.vy) + ball.mass * options.g * t;
+  r.impulse_tangential = ball.mass * (r.out.vx - r.in.vx);
+  const Support sp_out = support(ball, r.out.theta);
+  r.v_t_out = r.out.vx + r.out.omega * sp_out.Y;
+  r.energy_in = kinetic_energy(ball, r.in);
+  r.energy_out = kinetic_energy(ball, r.out);
+  r.work_gravity = -ball.mass * options.g * (r.out.y - r.in.y);
+  r.dissipated_normal = x[iWn];
+  r.dissipated_friction = x[iWf];
+  const double d_end = std::max(0.0, sp_out.Y - r.out.y);
+  r.energy_residual = r.energy_in.total() + r.work_gravity - r.energy_out.total() -
+                      r.dissipated_normal - r.dissipated_friction - law.potential(d_end);
+  return r;
+}
+
+ContactResult simulate_contact(const Ball& ball, const NormalLawSpec& spec,
+                               const FrictionModel& friction, const BodyState& touch,
+                               const ContactOptions& options, std::vector<ContactSample>* history) {
+  if (auto e = ball.validate(); !e.empty()) throw InputError(e);
+  const PointVelocity pv = contact_point_velocity(ball, touch.theta, touch.vx, touch.vy, touch.omega);
+  const NormalLaw law = resolve(spec, -pv.vy, ball.mass);
+  return simulate_contact(ball, law, friction, touch, options, history);
+}
+
+}  // namespace tribolab::bounce

@@ -1,0 +1,366 @@
+#include "bounce/contact.hpp"
+
+#include "numerics/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+#include <numbers>
+#include <random>
+
+// Counts heap allocations so that a test can check simulate_contact makes none. The
+// replacement pair is malloc/free on both sides; GCC's -Wmismatched-new-delete cannot see that
+// the replaced operator new is the malloc one, hence the pragma.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+static std::atomic<long> g_allocations{0};
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace tribolab::bounce {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+NormalLawSpec hertz(double K = 1e5, double n = 1.5) {
+  NormalLawSpec s;
+  s.model = NormalModel::hertz;
+  s.K = K;
+  s.n = n;
+  s.D = 0;
+  return s;
+}
+
+FrictionModel friction(FrictionKind k, double mu = 0.5) {
+  FrictionModel f;
+  f.kind = k;
+  f.mu = mu;
+  return f;
+}
+
+BodyState touch(double theta, double vx, double vy, double omega) {
+  BodyState s;
+  s.theta = theta;
+  s.vx = vx;
+  s.vy = vy;
+  s.omega = omega;
+  return s;
+}
+
+/// Random incoming states whose contact point approaches the floor.
+std::vector<BodyState> random_touches(int n, unsigned seed) {
+  const Ball ball;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> th(-kPi, kPi), vx(-3, 3), vy(-8, -1), w(-60, 60);
+  std::vector<BodyState> out;
+  while (static_cast<int>(out.size()) < n) {
+    BodyState s = touch(th(rng), vx(rng), vy(rng), w(rng));
+    if (contact_point_velocity(ball, s.theta, s.vx, s.vy, s.omega).vy < -0.2) out.push_back(s);
+  }
+  return out;
+}
+
+double energy_scale(const ContactResult& r) { return r.energy_in.total(); }
+
+TEST(Contact, EnergyConservedWithoutDampingOrFriction) {
+  const Ball ball;
+  for (double g : {0.0, 9.8}) {
+    ContactOptions o;
+    o.g = g;
+    for (const BodyState& s : random_touches(40, 1)) {
+      const ContactResult r = simulate_contact(ball, hertz(), friction(FrictionKind::coulomb, 0), s, o);
+      ASSERT_EQ(r.status, ContactStatus::separated);
+      // Local error 1e-10 (relative) per step, ~100-200 steps: the energy, a quadratic
+      // invariant, is conserved to ~1e-8 relative.
+      const double E_in = r.energy_in.total() + 0.0, E_out = r.energy_out.total();
+      EXPECT_NEAR(E_out, E_in + r.work_gravity, 1e-8 * E_in) << s.theta << " " << s.omega;
+      EXPECT_NEAR(r.dissipated_normal, 0, 1e-12);
+    }
+  }
+}
+
+TEST(Contact, EnergyNeverGainedWithDampingAndFriction) {
+  const Ball ball;
+  NormalLawSpec seed;  // the seed's fitted Hunt–Crossley law
+  NormalLawSpec by_e;
+  by_e.restitution = 0.7;
+  NormalLawSpec hooke;  // force jumps at touch and vanishes before d = 0: the hard cases
+  hooke.model = NormalModel::hooke;
+  hooke.n = 1;
+  hooke.restitution = 0.7;
+  for (const NormalLawSpec& law : {seed, by_e, hertz(), hooke}) {
+    for (FrictionKind k : {FrictionKind::coulomb, FrictionKind::regularized, FrictionKind::spring}) {
+      for (const BodyState& s : random_touches(15, 2)) {
+        const ContactResult r = simulate_contact(ball, law, friction(k), s);
+        ASSERT_EQ(r.status, ContactStatus::separated) << r.message;
+        const double tol = 1e-8 * energy_scale(r);  // integrator tolerance, as above
+        EXPECT_LE(r.energy_out.total(), r.energy_in.total() + r.work_gravity + tol);
+        EXPECT_GE(r.dissipated_normal, -tol);
+        EXPECT_GE(r.dissipated_friction, -tol) << to_string(k);
+        // Bookkeeping: E_in + W_g = E_out + dissipated (independent integrals of the powers).
+        EXPECT_NEAR(r.energy_residual, 0, tol) << to_string(k);
+      }
+    }
+    // Tangential spring with a damper.
+    FrictionModel damped = friction(FrictionKind::spring);
+    damped.c_t = 20;
+    for (const BodyState& s : random_touches(15, 5)) {
+      const ContactResult r = simulate_contact(ball, law, damped, s);
+      ASSERT_EQ(r.status, ContactStatus::separated)
+          << r.message << " theta " << s.theta << " vx " << s.vx << " vy " << s.vy << " omega " << s.omega
+          << " law " << to_string(law.model) << " phases " << r.n_phases;
+      const double tol = 1e-8 * energy_scale(r);
+      EXPECT_LE(r.energy_out.total(), r.energy_in.total() + r.work_gravity + tol);
+      EXPECT_GE(r.dissipated_friction, -tol);
+    }
+  }
+}
+
+TEST(Contact, EveryLawAndFrictionSeparatesOnRandomImpacts) {
+  // Robustness: no chattering between stick and slip, no integrator failure, across laws
+  // (including Hooke's force jump at touch and force-free end) and friction models.
+  const Ball ball;
+  std::vector<NormalLawSpec> laws(5);
+  laws[1].model = NormalModel::hooke;
+  laws[1].n = 1;
+  laws[1].restitution = 0.5;
+  laws[2].model = NormalModel::flores;
+  laws[2].restitution = 0.6;
+  laws[3].model = NormalModel::gonthier;
+  laws[3].restitution = 0.8;
+  laws[4] = hertz();
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> mu(0, 1.5), ct(0, 50);
+  for (const NormalLawSpec& law : laws) {
+    for (FrictionKind k : {FrictionKind::coulomb, FrictionKind::regularized, FrictionKind::spring}) {
+      for (const BodyState& s : random_touches(25, 6)) {
+        FrictionModel f = friction(k, mu(rng));
+        f.c_t = ct(rng);
+        const ContactResult r = simulate_contact(ball, law, f, s);
+        EXPECT_EQ(r.status, ContactStatus::separated)
+            << r.message << " " << to_string(law.model) << " " << to_string(k) << " theta " << s.theta
+            << " vx " << s.vx << " vy " << s.vy << " omega " << s.omega << " mu " << f.mu << " c_t " << f.c_t;
+        EXPECT_LT(r.n_phases, 50u);
+      }
+    }
+  }
+}
+
+TEST(Contact, MirrorSymmetry) {
+  const Ball ball;
+  for (FrictionKind k : {FrictionKind::coulomb, FrictionKind::regularized, FrictionKind::spring}) {
+    for (const BodyState& s : random_touches(10, 3)) {
+      const ContactResult r = simulate_contact(ball, NormalLawSpec{}, friction(k), s);
+      const ContactResult m =
+          simulate_contact(ball, NormalLawSpec{}, friction(k), touch(-s.theta, -s.vx, s.vy, -s.omega));
+      // Same equations mirrored; differences are rounding amplified by event location:
+      // 1e-9 in velocities (tolerance 1e-10 relative on ~10 m/s).
+      EXPECT_NEAR(m.out.vx, -r.out.vx, 1e-9);
+      EXPECT_NEAR(m.out.vy, r.out.vy, 1e-9);
+      EXPECT_NEAR(m.out.omega, -r.out.omega, 1e-7);  // omega ~ 100 rad/s scale
+      EXPECT_NEAR(m.out.theta, -r.out.theta, 1e-10);
+      EXPECT_NEAR(m.contact_duration, r.contact_duration, 1e-10);
+      EXPECT_EQ(m.n_phases, r.n_phases);
+    }
+  }
+}
+
+TEST(Contact, HuntCrossleyCentralImpactRestitution) {
+  // Central impact (theta = 0, omega = 0, vx = 0), no gravity: e = target exactly, for any
+  // K, n, mass and impact speed (docs/theory.md#hunt-crossley-restitution).
+  ContactOptions o = contact_options_with_tolerance(1e-12);
+  o.g = 0;
+  for (double e : {0.2, 0.5, 0.9}) {
+    for (double v : {1.0, 4.0, 9.0}) {
+      for (double n : {1.0, 1.5, 2.2}) {
+        Ball ball;
+        ball.mass = 0.2 + 0.1 * n;
+        NormalLawSpec law;
+        law.K = 5e4 * n;
+        law.n = n;
+        law.restitution = e;
+        const ContactResult r = simulate_contact(ball, law, friction(FrictionKind::coulomb), touch(0, 0, -v, 0), o);
+        // Tolerance 1e-12 per step; the restitution is a ratio of velocities: 1e-9.
+        EXPECT_NEAR(r.restitution, e, 1e-9) << "e " << e << " v " << v << " n " << n;
+      }
+    }
+  }
+}
+
+TEST(Contact, HookeCentralImpactRestitutionWithForceClamp) {
+  ContactOptions o = contact_options_with_tolerance(1e-12);
+  o.g = 0;
+  NormalLawSpec law;
+  law.model = NormalModel::hooke;
+  law.K = 2e5;
+  for (double e : {0.3, 0.6, 0.95}) {
+    law.restitution = e;
+    const ContactResult r = simulate_contact(Ball{}, law, friction(FrictionKind::coulomb), touch(0, 0, -3, 0), o);
+    EXPECT_NEAR(r.restitution, e, 1e-9) << e;
+  }
+}
+
+TEST(Contact, HertzDurationMatchesClosedForm) {
+  // Central elastic impact, N = K d^n: d_max = ((n+1) m v^2 / (2K))^(1/(n+1)),
+  // T = 2 (d_max / v) sqrt(pi) Gamma(1 + 1/(n+1)) / Gamma(1/2 + 1/(n+1));
+  // for n = 3/2: T = 2.9432 d_max / v = 3.2181 (m/K)^(2/5) v^(-1/5).
+  const Ball ball;
+  ContactOptions o = contact_options_with_tolerance(1e-12);
+  o.g = 0;
+  for (double n : {1.5, 1.51, 1.0}) {
+    for (double v : {0.5, 4.0, 10.0}) {
+      const double K = 1e5;
+      const ContactResult r = simulate_contact(ball, hertz(K, n), friction(FrictionKind::coulomb), touch(0, 0, -v, 0), o);
+      const double p = n + 1;
+      const double d_max = std::pow(p * ball.mass * v * v / (2 * K), 1 / p);
+      const double T = 2 * d_max / v * std::sqrt(kPi) * std::tgamma(1 + 1 / p) / std::tgamma(0.5 + 1 / p);
+      // Separation located to the step's accuracy (tolerance 1e-12): 1e-9 relative.
+      EXPECT_NEAR(r.contact_duration, T, 1e-9 * T) << n << " " << v;
+      // Maxima are refined by a parabola through the samples: error ~ h^3 terms, < 1e-6.
+      EXPECT_NEAR(r.max_penetration / d_max, 1, 1e-6) << n << " " << v;
+      EXPECT_NEAR(r.peak_force / (K * std::pow(d_max, n)), 1, 1e-6);
+      EXPECT_NEAR(r.restitution, 1, 1e-10);
+    }
+  }
+  const double c15 = 2 * std::sqrt(kPi) * std::tgamma(1.4) / std::tgamma(0.9);
+  EXPECT_NEAR(c15, 2.9432, 1e-4);
+  EXPECT_NEAR(c15 * std::pow(1.25, 0.4), 3.2181, 1e-4);
+}
+
+TEST(Contact, StickSlipOnACircleMatchesImpulseSolution) {
+  // a = b: the normal force has no torque (X = 0), so the tangential impulse problem is the
+  // classical one. Slip reduces v_t = vx + omega R by mu J_n (1/m + R^2/I); if that exceeds
+  // v_t0 the point sticks and leaves rolling (v_t = 0): J_t = -v_t0 / (1/m + R^2/I).
+  Ball ball;
+  ball.a = ball.b = 0.1;
+  ball.inertia = 0.4 * ball.mass * 0.01;
+  const double k = 1 / ball.mass + ball.b * ball.b / ball.inertia;
+  const BodyState s = touch(0, 2.0, -3.0, 0);
+  // Large mu: sticks.
+  const ContactResult r1 = simulate_contact(ball, NormalLawSpec{}, friction(FrictionKind::coulomb, 0.8), s);
+  ASSERT_GE(r1.n_phases, 2u);
+  EXPECT_EQ(r1.phases[1].kind, PhaseKind::stick);
+  EXPECT_NEAR(r1.v_t_out, 0, 1e-9);
+  EXPECT_NEAR(r1.impulse_tangential, -2.0 / k, 1e-9);
+  // Small mu: slides all through, J_t = -mu J_n.
+  const ContactResult r2 = simulate_contact(ball, NormalLawSpec{}, friction(FrictionKind::coulomb, 0.05), s);
+  EXPECT_EQ(r2.n_phases, 1u);
+  EXPECT_EQ(r2.phases[0].kind, PhaseKind::slip_positive);
+  EXPECT_NEAR(r2.impulse_tangential, -0.05 * r2.impulse_normal, 1e-10);
+  EXPECT_GT(r2.v_t_out, 0);
+}
+
+TEST(Contact, StickAndSlipPhasesAreConsistent) {
+  // During stick the slip velocity stays 0 and |f| <= mu N; during slip f = -mu N sign(v_t).
+  const Ball ball;
+  std::vector<ContactSample> hist;
+  int sticks = 0;
+  for (const BodyState& s : random_touches(20, 4)) {
+    const FrictionModel fr = friction(FrictionKind::coulomb, 0.6);
+    const ContactResult r = simulate_contact(ball, NormalLawSpec{}, fr, s, {}, &hist);
+    for (const ContactSample& c : hist) {
+      const double tol = 1e-9 * (1 + c.N);
+      if (c.phase == PhaseKind::stick) {
+        ++sticks;
+        EXPECT_NEAR(c.v_t, 0, 1e-8);  // drift of an integrated invariant, ~100 steps x 1e-10
+        EXPECT_LE(std::abs(c.f), fr.mu * c.N + tol);
+      } else {
+        const double sgn = c.phase == PhaseKind::slip_positive ? 1 : -1;
+        EXPECT_NEAR(c.f, -sgn * fr.mu * c.N, tol);
+        EXPECT_GE(sgn * c.v_t, -1e-8);
+      }
+    }
+    EXPECT_EQ(r.status, ContactStatus::separated);
+  }
+  EXPECT_GT(sticks, 0) << "no stick phase in the sample: test does not exercise stick";
+}
+
+TEST(Contact, SpinningElasticBallReboundsAboveOne) {
+  // Elastic (Hertz) contact with Coulomb friction; spin -40 rad/s, axis at -15 deg,
+  // vy = -4 m/s: rotational energy goes into the vertical motion, e ~ 1.25 > 1, while the
+  // total energy does not grow.
+  const Ball ball;
+  const ContactResult r = simulate_contact(ball, hertz(101054, 1.5), friction(FrictionKind::coulomb),
+                                           touch(-15 * kPi / 180, 0, -4, -40));
+  EXPECT_GT(r.restitution, 1.1);
+  EXPECT_LT(r.energy_out.rotational, r.energy_in.rotational);
+  EXPECT_LE(r.energy_out.total(), r.energy_in.total() + r.work_gravity + 1e-8 * r.energy_in.total());
+}
+
+TEST(Contact, RegularizedFrictionConvergesToCoulomb) {
+  // f = -mu N tanh(v_t / v_s) -> Coulomb as v_s -> 0; the outgoing state differs by O(v_s).
+  const Ball ball;
+  const BodyState s = touch(0.4, 1.0, -4, 30);
+  const ContactResult exact = simulate_contact(ball, NormalLawSpec{}, friction(FrictionKind::coulomb), s);
+  double prev = 1e9;
+  for (double vs : {1e-1, 1e-2, 1e-3}) {
+    FrictionModel f = friction(FrictionKind::regularized);
+    f.slip_scale = vs;
+    const ContactResult r = simulate_contact(ball, NormalLawSpec{}, f, s);
+    const double diff = std::abs(r.out.vx - exact.out.vx) + std::abs(r.out.omega - exact.out.omega) * ball.b;
+    EXPECT_LT(diff, prev);
+    EXPECT_LT(diff, 5 * vs);  // O(v_s) with a constant of order 1
+    prev = diff;
+  }
+}
+
+TEST(Contact, SpringFrictionAllowsReversals) {
+  // With tangential compliance the contact point oscillates while stuck: the friction force
+  // changes sign during the contact, which rigid Coulomb friction cannot do at fixed slip.
+  const Ball ball;
+  std::vector<ContactSample> hist;
+  FrictionModel f = friction(FrictionKind::spring, 0.8);
+  f.k_t = 1e5;
+  const ContactResult r = simulate_contact(ball, NormalLawSpec{}, f, touch(0, 0.5, -3, 0), {}, &hist);
+  ASSERT_EQ(r.status, ContactStatus::separated);
+  double fmin = 0, fmax = 0;
+  for (const auto& c : hist) {
+    fmin = std::min(fmin, c.f);
+    fmax = std::max(fmax, c.f);
+  }
+  EXPECT_LT(fmin, -1.0);
+  EXPECT_GT(fmax, 1.0);
+}
+
+TEST(Contact, ConvergesAsToleranceTightens) {
+  const Ball ball;
+  const BodyState s = touch(0.9, 0.7, -5, -45);
+  const ContactResult ref = simulate_contact(ball, NormalLawSpec{}, friction(FrictionKind::coulomb), s,
+                                             contact_options_with_tolerance(1e-13));
+  double prev = 1;
+  for (double tol : {1e-5, 1e-7, 1e-9}) {
+    const ContactResult r = simulate_contact(ball, NormalLawSpec{}, friction(FrictionKind::coulomb), s,
+                                             contact_options_with_tolerance(tol));
+    const double err = std::abs(r.out.vy - ref.out.vy) + std::abs(r.out.vx - ref.out.vx);
+    EXPECT_LT(err, 1e3 * tol);  // global error ~ steps x tolerance x velocity scale
+    EXPECT_LE(err, prev);
+    prev = err;
+  }
+}
+
+TEST(Contact, RejectsAContactPointThatDoesNotApproach) {
+  EXPECT_THROW(simulate_contact(Ball{}, NormalLawSpec{}, FrictionModel{}, touch(0, 0, 1, 0)), InputError);
+  EXPECT_THROW(simulate_contact(Ball{}, NormalLawSpec{}, FrictionModel{}, touch(0, 0, 0, 0)), InputError);
+}
+
+TEST(Contact, MakesNoHeapAllocationWithoutHistory) {
+  const Ball ball;
+  const NormalLaw law = resolve(NormalLawSpec{}, 4, ball.mass);
+  for (FrictionKind k : {FrictionKind::coulomb, FrictionKind::regularized, FrictionKind::spring}) {
+    const FrictionModel f = friction(k);
+    const long before = g_allocations.load();
+    const ContactResult r = simulate_contact(ball, law, f, touch(0.3, 1, -4, 40));
+    EXPECT_EQ(g_allocations.load() - before, 0) << to_string(k);
+    EXPECT_EQ(r.status, ContactStatus::separated);
+  }
+}
+
+}  // namespace
+}  // namespace tribolab::bounce

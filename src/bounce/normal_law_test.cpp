@@ -1,0 +1,87 @@
+#include "bounce/normal_law.hpp"
+
+#include "numerics/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tribolab::bounce {
+namespace {
+
+TEST(NormalLaw, HuntCrossleyRelationRoundTrips) {
+  for (double e : {1e-3, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999999}) {
+    const double z = hunt_crossley_chi_v(e);
+    // Both directions are root solves to the last bits of well-conditioned functions.
+    EXPECT_NEAR(hunt_crossley_restitution(z), e, 1e-12 * std::max(1.0, 1 / e)) << e;
+    if (e >= 0.1) {
+      // The loop integral itself: (1 - e z) = (1 + z) exp(-z (1 + e)). 1 - e z >= 1e-4 here,
+      // so its logarithm carries ~eps / 1e-4 ~ 1e-12 rounding.
+      EXPECT_NEAR(std::log1p(-e * z), std::log1p(z) - z * (1 + e), 1e-10) << e;
+    } else {
+      // 1 - e z ~ (1 + z) exp(-1/e) underflows double's spacing near 1: z = 1/e to rounding.
+      EXPECT_NEAR(z * e, 1.0, 1e-15) << e;
+    }
+  }
+}
+
+TEST(NormalLaw, HuntCrossleyNearlyElasticLimit) {
+  // As e -> 1: z = 3(1-e)/2 + O((1-e)^2) (the classical Hunt–Crossley damping,
+  // Hunt & Crossley 1975). For 1 - e = 1e-4 the O((1-e)^2) term is ~1e-8 relative... of z.
+  const double e = 1 - 1e-4;
+  const double z = hunt_crossley_chi_v(e);
+  EXPECT_NEAR(z / (1.5 * (1 - e)), 1.0, 2e-4);
+  EXPECT_EQ(hunt_crossley_chi_v(1.0), 0.0);
+}
+
+TEST(NormalLaw, HookeClampedRestitution) {
+  EXPECT_DOUBLE_EQ(hooke_restitution(0), 1.0);
+  double prev = 1;
+  for (double zeta = 0.05; zeta < 0.99; zeta += 0.05) {
+    const double e = hooke_restitution(zeta);
+    EXPECT_LT(e, prev);  // monotone decreasing
+    EXPECT_NEAR(hooke_damping_ratio(e), zeta, 1e-10);
+    // The clamp makes the ball leave when the force vanishes, earlier than d = 0: e is
+    // larger than the unclamped exp(-pi zeta / sqrt(1 - zeta^2)).
+    EXPECT_GT(e, std::exp(-std::acos(-1.0) * zeta / std::sqrt(1 - zeta * zeta)));
+    prev = e;
+  }
+}
+
+TEST(NormalLaw, NeverPulls) {
+  NormalLaw hc{false, 1e5, 1.5, 6e4};
+  EXPECT_EQ(hc.eval(0.01, -10).N, 0.0);  // 1 + chi d_dot < 0
+  EXPECT_EQ(hc.eval(-0.01, 5).N, 0.0);   // not in contact
+  NormalLaw hooke{true, 1e5, 1, 100};
+  EXPECT_EQ(hooke.eval(0.001, -5).N, 0.0);
+  EXPECT_NEAR(hooke.eval(0.001, 0).N, 100, 1e-12);
+}
+
+TEST(NormalLaw, ResolveRestitutionModels) {
+  NormalLawSpec s;
+  s.K = 1e5;
+  s.n = 1.5;
+  s.restitution = 0.8;
+  const double v = 4;
+  s.model = NormalModel::lankarani_nikravesh;
+  EXPECT_NEAR(resolve(s, v, 0.4).D, 1e5 * 3 * (1 - 0.64) / (4 * v), 1e-9);
+  s.model = NormalModel::flores;
+  EXPECT_NEAR(resolve(s, v, 0.4).D, 1e5 * 8 * 0.2 / (5 * 0.8 * v), 1e-9);
+  s.model = NormalModel::gonthier;
+  EXPECT_NEAR(resolve(s, v, 0.4).D, 1e5 * 0.36 / (0.8 * v), 1e-9);
+  s.model = NormalModel::hertz;
+  EXPECT_THROW(resolve(s, v, 0.4), InputError);  // Hertz is elastic
+  s.restitution.reset();
+  s.D = 0;
+  EXPECT_EQ(resolve(s, v, 0.4).D, 0.0);
+}
+
+TEST(NormalLaw, ModelNamesRoundTrip) {
+  for (auto m : {NormalModel::hooke, NormalModel::hertz, NormalModel::hunt_crossley,
+                 NormalModel::flores, NormalModel::lankarani_nikravesh, NormalModel::gonthier})
+    EXPECT_EQ(parse_normal_model(to_string(m)), m);
+  EXPECT_FALSE(parse_normal_model("kelvin"));
+}
+
+}  // namespace
+}  // namespace tribolab::bounce
