@@ -61,8 +61,9 @@ SplitTest test_split(const std::vector<double>& t, const std::vector<double>& x,
   r.dvy = right.c[1][1] - left.c[1][1];
   const double f = left.cov_unit[1] + right.cov_unit[1];
   r.sig = std::sqrt(r.dvx * r.dvx / (sx * sx * f) + r.dvy * r.dvy / (sy * sy * f));
-  // contact time: where the two y parabolas meet inside [t_k, t_k+1]
-  r.t = tm;
+  // contact time: where the two y parabolas meet, nearest to the midpoint; noise can push
+  // the crossing slightly outside [t_k, t_k+1] (or remove it: then the closest approach), and
+  // contact must lie between the two samples, so the estimate is clamped to them
   const double a = right.c[1][2] - left.c[1][2], b = right.c[1][1] - left.c[1][1],
                c = right.c[1][0] - left.c[1][0];
   std::vector<double> roots;
@@ -72,18 +73,21 @@ SplitTest test_split(const std::vector<double>& t, const std::vector<double>& x,
       const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
       if (q != 0) roots.push_back(c / q);
       roots.push_back(q / a);
+    } else {
+      roots.push_back(-b / (2 * a));
     }
   } else if (b != 0) {
     roots.push_back(-c / b);
   }
+  double u = 0;
   double best = std::numeric_limits<double>::infinity();
-  for (double u : roots) {
-    const double tc = tm + u;
-    if (tc >= t[k] && tc <= t[k + 1] && std::abs(u) < best) {
-      best = std::abs(u);
-      r.t = tc;
+  for (double root : roots) {
+    if (std::isfinite(root) && std::abs(root) < best) {
+      best = std::abs(root);
+      u = root;
     }
   }
+  r.t = std::clamp(tm + u, t[k], t[k + 1]);
   return r;
 }
 
