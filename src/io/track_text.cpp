@@ -27,18 +27,35 @@ std::vector<Line> lines(std::string_view text) {
 namespace {
 std::string_view clean(std::string_view c) {
   c = trim(c);
-  if (c.size() >= 2 && c.front() == '"' && c.back() == '"') c = trim(c.substr(1, c.size() - 2));
+  if (c.size() >= 2 && c.front() == '"' && c.back() == '"') c = c.substr(1, c.size() - 2);
   return c;
 }
 }  // namespace
 
 std::vector<std::string_view> cells(std::string_view line, char delim, std::size_t expected) {
   std::vector<std::string_view> out;
+  // quote-aware split: a field starting with '"' runs to its closing quote, so names such as
+  // "tip, B" survive (doubled quotes inside stay doubled; names rarely hold quotes)
   auto split_single = [&] {
     out.clear();
     std::size_t start = 0;
     while (true) {
-      const auto pos = line.find(delim, start);
+      std::size_t scan = start;
+      while (scan < line.size() && line[scan] == ' ' && delim != ' ') ++scan;
+      if (scan < line.size() && line[scan] == '"') {
+        std::size_t q = scan + 1;
+        while (q < line.size()) {
+          if (line[q] == '"' && q + 1 < line.size() && line[q + 1] == '"') {
+            q += 2;
+          } else if (line[q] == '"') {
+            break;
+          } else {
+            ++q;
+          }
+        }
+        scan = std::min(q + 1, line.size());
+      }
+      const auto pos = line.find(delim, scan);
       if (pos == std::string_view::npos) {
         out.push_back(clean(line.substr(start)));
         return;
@@ -51,13 +68,13 @@ std::vector<std::string_view> cells(std::string_view line, char delim, std::size
     split_single();
     return out;
   }
-  line = trim(line);
-  if (expected > 0) {
+  while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.remove_suffix(1);
+  if (expected > 0) {  // Tracker's one space per cell keeps empty cells
     split_single();
     while (out.size() > expected && out.back().empty()) out.pop_back();
-    if (out.size() == expected) return out;
+    if (out.size() <= expected) return out;
   }
-  out.clear();
+  out.clear();  // hand-aligned text: runs of blanks separate cells
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
