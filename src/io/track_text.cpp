@@ -111,6 +111,7 @@ std::optional<double> seconds_per_unit(const std::string& unit) {
 }
 
 std::string exact(double v, bool decimal_comma) {
+  if (v == 0) v = 0;  // no "-0" in tables
   char buf[64];
   const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
   std::string s(buf, ptr);
