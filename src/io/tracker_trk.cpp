@@ -349,25 +349,22 @@ track::TrackSet read_trz(std::string_view zip_bytes, const std::string& source,
     for (const auto& t : trks) list += (list.empty() ? "'" : ", '") + t + "'";
     throw InputError(source, "no entry '" + entry + "' in the archive; its .trk files: " + list);
   }
-  zip_stat_t st;
-  zip_stat_init(&st);
-  if (zip_stat_index(z.get(), static_cast<zip_uint64_t>(chosen), 0, &st) != 0 ||
-      !(st.valid & ZIP_STAT_SIZE)) {
-    throw InputError(source, std::string("cannot read entry '") + trks.front() + "'");
-  }
   const std::string inner = source + ":" + zip_get_name(z.get(), static_cast<zip_uint64_t>(chosen), 0);
-  if (st.size > kMaxTrkBytes) throw InputError(inner, "entry too large (over 512 MB)");
   std::unique_ptr<zip_file_t, ZipFileCloser> f(zip_fopen_index(z.get(), static_cast<zip_uint64_t>(chosen), 0));
   if (!f) throw InputError(inner, std::string("cannot open entry: ") + zip_strerror(z.get()));
-  std::string xml(static_cast<std::size_t>(st.size), '\0');
-  std::size_t got = 0;
-  while (got < xml.size()) {
-    const zip_int64_t k = zip_fread(f.get(), xml.data() + got, xml.size() - got);
+  // read in chunks: memory grows with the data actually inflated, never with the size the
+  // archive claims, and stops at kMaxTrkBytes (a zip bomb guard)
+  std::string xml;
+  std::vector<char> chunk(1 << 16);
+  while (true) {
+    const zip_int64_t k = zip_fread(f.get(), chunk.data(), chunk.size());
     if (k < 0) throw InputError(inner, std::string("corrupt entry: ") + zip_file_strerror(f.get()));
     if (k == 0) break;
-    got += static_cast<std::size_t>(k);
+    if (xml.size() + static_cast<std::size_t>(k) > kMaxTrkBytes) {
+      throw InputError(inner, "entry too large (over 512 MB)");
+    }
+    xml.append(chunk.data(), static_cast<std::size_t>(k));
   }
-  if (got != xml.size()) throw InputError(inner, "truncated entry");
   track::TrackSet set = parse_trk(xml, inner);
   set.format = "trz";
   return set;
