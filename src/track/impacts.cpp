@@ -54,12 +54,12 @@ SplitTest test_split(const std::vector<double>& t, const std::vector<double>& x,
   const int nr = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(w), n - k - 1));
   const double tm = 0.5 * (t[k] + t[k + 1]);
   const std::size_t l0 = k + 1 - static_cast<std::size_t>(nl);
-  const PolyFit left = fit_polynomial(&t[l0], {&x[l0], &y[l0]}, nl, tm, 2);
-  const PolyFit right = fit_polynomial(&t[k + 1], {&x[k + 1], &y[k + 1]}, nr, tm, 2);
+  const PolyFit left = fit_polynomial(&t[l0], &x[l0], &y[l0], nl, tm, 2);
+  const PolyFit right = fit_polynomial(&t[k + 1], &x[k + 1], &y[k + 1], nr, tm, 2);
   SplitTest r;
   r.dvx = right.c[0][1] - left.c[0][1];
   r.dvy = right.c[1][1] - left.c[1][1];
-  const double f = left.cov_unit[1] + right.cov_unit[1];
+  const double f = left.var_unit(1) + right.var_unit(1);
   r.sig = std::sqrt(r.dvx * r.dvx / (sx * sx * f) + r.dvy * r.dvy / (sy * sy * f));
   // contact time: where the two y parabolas meet, nearest to the midpoint; noise can push
   // the crossing slightly outside [t_k, t_k+1] (or remove it: then the closest approach), and

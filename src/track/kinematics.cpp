@@ -76,15 +76,15 @@ void savgol(const std::vector<double>& t, const std::vector<double>& x,
     const int lo = std::clamp(i - w / 2, 0, m - w);
     const std::size_t g = s.begin + static_cast<std::size_t>(i);
     const std::size_t g0 = s.begin + static_cast<std::size_t>(lo);
-    const PolyFit f = fit_polynomial(&t[g0], {&x[g0], &y[g0]}, w, t[g], order);
+    const PolyFit f = fit_polynomial(&t[g0], &x[g0], &y[g0], w, t[g], order);
     KinematicsRow& r = rows[g];
     r.vx = f.c[0][1];
     r.vy = f.c[1][1];
-    r.sigma_vx = r.sigma_vy = std::sqrt(f.cov_unit[1]);
+    r.sigma_vx = r.sigma_vy = std::sqrt(f.var_unit(1));
     if (order >= 2) {
       r.ax = 2 * f.c[0][2];
       r.ay = 2 * f.c[1][2];
-      r.sigma_ax = r.sigma_ay = 2 * std::sqrt(f.cov_unit[2]);
+      r.sigma_ax = r.sigma_ay = 2 * std::sqrt(f.var_unit(2));
     }
     if (f.dof() > 0) {
       pass.rss_x += f.rss[0];

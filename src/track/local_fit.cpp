@@ -1,10 +1,8 @@
 #include "track/local_fit.hpp"
 
-#include "numerics/error.hpp"
 #include "track/check.hpp"
 
-#include <Eigen/Dense>
-
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -17,71 +15,91 @@ double PolyFit::value(std::size_t j, double t, double t0) const {
   return v;
 }
 
-double PolyFit::slope(std::size_t j, double t, double t0) const {
-  double v = 0;
-  const double u = t - t0;
-  for (int k = order; k >= 1; --k) v = v * u + k * c[j][static_cast<std::size_t>(k)];
-  return v;
-}
-
-PolyFit fit_polynomial(const double* t, const std::vector<const double*>& ys, int n, double t0,
+PolyFit fit_polynomial(const double* t, const double* y0, const double* y1, int n, double t0,
                        int order) {
-  TRACK_CHECK(order >= 0 && n >= order + 1,
-                  "n = " + std::to_string(n) + ", order = " + std::to_string(order));
+  TRACK_CHECK(order >= 0 && order <= kMaxFitOrder && n >= order + 1,
+              "n = " + std::to_string(n) + ", order = " + std::to_string(order));
   const int m = order + 1;
+  constexpr int M = kMaxFitTerms;
   double h = 0;
   for (int i = 0; i < n; ++i) h = std::max(h, std::abs(t[i] - t0));
-  if (!(h > 0)) h = 1;
-  Eigen::MatrixXd a(n, m);
+  if (!(h > 0) || !std::isfinite(h)) h = 1;
+  // normal equations in u = (t - t0)/h: N = A^T A (moments of u), b_j = A^T y_j
+  std::array<double, 2 * M> mom{};
+  std::array<std::array<double, M>, 2> b{};
+  const int ny = y1 != nullptr ? 2 : 1;
   for (int i = 0; i < n; ++i) {
     const double u = (t[i] - t0) / h;
     double p = 1;
-    for (int k = 0; k < m; ++k) {
-      a(i, k) = p;
+    for (int k = 0; k < 2 * m - 1; ++k) {
+      mom[static_cast<std::size_t>(k)] += p;
+      if (k < m) {
+        b[0][static_cast<std::size_t>(k)] += p * y0[i];
+        if (ny == 2) b[1][static_cast<std::size_t>(k)] += p * y1[i];
+      }
       p *= u;
     }
   }
-  const Eigen::MatrixXd ata = a.transpose() * a;
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(ata);
-  TRACK_CHECK(ldlt.info() == Eigen::Success, "singular normal matrix in fit_polynomial");
-  const Eigen::MatrixXd inv = ldlt.solve(Eigen::MatrixXd::Identity(m, m));
-
+  // Cholesky N = L L^T
+  std::array<double, M * M> L{};
+  for (int r = 0; r < m; ++r) {
+    for (int col = 0; col <= r; ++col) {
+      double s = mom[static_cast<std::size_t>(r + col)];
+      for (int k = 0; k < col; ++k) s -= L[static_cast<std::size_t>(r * M + k)] * L[static_cast<std::size_t>(col * M + k)];
+      if (r == col) {
+        TRACK_CHECK(s > 0 && std::isfinite(s), "singular normal matrix in fit_polynomial");
+        L[static_cast<std::size_t>(r * M + r)] = std::sqrt(s);
+      } else {
+        L[static_cast<std::size_t>(r * M + col)] = s / L[static_cast<std::size_t>(col * M + col)];
+      }
+    }
+  }
+  auto solve = [&](const std::array<double, M>& rhs) {  // N x = rhs
+    std::array<double, M> z{}, x{};
+    for (int r = 0; r < m; ++r) {
+      double s = rhs[static_cast<std::size_t>(r)];
+      for (int k = 0; k < r; ++k) s -= L[static_cast<std::size_t>(r * M + k)] * z[static_cast<std::size_t>(k)];
+      z[static_cast<std::size_t>(r)] = s / L[static_cast<std::size_t>(r * M + r)];
+    }
+    for (int r = m - 1; r >= 0; --r) {
+      double s = z[static_cast<std::size_t>(r)];
+      for (int k = r + 1; k < m; ++k) s -= L[static_cast<std::size_t>(k * M + r)] * x[static_cast<std::size_t>(k)];
+      x[static_cast<std::size_t>(r)] = s / L[static_cast<std::size_t>(r * M + r)];
+    }
+    return x;
+  };
   PolyFit fit;
   fit.order = order;
   fit.points = n;
-  fit.cov_unit.resize(static_cast<std::size_t>(m));
-  fit.cov_unit_full.resize(static_cast<std::size_t>(m * m));
-  // scale back: c_k = a_k / h^k, cov(c_k, c_l) = cov(a_k, a_l) / h^(k+l)
-  std::vector<double> hp(static_cast<std::size_t>(2 * m), 1.0);
+  std::array<double, 2 * M> hp{};  // h^k
+  hp[0] = 1;
   for (std::size_t k = 1; k < hp.size(); ++k) hp[k] = hp[k - 1] * h;
-  for (int k = 0; k < m; ++k) {
-    for (int l = 0; l < m; ++l) {
-      fit.cov_unit_full[static_cast<std::size_t>(k * m + l)] =
-          inv(k, l) / hp[static_cast<std::size_t>(k + l)];
+  for (int col = 0; col < m; ++col) {
+    std::array<double, M> e{};
+    e[static_cast<std::size_t>(col)] = 1;
+    const auto x = solve(e);
+    for (int r = 0; r < m; ++r) {
+      fit.cov_unit[static_cast<std::size_t>(r * M + col)] =
+          x[static_cast<std::size_t>(r)] / hp[static_cast<std::size_t>(r + col)];
     }
-    fit.cov_unit[static_cast<std::size_t>(k)] = inv(k, k) / hp[static_cast<std::size_t>(2 * k)];
   }
-  for (const double* y : ys) {
-    Eigen::VectorXd b(n);
-    for (int i = 0; i < n; ++i) b(i) = y[i];
-    const Eigen::VectorXd coef = ldlt.solve(a.transpose() * b);
-    const double rss = (a * coef - b).squaredNorm();
-    std::vector<double> c(static_cast<std::size_t>(m));
-    for (int k = 0; k < m; ++k) c[static_cast<std::size_t>(k)] = coef(k) / hp[static_cast<std::size_t>(k)];
-    fit.c.push_back(std::move(c));
-    fit.rss.push_back(rss);
+  const double* ys[2] = {y0, y1};
+  for (int j = 0; j < ny; ++j) {
+    const auto a = solve(b[static_cast<std::size_t>(j)]);
+    double rss = 0;
+    for (int i = 0; i < n; ++i) {
+      const double u = (t[i] - t0) / h;
+      double v = 0;
+      for (int k = m - 1; k >= 0; --k) v = v * u + a[static_cast<std::size_t>(k)];
+      rss += (ys[j][i] - v) * (ys[j][i] - v);
+    }
+    fit.rss[static_cast<std::size_t>(j)] = rss;
+    for (int k = 0; k < m; ++k) {
+      fit.c[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)] =
+          a[static_cast<std::size_t>(k)] / hp[static_cast<std::size_t>(k)];
+    }
   }
   return fit;
-}
-
-double variance_factor(const PolyFit& fit, const std::vector<double>& g) {
-  const std::size_t m = static_cast<std::size_t>(fit.order + 1);
-  TRACK_CHECK(g.size() == m, "gradient size mismatch");
-  double v = 0;
-  for (std::size_t k = 0; k < m; ++k) {
-    for (std::size_t l = 0; l < m; ++l) v += g[k] * fit.cov_unit_full[k * m + l] * g[l];
-  }
-  return v;
 }
 
 }  // namespace tribolab::track

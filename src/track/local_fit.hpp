@@ -1,40 +1,40 @@
 // Ordinary least-squares polynomial fits on a few points, the building block of the
-// Savitzky–Golay derivatives, the impact detector and the spin-rate fits.
+// Savitzky–Golay derivatives and the impact detector (docs/theory.md#kinematics).
 //
 // The polynomial is written in powers of (t - t0): p(t) = sum_k c_k (t - t0)^k, so c_1 and
 // 2 c_2 are the first and second derivatives at t0. Internally the abscissa is scaled by the
-// half-span of the window so the normal equations stay well conditioned for any time unit.
+// half-span of the window so the normal equations stay well conditioned for any time unit;
+// they are solved by Cholesky on the stack (no allocation: this runs once per point).
 #pragma once
 
 #include <array>
 #include <cstddef>
-#include <vector>
 
 namespace tribolab::track {
 
-/// Result of fitting one or more ordinates against the same abscissae.
+constexpr int kMaxFitOrder = 6;
+constexpr int kMaxFitTerms = kMaxFitOrder + 1;
+
+/// Result of fitting one or two ordinates against the same abscissae.
 struct PolyFit {
-  int order = 0;                        ///< polynomial degree P
-  int points = 0;                       ///< n, number of points used
-  std::vector<std::vector<double>> c;   ///< c[j][k]: coefficient k of ordinate j
-  std::vector<double> rss;              ///< residual sum of squares of ordinate j
-  /// (A^T A)^{-1} diagonal in the (t - t0)^k basis: var(c_k) = sigma^2 * cov_unit[k].
-  std::vector<double> cov_unit;
-  /// Full (A^T A)^{-1}, row-major (P+1)x(P+1), same basis.
-  std::vector<double> cov_unit_full;
+  int order = 0;   ///< polynomial degree P
+  int points = 0;  ///< n, number of points used
+  std::array<std::array<double, kMaxFitTerms>, 2> c{};  ///< c[j][k]: coefficient k of ordinate j
+  std::array<double, 2> rss{};                          ///< residual sum of squares of ordinate j
+  /// (A^T A)^{-1} in the (t - t0)^k basis, row-major with stride kMaxFitTerms:
+  /// cov(c_k, c_l) = sigma^2 * cov_unit[k * kMaxFitTerms + l].
+  std::array<double, kMaxFitTerms * kMaxFitTerms> cov_unit{};
   int dof() const { return points - (order + 1); }
+  /// var(c_k) / sigma^2.
+  double var_unit(int k) const { return cov_unit[static_cast<std::size_t>(k * kMaxFitTerms + k)]; }
   /// Value of the fitted polynomial j at t (t0 is the expansion point of the fit).
   double value(std::size_t j, double t, double t0) const;
-  /// First derivative of polynomial j at t.
-  double slope(std::size_t j, double t, double t0) const;
 };
 
-/// Fits polynomials of degree `order` to the ordinates ys[j][0..n) against t[0..n), expanded
-/// about t0. Requires n >= order + 1 distinct abscissae (asserted).
-PolyFit fit_polynomial(const double* t, const std::vector<const double*>& ys, int n, double t0,
+/// Fits polynomials of degree `order` (<= kMaxFitOrder) to y0[0..n) and, when y1 is not null,
+/// y1[0..n), against t[0..n), expanded about t0. Requires n >= order + 1 distinct abscissae
+/// (checked: an internal error otherwise).
+PolyFit fit_polynomial(const double* t, const double* y0, const double* y1, int n, double t0,
                        int order);
-
-/// Variance factor of a linear functional g^T c of the coefficients: g^T (A^T A)^{-1} g.
-double variance_factor(const PolyFit& fit, const std::vector<double>& g);
 
 }  // namespace tribolab::track
