@@ -77,6 +77,7 @@ void savgol(const std::vector<double>& t, const std::vector<double>& x,
     const std::size_t g = s.begin + static_cast<std::size_t>(i);
     const std::size_t g0 = s.begin + static_cast<std::size_t>(lo);
     const PolyFit f = fit_polynomial(&t[g0], &x[g0], &y[g0], w, t[g], order);
+    if (!f.ok) continue;  // times too clustered for this degree: undefined here
     KinematicsRow& r = rows[g];
     r.vx = f.c[0][1];
     r.vy = f.c[1][1];

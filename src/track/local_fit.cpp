@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace tribolab::track {
@@ -40,6 +41,9 @@ PolyFit fit_polynomial(const double* t, const double* y0, const double* y1, int 
       p *= u;
     }
   }
+  PolyFit fit;
+  fit.order = order;
+  fit.points = n;
   // Cholesky N = L L^T
   std::array<double, M * M> L{};
   for (int r = 0; r < m; ++r) {
@@ -47,7 +51,13 @@ PolyFit fit_polynomial(const double* t, const double* y0, const double* y1, int 
       double s = mom[static_cast<std::size_t>(r + col)];
       for (int k = 0; k < col; ++k) s -= L[static_cast<std::size_t>(r * M + k)] * L[static_cast<std::size_t>(col * M + k)];
       if (r == col) {
-        TRACK_CHECK(s > 0 && std::isfinite(s), "singular normal matrix in fit_polynomial");
+        if (!(s > 1e-13 * mom[0]) || !std::isfinite(s)) {  // numerically singular
+          const double nan = std::numeric_limits<double>::quiet_NaN();
+          for (auto& row : fit.c) row.fill(nan);
+          fit.rss.fill(nan);
+          fit.cov_unit.fill(nan);
+          return fit;
+        }
         L[static_cast<std::size_t>(r * M + r)] = std::sqrt(s);
       } else {
         L[static_cast<std::size_t>(r * M + col)] = s / L[static_cast<std::size_t>(col * M + col)];
@@ -68,9 +78,7 @@ PolyFit fit_polynomial(const double* t, const double* y0, const double* y1, int 
     }
     return x;
   };
-  PolyFit fit;
-  fit.order = order;
-  fit.points = n;
+  fit.ok = true;
   std::array<double, 2 * M> hp{};  // h^k
   hp[0] = 1;
   for (std::size_t k = 1; k < hp.size(); ++k) hp[k] = hp[k - 1] * h;

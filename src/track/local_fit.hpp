@@ -17,6 +17,7 @@ constexpr int kMaxFitTerms = kMaxFitOrder + 1;
 
 /// Result of fitting one or two ordinates against the same abscissae.
 struct PolyFit {
+  bool ok = false;  ///< false when the abscissae are too clustered for this degree (all NaN)
   int order = 0;   ///< polynomial degree P
   int points = 0;  ///< n, number of points used
   std::array<std::array<double, kMaxFitTerms>, 2> c{};  ///< c[j][k]: coefficient k of ordinate j
@@ -32,8 +33,9 @@ struct PolyFit {
 };
 
 /// Fits polynomials of degree `order` (<= kMaxFitOrder) to y0[0..n) and, when y1 is not null,
-/// y1[0..n), against t[0..n), expanded about t0. Requires n >= order + 1 distinct abscissae
-/// (checked: an internal error otherwise).
+/// y1[0..n), against t[0..n), expanded about t0. Requires n >= order + 1 (checked: an
+/// internal error otherwise). When the normal equations are numerically singular (abscissae
+/// clustered far below the window's span) the result has ok = false and NaN coefficients.
 PolyFit fit_polynomial(const double* t, const double* y0, const double* y1, int n, double t0,
                        int order);
 
