@@ -1,9 +1,12 @@
 # tribolab: one-command set-up on a fresh Debian 12 machine.
 #   make demo   install what is needed, build, run both case studies, write the report
-#   make test   install what is needed, build, run every test (plus an ASan+UBSan build)
+#   make test   install what is needed, build, run every test (plus an ASan+UBSan build and
+#               a bounded libFuzzer run of the file parsers)
 #   make bench  build and run the benchmarks in bench/
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 20
 DEMO_OUT   ?= demo-out
 JOBS       ?= $(shell nproc)
 SUDO       := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
@@ -16,7 +19,7 @@ DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 
-.PHONY: deps build test test-fast asan demo bench clean
+.PHONY: deps build test test-fast asan fuzz demo bench clean
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do \
@@ -32,10 +35,34 @@ build: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 
-# Every test through CTest, then the same tests built with AddressSanitizer + UBSan.
+# Every test through CTest, then the same tests built with AddressSanitizer + UBSan, then
+# the parsers fuzzed for a bounded time.
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 	$(MAKE) asan
+	$(MAKE) fuzz
+
+# libFuzzer (clang) on every tracked-data parser, FUZZ_SECONDS each, starting from the seed
+# inputs in fuzz/corpus/<parser>/; new interesting inputs go to $(FUZZ_BUILD)/corpus/.
+# Any crash, sanitizer report, hang (>10 s per input) or memory blow-up (>2 GB) fails.
+FUZZ_TARGETS := trk trz export csv
+fuzz: deps
+	cmake -S . -B $(FUZZ_BUILD) $(CMAKE_FLAGS) -DCMAKE_CXX_COMPILER=clang++ -DTRIBOLAB_FUZZ=ON \
+	  -DTRIBOLAB_TESTS=OFF -DTRIBOLAB_BENCH=OFF
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) $(addprefix --target fuzz_,$(FUZZ_TARGETS))
+	@set -e; for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
+	  echo "== fuzz_$$t for $(FUZZ_SECONDS) s"; \
+	  if UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	     $(FUZZ_BUILD)/bin/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	       -max_len=8192 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/ \
+	       $(FUZZ_BUILD)/corpus/$$t fuzz/corpus/$$t > $(FUZZ_BUILD)/fuzz_$$t.log 2>&1; then \
+	    tail -n 4 $(FUZZ_BUILD)/fuzz_$$t.log; \
+	  else \
+	    tail -n 60 $(FUZZ_BUILD)/fuzz_$$t.log; \
+	    echo "fuzz_$$t FAILED (the input is saved in $(FUZZ_BUILD)/)"; exit 1; \
+	  fi; \
+	done
 
 asan: deps
 	cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_SANITIZE=ON -DTRIBOLAB_BENCH=OFF
@@ -53,4 +80,4 @@ bench: build
 	@for b in $(BUILD)/bench/*_bench; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) $(DEMO_OUT)
+	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD) $(DEMO_OUT)

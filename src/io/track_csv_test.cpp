@@ -1,0 +1,79 @@
+#include "io/track_csv.hpp"
+
+#include "io/track_import.hpp"
+#include "numerics/error.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace tribolab::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+track::TrackSet sample() {
+  track::TrackSet s;
+  s.source = "s";
+  s.tracks = {{"tip A", {{0, 0, 0.1, 1.0 / 3}, {2, 0.1, 0.2, 2.0 / 3}}},
+              {"tip, B", {{1, 0.05, -1e-7, 5}}}};
+  return s;
+}
+
+TEST(TidyCsv, RoundTripIsExact) {
+  std::ostringstream out;
+  write_tidy_csv(out, sample());
+  const auto got = parse_tracks(out.str(), "tidy.csv");
+  ASSERT_EQ(got.tracks.size(), 2u);
+  EXPECT_EQ(got.tracks[1].name, "tip, B");
+  EXPECT_EQ(got.tracks[0].points[1].y, 2.0 / 3);
+  EXPECT_EQ(got.tracks[1].points[0].x, -1e-7);
+  EXPECT_EQ(got.format, "tidy_csv");
+}
+
+TEST(TidyCsv, SemicolonDecimalCommaUnitsAndAnyRowOrder) {
+  const auto got = parse_tracks("track;frame;t;x (cm);y (cm)\nb;2;0,2;1,5;2\na;1;0,1;1;1\nb;1;0,1;1;1\n", "s.csv");
+  ASSERT_EQ(got.tracks.size(), 2u);
+  EXPECT_EQ(got.tracks[0].name, "b");
+  EXPECT_EQ(got.tracks[0].points[0].frame, 1);
+  EXPECT_DOUBLE_EQ(got.tracks[0].points[1].x, 0.015);
+}
+
+TEST(TidyCsv, ErrorsNameTheLine) {
+  const auto err = [](const std::string& text) {
+    try {
+      parse_tracks(text, "t.csv");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(err("track,frame,t,x,y\na,1,0,0,0\na,1,0.1,0,0\n"), HasSubstr("t.csv:3: track 'a': frame 1 appears twice"));
+  EXPECT_THAT(err("track,frame,t,x,y\na,1.5,0,0,0\n"), HasSubstr("t.csv:2"));
+  EXPECT_THAT(err("track,frame,t,x\na,1,0,0\n"), HasSubstr("missing column 'y'"));
+  EXPECT_THAT(err("track,frame,t,x,y\na,1,0\n"), HasSubstr("t.csv:2: missing value"));
+}
+
+TEST(KinematicsCsv, EmptyCellsWhereUndefined) {
+  track::Kinematics k;
+  track::KinematicsRow r;
+  r.t = 0.5;
+  r.x = 1;
+  r.y = 2;
+  r.vx = 3;
+  r.vy = NAN;
+  r.ax = r.ay = NAN;
+  r.sigma_vx = 0.1;
+  r.sigma_vy = r.sigma_ax = r.sigma_ay = NAN;
+  k.rows = {r};
+  std::ostringstream a, b;
+  write_kinematics_csv(a, k, false);
+  EXPECT_EQ(a.str(), "t,x,y,vx,vy,ax,ay\n0.5,1,2,3,,,\n");
+  write_kinematics_csv(b, k, true);
+  EXPECT_EQ(b.str(), "t,x,y,vx,vy,ax,ay,sigma_vx,sigma_vy,sigma_ax,sigma_ay\n0.5,1,2,3,,,,0.1,,,\n");
+}
+
+}  // namespace
+}  // namespace tribolab::io

@@ -1,0 +1,169 @@
+#include "io/tracker_trk.hpp"
+
+#include "io/track_import.hpp"
+#include "numerics/error.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tribolab::io {
+namespace {
+
+using ::testing::HasSubstr;
+using track::Track;
+
+/// Two point masses in world metres; frames on a clip starting at 3 with step 2.
+std::vector<Track> world_tracks() {
+  Track a{"mass A", {}}, b{"tip <B> & co", {}};
+  for (int k = 0; k < 12; ++k) {
+    const int f = 3 + 2 * k;
+    a.points.push_back({f, 0, 0.1 + 0.05 * k, 1.0 + 0.2 * k - 0.03 * k * k});
+    if (k % 3 != 1) b.points.push_back({f, 0, -0.4 + 0.01 * k, 0.25 * std::sin(k)});
+  }
+  return {a, b};
+}
+
+TrkWriteSpec spec() {
+  TrkWriteSpec s;
+  s.coords = {{0, 320.5, 241.25, 30.0, 400.0, 390.0}};
+  s.start_frame = 3;
+  s.step_size = 2;
+  s.frame_duration_ms = 1000.0 / 240;
+  s.start_time_ms = 12.5;
+  return s;
+}
+
+void expect_same(const std::vector<Track>& want, const track::TrackSet& got, double scale = 1) {
+  ASSERT_EQ(got.tracks.size(), want.size());
+  const TrkWriteSpec s = spec();
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    EXPECT_EQ(got.tracks[i].name, want[i].name);
+    ASSERT_EQ(got.tracks[i].points.size(), want[i].points.size());
+    for (std::size_t j = 0; j < want[i].points.size(); ++j) {
+      const auto& w = want[i].points[j];
+      const auto& g = got.tracks[i].points[j];
+      EXPECT_EQ(g.frame, w.frame);
+      // world -> pixels -> world through a rotation and two scales: a few ulps of ~400 px
+      EXPECT_NEAR(g.x, w.x * scale, 1e-13);
+      EXPECT_NEAR(g.y, w.y * scale, 1e-13);
+      const double t = (s.start_time_ms + (w.frame - s.start_frame) * s.frame_duration_ms) / 1000;
+      EXPECT_DOUBLE_EQ(g.t, t);
+    }
+  }
+}
+
+TEST(TrackerTrk, RoundTripThroughRotatedScaledCoordinates) {
+  const auto tracks = world_tracks();
+  const std::string xml = write_trk(tracks, spec());
+  expect_same(tracks, parse_trk(xml, "run.trk"));
+}
+
+TEST(TrackerTrk, ImageToWorldFollowsTrackersConvention) {
+  // angle 90 deg: world x points up the image (-py), world y points left (-px)
+  const TrkCoordFrame c{0, 100, 200, 90, 10, 10};
+  const auto [x, y] = image_to_world(c, 100, 190);  // 10 px above the origin
+  EXPECT_NEAR(x, 1, 1e-15);
+  EXPECT_NEAR(y, 0, 1e-15);
+  const auto [x2, y2] = image_to_world(c, 90, 200);  // 10 px left of the origin
+  EXPECT_NEAR(x2, 0, 1e-15);
+  EXPECT_NEAR(y2, 1, 1e-15);
+}
+
+TEST(TrackerTrk, KeyFramesHoldUntilTheNext) {
+  TrkWriteSpec s = spec();
+  s.coords = {{0, 320, 240, 0, 400, 400}, {11, 300, 260, 10, 500, 480}, {20, 310, 250, -5, 450, 450}};
+  const auto tracks = world_tracks();
+  const std::string xml = write_trk(tracks, s);
+  const auto set = parse_trk(xml, "k.trk");
+  expect_same(tracks, set);
+  // the same world points written with the first key frame everywhere read back differently
+  TrkWriteSpec one = s;
+  one.coords.resize(1);
+  const auto moved = parse_trk(write_trk(tracks, one), "k.trk");
+  EXPECT_NEAR(moved.tracks[0].points[3].x, tracks[0].points[3].x, 1e-13);  // frame 9 < 11
+}
+
+TEST(TrackerTrk, ZipRoundTripAndEntryChoice) {
+  const auto tracks = world_tracks();
+  const std::string trz = write_trz(write_trk(tracks, spec()), "run_tab.trk");
+  expect_same(tracks, read_trz(trz, "run.trz"));
+  try {
+    read_trz(trz, "run.trz", "other.trk");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("'run_tab.trk'"));
+  }
+  const std::string no_trk = write_trz("hello", "notes.txt");
+  EXPECT_THROW(read_trz(no_trk, "x.trz"), InputError);
+  EXPECT_THROW(read_trz("PK\x03\x04garbage", "x.trz"), InputError);
+}
+
+TEST(TrackerTrk, LengthUnitCentimetresIsConvertedToMetres) {
+  TrkWriteSpec s = spec();
+  s.length_unit = "cm";
+  const auto tracks = world_tracks();
+  const auto set = parse_tracks(write_trk(tracks, s), "run.trk");
+  EXPECT_EQ(set.file_length_unit, "cm");
+  expect_same(tracks, set, 0.01);
+}
+
+TEST(TrackerTrk, PointsOutsideTheClipStepsAreLeftOutWithAWarning) {
+  auto tracks = world_tracks();
+  tracks[0].points.push_back({4, 0, 0, 0});    // between steps (start 3, step 2)
+  tracks[0].points.push_back({1, 0, 0, 0});    // before the start frame
+  std::sort(tracks[0].points.begin(), tracks[0].points.end(),
+            [](auto& p, auto& q) { return p.frame < q.frame; });
+  const auto set = parse_trk(write_trk(tracks, spec()), "c.trk");
+  EXPECT_EQ(set.tracks[0].points.size(), 12u);
+  ASSERT_EQ(set.warnings.size(), 1u);
+  EXPECT_THAT(set.warnings[0], HasSubstr("2 point(s)"));
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto p = s.find(from);
+  EXPECT_NE(p, std::string::npos) << from;
+  if (p != std::string::npos) s.replace(p, from.size(), to);
+  return s;
+}
+
+TEST(TrackerTrk, DecimalCommaInNumbersIsAccepted) {
+  const auto tracks = world_tracks();
+  std::string xml = write_trk(tracks, spec());
+  xml = replace(xml, "<property name=\"xscale\" type=\"double\">400.0<",
+                "<property name=\"xscale\" type=\"double\">400,0<");
+  expect_same(tracks, parse_trk(xml, "comma.trk"));
+}
+
+void expect_error(const std::string& xml, const std::string& fragment) {
+  try {
+    parse_trk(xml, "bad.trk");
+    FAIL() << "no error for " << fragment;
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("bad.trk"));
+    EXPECT_THAT(e.what(), HasSubstr(fragment));
+  }
+}
+
+TEST(TrackerTrk, ClearErrorsNamingTheElement) {
+  const std::string xml = write_trk(world_tracks(), spec());
+  expect_error(xml.substr(0, xml.size() / 2), "bad.trk:");  // truncated: file:line
+  expect_error(replace(xml, "name=\"delta_t\"", "name=\"dt\""), "clipcontrol/delta_t");
+  expect_error(replace(xml, "name=\"xscale\"", "name=\"xs\""), "coords/framedata/[0]/xscale");
+  expect_error(replace(xml, ">400.0<", ">four hundred<"), "xscale");
+  expect_error(replace(xml, ">400.0<", ">-400.0<"), "positive");
+  expect_error(replace(xml, "name=\"[3]\"", "name=\"[-3]\""), "[n]");
+  expect_error(replace(xml, "name=\"x\" type", "name=\"q\" type"), "(mass A)/framedata/[3]/x");
+  expect_error("<object class=\"Something\"/>", "TrackerPanel");
+  expect_error("<?xml version=\"1.0\"?><object class=\"x.TrackerPanel\"></object>", "coords");
+}
+
+TEST(TrackerTrk, NoPointMassIsAnError) {
+  std::string xml = write_trk(world_tracks(), spec());
+  while (xml.find(".PointMass\"") != std::string::npos) xml = replace(xml, ".PointMass\"", ".Protractor\"");
+  expect_error(xml, "no PointMass");
+}
+
+}  // namespace
+}  // namespace tribolab::io
