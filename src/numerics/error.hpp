@@ -51,7 +51,7 @@ namespace detail {
 }  // namespace tribolab
 
 /// Internal invariant; `detail` is a std::string expression describing the values.
-#define TRIBOLAB_ASSERT(cond, detail)                                                \
+#define TRIBOLAB_ASSERT(cond, detail_text)                                           \
   do {                                                                               \
-    if (!(cond)) ::tribolab::detail::assertion_failed(#cond, __FILE__, __LINE__, (detail)); \
+    if (!(cond)) ::tribolab::detail::assertion_failed(#cond, __FILE__, __LINE__, (detail_text)); \
   } while (false)
