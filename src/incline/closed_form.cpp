@@ -148,7 +148,7 @@ State ClosedForm::at(double t) const {
   }
   if (t >= t_stop_) {
     const double x_stop = 2 * p_.v0 * p_.v0 / (alpha_ * (2 - k_) * (2 + k_));         // eq 八
-    const double y_stop = -k_ * p_.v0 * p_.v0 / (4 * alpha_ * (1 - k_) * (1 + k_));   // eq 九
+    const double y_stop = -k_ * p_.v0 * p_.v0 / (4 * alpha_ * (1 - k_) * (1 + k_)) + 0.0;  // eq 九
     return rest_or_slide(t, t_stop_, x_stop, y_stop);
   }
   State st = at_log_speed_ratio(log_speed_ratio_at(t));
@@ -196,7 +196,7 @@ Prediction ClosedForm::predict() const {
   if (k < 1) {
     pr.t_stop = t_stop_;                                 // eq 七
     pr.x_stop = 2 * v0 * v0 / (a * (2 - k) * (2 + k));         // eq 八
-    pr.y_stop = -k * v0 * v0 / (4 * a * (1 - k) * (1 + k));    // eq 九
+    pr.y_stop = -k * v0 * v0 / (4 * a * (1 - k) * (1 + k)) + 0.0;  // eq 九 (+0: no -0 at k = 0)
   }
   if (k == 1) pr.v_terminal = 0.5 * v0;  // vy -> -v0/2, vx -> 0
   if (k < 2) pr.x_limit = 2 * v0 * v0 / (a * (2 - k) * (2 + k));

@@ -83,7 +83,9 @@ TEST(Numeric, LocatesTheStopToOnePartInABillion) {
     ASSERT_TRUE(r.t_stop.has_value()) << k << " " << r.message;
     EXPECT_NEAR(*r.t_stop / *pr.t_stop, 1, 1e-9) << "k = " << k;
     EXPECT_NEAR(*r.x_stop / *pr.x_stop, 1, 1e-9) << "k = " << k;
-    if (k > 0) EXPECT_NEAR(*r.y_stop / *pr.y_stop, 1, 1e-9) << "k = " << k;
+    if (k > 0) {
+      EXPECT_NEAR(*r.y_stop / *pr.y_stop, 1, 1e-9) << "k = " << k;
+    }
     EXPECT_FALSE(r.slides_after_stop);
     RecordProperty("steps_k_" + std::to_string(k), static_cast<int>(r.steps));
   }
