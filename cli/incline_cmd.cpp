@@ -46,6 +46,21 @@ void add_launch_options(CLI::App* cmd, LaunchText& t, bool required) {
                   "Static friction coefficient deciding whether a disc at rest stays (default: --mu)");
 }
 
+/// Shows NUM, FILE, LIST or the choices instead of CLI11's TEXT in --help.
+void name_option_types(CLI::App* cmd) {
+  for (CLI::Option* o : cmd->get_options()) {
+    if (o->get_lnames().empty()) continue;
+    const std::string n = o->get_lnames().front();
+    if (n == "help" || n == "json") continue;  // flags
+    if (n == "out") o->type_name("FILE");
+    else if (n == "values") o->type_name("LIST");
+    else if (n == "model") o->type_name("A|B");
+    else if (n == "method") o->type_name("analytic|numeric");
+    else if (n == "vary") o->type_name("v0|phi|mu");
+    else o->type_name("NUM");
+  }
+}
+
 double number(const std::string& text, const std::string& option) {
   return io::parse_double(text, option);
 }
@@ -104,6 +119,7 @@ void add_predict(CLI::App* area) {
   auto as_json = std::make_shared<bool>(false);
   add_launch_options(cmd, *t, true);
   add_json_flag(*cmd, *as_json);
+  name_option_types(cmd);
   cmd->callback([t, as_json] {
     const Parameters p = parse_launch(*t);
     const incline::Prediction pr = incline::ClosedForm(p).predict();
@@ -146,6 +162,7 @@ void add_simulate(CLI::App* area) {
                   "Duration, s (default 1.25 t_stop if it stops, else 2 v0/(g mu cos phi), else 1)");
   cmd->add_option("--out", s->out, "Output CSV file")->required();
   add_json_flag(*cmd, s->json);
+  name_option_types(cmd);
   cmd->callback([s] {
     Parameters p = parse_launch(s->launch);
     if (s->model != "A" && s->model != "B")
@@ -227,6 +244,7 @@ void add_mu_from_stop(CLI::App* area) {
   cmd->add_option("--plate-size", s->plate_size,
                   "Largest usable stop distance, m: enables the best-angle advice");
   add_json_flag(*cmd, s->json);
+  name_option_types(cmd);
   cmd->callback([s] {
     incline::StopMeasurement m;
     const double phi_deg = number(s->phi_deg, "--phi-deg");
@@ -294,6 +312,7 @@ void add_families(CLI::App* area) {
   cmd->add_option("--t-end", s->t_end, "Duration, s (default: the longest member's default)");
   cmd->add_option("--out", s->out, "Output CSV file")->required();
   add_json_flag(*cmd, s->json);
+  name_option_types(cmd);
   cmd->callback([s] {
     incline::FamilyOptions o;
     std::string skip;

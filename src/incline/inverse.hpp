@@ -7,7 +7,7 @@
 // On (0, 1), r(k) falls strictly from +inf to 0, so for every r > 0 there is exactly one
 // root in (0, 1): the physical one (the disc stops only when k < 1). It is found by
 // bracketing (Q(0) = 8 > 0, Q(1) = -3r < 0), not by the trigonometric formula.
-// sigma_mu follows by implicit differentiation: dk/dr = -Q_r/Q_k. docs/theory.md#incline-inverse.
+// sigma_mu follows by implicit differentiation: dk/dr = -Q_r/Q_k. docs/theory.md#mu-from-the-stopping-point-eq-十a.
 #pragma once
 
 #include <cstdint>

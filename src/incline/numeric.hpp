@@ -13,7 +13,7 @@
 //   dpsi/dtau = a_n/(-a_t),  a_t = -g cos(phi) mu - g sin(phi) sin(psi),
 //   a_n = f_N/m - g sin(phi) cos(psi),
 // which is smooth up to |v| -> 0 (tau -> infinity) while the speed decreases (a_t < 0).
-// See docs/theory.md#incline-numerical-model.
+// See docs/theory.md#numerical-model.
 #pragma once
 
 #include "incline/closed_form.hpp"
