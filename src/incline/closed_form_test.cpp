@@ -111,17 +111,18 @@ TEST(ClosedForm, DerivativesAreConsistent) {
 }
 
 /// Relative change of the state at fixed s when k moves by +-delta around k0.
-void expect_continuous_in_k(double k0) {
-  const double phi = deg_to_rad(20.0), delta = 1e-10;
+void expect_continuous_in_k(double k0, double delta = 1e-10) {
+  const double phi = deg_to_rad(20.0);
   for (double s : {0.01, 0.5, 3.0, 20.0}) {
     Parameters p = with_k(k0);
     const State mid = ClosedForm(p).at_log_speed_ratio(s);
     for (double sign : {-1.0, 1.0}) {
       p.mu = std::tan(phi) / (k0 + sign * delta);
       const State side = ClosedForm(p).at_log_speed_ratio(s);
-      // The exact change is O(delta * s^2 * scale) (<= 4e-8 relative at s = 20); an
-      // unguarded 0/0 would give O(eps / delta) = 1e-6 or NaN.
-      const double tol = 1e-9 * (1 + s * s);
+      // The exact change is O(delta * s^2 * scale) (<= 4e-8 relative at s = 20 for
+      // delta = 1e-10); an unguarded 0/0 would give O(eps / delta) or NaN. The floor 2e-15
+      // covers rounding of the state itself.
+      const double tol = 10 * delta * (1 + s * s) + 2e-15;
       const double xs = std::max(std::abs(mid.x), 1e-300), ts = std::max(mid.t, 1e-300);
       EXPECT_LT(rel(side.t, mid.t, ts), tol) << "k0 = " << k0 << " s = " << s << " sign " << sign;
       EXPECT_LT(rel(side.x, mid.x, xs), tol) << "k0 = " << k0 << " s = " << s << " sign " << sign;
@@ -131,8 +132,22 @@ void expect_continuous_in_k(double k0) {
   }
 }
 
-TEST(ClosedForm, ContinuousAcrossKEqualsOne) { expect_continuous_in_k(1.0); }
-TEST(ClosedForm, ContinuousAcrossKEqualsTwo) { expect_continuous_in_k(2.0); }
+TEST(ClosedForm, ContinuousAcrossKEqualsOne) {
+  expect_continuous_in_k(1.0);
+  expect_continuous_in_k(1.0, 1e-13);  // ~1e-12 relative continuity (s <= 3: 1e-11 at s = 3)
+}
+TEST(ClosedForm, ContinuousAcrossKEqualsTwo) {
+  expect_continuous_in_k(2.0);
+  expect_continuous_in_k(2.0, 1e-13);
+}
+
+TEST(ClosedForm, KWithinRoundingOfOneIsTheBoundary) {
+  Parameters p = make(1.0, 45.0, 2.0);  // tan(45 deg) = 1 - 1.1e-16 in double
+  EXPECT_EQ(p.k(), 1.0);
+  EXPECT_EQ(ClosedForm(p).predict().regime, Regime::terminal_speed);
+  p.mu = 1.0 - 1e-9;
+  EXPECT_EQ(ClosedForm(p).predict().regime, Regime::accelerates);
+}
 
 TEST(ClosedForm, KEqualsOneTendsToHalfTheLaunchSpeed) {
   const ClosedForm cf(with_k(1.0, 20.0, 3.0));

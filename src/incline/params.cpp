@@ -35,7 +35,12 @@ void Parameters::check() const {
 double Parameters::k() const {
   if (phi == 0) return 0.0;
   if (mu == 0) return std::numeric_limits<double>::infinity();
-  return std::tan(phi) / mu;
+  const double k = std::tan(phi) / mu;
+  // k within a few ulps of 1 is the boundary case itself: tan(45 deg) / 1 evaluates to
+  // 1 - 1.1e-16, which would otherwise predict a stop after ~1e16 s instead of the
+  // terminal speed v0/2. No physical input is known to 1e-15.
+  if (std::abs(k - 1) <= 8 * std::numeric_limits<double>::epsilon()) return 1.0;
+  return k;
 }
 
 Regime Parameters::regime() const {

@@ -39,7 +39,8 @@ struct Parameters {
   double alpha() const { return g * mu * std::cos(phi); }
   /// beta = g sin(phi): gravity along the slope, m/s^2 (seed 000, eq 1.2).
   double beta() const { return g * std::sin(phi); }
-  /// k = tan(phi) / mu = beta / alpha; 0 when phi = 0, +inf when mu = 0 < phi.
+  /// k = tan(phi) / mu = beta / alpha; 0 when phi = 0, +inf when mu = 0 < phi; exactly 1
+  /// when within 8 ulps of 1 (rounding of tan and of degrees).
   double k() const;
   Regime regime() const;
   /// A disc at rest on this incline stays at rest: tan(phi) <= mu_s, or kinetic friction
