@@ -211,9 +211,11 @@ void add_simulate(CLI::App* area) {
       if (r.status == incline::NumericStatus::failed)
         throw std::runtime_error("numerical integration failed: " + r.message);
       states = r.samples;
-      j["t_stop"] = opt(r.t_stop);
-      j["x_stop"] = opt(r.x_stop);
-      j["y_stop"] = opt(r.y_stop);
+      // As for the analytic method: a stop is reported when it happens within t-end.
+      const bool stopped = r.t_stop && *r.t_stop <= t_end;
+      j["t_stop"] = stopped ? json(*r.t_stop) : json(nullptr);
+      j["x_stop"] = stopped ? json(*r.x_stop) : json(nullptr);
+      j["y_stop"] = stopped ? json(*r.y_stop) : json(nullptr);
       j["steps"] = r.steps;
     }
     file.stream() << "t,x,y,vx,vy,ax,ay\n";
