@@ -187,6 +187,8 @@ void add_simulate(CLI::App* area) {
       dt = number(s->dt, "--dt");
       if (!(dt > 0)) throw InputError("--dt", "must be > 0, got " + s->dt);
     }
+    if (!std::isfinite(t_end) || !std::isfinite(dt) || !(dt > 0))
+      throw InputError("--t-end", "the default duration is not finite for these parameters; give --t-end and --dt");
     const std::vector<double> times = time_grid(t_end, dt);
 
     io::AtomicFile file(s->out);

@@ -86,7 +86,7 @@ double ClosedForm::log_speed_ratio_at(double t) const {
       // The bound is attained at k = 0; widen it so that the bracket is strict.
       const double s_hi = -1.01 * std::log1p(-t / T) / (1 - k) + 1e-300;
       const auto r = numerics::find_root([&](double s) { return time_at(s) - t; }, 0.0, s_hi);
-      TRIBOLAB_ASSERT(r.converged, "t(s) inversion, t = " + std::to_string(t));
+      if (!r.converged) throw InputError("the closed form cannot be evaluated at t = " + std::to_string(t) + " s for these parameters");
       return r.x;
     }
     // Near the stop: match the remaining time R = T - t in logarithms, where
@@ -102,18 +102,23 @@ double ClosedForm::log_speed_ratio_at(double t) const {
     const double s_lo = std::max(0.0, 0.99 * std::log(v0 / (2 * a * (1 - k) * R)) / (1 - k));
     const double s_hi = 1.01 * std::log(T / R) / (1 - k) + 1e-300;
     const auto r = numerics::find_root(log_rem, s_lo, std::max(s_lo, s_hi));
-    TRIBOLAB_ASSERT(r.converged, "remaining-time inversion, t = " + std::to_string(t));
+    if (!r.converged) throw InputError("the closed form cannot be evaluated at t = " + std::to_string(t) + " s for these parameters");
     return r.x;
   }
-  // k >= 1: t(s) >= v0 s / (2a) grows without bound; find a finite bracket by doubling.
+  // k >= 1: E(1+k, s) <= s <= E(1-k, s), so (v0/(2a)) E(1-k, s) <= t(s) <= (v0/a) E(1-k, s),
+  // and E(1-k, s) = c brackets the root between c = a t / v0 and c = 2 a t / v0, where
+  // s = log1p((k-1) c)/(k-1) (= c at k = 1). Widened by 1% so that the bracket is strict.
+  auto s_for = [k](double c) { return k == 1 ? c : std::log1p((k - 1) * c) / (k - 1); };
+  const double lo = 0.99 * s_for(a * t / v0), hi = 1.01 * s_for(2 * a * t / v0) + 1e-300;
   auto f = [&](double s) {
     const double v = time_at(s) - t;
     return std::isfinite(v) ? v : std::numeric_limits<double>::max();
   };
-  double hi = std::min(1.0, 2 * a * t / v0);
-  while (f(hi) < 0) hi *= 2;
-  const auto r = numerics::find_root(f, 0.0, hi);
-  TRIBOLAB_ASSERT(r.converged, "t(s) inversion (k >= 1), t = " + std::to_string(t));
+  const auto r = numerics::find_root(f, lo, hi);
+  if (!r.converged) {
+    throw InputError("the closed form cannot be evaluated at t = " + std::to_string(t) +
+                     " s for these parameters (k = " + std::to_string(k) + ")");
+  }
   return r.x;
 }
 

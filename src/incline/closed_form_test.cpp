@@ -245,6 +245,19 @@ TEST(ClosedForm, NeverProducesNaN) {
   }
 }
 
+TEST(ClosedForm, NearlyFrictionlessIsTheSmoothIncline) {
+  // mu = 1e-300: k = 6e299, t(s) overflows for s > 1e-297; the bracket of the inversion is
+  // explicit, so the state is the projectile's to rounding.
+  const ClosedForm cf(make(1e-300, 30.0, 1.0));
+  const ClosedForm smooth(make(0.0, 30.0, 1.0));
+  for (double t : {0.1, 1.0, 10.0}) {
+    const State a = cf.at(t), b = smooth.at(t);
+    EXPECT_NEAR(a.x, b.x, 1e-12 * std::abs(b.x)) << t;
+    EXPECT_NEAR(a.y, b.y, 1e-12 * std::abs(b.y)) << t;
+    EXPECT_NEAR(a.vy, b.vy, 1e-12 * std::abs(b.vy)) << t;
+  }
+}
+
 TEST(ClosedForm, StopScalesWithLaunchSpeed) {
   // Seed 000 eqs 七-十: t_stop ~ v0, (x_stop, y_stop) ~ v0^2, y_stop/x_stop independent of v0.
   const Prediction a = ClosedForm(make(0.585, 10.37, 1.0)).predict();

@@ -55,6 +55,8 @@ Family make_family(const FamilyOptions& o) {
   if (f.t_end == 0) {
     for (const auto& m : f.members) f.t_end = std::max(f.t_end, default_duration(m.parameters));
   }
+  if (!std::isfinite(f.t_end))
+    throw InputError("t_end", "the default duration is not finite for these parameters; give t_end");
   std::vector<double> times(o.samples);
   for (int i = 0; i < o.samples; ++i) times[i] = f.t_end * i / (o.samples - 1);
   for (auto& m : f.members) {
