@@ -1,0 +1,142 @@
+#include "incline/case_study.hpp"
+
+#include "incline/inverse.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace tribolab::incline {
+namespace {
+
+constexpr double kG = 9.8;
+
+Parameters setup(double mu, double phi_deg, double v0) {
+  Parameters p;
+  p.mu = mu;
+  p.phi = deg_to_rad(phi_deg);
+  p.v0 = v0;
+  p.g = kG;
+  return p;
+}
+
+PrintedCheck check(std::string where, double printed, double computed, double tolerance,
+                   std::string note) {
+  PrintedCheck c;
+  c.where = std::move(where);
+  c.printed = printed;
+  c.computed = computed;
+  c.tolerance = tolerance;
+  c.agrees = std::abs(printed - computed) <= tolerance;
+  c.note = std::move(note);
+  return c;
+}
+
+}  // namespace
+
+double mu_from_slide_acceleration(double phi, double a, double g) {
+  return (g * std::sin(phi) - a) / (g * std::cos(phi));  // seed 000, eq (a)
+}
+
+CaseStudy seed000_case_study() {
+  CaseStudy cs;
+  cs.mu_o_from_eq_a = mu_from_slide_acceleration(deg_to_rad(41.09), 1.758, kG);
+
+  // Table 1 (表一), seed 000 陸-四-5.
+  struct Col { double phi, x, y, mu_a, diff; };
+  const Col cols[] = {{4.82, 0.478, 0.034, 0.601, -5.21}, {10.37, 0.214, 0.036, 0.588, -7.26},
+                      {14.48, 0.594, 0.142, 0.624, -1.58}, {20.96, 0.659, 0.273, 0.648, 2.21},
+                      {23.20, 0.506, 0.277, 0.636, 0.32}};
+  for (const Col& c : cols) {
+    StopMeasurement m;
+    m.phi = deg_to_rad(c.phi);
+    m.x_stop = c.x;
+    m.y_stop = -c.y;
+    Table1Row row;
+    row.phi_deg = c.phi;
+    row.x_stop = c.x;
+    row.y_stop = -c.y;
+    row.mu_printed = c.mu_a;
+    row.mu = mu_from_stop(m).mu;
+    row.diff_percent_printed = c.diff;
+    row.diff_percent = 100 * (row.mu - cs.mu_o) / cs.mu_o;
+    cs.table1.push_back(row);
+    char label[64];
+    std::snprintf(label, sizeof label, "表一 mu_A at phi = %.2f deg", c.phi);
+    cs.checks.push_back(check(label,
+                              c.mu_a, row.mu, 0.0005, "eq 十A solved by bracketing the cubic"));
+  }
+
+  cs.checks.push_back(check("伍-一-(一) mu_o from eq (a), phi = 41.09 deg, a = 1.758 m/s^2",
+                            0.634, cs.mu_o_from_eq_a, 0.0005, "(g sin phi - a)/(g cos phi)"));
+
+  // Figure 八 (phi = 10.37 deg, mu = 0.585): slopes per unit v_x0 (t_f) and v_x0^2 (x_f, y_f).
+  const Prediction p8 = ClosedForm(setup(0.585, 10.37, 1.0)).predict();
+  cs.checks.push_back(check("圖八-2 theory slope t_f / v_x0 (phi 10.37 deg, mu 0.585), s^2/m",
+                            0.2242, *p8.t_stop, 0.00005, "eq 七 at v_x0 = 1 m/s"));
+  cs.checks.push_back(check("圖八-4 theory slope x_f / v_x0^2, s^2/m", 0.0948, *p8.x_stop, 0.00005,
+                            "eq 八 at v_x0 = 1 m/s"));
+  cs.checks.push_back(check("圖八-4 theory slope y_f / v_x0^2, s^2/m", -0.0155, *p8.y_stop, 0.00005,
+                            "eq 九 at v_x0 = 1 m/s (-0.01554 at phi = 10.46 deg)"));
+  const Prediction p85 = ClosedForm(setup(0.585, 10.46, 1.0)).predict();
+  cs.checks.push_back(check("圖八-5 theory slope y_f / x_f (phi 10.46 deg, mu 0.585)", -0.2123,
+                            *p85.y_stop / *p85.x_stop, 0.00005, "eq 十"));
+  cs.checks.push_back(check("圖八-5 printed difference of -0.1994 from -0.2123, %", 6.47,
+                            100 * (0.2123 - 0.1994) / 0.2123, 0.005,
+                            "arithmetic on the printed slopes"));
+
+  // Figure 五 (phi = 20.96 deg, mu = 0.634): initial and final accelerations.
+  const Parameters s5 = setup(0.634, 20.96, 2.62);
+  const Prediction p5 = ClosedForm(s5).predict();
+  cs.checks.push_back(check("圖五-4X a_x0 = -g mu cos phi, m/s^2", -5.80, p5.a_x0, 0.005, "eq 1.1a"));
+  cs.checks.push_back(check("圖五-4Y a_y0 = -g sin phi, m/s^2", -3.50, p5.a_y0, 0.005, "eq 1.2a at theta = 90 deg"));
+  cs.checks.push_back(check("圖五-4Y a_yf = g mu cos phi - g sin phi, m/s^2", 2.30, p5.a_y_final, 0.005,
+                            "limit of eq 四"));
+  cs.checks.push_back(check("伍-一-(三)-1 g sin(23.20 deg), m/s^2", 3.856, kG * std::sin(deg_to_rad(23.20)),
+                            0.0005, "direct"));
+  cs.checks.push_back(check("圖六 boundary atan(0.634), deg", 32.39, rad_to_deg(std::atan(0.634)), 0.005,
+                            "k = 1"));
+  cs.checks.push_back(check("圖七 boundary tan(20.96 deg)", 0.383, std::tan(deg_to_rad(20.96)), 0.0005,
+                            "k = 1"));
+  cs.checks.push_back(check("圖三-2 1/slope = 1/1.5746", 0.635, 1 / 1.5746, 0.0005, "direct"));
+
+  // Setups of figures 二-八 evaluated with the closed form.
+  auto add = [&](std::string fig, const Parameters& p) {
+    cs.setups.push_back({std::move(fig), p, ClosedForm(p).predict()});
+  };
+  add("圖二/四 (phi 23.20 deg, mu 0.634, v0 2.30 m/s)", setup(0.634, 23.20, 2.30));
+  add("圖五 (phi 20.96 deg, mu 0.634, v0 2.62 m/s)", s5);
+  add("圖六 (phi = atan 0.634 = 32.37 deg: k = 1, v0 2.62 m/s)",
+      [] { Parameters p = setup(0.634, 0, 2.62); p.phi = std::atan(0.634); return p; }());
+  add("圖六 (phi 40 deg, mu 0.634, v0 2.62 m/s)", setup(0.634, 40.0, 2.62));
+  add("圖六A (phi 20.0 deg, mu 0.583, v0 2.20 m/s)", setup(0.583, 20.0, 2.20));
+  add("圖七 (phi 20.96 deg, mu 0, v0 2.62 m/s: smooth incline)", setup(0.0, 20.96, 2.62));
+  add("圖七A (phi 23.20 deg, mu 0.634, v0 2.30 m/s)", setup(0.634, 23.20, 2.30));
+  add("圖八 (phi 10.37 deg, mu 0.585, v0 1 m/s: slopes per unit v0)", setup(0.585, 10.37, 1.0));
+
+  cs.errata = {
+      "seed 000 appendix 十一 (A2): the integral of x cosh(a + b ln x) has denominator b^2 - 4, "
+      "not 4 - b^2 (differentiate the result); eq 3.1 uses the correct sign.",
+      "seed 000 appendix 十: A = 4/(3r) + 512/(27 r^3); the first line prints -512/(27 r^3), and "
+      "the discriminant is -16(12 r^4 + 183 r^2 + 768)/(81 r^4), not ...+1280 r^2; it is < 0 "
+      "either way, so three real roots.",
+      "seed 000 陸-四 (十A) in the main text puts -2 pi outside the 1/3, which selects the root "
+      "k > 2 (mu about 15x too small); the appendix (10.6) is right.",
+      "seed 000 eq (1.2a) drops mu: a_y = g mu cos(phi) cos(theta) - g sin(phi).",
+      "seed 000 圖八-2: theory slope t_f/v_x0 at phi = 10.37 deg, mu = 0.585 is 0.1966 s^2/m "
+      "(eq 七), not 0.2242.",
+      "seed 000 圖八-4: x_f/v_x0^2 is 0.0909 s^2/m (eq 八), not 0.0948; y_f/v_x0^2 is -0.0154 "
+      "(-0.0155 at 10.46 deg).",
+      "seed 000 圖八-5: y_f/x_f at phi = 10.46 deg, mu = 0.585 is -0.1709 (eq 十), not -0.2123; "
+      "and (0.2123 - 0.1994)/0.2123 is 6.08 %, not 6.47 %.",
+      "seed 000 伍-一-(三): g sin(23.20 deg) = 3.861 m/s^2, not 3.856 (the difference from 3.7497 "
+      "is 2.87 %, not 2.76 %); 圖三-1's caption says 23.02 deg.",
+      "seed 000 圖五-4Y: a_y0 = -g sin(20.96 deg) = -3.51 m/s^2 (printed -3.50).",
+      "seed 000 表一: at phi = 4.82 deg, eq 十A gives mu_A = 0.6017 (0.602), printed 0.601 "
+      "(the other four columns agree to the printed digits).",
+      "seed 000 圖六: atan(0.634) = 32.37 deg (printed 32.39); 圖七-4 (3) should read mu < 0.383.",
+  };
+  return cs;
+}
+
+}  // namespace tribolab::incline
