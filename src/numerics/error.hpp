@@ -50,8 +50,8 @@ namespace detail {
 
 }  // namespace tribolab
 
-/// Internal invariant; `detail` is a std::string expression describing the values.
-#define TRIBOLAB_ASSERT(cond, detail)                                                \
-  do {                                                                               \
-    if (!(cond)) ::tribolab::detail::assertion_failed(#cond, __FILE__, __LINE__, (detail)); \
+/// Internal invariant; `message` is a std::string expression describing the values.
+#define TRIBOLAB_ASSERT(cond, message)                                                 \
+  do {                                                                                 \
+    if (!(cond)) ::tribolab::detail::assertion_failed(#cond, __FILE__, __LINE__, (message)); \
   } while (false)
