@@ -265,7 +265,20 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
   if (::flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
     throw InputError(partial, "is being written by another running sweep");
   }
-  if (resume && fs::file_size(partial) > 0) {
+  // A checkpoint killed while its first two lines were being written holds a prefix of
+  // them: start it afresh.
+  const std::string preamble = format_header(header) + format_columns(header);
+  bool fresh = !resume;
+  if (resume) {
+    const auto size = fs::file_size(partial);
+    if (size < preamble.size()) {
+      std::ifstream in(partial, std::ios::binary);
+      std::string head(size, '\0');
+      in.read(head.data(), static_cast<std::streamsize>(size));
+      fresh = preamble.compare(0, size, head) == 0;
+    }
+  }
+  if (!fresh) {
     SweepFileScan scan;
     try {
       scan = scan_sweep_file(partial);
@@ -287,7 +300,7 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
     if (::ftruncate(fd.get(), 0) != 0) {
       throw InputError(partial, std::string("cannot truncate: ") + std::strerror(errno));
     }
-    write_all(fd.get(), format_header(header) + format_columns(header), partial);
+    write_all(fd.get(), preamble, partial);
     sync_fd(fd.get(), partial);
   }
   if (::lseek(fd.get(), 0, SEEK_END) < 0) throw InputError(partial, "cannot seek");
