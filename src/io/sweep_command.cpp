@@ -479,6 +479,30 @@ sweep::Shard parse_shard(std::string_view text, const std::string& option) {
   return s;
 }
 
+nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommandOptions& o) {
+  nlohmann::json j;
+  j["status"] = r.status;
+  j["out"] = r.out;
+  j["cells_grid"] = r.cells_grid;
+  j["cells_shard"] = r.cells_shard;
+  j["cells_resumed"] = r.cells_resumed;
+  j["cells_computed"] = r.cells_computed;
+  j["threads"] = r.threads;
+  j["seconds"] = r.seconds;
+  j["cells_per_second"] =
+      r.seconds > 0 ? nlohmann::json(static_cast<double>(r.cells_computed) / r.seconds) : nlohmann::json();
+  j["contour"] = o.contour_out.empty()
+                     ? nlohmann::json()
+                     : nlohmann::json{{"file", o.contour_out},
+                                      {"lines", r.contour_lines},
+                                      {"points", r.contour_points},
+                                      {"evaluations", r.contour_evaluations}};
+  j["threshold"] = o.threshold_out.empty()
+                       ? nlohmann::json()
+                       : nlohmann::json{{"file", o.threshold_out}, {"found", r.thresholds_found}};
+  return j;
+}
+
 void write_contour_csv(std::ostream& out, const sweep::ContourResult& c) {
   std::string s = "line,closed,";
   for (sweep::Quantity q : c.slice_quantities) s += std::string(sweep::quantity_name(q)) + ",";

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "sweep/contour.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/runner.hpp"
@@ -79,6 +81,9 @@ struct ValueOrAxis {
 ValueOrAxis parse_value_or_axis(std::string_view text, sweep::Quantity q, const std::string& option);
 /// "i/N" -> Shard; errors name `option`.
 sweep::Shard parse_shard(std::string_view text, const std::string& option);
+
+/// The JSON result of `bounce sweep` (keys documented in docs/cli.md#bounce-sweep).
+nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommandOptions& o);
 
 /// Writes the polylines as CSV: line,closed,<slice quantities>,theta_deg,<omega|ratio>,refined.
 void write_contour_csv(std::ostream& out, const sweep::ContourResult& contour);

@@ -381,3 +381,25 @@ TEST(SweepOptionsParsing, AxesRangesAndShards) {
 
 }  // namespace
 }  // namespace tribolab::io
+
+namespace tribolab::io {
+namespace {
+
+TEST(SweepCommand, JsonResultHasTheDocumentedKeys) {
+  const std::string dir = temp_dir("json");
+  SweepCommandOptions o = options_for(dir + "/map.csv");
+  o.threshold_out = dir + "/t.csv";
+  const nlohmann::json j = sweep_result_json(run_sweep_command(o, sweep::synthetic::wave_model(), nullptr), o);
+  for (const char* key : {"status", "out", "cells_grid", "cells_shard", "cells_resumed",
+                          "cells_computed", "threads", "seconds", "cells_per_second", "contour",
+                          "threshold"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["cells_grid"], 270);
+  EXPECT_TRUE(j["contour"].is_null());
+  EXPECT_EQ(j["threshold"]["found"], 30);
+  EXPECT_EQ(j["threshold"]["file"], o.threshold_out);
+}
+
+}  // namespace
+}  // namespace tribolab::io
