@@ -1,19 +1,14 @@
 #include "io/sweep_command.hpp"
 
-#include <cerrno>
 #include <charconv>
-#include <chrono>
 #include <cmath>
-#include <cstring>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <map>
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
 
 #include "io/atomic_file.hpp"
+#include "io/sweep_checkpoint.hpp"
 #include "io/sweep_file.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
@@ -54,74 +49,6 @@ std::string strip_name(const std::string& message) {
   return message;
 }
 
-/// Which parts of two sweep headers differ, for error messages (the shard index is
-/// compared only when `with_shard_index`).
-std::string difference(const SweepHeader& a, const SweepHeader& b, bool with_shard_index) {
-  std::vector<std::string> parts;
-  if (a.grid.axes != b.grid.axes) {
-    parts.push_back("grid");
-  } else if (header_identity(SweepHeader{a.grid, {}, {}, {}}) !=
-             header_identity(SweepHeader{b.grid, {}, {}, {}})) {
-    parts.push_back("fixed speed/mu");
-  }
-  if (a.outputs != b.outputs) parts.push_back("outputs");
-  if (a.model != b.model) parts.push_back("physical options");
-  if (a.shard.count != b.shard.count || (with_shard_index && a.shard.index != b.shard.index)) {
-    parts.push_back("shard");
-  }
-  std::string s;
-  for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + parts[i];
-  return s.empty() ? "header" : s;
-}
-
-/// An open file descriptor, closed on scope exit.
-class Fd {
- public:
-  explicit Fd(int fd) : fd_(fd) {}
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  ~Fd() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  int get() const { return fd_; }
-  void close(const std::string& path) {
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0) throw InputError(path, std::string("close failed: ") + std::strerror(errno));
-  }
-
- private:
-  int fd_;
-};
-
-void write_all(int fd, const std::string& data, const std::string& path) {
-  const char* p = data.data();
-  std::size_t left = data.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw InputError(path, std::string("write failed: ") + std::strerror(errno));
-    }
-    p += n;
-    left -= static_cast<std::size_t>(n);
-  }
-}
-
-void sync_fd(int fd, const std::string& path) {
-  if (::fsync(fd) != 0) throw InputError(path, std::string("fsync failed: ") + std::strerror(errno));
-}
-
-void sync_directory_of(const std::string& path) {
-  const fs::path p(path);
-  const std::string dir = p.has_parent_path() ? p.parent_path().string() : ".";
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd >= 0) {
-    ::fsync(fd);  // best effort: makes the rename durable
-    ::close(fd);
-  }
-}
-
 std::string header_line_of(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
@@ -131,28 +58,7 @@ std::string header_line_of(const std::string& path) {
   return line;
 }
 
-class ProgressPrinter {
- public:
-  explicit ProgressPrinter(std::ostream* out) : out_(out) {}
-  void operator()(const sweep::Progress& p) {
-    if (out_ == nullptr) return;
-    const double pct = p.total > 0 ? 100.0 * static_cast<double>(p.done) / static_cast<double>(p.total) : 100;
-    const double left = p.rate > 0 ? static_cast<double>(p.total - p.done) / p.rate : 0;
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "\rsweep: %lld/%lld cells (%5.1f%%)  %.4g cells/s  %.1f s  ETA %.0f s   ",
-                  static_cast<long long>(p.done), static_cast<long long>(p.total), pct, p.rate,
-                  p.elapsed_s, left);
-    *out_ << buf << std::flush;
-    printed_ = true;
-  }
-  void finish() {
-    if (out_ != nullptr && printed_) *out_ << '\n' << std::flush;
-  }
-
- private:
-  std::ostream* out_;
-  bool printed_ = false;
-};
+}  // namespace
 
 void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& model,
                         SweepCommandResult& r) {
@@ -179,7 +85,18 @@ void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& mo
   }
 }
 
-}  // namespace
+
+void print_progress(std::ostream& out, const sweep::Progress& p) {
+  const double pct =
+      p.total > 0 ? 100.0 * static_cast<double>(p.done) / static_cast<double>(p.total) : 100;
+  const double left = p.rate > 0 ? static_cast<double>(p.total - p.done) / p.rate : 0;
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "\rsweep: %lld/%lld cells (%5.1f%%)  %.4g cells/s  %.1f s  ETA %.0f s   ",
+                static_cast<long long>(p.done), static_cast<long long>(p.total), pct, p.rate,
+                p.elapsed_s, left);
+  out << buf << std::flush;
+}
 
 std::string SweepCommandOptions::validate() const {
   if (auto e = grid.validate(); !e.empty()) return with_option_names(e);
@@ -222,126 +139,50 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
     if (fs::is_directory(target)) throw InputError(o.out, "is a directory, expected a file name");
   }
   const SweepHeader header{o.grid, o.shard, model.output_names, model.description};
-  const std::string partial = o.out + ".partial";
   SweepCommandResult r;
   r.out = o.out;
   r.cells_grid = o.grid.cell_count();
   r.cells_shard = o.shard.cells(r.cells_grid);
   r.threads = sweep::resolve_threads(o.threads);
-  std::error_code ec;
-  if (o.restart) {
-    fs::remove(o.out, ec);
-    fs::remove(partial, ec);
-  }
-
-  // 1. A finished output of this very sweep is reused; any other file there is kept.
-  if (fs::exists(o.out)) {
-    SweepFileScan scan;
-    try {
-      scan = scan_sweep_file(o.out);
-    } catch (const InputError& e) {
-      throw InputError(std::string(e.what()) + " (--out exists and is not this sweep's output; "
-                                               "pass --restart to overwrite it)");
-    }
-    if (format_header(scan.header) != format_header(header)) {
-      throw InputError(o.out, "exists and holds a different sweep (differs in " +
-                                  difference(scan.header, header, true) +
-                                  "); pass --restart to overwrite it");
-    }
-    if (scan.complete_cells != scan.expected_cells || scan.torn_tail) {
-      throw InputError(o.out, "exists but is incomplete; pass --restart to recompute it");
-    }
+  SweepCheckpoint file(o, header);
+  if (file.reused()) {
     r.status = "reused";
     r.cells_resumed = r.cells_shard;
     write_derived_maps(o, model, r);
     return r;
   }
+  r.cells_resumed = file.first_local();
 
-  // 2. Open (resume) or create the checkpoint.
-  std::int64_t first_local = 0;
-  const bool resume = fs::exists(partial);
-  Fd fd(::open(partial.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644));
-  if (fd.get() < 0) throw InputError(partial, std::string("cannot write: ") + std::strerror(errno));
-  if (::flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
-    throw InputError(partial, "is being written by another running sweep");
-  }
-  // A checkpoint killed while its first two lines were being written holds a prefix of
-  // them: start it afresh.
-  const std::string preamble = format_header(header) + format_columns(header);
-  bool fresh = !resume;
-  if (resume) {
-    const auto size = fs::file_size(partial);
-    if (size < preamble.size()) {
-      std::ifstream in(partial, std::ios::binary);
-      std::string head(size, '\0');
-      in.read(head.data(), static_cast<std::streamsize>(size));
-      fresh = preamble.compare(0, size, head) == 0;
-    }
-  }
-  if (!fresh) {
-    SweepFileScan scan;
-    try {
-      scan = scan_sweep_file(partial);
-    } catch (const InputError& e) {
-      throw InputError(std::string(e.what()) +
-                       " (the checkpoint is damaged; delete it or pass --restart)");
-    }
-    if (format_header(scan.header) != format_header(header)) {
-      throw InputError(partial, "is the checkpoint of a different sweep (differs in " +
-                                    difference(scan.header, header, true) +
-                                    "); delete it or pass --restart");
-    }
-    // Drop a torn last line (the process was killed in the middle of a write).
-    if (::ftruncate(fd.get(), static_cast<off_t>(scan.valid_bytes)) != 0) {
-      throw InputError(partial, std::string("cannot truncate: ") + std::strerror(errno));
-    }
-    first_local = scan.complete_cells;
-  } else {
-    if (::ftruncate(fd.get(), 0) != 0) {
-      throw InputError(partial, std::string("cannot truncate: ") + std::strerror(errno));
-    }
-    write_all(fd.get(), preamble, partial);
-    sync_fd(fd.get(), partial);
-  }
-  if (::lseek(fd.get(), 0, SEEK_END) < 0) throw InputError(partial, "cannot seek");
-  r.cells_resumed = first_local;
-
-  // 3. Compute the missing cells; each chunk's lines are written as soon as every earlier
+  // Compute the missing cells; each chunk's lines are written as soon as every earlier
   // chunk is written, so the file is always a prefix of the final file.
-  Clock::time_point last_sync = Clock::now();
   sweep::ResultSink sink;
   sink.encode = [&](const sweep::ChunkView& c, std::string& buf) {
     append_cell_lines(buf, o.grid, c);
   };
-  sink.commit = [&](const sweep::ChunkView&, const std::string& buf) {
-    write_all(fd.get(), buf, partial);
-    if (std::chrono::duration<double>(Clock::now() - last_sync).count() >= o.fsync_interval_s) {
-      sync_fd(fd.get(), partial);
-      last_sync = Clock::now();
-    }
-  };
-  ProgressPrinter printer(progress);
+  sink.commit = [&](const sweep::ChunkView&, const std::string& buf) { file.append(buf); };
   sweep::RunOptions ro;
   ro.threads = o.threads;
   ro.chunk_cells = o.chunk_cells;
   ro.cancel = cancel;
-  if (progress != nullptr) ro.progress = [&](const sweep::Progress& p) { printer(p); };
-  const sweep::RunSummary s = sweep::run_cells(o.grid, model, o.shard, first_local, ro, sink);
-  printer.finish();
-  sync_fd(fd.get(), partial);
-  fd.close(partial);
+  bool printed = false;
+  if (progress != nullptr) {
+    ro.progress = [&](const sweep::Progress& p) {
+      print_progress(*progress, p);
+      printed = true;
+    };
+  }
+  const sweep::RunSummary s = sweep::run_cells(o.grid, model, o.shard, file.first_local(), ro, sink);
+  if (printed) *progress << '\n' << std::flush;
   r.cells_computed = s.cells_computed;
   r.seconds = s.seconds;
   r.threads = s.threads;
-  if (s.status == sweep::RunSummary::Status::cancelled) {
+  const bool complete = s.status == sweep::RunSummary::Status::completed;
+  file.finish(complete);
+  if (!complete) {
     r.status = "cancelled";
-    r.out = partial;
+    r.out = file.partial_path();
     return r;
   }
-  if (std::rename(partial.c_str(), o.out.c_str()) != 0) {
-    throw InputError(o.out, std::string("cannot rename the finished checkpoint: ") + std::strerror(errno));
-  }
-  sync_directory_of(o.out);
   write_derived_maps(o, model, r);
   return r;
 }
@@ -361,7 +202,7 @@ MergeResult run_merge_command(const std::vector<std::string>& inputs, const std:
     if (header_identity(h) != header_identity(headers[0]) || h.shard.count != n) {
       throw InputError(inputs[f] + ":1", "is a shard of a different sweep than " + inputs[0] +
                                              " (differs in " +
-                                             difference(h, headers[0], false) +
+                                             header_difference(h, headers[0], false) +
                                              ")");
     }
     std::size_t& o = owner[static_cast<std::size_t>(h.shard.index)];

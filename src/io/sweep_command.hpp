@@ -82,6 +82,14 @@ ValueOrAxis parse_value_or_axis(std::string_view text, sweep::Quantity q, const 
 /// "i/N" -> Shard; errors name `option`.
 sweep::Shard parse_shard(std::string_view text, const std::string& option);
 
+/// Writes the --contour / --threshold files of a finished sweep (reads o.out) and counts
+/// their contents into r. Needs the whole grid.
+void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& model,
+                        SweepCommandResult& r);
+
+/// One progress line: "\rsweep: done/total cells (pct%)  rate cells/s  elapsed s  ETA s".
+void print_progress(std::ostream& out, const sweep::Progress& p);
+
 /// The JSON result of `bounce sweep` (keys documented in docs/cli.md#bounce-sweep).
 nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommandOptions& o);
 
