@@ -73,20 +73,23 @@ int resolve_threads(int threads) {
 }
 
 RunSummary run_cells(const GridSpec& grid, const CellModel& model, const Shard& shard,
-                     std::int64_t first_local, const RunOptions& options, const ResultSink& sink) {
+                     std::int64_t first_local, const RunOptions& options, const ResultSink& sink,
+                     std::int64_t end_local) {
   TRIBOLAB_ASSERT(grid.validate().empty(), grid.validate());
   TRIBOLAB_ASSERT(model.validate().empty(), model.validate());
   TRIBOLAB_ASSERT(shard.validate().empty(), shard.validate());
   TRIBOLAB_ASSERT(options.validate().empty(), options.validate());
   const std::int64_t n_local = shard.cells(grid.cell_count());
-  TRIBOLAB_ASSERT(first_local >= 0 && first_local <= n_local,
-                  "first_local " + std::to_string(first_local) + " of " + std::to_string(n_local));
+  const std::int64_t end = end_local < 0 ? n_local : end_local;
+  TRIBOLAB_ASSERT(first_local >= 0 && first_local <= end && end <= n_local,
+                  "cells [" + std::to_string(first_local) + ", " + std::to_string(end) + ") of " +
+                      std::to_string(n_local));
 
   const Clock::time_point t0 = Clock::now();
   RunSummary summary;
   const int n_threads = resolve_threads(options.threads);
   summary.threads = n_threads;
-  const std::int64_t cells = n_local - first_local;
+  const std::int64_t cells = end - first_local;
   const std::size_t n_out = model.output_names.size();
   const std::int64_t chunk =
       options.chunk_cells > 0
@@ -139,7 +142,7 @@ RunSummary run_cells(const GridSpec& grid, const CellModel& model, const Shard& 
         }
         Slot& slot = slots[static_cast<std::size_t>(c % n_slots)];
         const std::int64_t first = first_local + c * chunk;
-        const std::int64_t count = std::min(chunk, n_local - first);
+        const std::int64_t count = std::min(chunk, end - first);
         for (std::int64_t k = 0; k < count; ++k) {
           const CellInput in = grid.cell(shard.global(first + k));
           slot.inputs[static_cast<std::size_t>(k)] = in;
@@ -178,7 +181,7 @@ RunSummary run_cells(const GridSpec& grid, const CellModel& model, const Shard& 
   auto report = [&](std::int64_t done_chunks) {
     if (!options.progress) return;
     Progress p;
-    p.done = std::min(n_local, first_local + done_chunks * chunk);
+    p.done = std::min(end, first_local + done_chunks * chunk);
     p.total = n_local;
     p.elapsed_s = seconds_since(t0);
     p.rate = p.elapsed_s > 0 ? static_cast<double>(p.done - first_local) / p.elapsed_s : 0;
@@ -204,7 +207,7 @@ RunSummary run_cells(const GridSpec& grid, const CellModel& model, const Shard& 
     if (have) {
       if (sink.commit) {
         const std::int64_t first = first_local + c * chunk;
-        const std::int64_t count = std::min(chunk, n_local - first);
+        const std::int64_t count = std::min(chunk, end - first);
         try {
           sink.commit(ChunkView{first, count, slot.inputs.data(), slot.outputs.data(), n_out},
                       slot.text);

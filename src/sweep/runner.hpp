@@ -93,10 +93,12 @@ struct RunSummary {
   double seconds = 0;               ///< wall time, s
 };
 
-/// Computes local cells [first_local, shard.cells(grid.cell_count())) of `shard` and
-/// commits them in order. Grid, model, shard and options must be valid (asserted).
+/// Computes local cells [first_local, end_local) of `shard` (end_local < 0: to the end of
+/// the shard, shard.cells(grid.cell_count())) and commits them in order. Grid, model,
+/// shard and options must be valid (asserted).
 RunSummary run_cells(const GridSpec& grid, const CellModel& model, const Shard& shard,
-                     std::int64_t first_local, const RunOptions& options, const ResultSink& sink);
+                     std::int64_t first_local, const RunOptions& options, const ResultSink& sink,
+                     std::int64_t end_local = -1);
 
 /// Every cell of the grid in memory: cell_count() x output_names.size() values, row-major.
 std::vector<double> evaluate_grid(const GridSpec& grid, const CellModel& model,

@@ -157,6 +157,23 @@ TEST(Runner, EncodeRunsBeforeCommitAndProgressReachesTheTotal) {
   EXPECT_EQ(last.total, (Shard{1, 2}).cells(g.cell_count()));
 }
 
+TEST(Runner, ComputesASubRangeOfTheShard) {
+  const GridSpec g = grid_4d();
+  const Shard shard{2, 3};
+  std::vector<std::int64_t> seen;
+  ResultSink sink;
+  sink.commit = [&](const ChunkView& c, const std::string&) {
+    for (std::int64_t k = 0; k < c.count; ++k) seen.push_back(c.inputs[k].index);
+  };
+  RunOptions o;
+  o.threads = 2;
+  o.chunk_cells = 4;
+  const RunSummary s = run_cells(g, synthetic::trivial_model(), shard, 10, o, sink, 27);
+  EXPECT_EQ(s.cells_computed, 17);
+  ASSERT_EQ(seen.size(), 17u);
+  for (std::size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k], shard.global(10 + static_cast<std::int64_t>(k)));
+}
+
 TEST(Runner, EmptyRemainderCompletesImmediately) {
   const GridSpec g = grid_4d();
   const RunSummary s = run_cells(g, synthetic::trivial_model(), Shard{}, g.cell_count(), RunOptions{}, ResultSink{});
