@@ -1,9 +1,10 @@
 # tribolab: one-command set-up on a fresh Debian 12 machine.
 #   make demo   install what is needed, build, run both case studies, write the report
-#   make test   install what is needed, build, run every test (plus an ASan+UBSan build)
+#   make test   install what is needed, build, run every test (plus ASan+UBSan and MPI builds)
 #   make bench  build and run the benchmarks in bench/
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
+MPI_BUILD  ?= build-mpi
 DEMO_OUT   ?= demo-out
 JOBS       ?= $(shell nproc)
 SUDO       := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
@@ -12,11 +13,12 @@ SUDO       := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
   libgtest-dev libgmock-dev libbenchmark-dev \
   libboost-dev libeigen3-dev libceres-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
-  libpugixml-dev libzip-dev clang libclang-rt-14-dev
+  libpugixml-dev libzip-dev clang libclang-rt-14-dev \
+  libopenmpi-dev openmpi-bin
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 
-.PHONY: deps build test test-fast asan demo bench clean
+.PHONY: deps build test test-fast test-mpi asan demo bench clean
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do \
@@ -32,16 +34,24 @@ build: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 
-# Every test through CTest, then the same tests built with AddressSanitizer + UBSan.
+# Every test through CTest, then the same tests built with AddressSanitizer + UBSan, then
+# the MPI sweep with 2 ranks.
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 	$(MAKE) asan
+	$(MAKE) test-mpi
 
 asan: deps
 	cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_SANITIZE=ON -DTRIBOLAB_BENCH=OFF
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+
+# The MPI sweep (-DTRIBOLAB_MPI=ON): io tests, including one run with 2 ranks under mpirun.
+test-mpi: deps
+	cmake -S . -B $(MPI_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_MPI=ON -DTRIBOLAB_BENCH=OFF
+	cmake --build $(MPI_BUILD) -j $(JOBS) --target io_tests
+	ctest --test-dir $(MPI_BUILD) --output-on-failure -R 'sweep_mpi|Sweep'
 
 test-fast: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
@@ -53,4 +63,4 @@ bench: build
 	@for b in $(BUILD)/bench/*_bench; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) $(DEMO_OUT)
+	rm -rf $(BUILD) $(ASAN_BUILD) $(MPI_BUILD) $(DEMO_OUT)

@@ -2,6 +2,8 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 
@@ -10,6 +12,7 @@
 #include "app.hpp"
 #include "io/sweep_command.hpp"
 #include "io/sweep_file.hpp"
+#include "io/sweep_mpi.hpp"
 #include "numerics/error.hpp"
 
 namespace tribolab::cli {
@@ -86,6 +89,55 @@ io::SweepCommandOptions to_options(const SweepArgs& a, const SweepPhysics& physi
   return o;
 }
 
+/// Number of ranks the MPI launcher started (1 when not under a launcher).
+[[maybe_unused]] int launcher_ranks() {
+  for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    if (const char* v = std::getenv(var)) return std::atoi(v);
+  }
+  return 1;
+}
+
+void run_sweep(const SweepArgs& args, const SweepPhysics& physics) {
+  int rank = 0;
+  bool use_mpi = false;
+#if TRIBOLAB_WITH_MPI
+  if (io::launched_by_mpi_launcher()) {
+    static io::MpiSession session;  // MPI_Finalize at exit
+    rank = session.rank();
+    use_mpi = true;
+  }
+#else
+  if (launcher_ranks() > 1) {
+    throw InputError("this tribolab was built without MPI (cmake -DTRIBOLAB_MPI=ON); run it "
+                     "without mpirun, or split the grid with --shard");
+  }
+#endif
+  try {
+    const io::SweepCommandOptions o = to_options(args, physics);
+    const sweep::CellModel model = physics.make_model();
+    InterruptGuard guard;
+    std::ostream* progress = rank == 0 && ::isatty(STDERR_FILENO) ? &std::cerr : nullptr;
+    io::SweepCommandResult r;
+#if TRIBOLAB_WITH_MPI
+    if (use_mpi) {
+      r = io::run_sweep_command_mpi(o, model, progress, &g_interrupted);
+      if (rank != 0) return;  // rank 0 reports
+    }
+#endif
+    if (!use_mpi) r = io::run_sweep_command(o, model, progress, &g_interrupted);
+    if (r.status == "cancelled") {
+      throw InputError("interrupted: " + std::to_string(r.cells_resumed + r.cells_computed) +
+                       " of " + std::to_string(r.cells_shard) + " cells saved in " + r.out +
+                       "; run the same command again to resume");
+    }
+    print_result(io::sweep_result_json(r, o), args.json);
+  } catch (...) {
+    // Every rank sees the same error; only rank 0 prints it (one line, SPEC section 5).
+    if (rank != 0) (void)std::freopen("/dev/null", "w", stderr);
+    throw;
+  }
+}
+
 }  // namespace
 
 void register_sweep_commands(CLI::App& bounce_area, SweepPhysics physics) {
@@ -117,19 +169,7 @@ void register_sweep_commands(CLI::App& bounce_area, SweepPhysics physics) {
                   "Root tolerance of boundary points, fraction of the grid spacing (default 1e-9)");
   add_json_flag(*cmd, args->json);
   if (shared_physics->add_options) shared_physics->add_options(*cmd);
-  cmd->callback([args, shared_physics] {
-    const io::SweepCommandOptions o = to_options(*args, *shared_physics);
-    const sweep::CellModel model = shared_physics->make_model();
-    InterruptGuard guard;
-    std::ostream* progress = ::isatty(STDERR_FILENO) ? &std::cerr : nullptr;
-    const io::SweepCommandResult r = io::run_sweep_command(o, model, progress, &g_interrupted);
-    if (r.status == "cancelled") {
-      throw InputError("interrupted: " + std::to_string(r.cells_resumed + r.cells_computed) +
-                       " of " + std::to_string(r.cells_shard) + " cells saved in " + r.out +
-                       "; run the same command again to resume");
-    }
-    print_result(io::sweep_result_json(r, o), args->json);
-  });
+  cmd->callback([args, shared_physics] { run_sweep(*args, *shared_physics); });
 
   auto inputs = std::make_shared<std::vector<std::string>>();
   auto merge_out = std::make_shared<std::string>();

@@ -169,7 +169,7 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
       try {
         if (decision == kContinue) {
           file->append(std::string(all.begin(), all.end()));
-          if (cancel != nullptr && cancel->load()) decision = kStop;
+          if (b < n_local && cancel != nullptr && cancel->load()) decision = kStop;
         }
       } catch (const std::exception& e) {
         decision = kError;
