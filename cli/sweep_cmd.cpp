@@ -19,11 +19,17 @@ namespace tribolab::cli {
 namespace {
 
 // Set by SIGINT/SIGTERM during a sweep: the runner stops starting work, writes what is
-// finished and the command reports how to resume. (Lock-free atomics are signal-safe.)
+// finished and the command reports how to resume. A second signal kills at once.
+// (Lock-free atomics, signal() and raise() are async-signal-safe.)
 std::atomic<bool> g_interrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free);
 
-extern "C" void on_interrupt(int) { g_interrupted.store(true); }
+extern "C" void on_interrupt(int sig) {
+  if (g_interrupted.exchange(true)) {
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+  }
+}
 
 /// Installs the interrupt handler for the lifetime of the object.
 class InterruptGuard {

@@ -111,7 +111,6 @@ std::string SweepCommandOptions::validate() const {
            ": needs the whole grid, not one shard; merge the shards with `tribolab bounce merge`, "
            "then rerun the same sweep with --out set to the merged file";
   }
-  if (maps && (grid.axes.size() < 2)) return "--contour: needs a 2D grid";
   if (auto e = contour.validate(); !e.empty()) return "--contour: " + e;
   for (const std::string* p : {&contour_out, &threshold_out}) {
     if (!p->empty() && (*p == out || *p == out + ".partial")) {

@@ -223,6 +223,9 @@ SweepHeader parse_header(std::string_view line, const std::string& where) {
   }
   // The model description is the rest of the line (it may itself contain " | ").
   const auto model_pos = line.find(std::string(kSep) + "model ");
+  if (model_pos == std::string_view::npos) {
+    throw InputError(where, "malformed sweep header: no 'model' field");
+  }
   h.model = std::string(line.substr(model_pos + kSep.size() + 6));
   if (format_header(h) != std::string(line) + '\n') {
     throw InputError(where, "malformed sweep header (not in canonical form)");

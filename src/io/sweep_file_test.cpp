@@ -81,6 +81,9 @@ TEST(SweepHeader, RejectsOtherFilesAndVersionsWithTheLocation) {
   bad.replace(bad.find("1/3"), 3, "3/3");
   EXPECT_NE(message(bad).find("shard index"), std::string::npos);
   bad = good;
+  bad.replace(bad.find("| model "), 8, "| mode ");
+  EXPECT_NE(message(bad).find("no 'model' field"), std::string::npos);
+  bad = good;
   bad.replace(bad.find("speed=4"), 7, "speed=+4");
   EXPECT_NE(message(bad).find("canonical form"), std::string::npos);
 }
