@@ -1,10 +1,11 @@
 # tribolab: one-command set-up on a fresh Debian 12 machine.
 #   make demo   install what is needed, build, run both case studies, write the report
-#   make test   install what is needed, build, run every test (plus an ASan+UBSan build and
-#               a bounded libFuzzer run of the file parsers)
+#   make test   install what is needed, build, run every test (plus an ASan+UBSan build,
+#               a bounded libFuzzer run of the file parsers and the 2-rank MPI sweep)
 #   make bench  build and run the benchmarks in bench/
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
+MPI_BUILD  ?= build-mpi
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 20
 DEMO_OUT   ?= demo-out
@@ -15,11 +16,12 @@ SUDO       := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
   libgtest-dev libgmock-dev libbenchmark-dev \
   libboost-dev libeigen3-dev libceres-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
-  libpugixml-dev libzip-dev clang libclang-rt-14-dev
+  libpugixml-dev libzip-dev clang libclang-rt-14-dev \
+  libopenmpi-dev openmpi-bin
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 
-.PHONY: deps build test test-fast asan fuzz demo bench clean
+.PHONY: deps build test test-fast test-mpi asan fuzz demo bench clean
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do \
@@ -36,11 +38,12 @@ build: deps
 	cmake --build $(BUILD) -j $(JOBS)
 
 # Every test through CTest, then the same tests built with AddressSanitizer + UBSan, then
-# the parsers fuzzed for a bounded time.
+# the parsers fuzzed for a bounded time, and the MPI sweep with 2 ranks.
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 	$(MAKE) asan
 	$(MAKE) fuzz
+	$(MAKE) test-mpi
 
 # libFuzzer (clang) on every tracked-data parser, FUZZ_SECONDS each, starting from the seed
 # inputs in fuzz/corpus/<parser>/; new interesting inputs go to $(FUZZ_BUILD)/corpus/.
@@ -70,6 +73,12 @@ asan: deps
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
 
+# The MPI sweep (-DTRIBOLAB_MPI=ON): io tests, including one run with 2 ranks under mpirun.
+test-mpi: deps
+	cmake -S . -B $(MPI_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_MPI=ON -DTRIBOLAB_BENCH=OFF
+	cmake --build $(MPI_BUILD) -j $(JOBS) --target io_tests
+	ctest --test-dir $(MPI_BUILD) --output-on-failure -R 'sweep_mpi|Sweep' -E '^SweepMpi[.]'
+
 test-fast: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
@@ -80,4 +89,4 @@ bench: build
 	@for b in $(BUILD)/bench/*_bench; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD) $(DEMO_OUT)
+	rm -rf $(BUILD) $(ASAN_BUILD) $(MPI_BUILD) $(FUZZ_BUILD) $(DEMO_OUT)

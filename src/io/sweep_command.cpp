@@ -1,0 +1,399 @@
+#include "io/sweep_command.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+
+#include "io/atomic_file.hpp"
+#include "io/sweep_checkpoint.hpp"
+#include "io/sweep_file.hpp"
+#include "io/text.hpp"
+#include "numerics/error.hpp"
+
+namespace tribolab::io {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::string option_of(sweep::Quantity q) {
+  switch (q) {
+    case sweep::Quantity::speed: return "--speed";
+    case sweep::Quantity::mu: return "--mu";
+    case sweep::Quantity::theta_deg: return "--theta-deg";
+    case sweep::Quantity::omega: return "--omega";
+    case sweep::Quantity::ratio: return "--ratio";
+  }
+  return "";
+}
+
+/// "theta_deg: message" (a core validation message) -> "--theta-deg: message".
+std::string with_option_names(const std::string& message) {
+  const auto colon = message.find(": ");
+  if (colon != std::string::npos) {
+    if (auto q = sweep::quantity_from_name(std::string_view(message).substr(0, colon))) {
+      return option_of(*q) + message.substr(colon);
+    }
+  }
+  return message;
+}
+
+std::string strip_name(const std::string& message) {
+  const auto colon = message.find(": ");
+  if (colon != std::string::npos && sweep::quantity_from_name(std::string_view(message).substr(0, colon))) {
+    return message.substr(colon + 2);
+  }
+  return message;
+}
+
+std::string header_line_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!in || !std::getline(in, line) || in.eof()) {
+    throw InputError(path + ":1", "not a tribolab sweep file (no complete header line)");
+  }
+  return line;
+}
+
+}  // namespace
+
+void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& model,
+                        SweepCommandResult& r) {
+  if (o.contour_out.empty() && o.threshold_out.empty()) return;
+  std::vector<double> values;
+  scan_sweep_file(o.out, &values);
+  sweep::ContourOptions co = o.contour;
+  co.threads = o.threads;
+  if (!o.contour_out.empty()) {
+    AtomicFile file(o.contour_out);
+    const sweep::ContourResult c = sweep::trace_contour(o.grid, model, values, co);
+    write_contour_csv(file.stream(), c);
+    file.commit();
+    r.contour_lines = static_cast<std::int64_t>(c.lines.size());
+    for (const auto& l : c.lines) r.contour_points += static_cast<std::int64_t>(l.points.size());
+    r.contour_evaluations = c.evaluations;
+  }
+  if (!o.threshold_out.empty()) {
+    AtomicFile file(o.threshold_out);
+    const std::vector<sweep::Threshold> rows = sweep::spin_thresholds(o.grid, model, values, co);
+    write_threshold_csv(file.stream(), o.grid, rows);
+    file.commit();
+    for (const auto& t : rows) r.thresholds_found += t.status == sweep::Threshold::Status::found;
+  }
+}
+
+
+void print_progress(std::ostream& out, const sweep::Progress& p) {
+  const double pct =
+      p.total > 0 ? 100.0 * static_cast<double>(p.done) / static_cast<double>(p.total) : 100;
+  const double left = p.rate > 0 ? static_cast<double>(p.total - p.done) / p.rate : 0;
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "\rsweep: %lld/%lld cells (%5.1f%%)  %.4g cells/s  %.1f s  ETA %.0f s   ",
+                static_cast<long long>(p.done), static_cast<long long>(p.total), pct, p.rate,
+                p.elapsed_s, left);
+  out << buf << std::flush;
+}
+
+std::string SweepCommandOptions::validate() const {
+  if (auto e = grid.validate(); !e.empty()) return with_option_names(e);
+  if (auto e = shard.validate(); !e.empty()) return "--shard: " + e;
+  if (out.empty()) return "--out: an output file is required";
+  if (threads < 0) return "--threads: must be >= 0 (0 = all cores), got " + std::to_string(threads);
+  if (chunk_cells < 0) return "chunk_cells must be >= 0";
+  if (!(fsync_interval_s > 0)) return "fsync_interval_s must be > 0";
+  const bool maps = !contour_out.empty() || !threshold_out.empty();
+  if (maps && shard.count > 1) {
+    return std::string(contour_out.empty() ? "--threshold" : "--contour") +
+           ": needs the whole grid, not one shard; merge the shards with `tribolab bounce merge`, "
+           "then rerun the same sweep with --out set to the merged file";
+  }
+  if (auto e = contour.validate(); !e.empty()) return "--contour: " + e;
+  for (const std::string* p : {&contour_out, &threshold_out}) {
+    if (!p->empty() && (*p == out || *p == out + ".partial")) {
+      return "--contour/--threshold: must not be the sweep output file " + out;
+    }
+  }
+  if (!contour_out.empty() && contour_out == threshold_out) {
+    return "--contour and --threshold must be different files";
+  }
+  return {};
+}
+
+SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::CellModel& model,
+                                     std::ostream* progress, const std::atomic<bool>* cancel) {
+  if (auto e = o.validate(); !e.empty()) throw InputError(e);
+  if (auto e = model.validate(); !e.empty()) throw InputError("cell model: " + e);
+  if ((!o.contour_out.empty() || !o.threshold_out.empty()) &&
+      model.output_index(o.contour.output) < 0) {
+    throw InputError("--contour: the cell model has no output '" + o.contour.output + "'");
+  }
+  {
+    const fs::path target(o.out);
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    if (!fs::is_directory(dir)) throw InputError(o.out, "directory does not exist");
+    if (fs::is_directory(target)) throw InputError(o.out, "is a directory, expected a file name");
+  }
+  const SweepHeader header{o.grid, o.shard, model.output_names, model.description};
+  SweepCommandResult r;
+  r.out = o.out;
+  r.cells_grid = o.grid.cell_count();
+  r.cells_shard = o.shard.cells(r.cells_grid);
+  r.threads = sweep::resolve_threads(o.threads);
+  SweepCheckpoint file(o, header);
+  if (file.reused()) {
+    r.status = "reused";
+    r.cells_resumed = r.cells_shard;
+    write_derived_maps(o, model, r);
+    return r;
+  }
+  r.cells_resumed = file.first_local();
+
+  // Compute the missing cells; each chunk's lines are written as soon as every earlier
+  // chunk is written, so the file is always a prefix of the final file.
+  sweep::ResultSink sink;
+  sink.encode = [&](const sweep::ChunkView& c, std::string& buf) {
+    append_cell_lines(buf, o.grid, c);
+  };
+  sink.commit = [&](const sweep::ChunkView&, const std::string& buf) { file.append(buf); };
+  sweep::RunOptions ro;
+  ro.threads = o.threads;
+  ro.chunk_cells = o.chunk_cells;
+  ro.cancel = cancel;
+  bool printed = false;
+  if (progress != nullptr) {
+    ro.progress = [&](const sweep::Progress& p) {
+      print_progress(*progress, p);
+      printed = true;
+    };
+  }
+  const sweep::RunSummary s = sweep::run_cells(o.grid, model, o.shard, file.first_local(), ro, sink);
+  if (printed) *progress << '\n' << std::flush;
+  r.cells_computed = s.cells_computed;
+  r.seconds = s.seconds;
+  r.threads = s.threads;
+  const bool complete = s.status == sweep::RunSummary::Status::completed;
+  file.finish(complete);
+  if (!complete) {
+    r.status = "cancelled";
+    r.out = file.partial_path();
+    return r;
+  }
+  write_derived_maps(o, model, r);
+  return r;
+}
+
+MergeResult run_merge_command(const std::vector<std::string>& inputs, const std::string& out) {
+  if (inputs.empty()) throw InputError("merge: no input files given");
+  if (out.empty()) throw InputError("--out: an output file is required");
+  std::vector<SweepHeader> headers;
+  for (const std::string& path : inputs) {
+    if (!fs::exists(path)) throw InputError(path, "no such file");
+    headers.push_back(parse_header(header_line_of(path), path + ":1"));
+  }
+  const std::int64_t n = headers[0].shard.count;
+  std::vector<std::size_t> owner(static_cast<std::size_t>(n), inputs.size());
+  for (std::size_t f = 0; f < inputs.size(); ++f) {
+    const SweepHeader& h = headers[f];
+    if (header_identity(h) != header_identity(headers[0]) || h.shard.count != n) {
+      throw InputError(inputs[f] + ":1", "is a shard of a different sweep than " + inputs[0] +
+                                             " (differs in " +
+                                             header_difference(h, headers[0], false) +
+                                             ")");
+    }
+    std::size_t& o = owner[static_cast<std::size_t>(h.shard.index)];
+    if (o != inputs.size()) {
+      throw InputError(inputs[f] + ":1", "shard " + std::to_string(h.shard.index) + "/" +
+                                             std::to_string(n) + " given twice (also " +
+                                             inputs[o] + ")");
+    }
+    o = f;
+  }
+  std::string missing;
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (owner[static_cast<std::size_t>(i)] == inputs.size()) {
+      missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(n);
+    }
+  }
+  if (!missing.empty()) throw InputError("merge: missing shard(s) " + missing);
+
+  const SweepHeader& h0 = headers[0];
+  const sweep::GridSpec& grid = h0.grid;
+  struct Input {
+    std::string path;
+    std::ifstream in;
+    std::int64_t line = 2;
+  };
+  std::vector<Input> in(static_cast<std::size_t>(n));
+  for (std::int64_t i = 0; i < n; ++i) {
+    Input& x = in[static_cast<std::size_t>(i)];
+    x.path = inputs[owner[static_cast<std::size_t>(i)]];
+    x.in.open(x.path, std::ios::binary);
+    std::string skip;
+    std::getline(x.in, skip);
+    if (!std::getline(x.in, skip) || x.in.eof() || skip + '\n' != format_columns(h0)) {
+      throw InputError(x.path + ":2", "column names do not match the header");
+    }
+  }
+  AtomicFile file(out);
+  const SweepHeader merged{grid, sweep::Shard{}, h0.outputs, h0.model};
+  std::string buf = format_header(merged) + format_columns(merged);
+  std::string line;
+  const std::int64_t total = grid.cell_count();
+  for (std::int64_t g = 0; g < total; ++g) {
+    Input& x = in[static_cast<std::size_t>(g % n)];
+    ++x.line;
+    const std::string where = x.path + ":" + std::to_string(x.line);
+    if (!std::getline(x.in, line) || x.in.eof()) {
+      const sweep::Shard sh{g % n, n};
+      throw InputError(where, "incomplete shard: has " + std::to_string(g / n) + " of " +
+                                  std::to_string(sh.cells(total)) +
+                                  " cells; finish it by rerunning its sweep command");
+    }
+    check_cell_line(line, grid, grid.cell(g), h0.outputs.size(), nullptr, where);
+    buf += line;
+    buf += '\n';
+    if (buf.size() > (1u << 20)) {
+      file.stream() << buf;
+      buf.clear();
+    }
+  }
+  for (Input& x : in) {
+    if (std::getline(x.in, line)) {
+      throw InputError(x.path + ":" + std::to_string(x.line + 1), "more lines than the cells of its shard");
+    }
+  }
+  file.stream() << buf;
+  file.commit();
+  return MergeResult{out, n, total};
+}
+
+sweep::Axis parse_axis(std::string_view text, sweep::Quantity q, const std::string& option) {
+  const std::vector<std::string> p = split(trim(text), ':');
+  if (p.size() != 3) {
+    throw InputError(option, "expected a range lo:hi:count (e.g. 100:170:71), got '" +
+                                 std::string(text.substr(0, 40)) + "'");
+  }
+  sweep::Axis a;
+  a.quantity = q;
+  a.lo = parse_double(p[0], option);
+  a.hi = parse_double(p[1], option);
+  const std::string_view c = trim(p[2]);
+  const auto [ptr, ec] = std::from_chars(c.data(), c.data() + c.size(), a.count);
+  if (c.empty() || ec != std::errc() || ptr != c.data() + c.size()) {
+    throw InputError(option, "count must be a whole number >= 1, got '" + std::string(c.substr(0, 40)) + "'");
+  }
+  if (auto e = a.validate(); !e.empty()) throw InputError(option, strip_name(e));
+  return a;
+}
+
+ValueOrAxis parse_value_or_axis(std::string_view text, sweep::Quantity q, const std::string& option) {
+  ValueOrAxis r;
+  if (text.find(':') != std::string_view::npos) {
+    r.axis = parse_axis(text, q, option);
+    return r;
+  }
+  r.value = parse_double(text, option);
+  sweep::Axis single{q, r.value, r.value, 1};
+  if (auto e = single.validate(); !e.empty()) throw InputError(option, strip_name(e));
+  return r;
+}
+
+sweep::Shard parse_shard(std::string_view text, const std::string& option) {
+  const std::string_view t = trim(text);
+  const auto slash = t.find('/');
+  sweep::Shard s;
+  auto parse = [&](std::string_view f, std::int64_t& v) {
+    const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+    return !f.empty() && ec == std::errc() && ptr == f.data() + f.size();
+  };
+  if (slash == std::string_view::npos || !parse(t.substr(0, slash), s.index) ||
+      !parse(t.substr(slash + 1), s.count)) {
+    throw InputError(option, "expected i/N with whole numbers 0 <= i < N (e.g. 0/4), got '" +
+                                 std::string(text.substr(0, 40)) + "'");
+  }
+  if (auto e = s.validate(); !e.empty()) throw InputError(option, e);
+  return s;
+}
+
+nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommandOptions& o) {
+  nlohmann::json j;
+  j["status"] = r.status;
+  j["out"] = r.out;
+  j["cells_grid"] = r.cells_grid;
+  j["cells_shard"] = r.cells_shard;
+  j["cells_resumed"] = r.cells_resumed;
+  j["cells_computed"] = r.cells_computed;
+  j["threads"] = r.threads;
+  j["seconds"] = r.seconds;
+  j["cells_per_second"] =
+      r.seconds > 0 ? nlohmann::json(static_cast<double>(r.cells_computed) / r.seconds) : nlohmann::json();
+  j["contour"] = o.contour_out.empty()
+                     ? nlohmann::json()
+                     : nlohmann::json{{"file", o.contour_out},
+                                      {"lines", r.contour_lines},
+                                      {"points", r.contour_points},
+                                      {"evaluations", r.contour_evaluations}};
+  j["threshold"] = o.threshold_out.empty()
+                       ? nlohmann::json()
+                       : nlohmann::json{{"file", o.threshold_out}, {"found", r.thresholds_found}};
+  return j;
+}
+
+void write_contour_csv(std::ostream& out, const sweep::ContourResult& c) {
+  std::string s = "line,closed,";
+  for (sweep::Quantity q : c.slice_quantities) s += std::string(sweep::quantity_name(q)) + ",";
+  s += "theta_deg," + std::string(sweep::quantity_name(c.spin_axis)) + ",refined\n";
+  for (std::size_t l = 0; l < c.lines.size(); ++l) {
+    const sweep::Polyline& line = c.lines[l];
+    for (const sweep::ContourPoint& p : line.points) {
+      s += std::to_string(l) + "," + (line.closed ? "1" : "0") + ",";
+      for (double v : c.slice_values[static_cast<std::size_t>(line.slice)]) {
+        append_number(s, v);
+        s += ',';
+      }
+      append_number(s, p.theta_deg);
+      s += ',';
+      append_number(s, p.spin);
+      s += p.refined ? ",1\n" : ",0\n";
+    }
+  }
+  out << s;
+}
+
+void write_threshold_csv(std::ostream& out, const sweep::GridSpec& grid,
+                         const std::vector<sweep::Threshold>& rows) {
+  std::string s;
+  const std::size_t lead = grid.axes.size() - 2;
+  for (std::size_t k = 0; k < lead; ++k) s += std::string(sweep::quantity_name(grid.axes[k].quantity)) + ",";
+  s += "theta_deg,status,omega,ratio,energy_ratio,refined\n";
+  auto num = [&](double v) {
+    if (!std::isnan(v)) append_number(s, v);  // empty field when there is no threshold
+  };
+  for (const sweep::Threshold& t : rows) {
+    std::int64_t rest = t.slice;
+    std::vector<double> lead_values(lead);
+    for (std::size_t k = lead; k-- > 0;) {
+      lead_values[k] = grid.axes[k].value(rest % grid.axes[k].count);
+      rest /= grid.axes[k].count;
+    }
+    for (double v : lead_values) {
+      append_number(s, v);
+      s += ',';
+    }
+    append_number(s, t.theta_deg);
+    s += "," + sweep::status_name(t.status) + ",";
+    num(t.omega);
+    s += ',';
+    num(t.ratio);
+    s += ',';
+    num(t.energy_ratio);
+    s += t.refined ? ",1\n" : ",0\n";
+  }
+  out << s;
+}
+
+}  // namespace tribolab::io
