@@ -13,7 +13,7 @@ DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
   libgtest-dev libgmock-dev libbenchmark-dev \
   libboost-dev libeigen3-dev libceres-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
   libpugixml-dev libzip-dev clang libclang-rt-14-dev \
-  chromium fonts-liberation
+  chromium fonts-liberation fonts-wqy-microhei
 
 # Plotly.js for the HTML reports, from the npm registry at the exact version and sha512 hash
 # pinned in report/vendor/package-lock.json; the build embeds it into the tribolab binary

@@ -11,7 +11,7 @@ void add_about_section(report::Report& r, std::ostream& log) {
       "impact experiments. It reads motion tracked in video with Tracker, does the analyses of "
       "two student research projects automatically and with stated uncertainties, simulates "
       "and predicts with verified models, fits model parameters to data and sweeps parameter "
-      "spaces. This report was written by `tribolab demo`: every result in it is computed by "
+      "spaces. This report was written by the command “tribolab demo”: every result in it is computed by "
       "tribolab when the report is written, from data files that ship with the project.");
 
   s.add_subheading("The two studies (the seeds)");

@@ -36,7 +36,7 @@ void run_demo(const DemoOptions& opt) {
 
   report::Report r;
   r.title = "tribolab: friction and impact, two studies reproduced";
-  r.subtitle = "Written by `tribolab demo` (tribolab " + std::string(report::tribolab_version()) +
+  r.subtitle = "Written by “tribolab demo” (tribolab " + std::string(report::tribolab_version()) +
                ") from data shipped with the project.";
   nlohmann::json studies = nlohmann::json::array();
   for (const CaseStudy& c : demo_case_studies()) {

@@ -88,12 +88,30 @@ constexpr const char* kRender = R"JS(
 })();
 )JS";
 
-/// Table cells that hold a number (or a number with uncertainty) are right-aligned.
+/// A cell holding a number, or a number with uncertainty ("0.634 ± 0.012", "(6.0 ± 1.2)×10⁵").
 bool looks_numeric(const std::string& cell) {
   if (cell.empty()) return false;
   const char c = cell[0];
-  return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '(' || c == '.' ||
-         cell == "—";
+  const bool digit_after = cell.size() > 1 && cell[1] >= '0' && cell[1] <= '9';
+  return (c >= '0' && c <= '9') || ((c == '-' || c == '+' || c == '(' || c == '.') && digit_after);
+}
+
+/// Columns whose cells are all numbers (or "—" for missing, with at least one number) are
+/// right-aligned, so digits line up.
+std::vector<bool> numeric_columns(const Table& t) {
+  std::vector<bool> numeric(t.header.size(), false);
+  for (std::size_t c = 0; c < t.header.size(); ++c) {
+    bool any = false, all = true;
+    for (const auto& row : t.rows) {
+      if (looks_numeric(row[c])) {
+        any = true;
+      } else if (row[c] != "—" && !row[c].empty()) {
+        all = false;
+      }
+    }
+    numeric[c] = any && all;
+  }
+  return numeric;
 }
 
 class Writer {
@@ -182,11 +200,12 @@ class Writer {
     out_ += "<thead><tr>";
     for (const auto& h : t.header) out_ += "<th>" + notation_html(h) + "</th>";
     out_ += "</tr></thead>\n<tbody>\n";
+    const std::vector<bool> numeric = numeric_columns(t);
     for (const auto& row : t.rows) {
       out_ += "<tr>";
-      for (const auto& cell : row) {
-        out_ += looks_numeric(cell) ? "<td class=\"num\">" : "<td>";
-        out_ += html_escape(cell) + "</td>";
+      for (std::size_t c = 0; c < row.size(); ++c) {
+        out_ += numeric[c] ? "<td class=\"num\">" : "<td>";
+        out_ += html_escape(row[c]) + "</td>";
       }
       out_ += "</tr>\n";
     }

@@ -201,13 +201,20 @@ TEST(Html, EquationsShowSubscriptsAndCiteTheirSource) {
   EXPECT_NE(body.find("<p class=\"note\">stopping position</p>"), std::string::npos);
 }
 
-TEST(Html, TablesRightAlignNumbers) {
+TEST(Html, TablesRightAlignNumericColumns) {
   Report r;
-  r.add_section("T").add_table({"caption & more", {"q", "v_0 (m/s)"}, {{"μ", "0.634 ± 0.012"}}});
+  r.add_section("T").add_table({"caption & more",
+                                {"q", "v_0 (m/s)", "unit"},
+                                {{"μ", "0.634 ± 0.012", "—"}, {"-x", "—", "m"}}});
   const std::string body = body_of(to_html(r));
   EXPECT_NE(body.find("<caption>caption &amp; more</caption>"), std::string::npos);
   EXPECT_NE(body.find("<th>v<sub>0</sub> (m/s)</th>"), std::string::npos);
-  EXPECT_NE(body.find("<td>μ</td><td class=\"num\">0.634 ± 0.012</td>"), std::string::npos);
+  // Column 2 holds a number and a missing value: right-aligned; "-x" and "m" are text.
+  EXPECT_NE(body.find("<tr><td>μ</td><td class=\"num\">0.634 ± 0.012</td><td>—</td></tr>"),
+            std::string::npos)
+      << body;
+  EXPECT_NE(body.find("<tr><td>-x</td><td class=\"num\">—</td><td>m</td></tr>"),
+            std::string::npos);
 }
 
 TEST(Html, SectionIdsAreUniqueAndListedInContents) {

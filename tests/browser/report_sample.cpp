@@ -2,7 +2,10 @@
 // for the browser test (check_report.sh): 4 figures. The data are simple closed forms
 // (a free-fall parabola, a power law, a smooth function on a grid), not measurements.
 //
-//   report_sample OUT.html
+//   report_sample OUT.html             the test report
+//   report_sample OUT.html --readme    the report pictured in README.md (docs/img/report.png:
+//     chromium --headless --no-sandbox --hide-scrollbars --virtual-time-budget=10000
+//              --window-size=1100,1250 --screenshot=docs/img/report.png file://OUT.html)
 #include "report/format.hpp"
 #include "report/html.hpp"
 
@@ -139,17 +142,29 @@ rpt::Report sample() {
   return r;
 }
 
+/// The picture in README.md (docs/img/report.png): the figures alone, under a plain title.
+rpt::Report readme_picture() {
+  rpt::Report r;
+  r.title = "A tribolab report";
+  r.subtitle = "Interactive plots: zoom, hover for values, save as PNG. Works offline.";
+  auto& plots = r.add_section("Figures");
+  plots.add_figure(heatmap_with_boundary());
+  plots.add_figure(parabola_with_gap());
+  return r;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: report_sample OUT.html\n";
+  const bool readme = argc == 3 && std::string(argv[2]) == "--readme";
+  if (argc != 2 && !readme) {
+    std::cerr << "usage: report_sample OUT.html [--readme]\n";
     return 2;
   }
   try {
     const std::filesystem::path out(argv[1]);
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-    const rpt::Report r = sample();
+    const rpt::Report r = readme ? readme_picture() : sample();
     rpt::write_html(r, out.string());
     std::cout << out.string() << ": " << r.figure_count() << " figures\n";
   } catch (const std::exception& e) {
