@@ -217,6 +217,14 @@ TEST(Html, TablesRightAlignNumericColumns) {
             std::string::npos);
 }
 
+TEST(Report, SectionReferencesStayValidWhileAddingSections) {
+  Report r;
+  Section& first = r.add_section("first");
+  for (int i = 0; i < 100; ++i) r.add_section("more");
+  first.add_paragraph("still here");  // would be a dangling reference with a vector
+  EXPECT_EQ(std::get<Paragraph>(r.sections.front().blocks.at(0)).text, "still here");
+}
+
 TEST(Html, SectionIdsAreUniqueAndListedInContents) {
   Report r;
   r.add_section("Results");

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <deque>
 #include <optional>
 #include <string>
 #include <variant>
@@ -130,9 +131,10 @@ struct Section {
 struct Report {
   std::string title;
   std::string subtitle;
-  std::vector<Section> sections;
+  std::deque<Section> sections;  ///< a deque: references from add_section() stay valid
 
-  /// Appends an empty section and returns it for filling.
+  /// Appends an empty section and returns it for filling; the reference stays valid when
+  /// more sections are added.
   Section& add_section(std::string heading);
 
   /// Number of figures in the report (= plots the page draws).
