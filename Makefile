@@ -17,11 +17,18 @@ DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
   libgtest-dev libgmock-dev libbenchmark-dev \
   libboost-dev libeigen3-dev libceres-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
   libpugixml-dev libzip-dev clang libclang-rt-14-dev \
-  libopenmpi-dev openmpi-bin
+  libopenmpi-dev openmpi-bin \
+  chromium fonts-liberation fonts-wqy-microhei
+
+# Plotly.js for the HTML reports, from the npm registry at the exact version and sha512 hash
+# pinned in report/vendor/package-lock.json; the build embeds it into the tribolab binary
+# (docs/design.md#reports). npm comes from Debian's `npm` package when none is installed.
+VENDOR    := report/vendor
+PLOTLY_JS := $(VENDOR)/node_modules/plotly.js-dist-min/plotly.min.js
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 
-.PHONY: deps build test test-fast test-mpi asan fuzz demo bench clean
+.PHONY: deps vendor build test test-fast test-mpi asan fuzz demo bench clean
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do \
@@ -32,6 +39,17 @@ deps:
 	  $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
 	else echo "make deps: all Debian packages present"; fi
+	@command -v npm >/dev/null 2>&1 || { echo "make deps: installing npm"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends npm; }
+	@$(MAKE) --no-print-directory vendor
+
+# npm ci installs exactly what package-lock.json pins (and checks its hash) into the
+# git-ignored report/vendor/node_modules; re-run only when the pins change.
+vendor: $(PLOTLY_JS)
+$(PLOTLY_JS): $(VENDOR)/package.json $(VENDOR)/package-lock.json
+	cd $(VENDOR) && npm ci --no-audit --no-fund --loglevel=error
+	@test -s $@ && touch $@
 
 build: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
@@ -89,4 +107,4 @@ bench: build
 	@for b in $(BUILD)/bench/*_bench; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) $(MPI_BUILD) $(FUZZ_BUILD) $(DEMO_OUT)
+	rm -rf $(BUILD) $(ASAN_BUILD) $(MPI_BUILD) $(FUZZ_BUILD) $(DEMO_OUT) $(VENDOR)/node_modules

@@ -1,11 +1,77 @@
-// `tribolab demo`: commands are added here as the demo area grows.
+// `tribolab demo --out DIR`: runs the case studies and writes DIR/report.html.
 #include "app.hpp"
+#include "demo.hpp"
+#include "numerics/error.hpp"
+#include "report/embedded.hpp"
+#include "report/html.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
 
 namespace tribolab::cli {
+namespace {
+
+struct DemoOptions {
+  std::string out = "demo-out";  ///< folder for report.html (created if needed)
+  bool json = false;
+};
+
+/// Creates `dir` (and its parents); InputError naming --out when that is impossible.
+void make_output_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  if (dir.empty()) throw InputError("--out", "folder name is empty");
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) {
+    throw InputError("--out", "cannot create folder '" + dir + "'" +
+                                  (ec ? ": " + ec.message() : ": a file has that name"));
+  }
+}
+
+void run_demo(const DemoOptions& opt) {
+  make_output_folder(opt.out);
+  std::ostringstream quiet;
+  std::ostream& log = opt.json ? static_cast<std::ostream&>(quiet) : std::cout;
+
+  report::Report r;
+  r.title = "tribolab: friction and impact, two studies reproduced";
+  r.subtitle = "Written by “tribolab demo” (tribolab " + std::string(report::tribolab_version()) +
+               ") from data shipped with the project.";
+  nlohmann::json studies = nlohmann::json::array();
+  for (const CaseStudy& c : demo_case_studies()) {
+    log << "demo: " << c.name << '\n' << std::flush;
+    c.build(r, log);
+    studies.push_back(c.name);
+  }
+  const std::string path = (std::filesystem::path(opt.out) / "report.html").string();
+  report::write_html(r, path);
+  print_result({{"report", path},
+                {"case_studies", studies},
+                {"sections", r.sections.size()},
+                {"figures", r.figure_count()}},
+               opt.json);
+}
+
+}  // namespace
+
+std::vector<CaseStudy> demo_case_studies() {
+  return {
+      {"about", add_about_section},
+  };
+}
 
 void register_demo(CLI::App& root) {
-  auto* area = root.add_subcommand("demo", "demo commands");
-  area->require_subcommand(0);
+  auto opt = std::make_shared<DemoOptions>();
+  auto* cmd = root.add_subcommand(
+      "demo",
+      "Run both studies end to end on shipped data and write an offline HTML report "
+      "(DIR/report.html)");
+  cmd->add_option("--out", opt->out, "Folder for report.html, created if needed")
+      ->type_name("DIR")
+      ->capture_default_str();
+  add_json_flag(*cmd, opt->json);
+  cmd->callback([opt] { run_demo(*opt); });
 }
 
 }  // namespace tribolab::cli

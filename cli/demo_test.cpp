@@ -1,0 +1,65 @@
+// Golden tests of `tribolab demo`: the report appears where asked, is self-contained, and a
+// folder that cannot be created is one error line.
+#include "cli_test_util.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace tribolab::cli::testing {
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
+  const std::string dir = temp_dir("demo") + "/new/out";  // parents are created too
+  const auto r = run_tribolab("demo --out '" + dir + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  const std::string path = dir + "/report.html";
+  EXPECT_NE(r.out.find(path), std::string::npos) << r.out;
+  ASSERT_TRUE(std::filesystem::exists(path));
+  const std::string html = slurp(path);
+  EXPECT_NE(html.find("<div id=\"tribolab-status\" hidden>pending</div>"), std::string::npos);
+  EXPECT_NE(html.find("window.onerror"), std::string::npos);
+  EXPECT_NE(html.find("* plotly.js v"), std::string::npos);  // the library is embedded
+  EXPECT_EQ(html.find("<script src"), std::string::npos);
+  EXPECT_EQ(html.find("src=\"http"), std::string::npos);
+  EXPECT_NE(html.find("About this report"), std::string::npos);
+}
+
+TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
+  const std::string dir = temp_dir("demo_json");
+  const auto r = run_tribolab("demo --json --out '" + dir + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(count_lines(r.out), 1) << r.out;  // one JSON object, no progress lines
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["report"], dir + "/report.html");
+  EXPECT_EQ(j["case_studies"][0], "about");
+  const std::string html = slurp(dir + "/report.html");
+  EXPECT_EQ(j["figures"].get<std::size_t>(), count(html, "class=\"tribolab-plot\""));
+  EXPECT_EQ(j["sections"].get<std::size_t>(), count(html, "<section id="));
+}
+
+TEST(Demo, OutUnderARegularFileIsOneErrorLine) {
+  const std::string dir = temp_dir("demo_bad");
+  std::ofstream(dir + "/file") << "not a folder\n";
+  for (const std::string& out : {dir + "/file/sub", dir + "/file"}) {
+    const auto r = run_tribolab("demo --out '" + out + "'");
+    EXPECT_NE(r.exit_code, 0) << out;
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(out), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/file/sub/report.html"));
+}
+
+}  // namespace
+}  // namespace tribolab::cli::testing

@@ -1,0 +1,46 @@
+#include "report_option.hpp"
+
+#include "report/html.hpp"
+
+#include <cctype>
+#include <filesystem>
+
+namespace tribolab::cli {
+
+std::string check_report_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path p(path);
+  std::string ext = p.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".html" && ext != ".htm") return "'" + path + "' must end in .html or .htm";
+  std::error_code ec;
+  if (fs::is_directory(p, ec)) return "'" + path + "' is a directory";
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir, ec)) return "folder '" + dir.string() + "' does not exist";
+  return {};
+}
+
+CLI::Option* add_report_option(CLI::App& cmd, std::string& path) {
+  return cmd
+      .add_option("--report", path,
+                  "Also write an interactive, offline HTML report to this file (.html)")
+      ->type_name("FILE.html")
+      ->check(CLI::Validator(
+          [](std::string& value) { return check_report_path(value); }, "FILE.html",
+          "report path"));
+}
+
+bool write_report_if_requested(const std::string& path,
+                               const std::function<report::Report()>& build) {
+  if (path.empty()) return false;
+  report::write_html(build(), path);
+  return true;
+}
+
+bool write_report_if_requested(const std::string& path, const report::Report& report) {
+  if (path.empty()) return false;
+  report::write_html(report, path);
+  return true;
+}
+
+}  // namespace tribolab::cli

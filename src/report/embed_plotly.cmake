@@ -1,0 +1,24 @@
+# Embeds the vendored Plotly.js into tribolab_report (included from the top CMakeLists.txt
+# before the report library is defined). `make deps` runs `npm ci` in report/vendor, which
+# installs the exact version and sha512 hash pinned in report/vendor/package-lock.json;
+# see docs/design.md#reports.
+set(TRIBOLAB_VENDOR_DIR ${CMAKE_SOURCE_DIR}/report/vendor)
+set(TRIBOLAB_PLOTLY_DIR ${TRIBOLAB_VENDOR_DIR}/node_modules/plotly.js-dist-min
+    CACHE PATH "Folder of the vendored plotly.js-dist-min package")
+set(plotly_js ${TRIBOLAB_PLOTLY_DIR}/plotly.min.js)
+if(NOT EXISTS ${plotly_js} OR NOT EXISTS ${TRIBOLAB_PLOTLY_DIR}/package.json)
+  message(FATAL_ERROR
+    "Plotly.js is not vendored (${plotly_js} is missing). Run `make deps`, or "
+    "`npm ci --prefix report/vendor`, then configure again.")
+endif()
+if(plotly_js MATCHES "[\"\\\\]")
+  message(FATAL_ERROR "the path ${plotly_js} must not contain quotes or backslashes")
+endif()
+file(READ ${TRIBOLAB_PLOTLY_DIR}/package.json plotly_package)
+string(JSON plotly_version GET ${plotly_package} version)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+             ${TRIBOLAB_PLOTLY_DIR}/package.json ${TRIBOLAB_VENDOR_DIR}/package-lock.json)
+set_source_files_properties(${CMAKE_SOURCE_DIR}/src/report/embedded.cpp PROPERTIES
+  OBJECT_DEPENDS ${plotly_js}
+  COMPILE_DEFINITIONS "TRIBOLAB_PLOTLY_JS_PATH=\"${plotly_js}\";TRIBOLAB_PLOTLY_VERSION=\"${plotly_version}\";TRIBOLAB_VERSION=\"${PROJECT_VERSION}\"")
+message(STATUS "Report: embedding Plotly.js ${plotly_version} from ${plotly_js}")

@@ -1,0 +1,19 @@
+// What the report writer carries inside the tribolab binary: the Plotly.js library, copied
+// from report/vendor/node_modules at compile time (embed_plotly.cmake), so the program writes
+// complete offline reports anywhere, without the source tree or a network.
+#pragma once
+
+#include <string_view>
+
+namespace tribolab::report {
+
+/// The minified Plotly.js source (about 4.8 MB), exactly as vendored by `npm ci`.
+std::string_view plotly_js();
+
+/// Plotly.js version, from the vendored package.json (e.g. "4.1.2").
+std::string_view plotly_version();
+
+/// tribolab version (the CMake project version, e.g. "0.1.0").
+std::string_view tribolab_version();
+
+}  // namespace tribolab::report

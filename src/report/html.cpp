@@ -1,0 +1,253 @@
+#include "report/html.hpp"
+
+#include "io/atomic_file.hpp"
+#include "report/embedded.hpp"
+#include "report/format.hpp"
+#include "report/plotly_json.hpp"
+
+#include <set>
+#include <stdexcept>
+#include <variant>
+
+namespace tribolab::report {
+namespace {
+
+constexpr const char* kStyle = R"CSS(
+:root { --ink: #1d2430; --muted: #5b6678; --rule: #d9dee7; --accent: #2c5d8f; }
+* { box-sizing: border-box; }
+body { margin: 0; color: var(--ink); background: #fff;
+  font: 16px/1.55 system-ui, -apple-system, "Segoe UI", "Noto Sans", "Noto Sans CJK SC", sans-serif; }
+header, nav, main, footer { max-width: 1100px; margin: 0 auto; padding: 0 24px; }
+header { padding-top: 28px; border-bottom: 1px solid var(--rule); }
+h1 { font-size: 1.9rem; margin: 0 0 4px; }
+.subtitle { color: var(--muted); margin: 0 0 16px; }
+nav { padding-top: 12px; padding-bottom: 4px; }
+nav h2 { font-size: 1rem; margin: 0 0 4px; color: var(--muted); }
+nav ol { margin: 0; padding-left: 22px; columns: 2; }
+a { color: var(--accent); }
+section { border-top: 1px solid var(--rule); padding: 8px 0 16px; }
+h2 { font-size: 1.45rem; margin: 16px 0 8px; }
+h3 { font-size: 1.15rem; margin: 18px 0 6px; }
+p { margin: 8px 0; max-width: 78ch; }
+.equation { margin: 10px 0; padding: 8px 14px; background: #f6f8fb; border-left: 3px solid var(--accent); }
+.equation .math { font-family: "Cambria Math", "STIX Two Math", "Latin Modern Math", Georgia, serif;
+  font-size: 1.12rem; }
+.equation .source { float: right; color: var(--muted); font-size: 0.9rem; }
+.equation .note { margin: 4px 0 0; color: var(--muted); font-size: 0.92rem; }
+table { border-collapse: collapse; margin: 12px 0; font-variant-numeric: tabular-nums; }
+caption { caption-side: top; text-align: left; font-weight: 600; padding-bottom: 4px; }
+th, td { border-bottom: 1px solid var(--rule); padding: 4px 12px; text-align: left; }
+th { border-bottom: 2px solid var(--ink); }
+td.num { text-align: right; white-space: nowrap; }
+figure { margin: 16px 0; }
+.tribolab-plot { width: 100%; }
+figcaption { color: var(--muted); font-size: 0.95rem; }
+footer { border-top: 1px solid var(--rule); color: var(--muted); font-size: 0.9rem; padding-top: 10px;
+  padding-bottom: 30px; }
+)CSS";
+
+// Runs before Plotly.js loads, so errors while loading it are caught too.
+constexpr const char* kErrorCapture = R"JS(
+window.tribolabErrors = [];
+window.tribolabShowStatus = function (text) {
+  var el = document.getElementById('tribolab-status');
+  if (!el) return;
+  if (window.tribolabErrors.length) text = 'error: ' + window.tribolabErrors.join('; ');
+  if (text !== undefined) el.textContent = text;
+};
+window.onerror = function (message, source, line) {
+  window.tribolabErrors.push(String(message) + (line ? ' (line ' + line + ')' : ''));
+  window.tribolabShowStatus();
+  return false;
+};
+window.addEventListener('unhandledrejection', function (event) {
+  window.tribolabErrors.push('unhandled rejection: ' + String(event.reason));
+  window.tribolabShowStatus();
+});
+)JS";
+
+// Draws every figure; the status becomes "ok N" once all N Plotly.newPlot promises resolved.
+constexpr const char* kRender = R"JS(
+(function () {
+  var fail = function (e) {
+    window.tribolabErrors.push(String(e && e.message ? e.message : e));
+    window.tribolabShowStatus('');
+  };
+  try {
+    if (typeof Plotly === 'undefined') throw new Error('Plotly.js did not load');
+    var spec = JSON.parse(document.getElementById('tribolab-figures').textContent);
+    var jobs = spec.figures.map(function (f) {
+      return Plotly.newPlot(f.id, f.data, f.layout, f.config);
+    });
+    Promise.all(jobs).then(function (plots) {
+      window.tribolabShowStatus('ok ' + plots.length);
+    }, fail);
+  } catch (e) {
+    fail(e);
+  }
+})();
+)JS";
+
+/// A cell holding a number, or a number with uncertainty ("0.634 ± 0.012", "(6.0 ± 1.2)×10⁵").
+bool looks_numeric(const std::string& cell) {
+  if (cell.empty()) return false;
+  const char c = cell[0];
+  const bool digit_after = cell.size() > 1 && cell[1] >= '0' && cell[1] <= '9';
+  return (c >= '0' && c <= '9') || ((c == '-' || c == '+' || c == '(' || c == '.') && digit_after);
+}
+
+/// Columns whose cells are all numbers (or "—" for missing, with at least one number) are
+/// right-aligned, so digits line up.
+std::vector<bool> numeric_columns(const Table& t) {
+  std::vector<bool> numeric(t.header.size(), false);
+  for (std::size_t c = 0; c < t.header.size(); ++c) {
+    bool any = false, all = true;
+    for (const auto& row : t.rows) {
+      if (looks_numeric(row[c])) {
+        any = true;
+      } else if (row[c] != "—" && !row[c].empty()) {
+        all = false;
+      }
+    }
+    numeric[c] = any && all;
+  }
+  return numeric;
+}
+
+class Writer {
+ public:
+  explicit Writer(std::string& out) : out_(out) {}
+
+  void write(const Report& r) {
+    out_ += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+    out_ += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+    out_ += "<meta name=\"generator\" content=\"tribolab " + std::string(tribolab_version()) +
+            "\">\n";
+    out_ += "<title>" + html_escape(r.title) + "</title>\n";
+    out_ += "<style>" + std::string(kStyle) + "</style>\n";
+    out_ += "<script>" + std::string(kErrorCapture) + "</script>\n";
+    out_ += "<script>/* Plotly.js " + std::string(plotly_version()) +
+            ", MIT licence, embedded so this report needs no network */\n";
+    out_ += script_safe(plotly_js());
+    out_ += "\n</script>\n</head>\n<body>\n";
+
+    out_ += "<header>\n<h1>" + html_escape(r.title) + "</h1>\n";
+    if (!r.subtitle.empty()) out_ += "<p class=\"subtitle\">" + html_escape(r.subtitle) + "</p>\n";
+    out_ += "</header>\n";
+
+    std::vector<std::string> ids;
+    std::set<std::string> used;
+    for (const Section& s : r.sections) {
+      std::string id = slugify(s.heading);
+      for (int k = 2; used.count(id) != 0; ++k) id = slugify(s.heading) + "-" + std::to_string(k);
+      used.insert(id);
+      ids.push_back(id);
+    }
+    if (!r.sections.empty()) {
+      out_ += "<nav>\n<h2>Contents</h2>\n<ol>\n";
+      for (std::size_t i = 0; i < r.sections.size(); ++i) {
+        out_ += "<li><a href=\"#" + ids[i] + "\">" + html_escape(r.sections[i].heading) +
+                "</a></li>\n";
+      }
+      out_ += "</ol>\n</nav>\n";
+    }
+
+    out_ += "<main>\n";
+    for (std::size_t i = 0; i < r.sections.size(); ++i) write_section(r.sections[i], ids[i]);
+    out_ += "</main>\n";
+
+    out_ += "<footer>\n<p>Written by tribolab " + std::string(tribolab_version()) +
+            ". Plots are drawn by Plotly.js " + std::string(plotly_version()) +
+            " (MIT licence), embedded in this file: the report works offline. Hover over a "
+            "plot for values, drag to zoom, double-click to reset; the camera icon saves a "
+            "PNG. ± values are one standard uncertainty, rounded to two significant "
+            "digits.</p>\n</footer>\n";
+    out_ += "<div id=\"" + std::string(kStatusId) + "\" hidden>pending</div>\n";
+    nlohmann::json spec = {{"figures", std::move(figures_)}};
+    out_ += "<script type=\"application/json\" id=\"" + std::string(kFiguresId) + "\">" +
+            json_for_script(spec) + "</script>\n";
+    out_ += "<script>" + std::string(kRender) + "</script>\n</body>\n</html>\n";
+  }
+
+ private:
+  void write_section(const Section& s, const std::string& id) {
+    out_ += "<section id=\"" + id + "\">\n<h2>" + html_escape(s.heading) + "</h2>\n";
+    for (const Block& b : s.blocks) std::visit([this](const auto& x) { block(x); }, b);
+    out_ += "</section>\n";
+  }
+
+  void block(const Paragraph& p) { out_ += "<p>" + html_escape(p.text) + "</p>\n"; }
+
+  void block(const Subheading& h) { out_ += "<h3>" + html_escape(h.text) + "</h3>\n"; }
+
+  void block(const List& l) {
+    out_ += "<ul>\n";
+    for (const auto& item : l.items) out_ += "<li>" + html_escape(item) + "</li>\n";
+    out_ += "</ul>\n";
+  }
+
+  void block(const Equation& e) {
+    out_ += "<div class=\"equation\">";
+    if (!e.source.empty()) out_ += "<span class=\"source\">" + html_escape(e.source) + "</span>";
+    out_ += "<span class=\"math\">" + notation_html(e.text) + "</span>";
+    if (!e.note.empty()) out_ += "<p class=\"note\">" + html_escape(e.note) + "</p>";
+    out_ += "</div>\n";
+  }
+
+  void block(const Table& t) {
+    out_ += "<table>\n";
+    if (!t.caption.empty()) out_ += "<caption>" + html_escape(t.caption) + "</caption>\n";
+    out_ += "<thead><tr>";
+    for (const auto& h : t.header) out_ += "<th>" + notation_html(h) + "</th>";
+    out_ += "</tr></thead>\n<tbody>\n";
+    const std::vector<bool> numeric = numeric_columns(t);
+    for (const auto& row : t.rows) {
+      out_ += "<tr>";
+      for (std::size_t c = 0; c < row.size(); ++c) {
+        out_ += numeric[c] ? "<td class=\"num\">" : "<td>";
+        out_ += html_escape(row[c]) + "</td>";
+      }
+      out_ += "</tr>\n";
+    }
+    out_ += "</tbody>\n</table>\n";
+  }
+
+  void block(const Figure& f) {
+    ++figure_number_;
+    const std::string id = "figure-" + std::to_string(figure_number_);
+    const std::string file_name = "tribolab-" + id + "-" + slugify(f.title, "plot");
+    nlohmann::json fig = plotly_figure(f, file_name);
+    fig["id"] = id;
+    figures_.push_back(std::move(fig));
+    out_ += "<figure>\n<div class=\"tribolab-plot\" id=\"" + id + "\" style=\"height:" +
+            std::to_string(f.height_px) + "px\"></div>\n<figcaption>Figure " +
+            std::to_string(figure_number_) + ". " +
+            html_escape(f.caption.empty() ? f.title : f.caption) +
+            "</figcaption>\n</figure>\n";
+  }
+
+  std::string& out_;
+  nlohmann::json figures_ = nlohmann::json::array();
+  int figure_number_ = 0;
+};
+
+}  // namespace
+
+std::string to_html(const Report& report) {
+  if (auto e = report.validate(); !e.empty()) {
+    throw std::invalid_argument("report '" + report.title + "': " + e);
+  }
+  std::string out;
+  out.reserve(plotly_js().size() + (1 << 16));
+  Writer(out).write(report);
+  return out;
+}
+
+void write_html(const Report& report, const std::string& path) {
+  const std::string page = to_html(report);  // before opening: a bad report leaves no file
+  io::AtomicFile file(path);
+  file.stream().write(page.data(), static_cast<std::streamsize>(page.size()));
+  file.commit();
+}
+
+}  // namespace tribolab::report

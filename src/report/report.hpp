@@ -1,0 +1,147 @@
+// The content of an HTML report, as plain structs: a Report holds Sections, a Section holds
+// an ordered list of blocks (paragraphs, equations, tables, figures, ...). Nothing here knows
+// about HTML; html.hpp turns a Report into one self-contained, offline file.
+//
+// All text is plain text: the writer escapes it, so a title may safely contain "<", "&" or
+// quotes. Physical numbers go into figures as doubles (written with full precision, NaN as a
+// gap) and into tables as text made by format.hpp (e.g. "0.634 ± 0.012").
+#pragma once
+
+#include <cmath>
+#include <deque>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace tribolab::report {
+
+/// A paragraph of plain text (escaped when written; blank lines are not interpreted).
+struct Paragraph {
+  std::string text;
+};
+
+/// A minor heading inside a section (written as <h3>).
+struct Subheading {
+  std::string text;
+};
+
+/// A bulleted list of plain-text items.
+struct List {
+  std::vector<std::string> items;
+};
+
+/// An equation shown as readable text. `text` uses a small notation: `_` starts a subscript
+/// and `^` a superscript, each applying to the next character or to a `{...}` group
+/// ("v_{x0} = v_0 cos^2 phi", "e^{-k t}"); Greek names are not translated, write the symbol
+/// ("φ", "μ"). `source` says where it comes from, e.g. "seed 000, eq 十A" or
+/// "docs/theory.md#stopping-point"; `note` is an optional plain-text explanation.
+struct Equation {
+  std::string text;
+  std::string source;
+  std::string note;
+};
+
+/// A table of text cells. Every row must have as many cells as the header. Use
+/// format_uncertain()/format_value() from format.hpp for numbers.
+struct Table {
+  std::string caption;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+/// How a series is drawn.
+enum class Mode { Markers, Lines, LinesMarkers };
+
+/// Line style of a series drawn with lines.
+enum class Dash { Solid, Dash, Dot };
+
+/// One x–y series of a figure. NaN in x or y leaves a gap (the line is broken there), so a
+/// curve of several pieces (e.g. both branches of the e = 1 boundary) is one series.
+/// Error bars are one standard uncertainty; leave them empty for none, else give one value
+/// per point (NaN = no bar at that point).
+struct Series {
+  std::string name;
+  std::vector<double> x, y;
+  std::vector<double> x_error, y_error;
+  Mode mode = Mode::Markers;
+  Dash dash = Dash::Solid;
+  std::string color;  ///< CSS colour ("black", "#1f77b4"); empty = Plotly's colour cycle
+};
+
+/// Colour scales offered for heat maps (Plotly's names).
+enum class ColorScale {
+  Viridis,  ///< perceptually uniform, the default
+  Cividis,  ///< uniform and readable with colour-vision deficiency
+  RdBu,     ///< diverging red–blue; combine with HeatMap::z_mid (e.g. 1 for restitution)
+};
+
+/// A heat map z(x, y) on a rectangular grid: z[i][j] is the value at (x[j], y[i]), so z has
+/// y.size() rows of x.size() values. NaN cells are left blank.
+struct HeatMap {
+  std::vector<double> x, y;
+  std::vector<std::vector<double>> z;
+  std::string colorbar_title;  ///< with unit, e.g. "e" or "v_y,out (m/s)"
+  ColorScale colorscale = ColorScale::Viridis;
+  std::optional<double> z_mid;  ///< value at the centre of a diverging scale
+};
+
+/// One axis: title with its unit, e.g. "t (s)", and linear or logarithmic scale.
+struct Axis {
+  std::string title;
+  bool log = false;
+};
+
+/// An interactive figure (zoom, hover, export to PNG from Plotly's mode bar): optionally a
+/// heat map underneath, and any number of series drawn over it (e.g. the e = 1 boundary).
+struct Figure {
+  std::string title;
+  std::string caption;  ///< plain text shown under the plot ("Figure N. caption")
+  Axis x_axis, y_axis;
+  std::optional<HeatMap> heatmap;
+  std::vector<Series> series;
+  bool equal_aspect = false;  ///< one metre on x as long as on y (trajectories)
+  int height_px = 450;        ///< plot height in CSS pixels; typical 350–600
+
+  /// Empty when the figure can be drawn; else what is wrong (sizes that do not match, a
+  /// non-positive value on a log axis is allowed: Plotly leaves it out).
+  std::string validate() const;
+};
+
+/// One block of a section, in reading order.
+using Block = std::variant<Paragraph, Subheading, List, Equation, Table, Figure>;
+
+/// A section of the report: a heading (<h2>, listed in the table of contents) and blocks.
+struct Section {
+  std::string heading;
+  std::vector<Block> blocks;
+
+  Section& add_paragraph(std::string text);
+  Section& add_subheading(std::string text);
+  Section& add_list(std::vector<std::string> items);
+  Section& add_equation(std::string text, std::string source, std::string note = {});
+  Section& add_table(Table table);
+  Section& add_figure(Figure figure);
+
+  /// Number of figures in this section.
+  int figure_count() const;
+};
+
+/// A whole report: title, an optional plain-text subtitle line, and sections.
+struct Report {
+  std::string title;
+  std::string subtitle;
+  std::deque<Section> sections;  ///< a deque: references from add_section() stay valid
+
+  /// Appends an empty section and returns it for filling; the reference stays valid when
+  /// more sections are added.
+  Section& add_section(std::string heading);
+
+  /// Number of figures in the report (= plots the page draws).
+  int figure_count() const;
+  /// Empty when the report can be written; else the first problem, naming the figure or
+  /// table ("section 'Incline', figure 'x-t': series 'data': x has 10 values, y has 9").
+  std::string validate() const;
+};
+
+}  // namespace tribolab::report

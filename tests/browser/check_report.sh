@@ -1,0 +1,62 @@
+#!/bin/sh
+# Opens a tribolab HTML report in Debian's headless Chromium, as a person would, and checks
+# that every plot rendered without a script error: the page's hidden status element
+# (<div id="tribolab-status">) must read "ok N", N = the number of plot elements in the file
+# (and = EXPECTED when given). Name resolution is disabled, so a report that needed the
+# network would fail. Saves a screenshot to SCREENSHOT.PNG.
+#
+#   sh tests/browser/check_report.sh REPORT.html SCREENSHOT.png [EXPECTED_PLOTS]
+set -eu
+if [ $# -lt 2 ]; then
+  echo "usage: $0 REPORT.html SCREENSHOT.png [EXPECTED_PLOTS]" >&2
+  exit 2
+fi
+html=$1
+png=$2
+expected=${3:-}
+
+fail() {
+  echo "FAIL: $html: $*" >&2
+  exit 1
+}
+
+command -v chromium >/dev/null 2>&1 ||
+  fail "chromium is not installed (Debian package 'chromium'; 'make deps' installs it)"
+[ -s "$html" ] || fail "report missing or empty"
+
+plots=$(grep -o 'class="tribolab-plot"' "$html" | wc -l | tr -d ' ')
+if [ -n "$expected" ] && [ "$plots" -ne "$expected" ]; then
+  fail "the file has $plots plot elements, expected $expected"
+fi
+if grep -Eiq '<script[^>]*[[:space:]]src=|<link[^>]*[[:space:]]href=' "$html"; then
+  fail "the report loads an external script or stylesheet"
+fi
+
+profile=$(mktemp -d)
+log=$(mktemp)
+trap 'rm -rf "$profile" "$log"' EXIT INT TERM
+case $html in
+  /*) url="file://$html" ;;
+  *) url="file://$(pwd)/$html" ;;
+esac
+browse() {
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
+    --disable-background-networking --disable-component-update --disable-sync \
+    --host-resolver-rules="MAP * ~NOTFOUND" --user-data-dir="$profile" \
+    --virtual-time-budget=10000 "$@" "$url" 2>>"$log"
+}
+
+dom=$(browse --dump-dom) || { cat "$log" >&2; fail "chromium failed"; }
+status=$(printf '%s\n' "$dom" | grep -o 'id="tribolab-status"[^>]*>[^<]*' | sed 's/^[^>]*>//')
+if [ "$status" != "ok $plots" ]; then
+  fail "status is '$status', expected 'ok $plots'"
+fi
+if printf '%s\n' "$dom" | grep -q 'data-title="Share chart'; then
+  fail "Plotly's 'share chart' (upload) button is shown; the report must work offline"
+fi
+
+rm -f "$png"
+browse --screenshot="$png" --window-size=1280,2000 >/dev/null ||
+  { cat "$log" >&2; fail "chromium could not take a screenshot"; }
+[ -s "$png" ] || fail "no screenshot written to $png"
+echo "PASS: $html: status '$status', screenshot $png"
