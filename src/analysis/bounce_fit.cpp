@@ -3,6 +3,7 @@
 
 #include "numerics/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -134,6 +135,31 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   };
   BounceFitResult out;
   out.fit = numerics::fit_least_squares(residuals, 3 * N, params, fo);
+  // A second start from the data: the median restitution -vy_out/vy_in and the Hunt–Crossley
+  // relation e(chi v_in) give the damping (or e) that matches the typical rebound, which
+  // avoids the local minima a poor damping start falls into (friction branches). The start
+  // with the lower cost wins.
+  if (!params[2].fixed && o.model != bounce::NormalModel::hooke) {
+    std::vector<double> e_rows, v_rows;
+    for (const auto& r : rows) {
+      e_rows.push_back(-r.vy_out / r.vy_in);
+      v_rows.push_back(std::abs(r.vy_in));
+    }
+    auto median = [](std::vector<double> v) {
+      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+      return v[v.size() / 2];
+    };
+    const double e_med = std::clamp(median(e_rows), 0.05, 0.99);
+    auto second = params;
+    if (o.restitution_model) {
+      second[2].initial = e_med;
+    } else {
+      const double chi = bounce::hunt_crossley_chi_v(e_med) / median(v_rows);
+      second[2].initial = std::clamp(std::log(chi * std::exp(params[0].initial)), std::log(1e-6), std::log(1e10));
+    }
+    auto alt = numerics::fit_least_squares(residuals, 3 * N, second, fo);
+    if (alt.ok() && (!out.fit.ok() || alt.cost < out.fit.cost)) out.fit = std::move(alt);
+  }
   const auto& f = out.fit;
   if (!f.ok()) {
     std::string why = f.message;
