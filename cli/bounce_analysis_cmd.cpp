@@ -101,7 +101,7 @@ struct TruthLaw {
 };
 
 json segment_json(const SegmentFit& s) {
-  return {{"vx", s.vx}, {"sigma_vx", s.sigma_vx}, {"vy", s.vy}, {"sigma_vy", s.sigma_vy},
+  return {{"vx", s.vx}, {"sigma_vx", num(s.sigma_vx)}, {"vy", s.vy}, {"sigma_vy", s.sigma_vy},
           {"omega", num(s.omega)}, {"sigma_omega", num(s.sigma_omega)},
           {"ay", s.acceleration_y}, {"sigma_ay", s.sigma_acceleration_y},
           {"r_squared", {{"x", s.x_line.r_squared}, {"y", s.y_parabola.r_squared}}},

@@ -248,7 +248,10 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
   r.floor_y = base[0];
   r.pre.apex_height = base[1];
   r.post.apex_height = base[2];
-  r.e_height = (base[1] > 0 && base[2] >= 0) ? std::sqrt(base[2] / base[1]) : NAN;
+  // A parabola opening upwards (noise on a short segment) has no apex: no e_height.
+  const bool apexes = pc[2] < 0 && qc[2] < 0;
+  if (!apexes) r.pre.apex_height = r.post.apex_height = NAN;
+  r.e_height = (apexes && base[1] > 0 && base[2] >= 0) ? std::sqrt(base[2] / base[1]) : NAN;
   // Linear propagation through the 6 parabola coefficients (two independent blocks), with
   // central differences of the closed forms above.
   Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(7, 7);
@@ -270,8 +273,8 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
     J(2, k) = (std::sqrt(up[2] / up[1]) - std::sqrt(dn[2] / dn[1])) / (2 * h);
   }
   const Eigen::MatrixXd C = J * cov * J.transpose();
-  r.pre.sigma_apex_height = std::sqrt(C(0, 0));
-  r.post.sigma_apex_height = std::sqrt(C(1, 1));
+  r.pre.sigma_apex_height = apexes ? std::sqrt(C(0, 0)) : NAN;
+  r.post.sigma_apex_height = apexes ? std::sqrt(C(1, 1)) : NAN;
   r.sigma_e_height = std::isfinite(r.e_height) ? std::sqrt(C(2, 2)) : NAN;
 
   // Mean normal force over the contact (seed 001: N = m (vy' - vy) / dt). With both
