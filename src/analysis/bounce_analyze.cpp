@@ -61,7 +61,11 @@ void trim_contact_frames(const std::vector<track::RigidBodyRow>& rows, SegmentFi
   while (static_cast<int>(seg.end - seg.begin) > min_points) {
     const std::size_t k = at_end ? seg.end - 1 : seg.begin;
     SegmentFit rest = seg;
-    (at_end ? rest.end : rest.begin) += at_end ? std::size_t(-1) : 1;
+    if (at_end) {
+      --rest.end;
+    } else {
+      ++rest.begin;
+    }
     fit_segment(rows, rest, rows[k].t, "segment");
     const auto spin = track::fit_spin(rows, rest.begin, rest.end);
     const double rx = rows[k].xc - rest.x_line.coef[0];

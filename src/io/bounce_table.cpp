@@ -4,12 +4,20 @@
 #include "numerics/error.hpp"
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
 namespace tribolab::io {
 
 namespace {
+/// Shortest text that reads back to the same double.
+std::string shortest(double v) {
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
+}
+
 constexpr std::array<const char*, 7> kColumns = {"theta_deg", "vx_in", "vy_in", "omega_in",
                                                  "vx_out", "vy_out", "omega_out"};
 }
@@ -70,9 +78,9 @@ std::string write_bounce_table(const std::vector<analysis::BounceRow>& rows) {
   std::ostringstream out;
   out << "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n";
   for (const auto& r : rows) {
-    out << format_number(r.theta_deg) << ',' << format_number(r.vx_in) << ',' << format_number(r.vy_in) << ','
-        << format_number(r.omega_in) << ',' << format_number(r.vx_out) << ',' << format_number(r.vy_out) << ','
-        << format_number(r.omega_out) << '\n';
+    out << shortest(r.theta_deg) << ',' << shortest(r.vx_in) << ',' << shortest(r.vy_in) << ','
+        << shortest(r.omega_in) << ',' << shortest(r.vx_out) << ',' << shortest(r.vy_out) << ','
+        << shortest(r.omega_out) << '\n';
   }
   return out.str();
 }
