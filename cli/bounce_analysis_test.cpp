@@ -1,0 +1,119 @@
+// Golden tests of `tribolab bounce analyze|fit|synth-video|synth-table`.
+#include "cli_test_util.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace tribolab::cli::testing {
+namespace {
+
+using nlohmann::json;
+
+json run_json(const std::string& args) {
+  const auto r = run_tribolab(args + " --json");
+  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  return json::parse(r.out);
+}
+
+void expect_one_line_error(const std::string& args, const std::string& must_mention) {
+  const auto r = run_tribolab(args);
+  EXPECT_NE(r.exit_code, 0) << args;
+  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
+  EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
+  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\nexpected '" << must_mention << "' in: " << r.err;
+}
+
+void write(const std::string& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+TEST(BounceAnalysisCli, SynthVideoThenAnalyzeRecoversTheTruth) {
+  const auto dir = temp_dir("bounce_analyze");
+  const std::string video = dir + "/video.txt";
+  const json truth = run_json("bounce synth-video --seed 7 --out '" + video + "'");
+  const json r = run_json("bounce analyze '" + video + "' --track-a A --track-b B --time-scale 0.125 --floor-y 0");
+  for (const char* key : {"impact_time", "pre", "post", "e_velocity", "e_height", "theta_impact_deg",
+                          "energy_pre", "energy_post", "collision_angle_deg", "sigma_e_velocity"})
+    EXPECT_TRUE(r.contains(key)) << key;
+  // 5 standard errors: a deterministic seed, far from a chance failure (p < 1e-6).
+  EXPECT_NEAR(r["pre"]["vx"].get<double>(), truth["vx_in"].get<double>(), 5 * r["pre"]["sigma_vx"].get<double>());
+  EXPECT_NEAR(r["pre"]["omega"].get<double>(), truth["omega_in"].get<double>(), 5 * r["pre"]["sigma_omega"].get<double>());
+  EXPECT_NEAR(r["post"]["omega"].get<double>(), truth["omega_out"].get<double>(), 5 * r["post"]["sigma_omega"].get<double>());
+  EXPECT_NEAR(r["e_height"].get<double>(), truth["e_height"].get<double>(), 5 * r["sigma_e_height"].get<double>());
+  // The impact time (real seconds after --time-scale) lies within the contact.
+  EXPECT_GT(r["impact_time"].get<double>(), truth["t_touch"].get<double>() - 1e-3);
+  EXPECT_LT(r["impact_time"].get<double>(), truth["t_separation"].get<double>() + 1e-3);
+  EXPECT_FALSE(r.contains("mean_normal_force"));
+  const json f = run_json("bounce analyze '" + video + "' --track-a A --track-b B --time-scale 0.125 --contact-duration 0.02");
+  EXPECT_TRUE(f.contains("mean_normal_force"));
+}
+
+TEST(BounceAnalysisCli, SynthIsDeterministicBySeed) {
+  const auto dir = temp_dir("bounce_synth_seed");
+  run_json("bounce synth-table --rows 5 --seed 3 --out '" + dir + "/a.csv'");
+  run_json("bounce synth-table --rows 5 --seed 3 --out '" + dir + "/b.csv'");
+  run_json("bounce synth-table --rows 5 --seed 4 --out '" + dir + "/c.csv'");
+  EXPECT_EQ(slurp(dir + "/a.csv"), slurp(dir + "/b.csv"));
+  EXPECT_NE(slurp(dir + "/a.csv"), slurp(dir + "/c.csv"));
+}
+
+TEST(BounceAnalysisCli, FitReportsParametersAndResiduals) {
+  const auto dir = temp_dir("bounce_fit");
+  const std::string table = dir + "/t.csv";
+  run_json("bounce synth-table --rows 15 --seed 9 --out '" + table + "'");
+  const json r = run_json("bounce fit '" + table + "' --fix K=101054 --fix n=1.51");
+  for (const char* key : {"K", "n", "D", "mu", "sigma_K", "sigma_n", "sigma_D", "sigma_mu", "rms", "residuals"})
+    EXPECT_TRUE(r.contains(key)) << key;
+  EXPECT_EQ(r["residuals"].size(), 15u);
+  EXPECT_EQ(r["sigma_K"].get<double>(), 0.0);  // fixed
+  // 4 standard errors of the fit (deterministic seed).
+  EXPECT_NEAR(r["mu"].get<double>(), 0.5, 4 * r["sigma_mu"].get<double>());
+  EXPECT_NEAR(r["D"].get<double>(), 60423, 4 * r["sigma_D"].get<double>());
+}
+
+TEST(BounceAnalysisCli, BadInputGivesOneLine) {
+  const auto dir = temp_dir("bounce_analysis_bad");
+  // A ball that never hits anything: one straight flight, no impact.
+  {
+    std::ofstream out(dir + "/flight.txt");
+    out << "#multi:\n\tA\t\tB\t\t\nt\tx\ty\tx\ty\t\n";
+    for (int k = 0; k < 40; ++k) {
+      const double t = k / 240.0;
+      const double y = 1 - 4.9 * t * t;
+      out << t << '\t' << t - 0.145 << '\t' << y << '\t' << t + 0.145 << '\t' << y << '\n';
+    }
+  }
+  expect_one_line_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b B", "no impact found");
+  expect_one_line_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b C", "C");
+  expect_one_line_error("bounce analyze '" + dir + "/missing.txt' --track-a A --track-b B", "missing.txt");
+  expect_one_line_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b B --time-scale -1", "--time-scale");
+  run_tribolab("bounce synth-video --after 0.1 --out '" + dir + "/short.txt'");  // ~24 frames after
+  expect_one_line_error("bounce analyze '" + dir + "/short.txt' --track-a A --track-b B --time-scale 0.125 --exclude 30",
+                        "at least 5 are needed");
+  write(dir + "/apart.txt", "#multi:\n\tA\t\tB\t\t\nt\tx\ty\tx\ty\t\n0\t0\t1\t\t\n0.1\t0\t0.9\t\t\n"
+                             "0.2\t\t\t0.3\t0.8\n0.3\t\t\t0.3\t0.7\n");
+  expect_one_line_error("bounce analyze '" + dir + "/apart.txt' --track-a A --track-b B", "share 0 frame");
+  // Tables.
+  write(dir + "/bad.csv", "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n1,2,-3,4,5,6,7\n1,2,x,4,5,6,7\n");
+  expect_one_line_error("bounce fit '" + dir + "/bad.csv'", "bad.csv:3");
+  write(dir + "/nohead.csv", "theta_deg,vx_in,vy_in\n1,2,3\n");
+  expect_one_line_error("bounce fit '" + dir + "/nohead.csv'", "missing column 'omega_in'");
+  write(dir + "/short.csv", "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n1,2,-3,4,5,6\n");
+  expect_one_line_error("bounce fit '" + dir + "/short.csv'", "short.csv:2");
+  write(dir + "/one.csv", "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n10,1,-4,30,0.5,2,10\n");
+  expect_one_line_error("bounce fit '" + dir + "/one.csv'", "free parameters need more rows");
+  expect_one_line_error("bounce fit '" + dir + "/one.csv' --fix q=1", "unknown parameter 'q'");
+  expect_one_line_error("bounce fit '" + dir + "/one.csv' --fix n", "NAME=VALUE");
+  expect_one_line_error("bounce fit '" + dir + "/one.csv' --loss l2", "--loss");
+  // No partial output when the synthetic generator fails.
+  expect_one_line_error("bounce synth-table --rows 0 --out '" + dir + "/x.csv'", "rows");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv"));
+}
+
+}  // namespace
+}  // namespace tribolab::cli::testing

@@ -1,0 +1,295 @@
+// Seed 001 experiment 1, automated. docs/theory.md#bounce-analysis.
+#include "analysis/bounce_analyze.hpp"
+
+#include "numerics/error.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace tribolab::analysis {
+
+using numerics::PolyFit;
+
+std::string BounceAnalyzeOptions::validate() const {
+  if (auto e = ball.validate(); !e.empty()) return e;
+  if (exclude < 0 || exclude > 50) return "exclude: must lie in 0..50 points";
+  if (floor_y && !std::isfinite(*floor_y)) return "floor-y: must be finite";
+  if (contact_duration && !(std::isfinite(*contact_duration) && *contact_duration > 0))
+    return "contact-duration: must be a positive number of seconds";
+  if (impact < 1) return "impact: must be 1 or more";
+  if (grid_points < 2 || grid_points > 100000) return "grid-points: must lie in 2..100000";
+  if (auto e = impacts.validate(); !e.empty()) return e;
+  return {};
+}
+
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+/// Fits the line and parabola of rows [begin, end) with s = t - t0.
+void fit_segment(const std::vector<track::RigidBodyRow>& rows, SegmentFit& seg, double t0,
+                 const char* what) {
+  std::vector<double> s, x, y;
+  for (std::size_t i = seg.begin; i < seg.end; ++i) {
+    s.push_back(rows[i].t - t0);
+    x.push_back(rows[i].xc);
+    y.push_back(rows[i].yc);
+  }
+  seg.x_line = numerics::fit_polynomial(s, x, 1, std::string(what) + " x(t)");
+  seg.y_parabola = numerics::fit_polynomial(s, y, 2, std::string(what) + " y(t)");
+}
+
+/// Apex of y = c0 + c1 s + c2 s^2 (c2 < 0): s* = -c1 / (2 c2), y* = c0 - c1^2 / (4 c2).
+std::array<double, 2> vertex(const std::vector<double>& c) {
+  return {-c[1] / (2 * c[2]), c[0] - c[1] * c[1] / (4 * c[2])};
+}
+
+/// Drops points at the impact end of a segment while they disagree with the free flight of
+/// the rest: the frames during the contact (a rugby ball stays on the floor 10-20 ms, several
+/// frames at 240 fps). A point is in contact when its x, y or theta misses the prediction of
+/// the line / parabola / spin line fitted to the others by more than kTrimSd noise sds. A low
+/// threshold is cheap (a good flight point dropped by mistake costs one point of many) and
+/// catches the late contact frames whose deviation is small but systematic.
+/// docs/theory.md#bounce-analysis.
+void trim_contact_frames(const std::vector<track::RigidBodyRow>& rows, SegmentFit& seg, bool at_end,
+                         double noise_x, double noise_y, int min_points) {
+  while (static_cast<int>(seg.end - seg.begin) > min_points) {
+    const std::size_t k = at_end ? seg.end - 1 : seg.begin;
+    SegmentFit rest = seg;
+    if (at_end) {
+      --rest.end;
+    } else {
+      ++rest.begin;
+    }
+    fit_segment(rows, rest, rows[k].t, "segment");
+    const auto spin = track::fit_spin(rows, rest.begin, rest.end);
+    const double rx = rows[k].xc - rest.x_line.coef[0];
+    const double ry = rows[k].yc - rest.y_parabola.coef[0];
+    const double rt = rows[k].theta - (spin.theta_ref + spin.omega * (rows[k].t - spin.t_ref));
+    const double theta_noise = std::max(spin.rms_residual, 1e-6);
+    constexpr double kTrimSd = 3;
+    if (std::abs(rx) > kTrimSd * noise_x || std::abs(ry) > kTrimSd * noise_y || std::abs(rt) > kTrimSd * theta_noise) {
+      seg = rest;
+    } else {
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
+                              const BounceAnalyzeOptions& options) {
+  if (auto e = options.validate(); !e.empty()) {
+    const auto colon = e.find(':');
+    throw InputError("--" + e.substr(0, colon), colon == std::string::npos ? e : e.substr(colon + 2));
+  }
+  BounceAnalysis r;
+  {
+    // Tracks that do not overlap in frames cannot give a body.
+    std::size_t common = 0;
+    std::size_t j = 0;
+    for (const auto& p : a.points) {
+      while (j < b.points.size() && b.points[j].frame < p.frame) ++j;
+      if (j < b.points.size() && b.points[j].frame == p.frame) ++common;
+    }
+    if (common < 2) {
+      throw InputError("tracks '" + a.name + "' and '" + b.name + "' share " + std::to_string(common) +
+                       " frame(s); the tips must be marked in the same frames");
+    }
+  }
+  r.body = track::rigid_body_from_points(a, b);
+  r.centre = track::centre_track(r.body);
+  r.impacts = track::detect_impacts(r.centre, options.impacts);
+  if (r.impacts.impacts.empty()) {
+    throw InputError("no impact found in the centre track of '" + a.name + "' and '" + b.name +
+                     "' (no significant velocity jump; position noise ~" +
+                     std::to_string(r.impacts.noise_y * 1000).substr(0, 5) + " mm)");
+  }
+  if (static_cast<std::size_t>(options.impact) > r.impacts.impacts.size()) {
+    throw InputError("--impact", "asked for impact " + std::to_string(options.impact) + " but only " +
+                                     std::to_string(r.impacts.impacts.size()) + " found");
+  }
+  r.impact_used = static_cast<std::size_t>(options.impact - 1);
+  const track::Impact& imp = r.impacts.impacts[r.impact_used];
+  // centre_track has one point per body row, so track indices are row indices.
+  const auto segs = track::flight_segments(r.centre.points.size(), r.impacts.impacts);
+  const track::Segment in = segs[r.impact_used], out = segs[r.impact_used + 1];
+  const auto ex = static_cast<std::size_t>(options.exclude);
+  r.pre.begin = in.begin;
+  r.pre.end = in.end > in.begin + ex ? in.end - ex : in.begin;
+  r.post.begin = std::min(out.begin + ex, out.end);
+  r.post.end = out.end;
+  r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
+  r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
+  // A parabola with a noise estimate needs 4 points; the spin fit's sigma 3. Ask for 5.
+  constexpr int kMinPoints = 5;
+  for (const auto* seg : {&r.pre, &r.post}) {
+    if (seg->n_points < kMinPoints) {
+      throw InputError(std::string(seg == &r.pre ? "pre" : "post") + "-impact segment has " +
+                       std::to_string(seg->n_points) + " usable point(s) (after excluding " +
+                       std::to_string(options.exclude) + " next to the impact); at least " +
+                       std::to_string(kMinPoints) + " are needed for a y-t parabola");
+    }
+  }
+  const auto& rows = r.body.rows;
+  // Noise of the centre: the track's robust estimate, floored (exact synthetic data).
+  const double nx = std::max(r.impacts.noise_x, 1e-6), ny = std::max(r.impacts.noise_y, 1e-6);
+  trim_contact_frames(rows, r.pre, true, nx, ny, kMinPoints);
+  trim_contact_frames(rows, r.post, false, nx, ny, kMinPoints);
+  r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
+  r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
+  // First pass about the detector's time, then the exact meeting point of the parabolas.
+  fit_segment(rows, r.pre, imp.t, "pre-impact");
+  fit_segment(rows, r.post, imp.t, "post-impact");
+  double t_imp = imp.t;
+  {
+    const auto& p = r.pre.y_parabola.coef;
+    const auto& q = r.post.y_parabola.coef;
+    const double A = p[2] - q[2], B = p[1] - q[1], C = p[0] - q[0];
+    const double lo = rows[r.pre.end - 1].t - imp.t, hi = rows[r.post.begin].t - imp.t;
+    double best = NAN;
+    auto consider = [&](double s) {
+      if (std::isfinite(s) && s >= lo - (hi - lo) && s <= hi + (hi - lo) &&
+          (!std::isfinite(best) || std::abs(s) < std::abs(best)))
+        best = s;
+    };
+    if (std::abs(A) > 1e-12 * (std::abs(B) + 1)) {
+      const double disc = B * B - 4 * A * C;
+      if (disc >= 0) {
+        const double sq = std::sqrt(disc);
+        consider((-B + sq) / (2 * A));
+        consider((-B - sq) / (2 * A));
+      }
+    } else if (B != 0) {
+      consider(-C / B);
+    }
+    if (std::isfinite(best)) t_imp = imp.t + best;
+  }
+  r.impact_time = t_imp;
+  fit_segment(rows, r.pre, t_imp, "pre-impact");
+  fit_segment(rows, r.post, t_imp, "post-impact");
+
+  const bounce::Ball& ball = options.ball;
+  for (SegmentFit* seg : {&r.pre, &r.post}) {
+    seg->vx = seg->x_line.coef[1];
+    seg->sigma_vx = seg->x_line.sigma[1];
+    seg->vy = seg->y_parabola.coef[1];
+    seg->sigma_vy = seg->y_parabola.sigma[1];
+    seg->acceleration_y = 2 * seg->y_parabola.coef[2];
+    seg->sigma_acceleration_y = 2 * seg->y_parabola.sigma[2];
+    seg->spin = track::fit_spin(rows, seg->begin, seg->end);
+    seg->omega = seg->spin.omega;
+    seg->sigma_omega = seg->spin.sigma_omega;
+    const auto v = vertex(seg->y_parabola.coef);
+    seg->apex_time = t_imp + v[0];
+    seg->apex_y = v[1];
+    seg->energy.translational_x = 0.5 * ball.mass * seg->vx * seg->vx;
+    seg->energy.translational_y = 0.5 * ball.mass * seg->vy * seg->vy;
+    seg->energy.rotational = 0.5 * ball.inertia * seg->omega * seg->omega;
+    const double t_lo = rows[seg->begin].t, t_hi = rows[seg->end - 1].t;
+    const int n = options.grid_points;
+    for (int k = 0; k < n; ++k) {
+      const double t = t_lo + (t_hi - t_lo) * k / (n - 1);
+      seg->grid_t.push_back(t);
+      seg->grid_x.push_back(seg->x_line(t - t_imp));
+      seg->grid_y.push_back(seg->y_parabola(t - t_imp));
+      seg->grid_theta.push_back(seg->spin.theta_ref + seg->omega * (t - seg->spin.t_ref));
+    }
+  }
+
+  // Orientation at the impact: the pre-impact spin fit extrapolated (first touch).
+  const double theta_imp = r.pre.spin.theta_ref + r.pre.omega * (t_imp - r.pre.spin.t_ref);
+  r.theta_impact_deg = bounce::wrap_angle(theta_imp) * kDeg;
+  r.collision_angle_deg = bounce::collision_angle_deg(ball, theta_imp, r.pre.vx >= 0 ? 1 : -1);
+
+  // Restitution from velocities, independent segments: relative errors add in quadrature.
+  r.e_velocity = -r.post.vy / r.pre.vy;
+  r.sigma_e_velocity = std::abs(r.e_velocity) * std::hypot(r.post.sigma_vy / r.post.vy, r.pre.sigma_vy / r.pre.vy);
+
+  // Restitution from apex heights over the floor. The floor, unless given (recommended: the
+  // seed sets y = 0 on the floor in Tracker), is bracketed by the fitted flights: with
+  // h(t) = y(t) - Y(theta(t)) the height of the lowest point, the ball touches between the
+  // last sure pre-impact flight frame t1 and impact_time (the centroid of the normal impulse,
+  // after the touch) and separates between impact_time and the first post-impact flight
+  // frame t4 (sure flight). h_pre falls through the floor at the touch and h_post rises through it at the
+  // separation, so  max(h_pre(t_imp), h_post(t_imp)) <= floor <= min(h_pre(t1), h_post(t4)).
+  // The bracket is wide (its lower end is the extrapolated flights' depth at the impulse
+  // centroid, ~1-2 cm for a rugby ball) but never wrong; give --floor-y for a sharp e_height.
+  // The estimate is the bracket's middle, its half-width w entering the uncertainty as a
+  // uniform error (sd w / sqrt 3). docs/theory.md#bounce-analysis.
+  const bool floor_given = options.floor_y.has_value();
+  r.floor_given = floor_given;
+  const double theta_post0 = r.post.spin.theta_ref + r.post.omega * (t_imp - r.post.spin.t_ref);
+  auto poly = [](const std::vector<double>& c, double s) { return c[0] + s * (c[1] + s * c[2]); };
+  // The frame next to the contact may itself be early (or late) in the contact: its motion
+  // hardly differs from flight while the force is small. So t1 and t4 are taken one frame
+  // further out, where the ball is surely in flight.
+  const double t1 = rows[r.pre.end - 2].t, t4 = rows[r.post.begin + 1].t;
+  auto floor_of = [&](const std::vector<double>& p, const std::vector<double>& q) -> std::array<double, 2> {
+    if (floor_given) return {*options.floor_y, 0.0};
+    auto h_pre = [&](double t) { return poly(p, t - t_imp) - bounce::support_depth(ball, theta_imp + r.pre.omega * (t - t_imp)); };
+    auto h_post = [&](double t) { return poly(q, t - t_imp) - bounce::support_depth(ball, theta_post0 + r.post.omega * (t - t_imp)); };
+    const double lo = std::max(h_pre(t_imp), h_post(t_imp));
+    const double hi = std::min(h_pre(t1), h_post(t4));
+    return {0.5 * (lo + hi), 0.5 * std::abs(hi - lo)};
+  };
+  const auto floor0 = floor_of(r.pre.y_parabola.coef, r.post.y_parabola.coef);
+  r.floor_half_width = floor0[1];
+  auto e_height_of = [&](const std::vector<double>& p, const std::vector<double>& q, double shift) {
+    const double floor = floor_of(p, q)[0] + shift;
+    const double H = vertex(p)[1] - floor, H2 = vertex(q)[1] - floor;
+    return std::array<double, 3>{floor, H, H2};
+  };
+  const auto& pc = r.pre.y_parabola.coef;
+  const auto& qc = r.post.y_parabola.coef;
+  const auto base = e_height_of(pc, qc, 0.0);
+  r.floor_y = base[0];
+  r.pre.apex_height = base[1];
+  r.post.apex_height = base[2];
+  // A parabola opening upwards (noise on a short segment) has no apex: no e_height.
+  const bool apexes = pc[2] < 0 && qc[2] < 0;
+  if (!apexes) r.pre.apex_height = r.post.apex_height = NAN;
+  r.e_height = (apexes && base[1] > 0 && base[2] >= 0) ? std::sqrt(base[2] / base[1]) : NAN;
+  // Linear propagation through the 6 parabola coefficients (two independent blocks), with
+  // central differences of the closed forms above.
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(7, 7);
+  cov.topLeftCorner(3, 3) = r.pre.y_parabola.covariance;
+  cov.block(3, 3, 3, 3) = r.post.y_parabola.covariance;
+  cov(6, 6) = floor0[1] * floor0[1] / 3;  // the floor bracket, uniform
+  Eigen::MatrixXd J(3, 7);  // rows: H, H', e_height; columns: 6 coefficients, floor shift
+  for (int k = 0; k < 7; ++k) {
+    auto p = pc, q = qc;
+    double shift = 0;
+    double& c = k < 3 ? p[k] : (k < 6 ? q[k - 3] : shift);
+    const double h = k < 6 ? 1e-6 * (std::abs(c) + 1e-3) : 1e-7;
+    c += h;
+    const auto up = e_height_of(p, q, shift);
+    c -= 2 * h;
+    const auto dn = e_height_of(p, q, shift);
+    J(0, k) = (up[1] - dn[1]) / (2 * h);
+    J(1, k) = (up[2] - dn[2]) / (2 * h);
+    J(2, k) = (std::sqrt(up[2] / up[1]) - std::sqrt(dn[2] / dn[1])) / (2 * h);
+  }
+  const Eigen::MatrixXd C = J * cov * J.transpose();
+  r.pre.sigma_apex_height = apexes ? std::sqrt(C(0, 0)) : NAN;
+  r.post.sigma_apex_height = apexes ? std::sqrt(C(1, 1)) : NAN;
+  r.sigma_e_height = std::isfinite(r.e_height) ? std::sqrt(C(2, 2)) : NAN;
+
+  // Mean normal force over the contact (seed 001: N = m (vy' - vy) / dt). With both
+  // velocities taken at the same instant the gravity impulse cancels exactly
+  // (docs/theory.md#bounce-analysis), so no m g term is added.
+  if (options.contact_duration) {
+    const double T = *options.contact_duration;
+    r.mean_normal_force = ball.mass * (r.post.vy - r.pre.vy) / T;
+    r.sigma_mean_normal_force = ball.mass * std::hypot(r.post.sigma_vy, r.pre.sigma_vy) / T;
+  }
+  return r;
+}
+
+}  // namespace tribolab::analysis

@@ -1,0 +1,80 @@
+// Analysis of one tracked bounce of the rugby ball (seed 001, experiment 1): the two tips
+// A and B give the centre (midpoint) and the orientation; the impact is found on the centre
+// track; each flight segment gets an x–t line, a y–t parabola (with R^2) and a linear
+// theta–t spin fit; velocities are the fits' derivatives at the impact time; restitution
+// from velocities and from apex heights; energies; orientation and collision angle at the
+// impact; the mean normal force over a given contact duration.
+// See docs/theory.md#bounce-analysis.
+#pragma once
+
+#include "bounce/contact.hpp"
+#include "bounce/geometry.hpp"
+#include "numerics/polyfit.hpp"
+#include "track/impacts.hpp"
+#include "track/rigid_body.hpp"
+#include "track/track.hpp"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribolab::analysis {
+
+struct BounceAnalyzeOptions {
+  bounce::Ball ball;                    ///< for energies, support depth, collision angle
+  /// Points always dropped on each side of the impact split, e.g. 0; frames in contact are
+  /// also dropped automatically (see trim in docs/theory.md#bounce-analysis).
+  int exclude = 0;
+  std::optional<double> floor_y;        ///< floor height, m; default: from the impact (see theory)
+  std::optional<double> contact_duration;  ///< s; enables the mean normal force, e.g. 0.004
+  int impact = 1;                       ///< which detected impact to analyse (1 = first)
+  track::ImpactOptions impacts;         ///< impact detection on the centre track
+  int grid_points = 101;                ///< samples of each fitted curve for figures (>= 2)
+  std::string validate() const;         ///< empty when valid; names the field
+};
+
+/// One flight segment (before or after the impact), fitted in the time variable
+/// s = t - impact_time, so the fits' linear coefficients are the velocities at the impact.
+struct SegmentFit {
+  std::size_t begin = 0, end = 0;  ///< fitted rows [begin, end) of BounceAnalysis::body.rows
+  int n_points = 0;                ///< end - begin
+  numerics::PolyFit x_line;        ///< x = c0 + c1 s (m, m/s)
+  numerics::PolyFit y_parabola;    ///< y = c0 + c1 s + c2 s^2 (m, m/s, m/s^2)
+  track::SpinFit spin;             ///< theta = theta_ref + omega (t - t_ref)
+  double vx = 0, sigma_vx = 0;     ///< at the impact time, m/s
+  double vy = 0, sigma_vy = 0;     ///< at the impact time, m/s
+  double omega = 0, sigma_omega = 0;  ///< rad/s (constant in flight)
+  double acceleration_y = 0, sigma_acceleration_y = 0;  ///< 2 c2, m/s^2 (about -g)
+  double apex_time = 0;            ///< time of the parabola's vertex, s
+  double apex_y = 0;               ///< centre height there, m (above the file's origin)
+  double apex_height = 0;          ///< apex_y - floor_y, m
+  double sigma_apex_height = 0;    ///< m (fit covariance, floor included)
+  bounce::KineticEnergy energy;    ///< at the impact, from vx, vy, omega, J
+  /// Fitted curves sampled on a grid over the segment's time span, for figures.
+  std::vector<double> grid_t, grid_x, grid_y, grid_theta;
+};
+
+struct BounceAnalysis {
+  track::RigidBody body;             ///< tips -> centre, orientation, local spin per frame
+  track::Track centre;               ///< the centre track ("A+B")
+  track::ImpactResult impacts;       ///< every impact found on the centre track
+  std::size_t impact_used = 0;       ///< index into impacts.impacts
+  double impact_time = 0;            ///< s: where the two fitted y parabolas meet
+  SegmentFit pre, post;
+  double e_velocity = 0, sigma_e_velocity = 0;  ///< -vy_post / vy_pre at impact_time
+  double e_height = 0, sigma_e_height = 0;      ///< sqrt(H'/H)
+  double floor_y = 0;                ///< m (given, or y_centre(impact) - Y(theta_impact))
+  bool floor_given = false;
+  double floor_half_width = 0;       ///< m: half-width of the floor's bracket (0 when given)
+  double theta_impact_deg = 0;       ///< pre-impact spin fit at impact_time, wrapped to (-180, 180]
+  double collision_angle_deg = 0;    ///< bounce::collision_angle_deg at the impact
+  std::optional<double> mean_normal_force, sigma_mean_normal_force;  ///< N
+};
+
+/// Analyses tracks `a` and `b` (the two tips). Throws InputError when the tracks share too
+/// few frames, no impact is found, or a segment has too few points for its fits.
+BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
+                              const BounceAnalyzeOptions& options = {});
+
+}  // namespace tribolab::analysis

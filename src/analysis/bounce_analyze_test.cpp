@@ -1,0 +1,123 @@
+// Tests of analyze_bounce on synthetic videos made by the project's own simulators.
+#include "analysis/bounce_analyze.hpp"
+#include "analysis/bounce_synth.hpp"
+
+#include "numerics/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace tribolab::analysis {
+namespace {
+
+/// Tracks in real time (undoes the synthetic slow-motion factor, as --time-scale does).
+track::Track real_time(track::Track t, double factor) {
+  for (auto& p : t.points) p.t /= factor;
+  return t;
+}
+
+TEST(BounceAnalyze, ExactDataRecoversTheFlights) {
+  SynthVideoOptions o;
+  o.noise = 0;
+  const auto v = synth_video(o);
+  const auto r = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8));
+  const auto& tr = v.truth;
+  // The impact time lies within the contact (the parabolas of free flight meet there up to
+  // the contact's own few ms).
+  EXPECT_GT(r.impact_time, tr.t_touch - 1e-3);
+  EXPECT_LT(r.impact_time, tr.t_separation + 1e-3);
+  // Exact flights: fits are exact to rounding (1e-9 m/s allows for the 1e-10 integrator).
+  EXPECT_NEAR(r.pre.vx, tr.touch.vx, 1e-7);
+  EXPECT_NEAR(r.post.vx, tr.separation.vx, 1e-6);
+  EXPECT_NEAR(r.pre.vy, tr.vy_flight(true, r.impact_time), 1e-6);
+  EXPECT_NEAR(r.post.vy, tr.vy_flight(false, r.impact_time), 1e-6);
+  EXPECT_NEAR(r.pre.omega, tr.touch.omega, 1e-6);
+  EXPECT_NEAR(r.post.omega, tr.separation.omega, 1e-6);
+  EXPECT_NEAR(r.pre.acceleration_y, -9.8, 1e-6);
+  EXPECT_NEAR(r.pre.y_parabola.r_squared, 1.0, 1e-12);
+  // The floor's bracket holds the truth, and the apex heights are exact to the bracket.
+  EXPECT_LE(std::abs(r.floor_y - tr.floor_y), r.floor_half_width);
+  EXPECT_NEAR(r.pre.apex_height, tr.release_apex, r.floor_half_width);
+  EXPECT_NEAR(r.post.apex_height, tr.post_apex, r.floor_half_width);
+  // With the floor given, apex heights are exact (1e-6 m: the fits of exact flights).
+  BounceAnalyzeOptions with_floor;
+  with_floor.floor_y = 0;
+  const auto rf = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), with_floor);
+  EXPECT_NEAR(rf.pre.apex_height, tr.release_apex, 1e-6);
+  EXPECT_NEAR(rf.post.apex_height, tr.post_apex, 1e-6);
+  EXPECT_NEAR(rf.e_height, std::sqrt(tr.post_apex / tr.release_apex), 1e-6);
+  EXPECT_NEAR(r.theta_impact_deg, bounce::wrap_angle(tr.touch.theta + tr.touch.omega * (r.impact_time - tr.t_touch)) * 180 / M_PI, 1e-5);
+  // Energies at the impact from the fitted velocities.
+  EXPECT_NEAR(r.pre.energy.rotational, 0.5 * 4.1e-3 * tr.touch.omega * tr.touch.omega, 1e-9);
+}
+
+// Coverage of the stated 95% intervals over many noisy runs (1 mm, 240 and 80 fps). With
+// n runs the count of covering intervals is Binomial(n, 0.95): sd = sqrt(n 0.95 0.05); we
+// accept within 3 sd (for n = 200: 190 +- 9.2, i.e. 181..199).
+struct Coverage {
+  int n = 0;
+  int vx_pre = 0, vx_post = 0, vy_pre = 0, vy_post = 0, om_pre = 0, om_post = 0, e = 0, eh = 0, floor_bracket = 0, eh_default = 0;
+};
+
+Coverage run_coverage(double fps, int runs) {
+  Coverage c;
+  for (int s = 0; s < runs; ++s) {
+    SynthVideoOptions o;
+    o.fps = fps;
+    o.seed = 1000 + s;
+    o.theta_deg = -60 + 100.0 * s / runs;  // touch orientations with a clear rebound
+    const auto v = synth_video(o);
+    const auto r = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8));
+    BounceAnalyzeOptions with_floor;
+    with_floor.floor_y = 0;  // the seed's procedure: y = 0 set on the floor in Tracker
+    const auto rf = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), with_floor);
+    const auto& tr = v.truth;
+    auto in = [&](double est, double sigma, double truth, int dof) {
+      return std::abs(est - truth) <= sigma * (dof > 60 ? 1.96 : 2.0);
+    };
+    ++c.n;
+    c.vx_pre += in(r.pre.vx, r.pre.sigma_vx, tr.touch.vx, r.pre.x_line.dof);
+    c.vx_post += in(r.post.vx, r.post.sigma_vx, tr.separation.vx, r.post.x_line.dof);
+    const double vyp = tr.vy_flight(true, r.impact_time), vyq = tr.vy_flight(false, r.impact_time);
+    c.vy_pre += in(r.pre.vy, r.pre.sigma_vy, vyp, r.pre.y_parabola.dof);
+    c.vy_post += in(r.post.vy, r.post.sigma_vy, vyq, r.post.y_parabola.dof);
+    c.om_pre += in(r.pre.omega, r.pre.sigma_omega, tr.touch.omega, r.pre.n_points);
+    c.om_post += in(r.post.omega, r.post.sigma_omega, tr.separation.omega, r.post.n_points);
+    c.e += in(r.e_velocity, r.sigma_e_velocity, -vyq / vyp, r.pre.n_points);
+    c.eh += in(rf.e_height, rf.sigma_e_height, std::sqrt(tr.post_apex / tr.release_apex), r.post.n_points);
+    c.floor_bracket += std::abs(r.floor_y - tr.floor_y) <= r.floor_half_width;
+    c.eh_default += in(r.e_height, r.sigma_e_height, std::sqrt(tr.post_apex / tr.release_apex), r.post.n_points);
+  }
+  std::cout << "coverage at " << fps << " fps over " << c.n << " runs: vx " << c.vx_pre << "/" << c.vx_post
+            << " vy " << c.vy_pre << "/" << c.vy_post << " omega " << c.om_pre << "/" << c.om_post
+            << " e " << c.e << " e_height " << c.eh << " (floor estimated: " << c.eh_default << ", floor in bracket "
+            << c.floor_bracket << ")\n";
+  return c;
+}
+
+void expect_binomial(int covered, int n, const char* what) {
+  const double mean = 0.95 * n, sd = std::sqrt(n * 0.95 * 0.05);
+  EXPECT_GE(covered, mean - 3 * sd) << what;
+  EXPECT_LE(covered, std::min<double>(n, mean + 3 * sd)) << what;
+}
+
+TEST(BounceAnalyze, IntervalsCoverTheTruthAt240Fps) {
+  const auto c = run_coverage(240, 200);
+  for (auto [k, name] : {std::pair{c.vx_pre, "vx pre"}, {c.vx_post, "vx post"}, {c.vy_pre, "vy pre"},
+                         {c.vy_post, "vy post"}, {c.om_pre, "omega pre"}, {c.om_post, "omega post"},
+                         {c.e, "e_velocity"}, {c.eh, "e_height"}})
+    expect_binomial(k, c.n, name);
+}
+
+TEST(BounceAnalyze, IntervalsCoverTheTruthAt80Fps) {
+  const auto c = run_coverage(80, 200);
+  for (auto [k, name] : {std::pair{c.vx_pre, "vx pre"}, {c.vx_post, "vx post"}, {c.vy_pre, "vy pre"},
+                         {c.vy_post, "vy post"}, {c.om_pre, "omega pre"}, {c.om_post, "omega post"},
+                         {c.e, "e_velocity"}, {c.eh, "e_height"}})
+    expect_binomial(k, c.n, name);
+}
+
+}  // namespace
+}  // namespace tribolab::analysis

@@ -1,0 +1,197 @@
+// docs/theory.md#bounce-fit.
+#include "analysis/bounce_fit.hpp"
+
+#include "numerics/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tribolab::analysis {
+
+namespace {
+constexpr double kDeg = 180.0 / std::numbers::pi;
+const char* const kNames[] = {"K", "n", "D", "e", "mu"};
+}  // namespace
+
+std::string BounceFitOptions::validate() const {
+  if (auto e = ball.validate(); !e.empty()) return e;
+  if (auto e = friction.validate(); !e.empty()) return e;
+  for (const auto& [name, v] : fixed) {
+    bool known = false;
+    for (const char* k : kNames) known = known || name == k;
+    if (!known) return "fix: unknown parameter '" + name + "' (K, n, D, e, mu)";
+    if (restitution_model && name == "D") return "fix: D is not a parameter of a restitution-based fit (use e)";
+    if (!restitution_model && name == "e") return "fix: e is a parameter only with --restitution";
+    if (!std::isfinite(v)) return "fix: " + name + " must be finite";
+    if ((name == "K" || name == "D") && !(v > 0)) return "fix: " + name + " must be positive";
+    if (name == "n" && !(v >= 1 && v <= 3)) return "fix: n must lie in [1, 3]";
+    if (name == "e" && !(v > 0 && v <= 1)) return "fix: e must lie in (0, 1]";
+    if (name == "mu" && !(v >= 0 && v <= 3)) return "fix: mu must lie in [0, 3]";
+  }
+  if (model == bounce::NormalModel::hertz && !restitution_model && !fixed.count("D"))
+    return "model: the hertz law has no damping to fit; use hunt-crossley or fix D";
+  if (!(loss_scale > 0 && std::isfinite(loss_scale))) return "loss-scale: must be positive";
+  if (!(tolerance > 0 && tolerance < 1e-3)) return "tol: must lie in (0, 1e-3)";
+  return {};
+}
+
+BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
+                            const bounce::NormalLawSpec& law, const bounce::FrictionModel& friction,
+                            double tolerance) {
+  BounceFitRow p;
+  bounce::BodyState s;
+  s.theta = row.theta_deg / kDeg;
+  s.vx = row.vx_in;
+  s.vy = row.vy_in;
+  s.omega = row.omega_in;
+  const auto c = bounce::simulate_contact(ball, law, friction, s,
+                                          bounce::contact_options_with_tolerance(tolerance));
+  if (c.status != bounce::ContactStatus::separated) {
+    p.vx_pred = p.vy_pred = p.omega_pred = NAN;
+  } else {
+    p.vx_pred = c.out.vx;
+    p.vy_pred = c.out.vy;
+    p.omega_pred = c.out.omega;
+  }
+  p.r_vx = p.vx_pred - row.vx_out;
+  p.r_vy = p.vy_pred - row.vy_out;
+  p.r_b_omega = ball.b * (p.omega_pred - row.omega_out);
+  return p;
+}
+
+BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitOptions& o) {
+  if (auto e = o.validate(); !e.empty()) {
+    const auto colon = e.find(':');
+    throw InputError("--" + e.substr(0, colon), e.substr(colon + 2));
+  }
+  const bool hooke = o.model == bounce::NormalModel::hooke;
+  const bool hertz = o.model == bounce::NormalModel::hertz;
+  auto fixed_or = [&](const char* name, double v) {
+    auto it = o.fixed.find(name);
+    return it == o.fixed.end() ? v : it->second;
+  };
+  // Solver parameters: 0 log K, 1 n, 2 log D or e, 3 mu.
+  std::vector<numerics::FitParameter> params(4);
+  params[0] = {"log_K", std::log(fixed_or("K", o.K0)), std::log(1e1), std::log(1e10), o.fixed.count("K") > 0};
+  params[1] = {"n", hooke ? 1.0 : fixed_or("n", o.n0), 1.0, 3.0, hooke || o.fixed.count("n") > 0};
+  if (o.restitution_model) {
+    params[2] = {"e", fixed_or("e", o.e0), 0.02, 1.0, o.fixed.count("e") > 0};
+  } else {
+    const double D = hertz ? 1.0 : fixed_or("D", o.D0);
+    params[2] = {"log_D", std::log(D), std::log(1e-6), std::log(1e10), hertz || o.fixed.count("D") > 0};
+  }
+  params[3] = {"mu", fixed_or("mu", o.mu0), 0.0, 3.0, o.fixed.count("mu") > 0};
+  if (hooke && o.fixed.count("n") && o.fixed.at("n") != 1.0)
+    throw InputError("--fix", "the hooke law is linear (n = 1)");
+
+  auto spec_of = [&](const double* p) {
+    bounce::NormalLawSpec s;
+    s.model = o.model;
+    s.K = std::exp(p[0]);
+    s.n = p[1];
+    if (o.restitution_model) {
+      s.restitution = p[2];
+    } else {
+      s.D = hertz ? 0.0 : std::exp(p[2]);
+    }
+    return s;
+  };
+  auto friction_of = [&](const double* p) {
+    bounce::FrictionModel f = o.friction;
+    f.mu = p[3];
+    return f;
+  };
+  const int N = static_cast<int>(rows.size());
+  int n_free = 0;
+  for (const auto& p : params) n_free += p.fixed ? 0 : 1;
+  if (3 * N <= n_free) {
+    throw InputError(std::to_string(N) + " bounce(s) give " + std::to_string(3 * N) + " residuals; " +
+                     std::to_string(n_free) + " free parameters need more rows");
+  }
+  numerics::FitOptions fo;
+  fo.loss = o.loss;
+  fo.loss_scale = o.loss_scale;
+  fo.max_iterations = 100;
+  fo.function_tolerance = 1e-10;
+  fo.parameter_tolerance = 1e-8;
+  fo.gradient_tolerance = 1e-12;
+  auto residuals = [&](const double* p, double* r) {
+    const auto spec = spec_of(p);
+    const auto fr = friction_of(p);
+    for (int i = 0; i < N; ++i) {
+      BounceFitRow q;
+      try {
+        q = predict_bounce(rows[i], o.ball, spec, fr, o.tolerance);
+      } catch (const InputError&) {
+        return false;  // e.g. a restitution the law cannot reach: the solver backs off
+      }
+      r[3 * i] = q.r_vx;
+      r[3 * i + 1] = q.r_vy;
+      r[3 * i + 2] = q.r_b_omega;
+      if (!std::isfinite(q.r_vx) || !std::isfinite(q.r_vy) || !std::isfinite(q.r_b_omega)) return false;
+    }
+    return true;
+  };
+  BounceFitResult out;
+  out.fit = numerics::fit_least_squares(residuals, 3 * N, params, fo);
+  // A second start from the data: the median restitution -vy_out/vy_in and the Hunt–Crossley
+  // relation e(chi v_in) give the damping (or e) that matches the typical rebound, which
+  // avoids the local minima a poor damping start falls into (friction branches). The start
+  // with the lower cost wins.
+  if (!params[2].fixed && o.model != bounce::NormalModel::hooke) {
+    std::vector<double> e_rows, v_rows;
+    for (const auto& r : rows) {
+      e_rows.push_back(-r.vy_out / r.vy_in);
+      v_rows.push_back(std::abs(r.vy_in));
+    }
+    auto median = [](std::vector<double> v) {
+      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+      return v[v.size() / 2];
+    };
+    const double e_med = std::clamp(median(e_rows), 0.05, 0.99);
+    auto second = params;
+    if (o.restitution_model) {
+      second[2].initial = e_med;
+    } else {
+      const double chi = bounce::hunt_crossley_chi_v(e_med) / median(v_rows);
+      second[2].initial = std::clamp(std::log(chi * std::exp(params[0].initial)), std::log(1e-6), std::log(1e10));
+    }
+    auto alt = numerics::fit_least_squares(residuals, 3 * N, second, fo);
+    if (alt.ok() && (!out.fit.ok() || alt.cost < out.fit.cost)) out.fit = std::move(alt);
+  }
+  const auto& f = out.fit;
+  if (!f.ok()) {
+    std::string why = f.message;
+    if (f.status == numerics::FitStatus::not_identifiable)
+      why = "the data cannot determine all free parameters (" + f.message + "); fix some with --fix";
+    throw InputError("bounce fit failed: " + why);
+  }
+  const auto& v = f.values;
+  const auto& s = f.sigma;
+  out.K = std::exp(v[0]);
+  out.sigma_K = out.K * s[0];  // d K = K d log K
+  out.n = v[1];
+  out.sigma_n = s[1];
+  if (o.restitution_model) {
+    out.e = v[2];
+    out.sigma_e = s[2];
+    out.D = out.sigma_D = NAN;
+  } else {
+    out.D = hertz ? 0.0 : std::exp(v[2]);
+    out.sigma_D = out.D * s[2];
+    out.e = out.sigma_e = NAN;
+  }
+  out.mu = v[3];
+  out.sigma_mu = s[3];
+  out.rms = f.rms;
+  const auto spec = spec_of(v.data());
+  const auto fr = friction_of(v.data());
+  for (const auto& row : rows) out.rows.push_back(predict_bounce(row, o.ball, spec, fr, o.tolerance));
+  const char* shown[] = {"K", "n", o.restitution_model ? "e" : "D", "mu"};
+  for (int k = 0; k < 4; ++k)
+    if (!params[k].fixed) out.free_parameters.push_back(shown[k]);
+  return out;
+}
+
+}  // namespace tribolab::analysis

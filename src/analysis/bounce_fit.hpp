@@ -1,0 +1,67 @@
+// Fitting the contact law of bounce::simulate_contact to measured bounces (one row per
+// bounce: orientation and velocities before, velocities after). Unknowns K, n, D (or the
+// target restitution e of a restitution-based law) and mu; residuals are predicted minus
+// measured outgoing vx, vy and b omega (omega scaled by the semi-minor axis so all residuals
+// are speeds, m/s). K and D are fitted as logarithms (they span decades; positivity for
+// free). Robust loss (Huber by default). docs/theory.md#bounce-fit.
+#pragma once
+
+#include "bounce/contact.hpp"
+#include "numerics/least_squares.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribolab::analysis {
+
+/// One measured bounce (a row of the `bounce fit` table).
+struct BounceRow {
+  double theta_deg = 0;                         ///< orientation at first touch, deg
+  double vx_in = 0, vy_in = 0, omega_in = 0;    ///< m/s, m/s (< 0), rad/s
+  double vx_out = 0, vy_out = 0, omega_out = 0; ///< m/s, m/s, rad/s
+};
+
+struct BounceFitOptions {
+  bounce::Ball ball;
+  bounce::NormalModel model = bounce::NormalModel::hunt_crossley;
+  bool restitution_model = false;    ///< unknown e (target restitution) instead of D
+  bounce::FrictionModel friction;    ///< kind, slip_scale, k_t, c_t used; mu is fitted
+  /// Starting values (also the values of fixed parameters): K N/m^n, n, D, e, mu.
+  double K0 = 1e5, n0 = 1.5, D0 = 5e4, e0 = 0.8, mu0 = 0.5;
+  std::map<std::string, double> fixed;  ///< parameters held at the given value ("K", "n", "D", "e", "mu")
+  numerics::RobustLoss loss = numerics::RobustLoss::huber;
+  double loss_scale = 0.05;          ///< m/s: residual size where the robust loss bends
+  double tolerance = 1e-9;           ///< simulate_contact integrator tolerance
+  std::string validate() const;
+};
+
+/// Per-row prediction and residuals (predicted - measured).
+struct BounceFitRow {
+  double vx_pred = 0, vy_pred = 0, omega_pred = 0;  ///< m/s, m/s, rad/s
+  double r_vx = 0, r_vy = 0, r_b_omega = 0;         ///< m/s (omega residual times b)
+};
+
+struct BounceFitResult {
+  numerics::FitResult fit;           ///< raw solver result (log K, n, log D or e, mu)
+  double K = 0, sigma_K = 0;         ///< N/m^n
+  double n = 0, sigma_n = 0;
+  double D = 0, sigma_D = 0;         ///< N s/m^(n+1) (Hooke N s/m); NaN with restitution_model
+  double e = 0, sigma_e = 0;         ///< target restitution; NaN unless restitution_model
+  double mu = 0, sigma_mu = 0;
+  double rms = 0;                    ///< m/s over all 3 N residuals
+  std::vector<BounceFitRow> rows;
+  std::vector<std::string> free_parameters;
+};
+
+/// Fits. Throws InputError when the options are invalid, the data are too few for the free
+/// parameters, or the fit cannot determine them (status not_identifiable / failed).
+BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitOptions& options);
+
+/// Predicts one row's outgoing state with the given parameters (NaN when the contact fails).
+BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
+                            const bounce::NormalLawSpec& law, const bounce::FrictionModel& friction,
+                            double tolerance);
+
+}  // namespace tribolab::analysis

@@ -1,0 +1,85 @@
+// Tests of fit_bounces on synthetic tables made by simulate_contact with noise.
+#include "analysis/bounce_fit.hpp"
+#include "analysis/bounce_synth.hpp"
+
+#include "numerics/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace tribolab::analysis {
+namespace {
+
+TEST(BounceFit, ExactTableGivesTheTruthBack) {
+  SynthTableOptions t;
+  t.rows = 12;
+  t.noise_v = t.noise_omega = 0;
+  const auto rows = synth_table(t);
+  BounceFitOptions o;
+  o.fixed = {{"K", 101054}, {"n", 1.51}};
+  o.tolerance = 1e-11;
+  const auto r = fit_bounces(rows, o);
+  // Noise-free data: D and mu exact up to the integrator's ~1e-9 m/s outputs amplified by
+  // the sensitivity of the outputs to D (relative 1e-6 is generous and still strict).
+  EXPECT_NEAR(r.D, 60423, 60423 * 1e-5);
+  EXPECT_NEAR(r.mu, 0.5, 1e-5);
+  EXPECT_LT(r.rms, 1e-6);
+}
+
+// Coverage of the 95% intervals of D and mu over seeds, K and n fixed (the outgoing
+// velocities hardly depend on them: see AllFourParameters). Binomial(40, 0.95): mean 38,
+// sd 1.38; we accept >= 34 (3 sd below).
+TEST(BounceFit, IntervalsOfDampingAndFrictionCoverTheTruth) {
+  int cover_D = 0, cover_mu = 0;
+  const int runs = 40;
+  for (int s = 0; s < runs; ++s) {
+    SynthTableOptions t;
+    t.rows = 25;
+    t.seed = 500 + s;
+    const auto rows = synth_table(t);
+    BounceFitOptions o;
+    o.fixed = {{"K", 101054}, {"n", 1.51}};
+    const auto r = fit_bounces(rows, o);
+    cover_D += std::abs(r.D - 60423) <= r.fit.ci_half_width(2) * r.D;  // log-space interval
+    cover_mu += std::abs(r.mu - 0.5) <= r.fit.ci_half_width(3);
+  }
+  std::cout << "bounce fit coverage over " << runs << " tables: D " << cover_D << ", mu " << cover_mu << "\n";
+  EXPECT_GE(cover_D, 34);
+  EXPECT_GE(cover_mu, 34);
+}
+
+// All four parameters free: K and n are weakly determined (the central restitution of the
+// Hunt–Crossley law depends on chi = D/K only), but their intervals must hold the truth and
+// D/K must be sharp. One table; each 95% interval misses with probability 5%, so this test
+// with a fixed seed is deterministic and was checked to be an ordinary draw.
+TEST(BounceFit, AllFourParametersWithinTheirIntervals) {
+  SynthTableOptions t;
+  t.rows = 30;
+  t.seed = 2;
+  const auto rows = synth_table(t);
+  const auto r = fit_bounces(rows, {});
+  const auto& f = r.fit;
+  EXPECT_LE(std::abs(std::log(r.K / 101054)), f.ci_half_width(0));
+  EXPECT_LE(std::abs(r.n - 1.51), f.ci_half_width(1));
+  EXPECT_LE(std::abs(std::log(r.D / 60423)), f.ci_half_width(2));
+  EXPECT_LE(std::abs(r.mu - 0.5), f.ci_half_width(3));
+  // chi = D / K: 1% (the restitution pins it; rms noise 0.02 m/s over 30 rows).
+  EXPECT_NEAR(r.D / r.K, 60423.0 / 101054, 0.01 * 60423.0 / 101054);
+}
+
+TEST(BounceFit, RejectsWhatTheDataCannotSupport) {
+  SynthTableOptions t;
+  t.rows = 1;
+  const auto rows = synth_table(t);
+  BounceFitOptions o;
+  EXPECT_THROW(fit_bounces(rows, o), InputError);  // 3 residuals, 4 free parameters
+  o.fixed = {{"x", 1}};
+  EXPECT_THROW(fit_bounces(rows, o), InputError);  // unknown name
+  o.fixed = {{"e", 0.5}};
+  EXPECT_THROW(fit_bounces(rows, o), InputError);  // e without a restitution model
+}
+
+}  // namespace
+}  // namespace tribolab::analysis

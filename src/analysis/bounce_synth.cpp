@@ -1,0 +1,151 @@
+// docs/theory.md#bounce-synthetic.
+#include "analysis/bounce_synth.hpp"
+
+#include "bounce/flight.hpp"
+#include "numerics/error.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace tribolab::analysis {
+
+namespace {
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+void throw_invalid(const std::string& e) {
+  const auto colon = e.find(':');
+  if (colon != std::string::npos && colon < 24) throw InputError("--" + e.substr(0, colon), e.substr(colon + 2));
+  throw InputError(e);
+}
+}  // namespace
+
+std::string SynthVideoOptions::validate() const {
+  if (auto e = ball.validate(); !e.empty()) return e;
+  if (auto e = law.validate(); !e.empty()) return e;
+  if (auto e = friction.validate(); !e.empty()) return e;
+  for (double v : {height, theta_deg, omega, vx, vy, after, fps, noise, time_factor})
+    if (!std::isfinite(v)) return "options must be finite numbers";
+  if (!(height > ball.a)) return "height: the release height must exceed the semi-major axis a";
+  if (!(after > 0 && after <= 10)) return "after: must lie in (0, 10] s";
+  if (!(fps >= 10 && fps <= 100000)) return "fps: must lie in [10, 100000]";
+  if (!(noise >= 0 && noise < 0.1)) return "noise: must lie in [0, 0.1) m";
+  if (!(time_factor > 0)) return "time-factor: must be positive";
+  return {};
+}
+
+double SynthVideoTruth::vy_flight(bool pre, double t) const {
+  return pre ? touch.vy - g * (t - t_touch) : separation.vy - g * (t - t_separation);
+}
+
+SynthVideo synth_video(const SynthVideoOptions& o) {
+  if (auto e = o.validate(); !e.empty()) throw_invalid(e);
+  const double g = 9.8;
+  bounce::BodyState s0;
+  s0.y = o.height;
+  s0.theta = o.theta_deg / kDeg;
+  s0.omega = o.omega;
+  s0.vx = o.vx;
+  s0.vy = o.vy;
+  bounce::FlightOptions fo;
+  fo.g = g;
+  const auto first = bounce::first_contact(o.ball, s0, fo);
+  if (first.status != bounce::FlightStatus::contact) throw InputError("the release touches the floor");
+  bounce::ContactOptions co;
+  co.g = g;
+  std::vector<bounce::ContactSample> history;
+  const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, first.state, co, &history);
+  if (c.status != bounce::ContactStatus::separated) throw InputError("the contact did not end: " + std::string(c.message));
+  SynthVideo v;
+  SynthVideoTruth& tr = v.truth;
+  tr.g = g;
+  tr.t_touch = first.t_contact;
+  tr.touch = first.state;
+  tr.t_separation = first.t_contact + c.contact_duration;
+  tr.separation = c.out;
+  tr.separation.x += first.state.x;  // the contact's x starts from the touch's x
+  tr.floor_y = 0;
+  tr.release_apex = o.vy > 0 ? o.height + o.vy * o.vy / (2 * g) : o.height;
+  tr.post_apex = tr.separation.y + std::max(0.0, tr.separation.vy) * std::max(0.0, tr.separation.vy) / (2 * g);
+  // Video ends `after` s after separation or at the next touch.
+  double t_end = tr.t_separation + o.after;
+  {
+    const auto next = bounce::first_contact(o.ball, tr.separation, fo);
+    if (next.status == bounce::FlightStatus::contact) t_end = std::min(t_end, tr.t_separation + next.t_contact);
+  }
+  std::mt19937_64 rng(o.seed);
+  std::uniform_real_distribution<double> phase(0, 1);
+  std::normal_distribution<double> noise(0, 1);
+  const double dt = 1 / o.fps;
+  const double t0 = phase(rng) * dt;  // the first frame falls anywhere within a frame period
+  v.tip_a.name = "A";
+  v.tip_b.name = "B";
+  std::size_t h = 0;
+  for (int k = 0;; ++k) {
+    const double t = t0 + k * dt;
+    if (t > t_end) break;
+    bounce::BodyState s;
+    if (t < tr.t_touch) {
+      s = bounce::free_flight(s0, g, t);
+    } else if (t >= tr.t_separation) {
+      s = bounce::free_flight(tr.separation, g, t - tr.t_separation);
+    } else {
+      // Inside the contact: the history sample at or before t (steps are far below a frame).
+      const double tc = t - tr.t_touch;
+      while (h + 1 < history.size() && history[h + 1].t <= tc) ++h;
+      s = history[h].state;
+      s.x += first.state.x;
+    }
+    const double ca = o.ball.a * std::cos(s.theta), sa = o.ball.a * std::sin(s.theta);
+    // A is the tip at -a along the major axis, B at +a, so theta = atan2(B - A).
+    const track::TrackPoint pa{k, t * o.time_factor, s.x - ca + o.noise * noise(rng), s.y - sa + o.noise * noise(rng)};
+    const track::TrackPoint pb{k, t * o.time_factor, s.x + ca + o.noise * noise(rng), s.y + sa + o.noise * noise(rng)};
+    v.tip_a.points.push_back(pa);
+    v.tip_b.points.push_back(pb);
+  }
+  return v;
+}
+
+std::string SynthTableOptions::validate() const {
+  if (auto e = ball.validate(); !e.empty()) return e;
+  if (auto e = law.validate(); !e.empty()) return e;
+  if (auto e = friction.validate(); !e.empty()) return e;
+  if (rows < 1 || rows > 100000) return "rows: must lie in 1..100000";
+  if (!(speed_min > 0 && speed_max >= speed_min && speed_max < 100)) return "speed-min: need 0 < speed-min <= speed-max < 100 m/s";
+  if (!(vx_max >= 0 && vx_max < 100)) return "vx-max: must lie in [0, 100) m/s";
+  if (!(omega_max >= 0 && omega_max < 1000)) return "omega-max: must lie in [0, 1000) rad/s";
+  if (!(noise_v >= 0 && noise_v < 10)) return "noise-v: must lie in [0, 10) m/s";
+  if (!(noise_omega >= 0 && noise_omega < 100)) return "noise-omega: must lie in [0, 100) rad/s";
+  return {};
+}
+
+std::vector<BounceRow> synth_table(const SynthTableOptions& o) {
+  if (auto e = o.validate(); !e.empty()) throw_invalid(e);
+  std::mt19937_64 rng(o.seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> n(0, 1);
+  std::vector<BounceRow> rows;
+  while (static_cast<int>(rows.size()) < o.rows) {
+    bounce::BodyState s;
+    s.theta = (u(rng) - 0.5) * std::numbers::pi;
+    s.vx = (2 * u(rng) - 1) * o.vx_max;
+    s.vy = -(o.speed_min + (o.speed_max - o.speed_min) * u(rng));
+    s.omega = (2 * u(rng) - 1) * o.omega_max;
+    const auto sp = bounce::support(o.ball, s.theta);
+    if (!(s.vy + s.omega * sp.X < -0.2)) continue;  // the contact point must approach the floor
+    const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, s);
+    if (c.status != bounce::ContactStatus::separated) continue;
+    BounceRow r;
+    r.theta_deg = s.theta * kDeg;
+    r.vx_in = s.vx;
+    r.vy_in = s.vy;
+    r.omega_in = s.omega;
+    r.vx_out = c.out.vx + o.noise_v * n(rng);
+    r.vy_out = c.out.vy + o.noise_v * n(rng);
+    r.omega_out = c.out.omega + o.noise_omega * n(rng);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+}  // namespace tribolab::analysis

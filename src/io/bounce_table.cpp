@@ -1,0 +1,88 @@
+#include "io/bounce_table.hpp"
+
+#include "io/text.hpp"
+#include "numerics/error.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace tribolab::io {
+
+namespace {
+/// Shortest text that reads back to the same double.
+std::string shortest(double v) {
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
+}
+
+constexpr std::array<const char*, 7> kColumns = {"theta_deg", "vx_in", "vy_in", "omega_in",
+                                                 "vx_out", "vy_out", "omega_out"};
+}
+
+std::vector<analysis::BounceRow> parse_bounce_table(std::string_view text, const std::string& source) {
+  std::vector<analysis::BounceRow> rows;
+  std::array<int, 7> col{};
+  col.fill(-1);
+  std::size_t n_fields = 0;
+  bool have_header = false;
+  int line_no = 0;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t nl = text.find('\n', pos);
+    std::string_view line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+    pos = nl == std::string_view::npos ? text.size() + 1 : nl + 1;
+    ++line_no;
+    line = trim(line);
+    if (line.empty() || line.front() == '#') continue;
+    const std::string where = source + ":" + std::to_string(line_no);
+    const auto fields = split(line, ',');
+    if (!have_header) {
+      for (std::size_t i = 0; i < fields.size(); ++i) {
+        const auto name = trim(fields[i]);
+        for (std::size_t c = 0; c < kColumns.size(); ++c)
+          if (name == kColumns[c]) col[c] = static_cast<int>(i);
+      }
+      for (std::size_t c = 0; c < kColumns.size(); ++c) {
+        if (col[c] < 0) {
+          throw InputError(where, std::string("missing column '") + kColumns[c] +
+                                      "' (header must name theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out)");
+        }
+      }
+      n_fields = fields.size();
+      have_header = true;
+      continue;
+    }
+    if (fields.size() != n_fields) {
+      throw InputError(where, "expected " + std::to_string(n_fields) + " fields, found " + std::to_string(fields.size()));
+    }
+    std::array<double, 7> v{};
+    for (std::size_t c = 0; c < kColumns.size(); ++c) {
+      v[c] = parse_double(trim(fields[col[c]]), where + " (" + kColumns[c] + ")");
+      if (!std::isfinite(v[c])) throw InputError(where, std::string(kColumns[c]) + " is not finite");
+    }
+    rows.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6]});
+  }
+  if (!have_header) throw InputError(source, "empty table (no header)");
+  if (rows.empty()) throw InputError(source, "no data rows after the header");
+  return rows;
+}
+
+std::vector<analysis::BounceRow> read_bounce_table(const std::string& path) {
+  return parse_bounce_table(read_file(path), path);
+}
+
+std::string write_bounce_table(const std::vector<analysis::BounceRow>& rows) {
+  std::ostringstream out;
+  out << "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n";
+  for (const auto& r : rows) {
+    out << shortest(r.theta_deg) << ',' << shortest(r.vx_in) << ',' << shortest(r.vy_in) << ','
+        << shortest(r.omega_in) << ',' << shortest(r.vx_out) << ',' << shortest(r.vy_out) << ','
+        << shortest(r.omega_out) << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace tribolab::io
