@@ -283,7 +283,8 @@ void add_maps(report::Section& s, std::ostream& log) {
                   "for v_y = −4 and −8 m/s (figures 53, 54), computed with the contact solver in every cell "
                   "(36 × 11 cells per map; ball moving to +x with v_x = 0, clockwise spin, Coulomb μ = 0.5). "
                   "Blue: e > 1, the ball rebounds above the height it fell from. The black curve is the e = 1 "
-                  "boundary traced by marching squares and refined by root finding on the solver itself.");
+                  "boundary traced by marching squares and refined by root finding on the solver itself "
+                  "(the seed's figure 56 shows the same surface against the plane z = 1).");
   sweep::GridSpec grid;
   grid.axes = {{sweep::Quantity::speed, 4, 8, 2}, {sweep::Quantity::theta_deg, 100, 170, 36},
                {sweep::Quantity::omega, 30, 50, 11}};
@@ -300,13 +301,15 @@ void add_maps(report::Section& s, std::ostream& log) {
     for (std::int64_t slice = 0; slice < 2; ++slice) {
       const double speed = slice == 0 ? 4 : 8;
       const double emax = max_of(values, n_out, e, slice * 396, (slice + 1) * 396);
-      report::Figure f = heat_map("Figure " + std::string(slice == 0 ? "53" : "54") + ", v_y = −" + v4(speed) +
-                                      " m/s: " + name,
+      report::Figure f = heat_map("As seed figure " + std::string(slice == 0 ? "53" : "54") + ", v_y = −" +
+                                      v4(speed) + " m/s: " + name,
                                   grid, values, n_out, e, slice, contour, "spin |ω| (rad/s), clockwise");
+      const bool seeds = law.D == seed_law().D;
       f.caption = "Largest e on the map: " + v4(emax) +
-                  (emax < 1 ? ". No cell reaches e = 1, so there is no boundary: the seed's maps cannot come "
-                              "from its fitted law as printed (errata)."
-                            : ".");
+                  (emax >= 1 ? "; the black curve is the e = 1 boundary."
+                   : seeds   ? ". No cell reaches e = 1, so there is no boundary: the seed's maps cannot come "
+                               "from its fitted law as printed (errata)."
+                             : ". No cell reaches e = 1 at this speed with this law either.");
       s.add_figure(std::move(f));
       log << "  map v_y = -" << speed << " m/s, " << name << ": largest e = " << v4(emax) << '\n';
     }
@@ -319,7 +322,7 @@ void add_maps(report::Section& s, std::ostream& log) {
   const sweep::CellModel model = contact_model(ball, low_damping_law(), "low damping (D = 6000)");
   const std::vector<double> values = sweep::evaluate_grid(ratio, model);
   const sweep::ContourResult contour = sweep::trace_contour(ratio, model, values, co);
-  report::Figure f = heat_map("Figure 55: e over spin/speed ratio, v_y = −4 m/s, low damping (D = 6000)", ratio,
+  report::Figure f = heat_map("As seed figure 55: e over spin/speed ratio, v_y = −4 m/s, low damping (D = 6000)", ratio,
                               values, model.output_names.size(), model.output_index("e"), 0, contour,
                               "|ω| / |v_y| (rad/m)");
   f.caption = "The same e over the ratio of spin to incoming speed (ω = ratio × 4 m/s).";
