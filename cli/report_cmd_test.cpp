@@ -64,6 +64,15 @@ TEST(ReportCmd, InclineSimulateModelBOverlaysClosedFormAndNumeric) {
   EXPECT_TRUE(fs::exists(out));
 }
 
+TEST(ReportCmd, InclineSimulateWithManyRowsKeepsTheReportSmall) {
+  const std::string out = temp_dir("report_sim_rows") + "/t.csv";
+  const std::string html = expect_report(
+      "incline_sim_rows", "incline simulate --mu 0.634 --phi-deg 23.2 --v0 2.3 --dt 1e-5 --out '" + out + "'", 7);
+  // ~93000 rows in the CSV; the report draws at most 2001 samples per curve: 14 curves of
+  // 2001 points of ~20 characters each add well under 2 MB to the 4.8 MB library.
+  EXPECT_LT(html.size(), 7'000'000u);
+}
+
 TEST(ReportCmd, InclineSimulateModelA) {
   const std::string out = temp_dir("report_sim_a") + "/t.csv";
   const std::string html = expect_report(

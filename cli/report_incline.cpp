@@ -45,6 +45,16 @@ std::vector<double> even_times(double t_end, int n) {
   return t;
 }
 
+/// At most `n` + 1 evenly chosen samples (first and last kept): a report stays a few MB
+/// even for a 10^7-row CSV.
+std::vector<State> thin(const std::vector<State>& states, std::size_t n = 2000) {
+  if (states.size() <= n + 1) return states;
+  std::vector<State> out;
+  out.reserve(n + 1);
+  for (std::size_t i = 0; i <= n; ++i) out.push_back(states[i * (states.size() - 1) / n]);
+  return out;
+}
+
 }  // namespace
 
 int add_incline_kinematics(report::Section& s, const std::string& title,
@@ -114,7 +124,8 @@ report::Table incline_parameter_table(const incline::Parameters& p) {
 
 report::Report incline_simulate_report(const incline::Parameters& p, bool model_a,
                                        const std::string& method,
-                                       const std::vector<incline::State>& states) {
+                                       const std::vector<incline::State>& all_states) {
+  const std::vector<State> states = thin(all_states);
   report::Report r;
   r.title = "tribolab incline simulate";
   r.subtitle = std::string("Model ") + (model_a ? "A" : "B") + ", " + method + " method";
@@ -177,7 +188,7 @@ report::Report incline_families_report(const incline::FamilyOptions& options,
   std::vector<InclineCurve> curves;
   for (const auto& m : family.members) {
     const std::string shown = report::format_value(phi ? incline::rad_to_deg(m.value) : m.value, 4);
-    curves.push_back(incline_curve(name + " = " + shown, m.trajectory));
+    curves.push_back(incline_curve(name + " = " + shown, thin(m.trajectory)));
     stops.rows.push_back({shown, report::format_value(m.prediction.k, 4),
                           incline::to_string(m.prediction.regime),
                           optional_number(m.prediction.t_stop, ""),
