@@ -4,6 +4,8 @@
 //   drop          release -> flight -> contact -> ... several bounces
 #include "app.hpp"
 #include "bounce_analysis_cmd.hpp"
+#include "report_bounce.hpp"
+#include "report_option.hpp"
 
 #include "bounce/contact.hpp"
 #include "bounce/drop.hpp"
@@ -210,6 +212,7 @@ void add_contact_time(CLI::App* area) {
     double height = 0, omega = 0, theta_deg = 0, g = 9.8;
     int direction = 1;
     bool json = false;
+    std::string report;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = area->add_subcommand("contact-time", "First contact of a ball released at an apex (seed 001, table 4)");
@@ -220,6 +223,7 @@ void add_contact_time(CLI::App* area) {
   cmd->add_option("--g", o->g, "gravitational acceleration, m/s^2 (default 9.8)");
   o->ball.add(cmd);
   add_json_flag(*cmd, o->json);
+  add_report_option(*cmd, o->report);
   cmd->callback([o] {
     const Ball ball = o->ball.get();
     check_finite(o->height, "--height");
@@ -231,6 +235,9 @@ void add_contact_time(CLI::App* area) {
     const FlightResult r = first_contact_from_apex(ball, o->height, o->omega, o->theta_deg / kDeg, fo);
     if (r.status == FlightStatus::touching_start) throw InputError("--height", r.message);
     if (r.status != FlightStatus::contact) throw InputError(r.message);
+    write_report_if_requested(o->report, [&] {
+      return bounce_contact_time_report(ball, {0, o->height, o->theta_deg / kDeg, 0, 0, o->omega}, fo.g, o->direction, r);
+    });
     print_result({{"t_contact", r.t_contact},
                   {"theta_contact_deg", wrap_angle(r.state.theta) * kDeg},
                   {"contact_point", {r.contact_x, r.contact_y}},
@@ -251,7 +258,7 @@ void add_simulate(CLI::App* area) {
     BallOptions ball;
     LawOptions law;
     double vx = 0, vy = 0, omega = 0, theta_deg = 0, g = 9.8;
-    std::string history;
+    std::string history, report;
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -265,6 +272,7 @@ void add_simulate(CLI::App* area) {
   o->ball.add(cmd);
   o->law.add(cmd);
   add_json_flag(*cmd, o->json);
+  add_report_option(*cmd, o->report);
   cmd->callback([o] {
     const Ball ball = o->ball.get();
     for (auto [v, name] : {std::pair{o->vx, "--vx"}, {o->vy, "--vy"}, {o->omega, "--omega"}, {o->theta_deg, "--theta-deg"}})
@@ -284,8 +292,9 @@ void add_simulate(CLI::App* area) {
                                   "vy + omega X = " + io::format_number(pv.vy) + " m/s): no contact");
     }
     std::vector<ContactSample> hist;
-    const ContactResult r = simulate_contact(ball, spec, fr, s, copt, o->history.empty() ? nullptr : &hist);
+    const ContactResult r = simulate_contact(ball, spec, fr, s, copt, o->history.empty() && o->report.empty() ? nullptr : &hist);
     if (r.status == ContactStatus::failed) throw InputError(std::string("contact simulation failed: ") + std::string(r.message));
+    write_report_if_requested(o->report, [&] { return bounce_simulate_report(ball, fr, r, hist); });
     if (!o->history.empty()) write_history(o->history, hist);
     print_result(contact_json(ball, r, spec.model), o->json);
   });
@@ -297,7 +306,7 @@ void add_drop(CLI::App* area) {
     LawOptions law;
     double height = 0, omega = 0, theta_deg = 0, vx = 0, vy = 0, g = 9.8, rest_height = 1e-4, sample_dt = 1e-3;
     int bounces = 5;
-    std::string trajectory;
+    std::string trajectory, report;
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -315,6 +324,7 @@ void add_drop(CLI::App* area) {
   o->ball.add(cmd);
   o->law.add(cmd);
   add_json_flag(*cmd, o->json);
+  add_report_option(*cmd, o->report);
   cmd->callback([o] {
     const Ball ball = o->ball.get();
     for (auto [v, name] : {std::pair{o->height, "--height"}, {o->omega, "--omega"}, {o->theta_deg, "--theta-deg"},
@@ -322,7 +332,7 @@ void add_drop(CLI::App* area) {
       check_finite(v, name);
     if (o->bounces < 1 || o->bounces > 10000) throw InputError("--bounces", "must lie in 1..10000");
     if (!(o->rest_height >= 0)) throw InputError("--rest-height", "must be >= 0");
-    if (!o->trajectory.empty() && !(o->sample_dt > 0)) throw InputError("--sample-dt", "must be positive");
+    if (!(o->trajectory.empty() && o->report.empty()) && !(o->sample_dt > 0)) throw InputError("--sample-dt", "must be positive");
     const NormalLawSpec spec = o->law.law();
     const FrictionModel fr = o->law.friction_model();
     DropOptions d;
@@ -330,7 +340,7 @@ void add_drop(CLI::App* area) {
     d.contact = o->law.contact(o->g);
     d.max_bounces = static_cast<std::size_t>(o->bounces);
     d.rest_height = o->rest_height;
-    d.sample_dt = o->trajectory.empty() ? 0.0 : o->sample_dt;
+    d.sample_dt = o->trajectory.empty() && o->report.empty() ? 0.0 : o->sample_dt;
     DropRelease rel;
     rel.height = o->height;
     rel.theta = o->theta_deg / kDeg;
@@ -358,6 +368,7 @@ void add_drop(CLI::App* area) {
                          {"above_release", b.above_release},
                          {"t_cross_release", b.t_cross_release >= 0 ? json(b.t_cross_release) : json(nullptr)}});
     }
+    write_report_if_requested(o->report, [&] { return bounce_drop_report(ball, fr, rel, r); });
     if (!o->trajectory.empty()) write_trajectory(o->trajectory, r.trajectory);
     json apexes = json::array();
     for (const Bounce& b : r.bounces) apexes.push_back(b.apex_height);

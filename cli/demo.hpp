@@ -24,6 +24,25 @@ struct CaseStudy {
 /// The case studies of `tribolab demo`, in report order.
 std::vector<CaseStudy> demo_case_studies();
 
+/// An erratum found in a seed, with the independent check that shows it.
+struct Erratum {
+  std::string where;  ///< in the seed, e.g. "seed 001, table 4"
+  std::string text;   ///< what is wrong and the corrected value
+  std::string check;  ///< the figure/table of the report or the test that shows it
+};
+
+/// Seed 001's errata (bounce and sweep) as data; seed 000's are incline::CaseStudy::errata.
+std::vector<Erratum> seed001_errata();
+
+/// Seed 000: table 1, figures 二, 四-八 and the printed-number checks (cli/demo_incline.cpp).
+void add_incline_case_study(report::Report& r, std::ostream& log);
+
+/// Seed 001: geometry, table 4, figures 45-48, a drop, heat maps 53-56 (cli/demo_bounce.cpp).
+void add_bounce_case_study(report::Report& r, std::ostream& log);
+
+/// The errata of both seeds (cli/demo_errata.cpp).
+void add_errata_section(report::Report& r, std::ostream& log);
+
 /// "About this report": what tribolab is, the two seeds, conventions and units, how to read
 /// the report. Text only; no computed numbers.
 void add_about_section(report::Report& r, std::ostream& log);

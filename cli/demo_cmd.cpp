@@ -58,6 +58,9 @@ void run_demo(const DemoOptions& opt) {
 std::vector<CaseStudy> demo_case_studies() {
   return {
       {"about", add_about_section},
+      {"incline", add_incline_case_study},
+      {"bounce", add_bounce_case_study},
+      {"errata", add_errata_section},
   };
 }
 

@@ -32,6 +32,9 @@ TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
   EXPECT_EQ(html.find("<script src"), std::string::npos);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
   EXPECT_NE(html.find("About this report"), std::string::npos);
+  for (const char* heading : {"Incline (seed 000): table 1", "Bounce: table 4", "Errata found in the seeds"})
+    EXPECT_NE(html.find(heading), std::string::npos) << heading;
+  EXPECT_NE(r.out.find("table 1:"), std::string::npos) << r.out;  // the summary on stdout
 }
 
 TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
@@ -41,7 +44,10 @@ TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
   ASSERT_EQ(count_lines(r.out), 1) << r.out;  // one JSON object, no progress lines
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["report"], dir + "/report.html");
-  EXPECT_EQ(j["case_studies"][0], "about");
+  EXPECT_EQ(j["case_studies"], nlohmann::json::parse(R"(["about", "incline", "bounce", "errata"])"));
+  // about 0, incline 7 x 5 (二, 四, 五, 六, 七) + 4 (八), bounce 1 + 4 + 1 + 1 + 5 (maps 53-55).
+  EXPECT_EQ(j["figures"], 51);
+  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 1);
   const std::string html = slurp(dir + "/report.html");
   EXPECT_EQ(j["figures"].get<std::size_t>(), count(html, "class=\"tribolab-plot\""));
   EXPECT_EQ(j["sections"].get<std::size_t>(), count(html, "<section id="));

@@ -2,6 +2,8 @@
 // docs/cli.md#incline). Options are parsed as text and converted with io::parse_double so
 // that every error names its option; the library does the physics.
 #include "app.hpp"
+#include "report_incline.hpp"
+#include "report_option.hpp"
 
 #include "incline/closed_form.hpp"
 #include "incline/families.hpp"
@@ -117,12 +119,15 @@ void add_predict(CLI::App* area) {
   auto* cmd = area->add_subcommand("predict", "Closed-form prediction of a launch (model B)");
   auto t = std::make_shared<LaunchText>();
   auto as_json = std::make_shared<bool>(false);
+  auto report_path = std::make_shared<std::string>();
   add_launch_options(cmd, *t, true);
   add_json_flag(*cmd, *as_json);
   name_option_types(cmd);
-  cmd->callback([t, as_json] {
+  add_report_option(*cmd, *report_path);
+  cmd->callback([t, as_json, report_path] {
     const Parameters p = parse_launch(*t);
     const incline::Prediction pr = incline::ClosedForm(p).predict();
+    write_report_if_requested(*report_path, [&] { return incline_predict_report(p, pr); });
     json j;
     j["k"] = finite_or_null(pr.k);
     j["regime"] = incline::to_string(pr.regime);
@@ -144,7 +149,7 @@ void add_predict(CLI::App* area) {
 
 struct SimulateText {
   LaunchText launch;
-  std::string model = "B", method, normal_accel, dt, t_end, out;
+  std::string model = "B", method, normal_accel, dt, t_end, out, report;
   bool json = false;
 };
 
@@ -163,6 +168,7 @@ void add_simulate(CLI::App* area) {
   cmd->add_option("--out", s->out, "Output CSV file")->required();
   add_json_flag(*cmd, s->json);
   name_option_types(cmd);
+  add_report_option(*cmd, s->report);
   cmd->callback([s] {
     Parameters p = parse_launch(s->launch);
     if (s->model != "A" && s->model != "B")
@@ -220,6 +226,7 @@ void add_simulate(CLI::App* area) {
       j["y_stop"] = stopped ? json(*r.y_stop) : json(nullptr);
       j["steps"] = r.steps;
     }
+    write_report_if_requested(s->report, [&] { return incline_simulate_report(p, model_a, method, states); });
     file.stream() << "t,x,y,vx,vy,ax,ay\n";
     for (const auto& st : states) write_state(file.stream(), st);
     file.commit();
@@ -300,7 +307,7 @@ void add_mu_from_stop(CLI::App* area) {
 
 struct FamiliesText {
   LaunchText launch;
-  std::string vary, values, samples = "500", t_end, out;
+  std::string vary, values, samples = "500", t_end, out, report;
   bool json = false;
 };
 
@@ -317,6 +324,7 @@ void add_families(CLI::App* area) {
   cmd->add_option("--out", s->out, "Output CSV file")->required();
   add_json_flag(*cmd, s->json);
   name_option_types(cmd);
+  add_report_option(*cmd, s->report);
   cmd->callback([s] {
     incline::FamilyOptions o;
     std::string skip;
@@ -352,6 +360,7 @@ void add_families(CLI::App* area) {
       if (!(o.t_end > 0)) throw InputError("--t-end", "must be > 0, got " + s->t_end);
     }
     const incline::Family f = incline::make_family(o);
+    write_report_if_requested(s->report, [&] { return incline_families_report(o, f); });
     io::AtomicFile file(s->out);
     const bool phi = o.vary == incline::FamilyParameter::phi;
     const std::string column = phi ? "phi_deg" : s->vary;

@@ -1,6 +1,8 @@
 // `tribolab track`: read tracked video data (Tracker .trk/.trz, Export Data text, CSV) and
 // differentiate it. Options are documented in docs/cli.md#track.
 #include "app.hpp"
+#include "report_option.hpp"
+#include "report_track.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/track_csv.hpp"
@@ -124,7 +126,7 @@ void register_track(CLI::App& root) {
                       "Savitzky-Golay with standard errors), never across impacts");
     struct Args {
       ImportArgs in;
-      std::string track, method = "tracker", impacts = "auto", out;
+      std::string track, method = "tracker", impacts = "auto", out, report;
       int window = 7, order = 2;
       bool as_json = false;
     };
@@ -139,6 +141,7 @@ void register_track(CLI::App& root) {
                     "straight through, exactly as Tracker does (default auto)");
     cmd->add_option("--out", a->out, "Output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)")->required();
     add_json_flag(*cmd, a->as_json);
+    add_report_option(*cmd, a->report);
     cmd->callback([a, cmd] {
       track::KinematicsOptions o;
       if (a->method == "tracker") {
@@ -167,6 +170,7 @@ void register_track(CLI::App& root) {
       }
       const track::Kinematics k = track::differentiate(tr, o);
       const bool savgol = o.method == track::DerivativeMethod::savgol;
+      write_report_if_requested(a->report, [&] { return track_kinematics_report(k, o, set.source); });
       io::AtomicFile f(a->out);
       io::write_kinematics_csv(f.stream(), k, savgol);
       f.commit();

@@ -1,5 +1,7 @@
 #include "report/plotly_json.hpp"
 
+#include <algorithm>
+
 #include "report/format.hpp"
 
 namespace tribolab::report {
@@ -100,7 +102,10 @@ json plotly_figure(const Figure& figure, const std::string& file_name) {
                  {"height", figure.height_px},
                  {"hovermode", "closest"},
                  {"margin", {{"t", 50}, {"r", 20}, {"b", 50}, {"l", 60}}},
-                 {"legend", {{"orientation", "h"}, {"y", -0.2}}}};
+                 // Legend under the x axis's tick labels and title (about 55 px under the
+                 // plot area, whatever the height); Plotly widens the bottom margin for it.
+                 {"legend", {{"orientation", "h"}, {"yanchor", "top"},
+                             {"y", -58.0 / std::max(figure.height_px - 100, 100)}}}};
   if (figure.equal_aspect) {
     layout["yaxis"]["scaleanchor"] = "x";
     layout["yaxis"]["scaleratio"] = 1;

@@ -1,0 +1,75 @@
+// The errata page of the demo: every erratum of docs/theory.md ("Errata in the seeds"), kept
+// here as data. Seed 000's come from incline::seed000_case_study() (one source with its
+// checks); seed 001's (bounce, sweep) are listed below with the check that shows each.
+#include "demo.hpp"
+
+#include "incline/case_study.hpp"
+
+#include <ostream>
+
+namespace tribolab::cli {
+
+std::vector<Erratum> seed001_errata() {
+  return {
+      {"seed 001, eq 15 and the formula for Y (實驗三 5–7)",
+       "The printed depth of the lowest point, Y = |−b[cos²θ + (a/b)² sin²θ]|, gives a²/b (0.221 m for the default "
+       "ball) at θ = 90 deg instead of a (0.145 m). The correct depth is Y = sqrt(a² sin²θ + b² cos²θ), which the "
+       "seed's own eq 20 uses (as Y²).",
+       "Figure 'Depth of the lowest point' in this report (brute-force minimisation over the ellipse); test "
+       "Geometry.SeedEquation18IsWrongAtNinetyDegrees"},
+      {"seed 001, 實驗三 10–11 (bounds on the contact time)",
+       "With sin²θ = 1 the ball lands on a tip of the major axis (Y = a), not the minor one; the bounds are "
+       "sqrt(2(H−a)/g) ≤ t ≤ sqrt(2(H−b)/g), not the reverse.",
+       "test Flight.ContactTimeLiesBetweenTheCorrectedBounds (200 random cases)"},
+      {"seed 001, table 4",
+       "Row 1 (0.350 s) is reproduced (0.3491 s, clockwise spin). Rows 2 and 3 (0.335, 0.356 s) and all three "
+       "measured times exceed the latest possible contact sqrt(2(H−b)/g) from an apex at H, so they are not "
+       "times from the apex and the 97–98 % 'similarity' compares inconsistent quantities.",
+       "Table 4 in this report; test Flight.SeedTable4"},
+      {"seed 001, 研究方法 六 (the contact law)",
+       "F = K δ^n + D δ' is called Hunt–Crossley; that is a nonlinear spring with a linear dashpot. Hunt–Crossley "
+       "(1975) is K δ^n + D δ^n δ', which is also the form of the seed's own fit (101054 x^1.51 + 60423 x^1.51 v). "
+       "δ is the instantaneous, not the maximum, deformation.",
+       "docs/theory.md#bounce-normal-laws (Hunt & Crossley 1975, J. Appl. Mech. 42)"},
+      {"seed 001, 討論 四 (fitted law vs heat maps)",
+       "In SI units the fitted law gives a central restitution of 0.44 at 4 m/s, and the contact simulation never "
+       "gives e > 1 over the maps' range (largest about 0.53 at 4 m/s, 0.33 at 8 m/s). The seed's figures 53–56 "
+       "show e > 1 there, so they cannot come from the law as printed; e > 1 needs D below about 9e3 N s/m^2.51.",
+       "Figures 53 and 54 in this report (seed's law: no e = 1 boundary; low damping: boundary shown)"},
+      {"seed 001 (sweep), the energy-ratio threshold 2.56",
+       "Rebound above the drop height is said to need about 35 rad/s at v_y = 4 m/s and a rotational to vertical "
+       "kinetic energy ratio above 2.56. Since I ≤ m a², the ratio is at most (a ω / v_y)² = 1.61 for a = 0.145 m "
+       "at 35 rad/s (0.72 with the default I): the two numbers cannot both hold.",
+       "bounce sweep --threshold (energy ratio at each angle's threshold); docs/theory.md#sweeps"},
+      {"seed 001 (sweep), figure 55's z axis",
+       "The text of experiment 4 (陸、四(二) 8) calls it initial over final speed; the poster and the z = 1 "
+       "discussion of figure 56 use final over initial. tribolab's maps use e = −v_y,out / v_y,in.",
+       "Figure 55 in this report (e = −v_y,out / v_y,in)"},
+  };
+}
+
+void add_errata_section(report::Report& r, std::ostream& log) {
+  auto& s = r.add_section("Errata found in the seeds");
+  s.add_paragraph("Every number or formula of the two studies that tribolab found to be wrong, with the independent "
+                  "check that shows it. The same list is in docs/theory.md, \"Errata in the seeds\".");
+  const incline::CaseStudy cs = incline::seed000_case_study();
+  report::Table t0;
+  t0.caption = "Seed 000 (incline)";
+  t0.header = {"#", "erratum", "check"};
+  int i = 0;
+  for (const std::string& e : cs.errata)
+    t0.rows.push_back({std::to_string(++i), e,
+                       "recomputed in 'Incline: printed numbers checked' and table 1 above where a number is "
+                       "involved; tests in src/incline/case_study_test.cpp and inverse_test.cpp"});
+  s.add_table(std::move(t0));
+  report::Table t1;
+  t1.caption = "Seed 001 (bounce)";
+  t1.header = {"#", "where", "erratum", "check"};
+  i = 0;
+  const auto bounce = seed001_errata();
+  for (const Erratum& e : bounce) t1.rows.push_back({std::to_string(++i), e.where, e.text, e.check});
+  s.add_table(std::move(t1));
+  log << "  errata: " << cs.errata.size() << " in seed 000, " << bounce.size() << " in seed 001\n";
+}
+
+}  // namespace tribolab::cli
