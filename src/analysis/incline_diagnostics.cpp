@@ -3,7 +3,6 @@
 #include "numerics/error.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <span>
 
@@ -64,8 +63,37 @@ std::optional<NormalAccelDiagnostic> normal_accel_diagnostic(const track::Track&
   return d;
 }
 
+namespace {
+
+/// Value of the k-th derivative of the polynomial c0 + c1 t + ... at t.
+double derivative(const std::vector<double>& c, int k, double t) {
+  double v = 0;
+  for (int j = static_cast<int>(c.size()) - 1; j >= k; --j) {
+    double f = 1;
+    for (int m = 0; m < k; ++m) f *= j - m;
+    v = v * t + f * c[j];
+  }
+  return v;
+}
+
+/// Root of y''(t) near `start` by Newton's method on the polynomial (converges in a few
+/// steps from the bracketed root); NaN when it does not.
+double inflection(const std::vector<double>& cy, double start) {
+  double t = start;
+  for (int it = 0; it < 50; ++it) {
+    const double f = derivative(cy, 2, t), df = derivative(cy, 3, t);
+    if (!(df != 0)) return NAN;
+    const double step = f / df;
+    t -= step;
+    if (std::abs(step) < 1e-15 * (1 + std::abs(t))) return t;
+  }
+  return std::abs(derivative(cy, 2, t)) < 1e-9 ? t : NAN;
+}
+
+}  // namespace
+
 std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
-                                         double window_low, double window_high) {
+                                         double window_low, double window_high, int degree) {
   std::vector<double> tau, x, y;
   for (const auto& p : track.points) {
     if (p.t < window_low || p.t > window_high) continue;
@@ -73,53 +101,66 @@ std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_gue
     x.push_back(p.x);
     y.push_back(p.y);
   }
-  if (tau.size() < 7) return std::nullopt;
+  if (static_cast<int>(tau.size()) < degree + 4) return std::nullopt;
   ThetaC r;
   r.t_guess = t_guess;
   r.window_low = window_low;
   r.window_high = window_high;
-  r.fit_x = local_fit(tau, x, 3);
-  r.fit_y = local_fit(tau, y, 3);
+  r.fit_x = local_fit(tau, x, degree);
+  r.fit_y = local_fit(tau, y, degree);
+  const int nc = degree + 1;
 
-  // cos(theta_c) as a function of the 8 coefficients: inflection of y, velocity there.
-  using Coef = std::array<double, 8>;  // x c0..c3, y c0..c3
-  auto evaluate = [](const Coef& c, double* tc_out) {
-    const double c2 = c[6], c3 = c[7];
-    const double tc = -c2 / (3 * c3);
-    const double vx = c[1] + 2 * c[2] * tc + 3 * c[3] * tc * tc;
-    const double vy = c[5] + 2 * c[6] * tc + 3 * c[7] * tc * tc;
+  // The extremum of v_y: the sign change of y'' from - to + (a_y increases through zero,
+  // eq c) nearest the guess, bracketed on a 400-point scan of the window, then Newton.
+  const double lo = window_low - t_guess, hi = window_high - t_guess;
+  double best = NAN;
+  double prev_t = lo, prev = derivative(r.fit_y.coef, 2, lo);
+  for (int i = 1; i <= 400; ++i) {
+    const double tt = lo + (hi - lo) * i / 400;
+    const double v = derivative(r.fit_y.coef, 2, tt);
+    if (prev < 0 && v >= 0) {
+      const double mid = 0.5 * (prev_t + tt);
+      if (std::isnan(best) || std::abs(mid) < std::abs(best)) best = mid;
+    }
+    prev_t = tt;
+    prev = v;
+  }
+  if (std::isnan(best)) return std::nullopt;
+  // cos(theta_c) as a function of all coefficients (x fit then y fit).
+  auto evaluate = [&](const std::vector<double>& cx, const std::vector<double>& cy, double* tc_out) {
+    const double tc = inflection(cy, best);
+    const double vx = derivative(cx, 1, tc), vy = derivative(cy, 1, tc);
     if (tc_out) *tc_out = tc;
     return -vy / std::hypot(vx, vy);
   };
-  Coef c;
-  for (int k = 0; k < 4; ++k) c[k] = r.fit_x.coef[k], c[4 + k] = r.fit_y.coef[k];
-  if (!(c[7] > 0)) return std::nullopt;  // a_y must increase through zero (eq c)
   double tc = 0;
-  r.cos_theta_c = evaluate(c, &tc);
+  r.cos_theta_c = evaluate(r.fit_x.coef, r.fit_y.coef, &tc);
+  if (!std::isfinite(tc) || tc < lo || tc > hi || !std::isfinite(r.cos_theta_c)) return std::nullopt;
+  best = tc;
   r.t_c = t_guess + tc;
-  if (!(r.t_c >= window_low && r.t_c <= window_high) || !std::isfinite(r.cos_theta_c))
-    return std::nullopt;
-  r.vx = c[1] + 2 * c[2] * tc + 3 * c[3] * tc * tc;
-  r.vy = c[5] + 2 * c[6] * tc + 3 * c[7] * tc * tc;
+  r.vx = derivative(r.fit_x.coef, 1, tc);
+  r.vy = derivative(r.fit_y.coef, 1, tc);
   r.theta_c_deg = std::acos(std::clamp(r.cos_theta_c, -1.0, 1.0)) * 180 / M_PI;
 
-  // Delta method with central differences; x and y fits are independent.
-  Coef g_cos{}, g_t{};
-  for (int k = 0; k < 8; ++k) {
-    const double h = 1e-6 * (std::abs(c[k]) + 1e-6);
-    Coef cp = c, cm = c;
-    cp[k] += h;
-    cm[k] -= h;
+  // Delta method with central differences; the x and y fits are independent.
+  std::vector<double> g_cos(2 * nc), g_t(2 * nc);
+  for (int k = 0; k < 2 * nc; ++k) {
+    std::vector<double> cxp = r.fit_x.coef, cxm = cxp, cyp = r.fit_y.coef, cym = cyp;
+    double& up = k < nc ? cxp[k] : cyp[k - nc];
+    double& dn = k < nc ? cxm[k] : cym[k - nc];
+    const double h = 1e-6 * (std::abs(up) + 1e-6);
+    up += h;
+    dn -= h;
     double tp = 0, tm = 0;
-    g_cos[k] = (evaluate(cp, &tp) - evaluate(cm, &tm)) / (2 * h);
+    g_cos[k] = (evaluate(cxp, cyp, &tp) - evaluate(cxm, cym, &tm)) / (2 * h);
     g_t[k] = (tp - tm) / (2 * h);
   }
   double var_cos = 0, var_t = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) {
+  for (int i = 0; i < nc; ++i)
+    for (int j = 0; j < nc; ++j) {
       var_cos += g_cos[i] * r.fit_x.covariance(i, j) * g_cos[j] +
-                 g_cos[4 + i] * r.fit_y.covariance(i, j) * g_cos[4 + j];
-      var_t += g_t[4 + i] * r.fit_y.covariance(i, j) * g_t[4 + j];
+                 g_cos[nc + i] * r.fit_y.covariance(i, j) * g_cos[nc + j];
+      var_t += g_t[nc + i] * r.fit_y.covariance(i, j) * g_t[nc + j];
     }
   r.sigma_cos_theta_c = std::sqrt(std::max(0.0, var_cos));
   r.sigma_t_c = std::sqrt(std::max(0.0, var_t));

@@ -12,8 +12,8 @@
 // (c) theta_c at the extremum of v_y (a_y = 0): cos(theta_c) = |v_y|/|v| there, and
 //       cos(theta_c) = tan(phi)/mu - f_N sin(theta_c)/(m g mu cos(phi))         (eq c)
 //     so over runs at several angles cos(theta_c) against tan(phi) is a line through the
-//     origin with slope 1/mu when f_N = 0 (eq c'). Located by a cubic fit of y(t) around the
-//     extremum (its inflection point), with the velocity from cubic fits of x(t) and y(t).
+//     origin with slope 1/mu when f_N = 0 (eq c'). Located by a polynomial fit of y(t) around
+//     the extremum (its inflection point), with the velocity from the fits of x(t) and y(t).
 // See docs/theory.md#incline-analysis.
 #pragma once
 
@@ -56,14 +56,16 @@ struct ThetaC {
   double sigma_cos_theta_c = 0;  ///< propagated from the local fits' covariance
   double theta_c_deg = 0;    ///< deg
   double window_low = 0, window_high = 0;  ///< time window of the local cubic fits, s
-  numerics::PolyFit fit_x, fit_y;          ///< cubics in (t - t_guess)
+  numerics::PolyFit fit_x, fit_y;          ///< polynomials in (t - t_guess)
   double t_guess = 0;        ///< centre of the window (the model's prediction), s
 };
 
-/// Locates the v_y extremum in [window_low, window_high] (at least 7 points); empty when the
-/// inflection of the fitted cubic lies outside the window or the window has too few points.
+/// Locates the v_y extremum in [window_low, window_high] from polynomial fits of x(t) and
+/// y(t) of `degree` (3..6) in t - t_guess: the inflection of y where y'' rises through zero
+/// nearest t_guess. Empty when there is none in the window or the window has fewer than
+/// degree + 4 points.
 std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
-                                         double window_low, double window_high);
+                                         double window_low, double window_high, int degree = 4);
 
 /// One run of the cos(theta_c) - tan(phi) test.
 struct ThetaCPoint {
