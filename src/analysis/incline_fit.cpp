@@ -209,12 +209,10 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
         {"t0", g.t0, t.front() - 5.0, t.back(), false},
     };
     numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params);
-    if (f.status == numerics::FitStatus::failed || f.status == numerics::FitStatus::too_few_points) {
-      if (!have) best = f;
-      continue;
-    }
-    if (!have || (f.ok() && (!best.ok() || f.cost < best.cost)) || (!best.ok() && f.cost < best.cost)) {
-      best = f;
+    // Keep the best: a converged fit over any other, then the lower cost.
+    const bool better = !have || (f.ok() != best.ok() ? f.ok() : f.cost < best.cost);
+    if (better) {
+      best = std::move(f);
       have = true;
     }
     // A fit at the noise level is the global minimum for practical purposes.
