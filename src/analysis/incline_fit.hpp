@@ -10,7 +10,8 @@
 // origin (closed form for B, integrator for A) including the rest after a stop. Residuals are
 // the x and y differences, all with one unknown noise level (estimated from the fit).
 // The camera frame is assumed aligned with the incline (x across, y up the slope), as the
-// seed's plumb-line setup makes it; a rotation of the frame is not fitted.
+// seed's plumb-line setup makes it; a rotation of the frame is not fitted (it would be
+// identifiable from the launch direction, but is not implemented).
 #pragma once
 
 #include "analysis/incline_diagnostics.hpp"
