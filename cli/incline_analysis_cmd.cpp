@@ -42,7 +42,6 @@ void set_types(CLI::App* cmd) {
     if (n == "out" || n == "table") o->type_name("FILE");
     else if (n == "track" || n == "track-name") o->type_name("NAME");
     else if (n == "format") o->type_name("export|csv");
-    else if (n == "phi-deg") o->type_name("NUM[,NUM...]");
     else o->type_name("NUM");
   }
 }
@@ -407,6 +406,7 @@ void add_normal_friction_test(CLI::App* area) {
   add_track_input(cmd, s->in);
   add_json_flag(*cmd, s->json);
   set_types(cmd);
+  cmd->get_option("--phi-deg")->type_name("NUM[,NUM...]");
   cmd->callback([s] {
     std::vector<analysis::ThetaCPoint> pts;
     if (!s->table.empty()) {
