@@ -1,7 +1,9 @@
 // `tribolab incline ...`: predict, simulate, mu-from-stop, families (SPEC section 5,
+// and the tracked-run analyses of incline_analysis_cmd.cpp;
 // docs/cli.md#incline). Options are parsed as text and converted with io::parse_double so
 // that every error names its option; the library does the physics.
 #include "app.hpp"
+#include "incline_analysis_cmd.hpp"
 #include "report_incline.hpp"
 #include "report_option.hpp"
 
@@ -409,6 +411,7 @@ void register_incline(CLI::App& root) {
   add_simulate(area);
   add_mu_from_stop(area);
   add_families(area);
+  add_incline_analysis_commands(area);
 }
 
 }  // namespace tribolab::cli

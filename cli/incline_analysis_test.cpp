@@ -1,0 +1,160 @@
+// Golden tests of the tracked-run analyses: `incline synth`, `mu-from-slide`, `analyze`,
+// `normal-friction-test` — keys of SPEC section 5, values against the synthetic truth, and bad
+// input (one stderr line, non-zero exit, nothing on stdout, no output file).
+#include "cli_test_util.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace tribolab::cli::testing {
+namespace {
+
+using nlohmann::json;
+
+json run_json(const std::string& args) {
+  const auto r = run_tribolab(args + " --json");
+  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+  EXPECT_EQ(count_lines(r.out), 1) << r.out;
+  return json::parse(r.out);
+}
+
+void expect_error(const std::string& args, const std::string& needle) {
+  const auto r = run_tribolab(args);
+  EXPECT_NE(r.exit_code, 0) << args;
+  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << args << "\n" << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+const std::string kSeedRun = " --mu 0.634 --phi-deg 20.96 --v0 2.62 ";
+
+TEST(InclineAnalysisCli, SynthThenAnalyzeRecoversModelB) {
+  const std::string dir = temp_dir("incline_analyze_b");
+  const std::string f = dir + "/run.txt";
+  const json s = run_json("incline synth" + kSeedRun + "--fps 120 --seed 11 --t-offset 0.2 --out " + f);
+  EXPECT_EQ(s["model"], "B");
+  EXPECT_NEAR(s["t_stop"].get<double>(), 0.2 + 0.7111, 1e-3);  // seed eq 七: 0.711 s
+  const json j = run_json("incline analyze " + f + " --phi-deg 20.96");
+  for (const char* key : {"mu", "sigma_mu", "v0", "rms_residual", "normal_friction", "model_a",
+                          "sigma_v0", "t0", "x0", "y0", "ci95", "theta_c", "n_points"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : {"slope", "slope_expected", "intercept", "intercept_ci95", "verdict"})
+    EXPECT_TRUE(j["normal_friction"].contains(key)) << key;
+  for (const char* key : {"mu", "normal_accel", "normal_accel_ci95"})
+    EXPECT_TRUE(j["model_a"].contains(key)) << key;
+  // The truth within the 95 % intervals (a fixed seed; coverage itself is tested in
+  // src/analysis/incline_fit_test.cpp).
+  const auto in = [&](const json& ci, double v) { return ci[0].get<double>() <= v && v <= ci[1].get<double>(); };
+  EXPECT_TRUE(in(j["ci95"]["mu"], 0.634)) << j["ci95"]["mu"];
+  EXPECT_TRUE(in(j["ci95"]["v0"], 2.62)) << j["ci95"]["v0"];
+  EXPECT_TRUE(in(j["ci95"]["t0"], 0.2)) << j["ci95"]["t0"];
+  EXPECT_EQ(j["normal_friction"]["verdict"], "absent");
+  EXPECT_NEAR(j["normal_friction"]["slope_expected"].get<double>(), 9.8 * std::sin(20.96 * M_PI / 180), 1e-12);
+  EXPECT_NEAR(j["rms_residual"].get<double>(), 0.001, 0.00015);  // 1 mm noise, ~250 residuals
+}
+
+TEST(InclineAnalysisCli, AnalyzeDetectsModelA) {
+  const std::string dir = temp_dir("incline_analyze_a");
+  const std::string f = dir + "/run.csv";
+  run_json("incline synth" + kSeedRun + "--normal-accel 0.3 --format csv --seed 5 --out " + f);
+  const json j = run_json("incline analyze " + f + " --phi-deg 20.96 --track disc");
+  EXPECT_EQ(j["normal_friction"]["verdict"], "present");
+  EXPECT_EQ(j["normal_friction"]["verdict_source"], "model_a_test");
+  const json& ci = j["model_a"]["normal_accel_ci95"];
+  EXPECT_LE(ci[0].get<double>(), 0.3);
+  EXPECT_GE(ci[1].get<double>(), 0.3);
+  EXPECT_LT(j["model_a"]["p_value"].get<double>(), 0.05);
+}
+
+TEST(InclineAnalysisCli, SynthIsDeterministic) {
+  const std::string dir = temp_dir("incline_synth_det");
+  run_json("incline synth" + kSeedRun + "--seed 9 --out " + dir + "/a.txt");
+  run_json("incline synth" + kSeedRun + "--seed 9 --out " + dir + "/b.txt");
+  run_json("incline synth" + kSeedRun + "--seed 10 --out " + dir + "/c.txt");
+  EXPECT_EQ(slurp(dir + "/a.txt"), slurp(dir + "/b.txt"));
+  EXPECT_NE(slurp(dir + "/a.txt"), slurp(dir + "/c.txt"));
+}
+
+TEST(InclineAnalysisCli, MuFromSlide) {
+  // The seed's slide (伍-一-(一)): phi = 41.09 deg, a = 1.758 m/s^2, written as a plain
+  // t,x,y table without noise, released at t = 0.05 s: the parabola is exact.
+  const std::string dir = temp_dir("incline_slide");
+  const std::string f = dir + "/slide.csv";
+  std::string text = "t,x,y\n";
+  for (int i = 0; i < 50; ++i) {
+    const double t = i / 80.0, tr = std::max(0.0, t - 0.05);
+    text += std::to_string(t) + ",0.1," + std::to_string(-0.5 * 1.758 * tr * tr) + "\n";
+  }
+  write(f, text);
+  const json j = run_json("incline mu-from-slide " + f + " --phi-deg 41.09 --sigma-phi-deg 0.2");
+  const double phi = 41.09 * M_PI / 180;
+  // 6 significant digits in the file: a to ~1e-4.
+  EXPECT_NEAR(j["a"].get<double>(), 1.758, 2e-4);
+  EXPECT_NEAR(j["mu"].get<double>(), (9.8 * std::sin(phi) - 1.758) / (9.8 * std::cos(phi)), 1e-4);
+  EXPECT_GT(j["sigma_mu"].get<double>(), 0.2 * M_PI / 180);  // includes the angle's share
+  for (const char* key : {"a", "sigma_a", "mu", "sigma_mu", "r_squared", "n_points"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  const json no_angle = run_json("incline mu-from-slide " + f);
+  EXPECT_TRUE(no_angle["mu"].is_null());
+}
+
+TEST(InclineAnalysisCli, NormalFrictionTestFromFilesAndFromATable) {
+  const std::string dir = temp_dir("incline_nft");
+  std::string files;
+  int seed = 20;
+  for (const char* phi : {"10", "15", "20", "25"}) {
+    const std::string f = dir + "/run" + phi + ".txt";
+    run_json(std::string("incline synth --mu 0.634 --v0 2.62 --fps 120 --phi-deg ") + phi +
+             " --seed " + std::to_string(++seed) + " --out " + f);
+    files += " " + f;
+  }
+  const json j = run_json("incline normal-friction-test" + files + " --phi-deg 10,15,20,25");
+  EXPECT_EQ(j["n_runs"], 4);
+  // mu within 3.3 sigma of the truth (fixed seeds).
+  EXPECT_NEAR(j["mu"].get<double>(), 0.634, 3.3 * j["sigma_mu"].get<double>());
+  EXPECT_EQ(j["verdict"], "absent");
+
+  const std::string table = dir + "/table.csv";
+  write(table, "# the seed's 圖三-2 shape\nphi_deg,cos_theta_c\n10,0.2781\n15,0.4226\n20,0.5741\n25,0.7355\n");
+  const json t = run_json("incline normal-friction-test --table " + table);
+  EXPECT_NEAR(t["mu"].get<double>(), 0.634, 0.005);  // the rows are tan(phi)/0.634 to 4 digits
+  EXPECT_EQ(t["verdict"], "absent");
+  write(table, "phi_deg,cos_theta_c\n10,0.2781\n15,abc\n20,0.5741\n");
+  expect_error("incline normal-friction-test --table " + table, "table.csv:3");
+  expect_error("incline normal-friction-test" + files + " --phi-deg 10,15", "--phi-deg");
+}
+
+TEST(InclineAnalysisCli, BadInput) {
+  const std::string dir = temp_dir("incline_analysis_bad");
+  const std::string few = dir + "/few.csv", still = dir + "/still.csv", bad = dir + "/bad.csv";
+  write(few, "t,x,y\n0,0,0\n0.0125,0.03,0\n0.025,0.06,-0.001\n");
+  std::string rest = "t,x,y\n";
+  for (int i = 0; i < 40; ++i) rest += std::to_string(i / 80.0) + ",0.1,0.2\n";
+  write(still, rest);
+  write(bad, "t,x,y\n0,0,0\n0.0125,zz,0\n");
+  expect_error("incline analyze " + few + " --phi-deg 20", "points");
+  expect_error("incline analyze " + still + " --phi-deg 20", "no motion");
+  expect_error("incline mu-from-slide " + still + " --phi-deg 20", "stuck");
+  expect_error("incline analyze " + bad + " --phi-deg 20", "bad.csv:3");
+  expect_error("incline analyze " + dir + "/missing.csv --phi-deg 20", "missing.csv");
+  const std::string run = dir + "/run.txt";
+  run_json("incline synth" + kSeedRun + "--out " + run);
+  expect_error("incline analyze " + run + " --phi-deg 20 --track nosuch", "nosuch");
+  expect_error("incline analyze " + run + " --phi-deg 95", "--phi-deg");
+  expect_error("incline analyze " + run, "phi-deg");
+  expect_error("incline analyze " + run + " --phi-deg 20 --time-scale -1", "--time-scale");
+  expect_error("incline synth" + kSeedRun + "--fps 0 --out " + dir + "/x.txt", "--fps");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.txt"));
+  expect_error("incline synth" + kSeedRun + "--format xml --out " + dir + "/x.txt", "--format");
+  expect_error("incline normal-friction-test", "--table");
+}
+
+}  // namespace
+}  // namespace tribolab::cli::testing

@@ -1,0 +1,206 @@
+#include "analysis/incline_diagnostics.hpp"
+
+#include "numerics/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace tribolab::analysis {
+namespace {
+
+/// Local quadratic (or cubic) fit of one coordinate over points [b, e) in tau = t - tc.
+numerics::PolyFit local_fit(const std::vector<double>& tau, const std::vector<double>& v, int degree) {
+  return numerics::fit_polynomial(tau, v, degree, "local fit");
+}
+
+}  // namespace
+
+std::optional<NormalAccelDiagnostic> normal_accel_diagnostic(const track::Track& track, double t0,
+                                                             double t_end, double phi, double g,
+                                                             int block, double level) {
+  std::vector<const track::TrackPoint*> sel;
+  for (const auto& p : track.points)
+    if (p.t > t0 && p.t <= t_end) sel.push_back(&p);
+  const int n = static_cast<int>(sel.size());
+  const int w = block > 0 ? block : std::clamp(n / 8, 5, 25);
+  const int blocks = n / w;
+  if (blocks < 3) return std::nullopt;
+  NormalAccelDiagnostic d;
+  d.block = w;
+  for (int b = 0; b < blocks; ++b) {
+    std::vector<double> tau(w), x(w), y(w);
+    double tm = 0;
+    for (int i = 0; i < w; ++i) tm += sel[b * w + i]->t;
+    tm /= w;
+    for (int i = 0; i < w; ++i) {
+      tau[i] = sel[b * w + i]->t - tm;
+      x[i] = sel[b * w + i]->x;
+      y[i] = sel[b * w + i]->y;
+    }
+    const auto fx = local_fit(tau, x, 2), fy = local_fit(tau, y, 2);
+    const double vx = fx.coef[1], vy = fy.coef[1], ax = 2 * fx.coef[2], ay = 2 * fy.coef[2];
+    const double v = std::hypot(vx, vy);
+    if (!(v > 0)) continue;
+    d.t.push_back(tm);
+    d.sin_theta.push_back(vx / v);                 // seed eq 1.3
+    d.a_n.push_back((ax * vy - ay * vx) / v);      // toward the centre of curvature (eq b)
+  }
+  if (d.t.size() < 3) return std::nullopt;
+  // All sin(theta) equal (a straight slide along y or x): the line is undetermined.
+  const auto [lo, hi] = std::minmax_element(d.sin_theta.begin(), d.sin_theta.end());
+  if (!(*hi - *lo > 1e-9)) return std::nullopt;
+  d.line = numerics::fit_polynomial(d.sin_theta, d.a_n, 1, "a_N against sin(theta)");
+  d.intercept = d.line.coef[0];
+  d.sigma_intercept = d.line.sigma[0];
+  d.slope = d.line.coef[1];
+  d.sigma_slope = d.line.sigma[1];
+  d.slope_expected = g * std::sin(phi);
+  const double h = d.line.ci_half_width(0, level);
+  d.intercept_ci_low = d.intercept - h;
+  d.intercept_ci_high = d.intercept + h;
+  d.intercept_excludes_zero = d.intercept_ci_low > 0 || d.intercept_ci_high < 0;
+  return d;
+}
+
+namespace {
+
+/// Value of the k-th derivative of the polynomial c0 + c1 t + ... at t.
+double derivative(const std::vector<double>& c, int k, double t) {
+  double v = 0;
+  for (int j = static_cast<int>(c.size()) - 1; j >= k; --j) {
+    double f = 1;
+    for (int m = 0; m < k; ++m) f *= j - m;
+    v = v * t + f * c[j];
+  }
+  return v;
+}
+
+/// Root of y''(t) near `start` by Newton's method on the polynomial (converges in a few
+/// steps from the bracketed root); NaN when it does not.
+double inflection(const std::vector<double>& cy, double start) {
+  double t = start;
+  for (int it = 0; it < 50; ++it) {
+    const double f = derivative(cy, 2, t), df = derivative(cy, 3, t);
+    if (!(df != 0)) return NAN;
+    const double step = f / df;
+    t -= step;
+    if (std::abs(step) < 1e-15 * (1 + std::abs(t))) return t;
+  }
+  return std::abs(derivative(cy, 2, t)) < 1e-9 ? t : NAN;
+}
+
+}  // namespace
+
+std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
+                                         double window_low, double window_high, int degree) {
+  std::vector<double> tau, x, y;
+  for (const auto& p : track.points) {
+    if (p.t < window_low || p.t > window_high) continue;
+    tau.push_back(p.t - t_guess);
+    x.push_back(p.x);
+    y.push_back(p.y);
+  }
+  if (static_cast<int>(tau.size()) < degree + 4) return std::nullopt;
+  ThetaC r;
+  r.t_guess = t_guess;
+  r.window_low = window_low;
+  r.window_high = window_high;
+  r.fit_x = local_fit(tau, x, degree);
+  r.fit_y = local_fit(tau, y, degree);
+  const int nc = degree + 1;
+
+  // The extremum of v_y: the sign change of y'' from - to + (a_y increases through zero,
+  // eq c) nearest the guess, bracketed on a 400-point scan of the window, then Newton.
+  const double lo = window_low - t_guess, hi = window_high - t_guess;
+  double best = NAN;
+  double prev_t = lo, prev = derivative(r.fit_y.coef, 2, lo);
+  for (int i = 1; i <= 400; ++i) {
+    const double tt = lo + (hi - lo) * i / 400;
+    const double v = derivative(r.fit_y.coef, 2, tt);
+    if (prev < 0 && v >= 0) {
+      const double mid = 0.5 * (prev_t + tt);
+      if (std::isnan(best) || std::abs(mid) < std::abs(best)) best = mid;
+    }
+    prev_t = tt;
+    prev = v;
+  }
+  if (std::isnan(best)) return std::nullopt;
+  // cos(theta_c) as a function of all coefficients (x fit then y fit).
+  auto evaluate = [&](const std::vector<double>& cx, const std::vector<double>& cy, double* tc_out) {
+    const double tc = inflection(cy, best);
+    const double vx = derivative(cx, 1, tc), vy = derivative(cy, 1, tc);
+    if (tc_out) *tc_out = tc;
+    return -vy / std::hypot(vx, vy);
+  };
+  double tc = 0;
+  r.cos_theta_c = evaluate(r.fit_x.coef, r.fit_y.coef, &tc);
+  if (!std::isfinite(tc) || tc < lo || tc > hi || !std::isfinite(r.cos_theta_c)) return std::nullopt;
+  best = tc;
+  r.t_c = t_guess + tc;
+  r.vx = derivative(r.fit_x.coef, 1, tc);
+  r.vy = derivative(r.fit_y.coef, 1, tc);
+  r.theta_c_deg = std::acos(std::clamp(r.cos_theta_c, -1.0, 1.0)) * 180 / M_PI;
+
+  // Delta method with central differences; the x and y fits are independent.
+  std::vector<double> g_cos(2 * nc), g_t(2 * nc);
+  for (int k = 0; k < 2 * nc; ++k) {
+    std::vector<double> cxp = r.fit_x.coef, cxm = cxp, cyp = r.fit_y.coef, cym = cyp;
+    double& up = k < nc ? cxp[k] : cyp[k - nc];
+    double& dn = k < nc ? cxm[k] : cym[k - nc];
+    const double h = 1e-6 * (std::abs(up) + 1e-6);
+    up += h;
+    dn -= h;
+    double tp = 0, tm = 0;
+    g_cos[k] = (evaluate(cxp, cyp, &tp) - evaluate(cxm, cym, &tm)) / (2 * h);
+    g_t[k] = (tp - tm) / (2 * h);
+  }
+  double var_cos = 0, var_t = 0;
+  for (int i = 0; i < nc; ++i)
+    for (int j = 0; j < nc; ++j) {
+      var_cos += g_cos[i] * r.fit_x.covariance(i, j) * g_cos[j] +
+                 g_cos[nc + i] * r.fit_y.covariance(i, j) * g_cos[nc + j];
+      var_t += g_t[nc + i] * r.fit_y.covariance(i, j) * g_t[nc + j];
+    }
+  r.sigma_cos_theta_c = std::sqrt(std::max(0.0, var_cos));
+  r.sigma_t_c = std::sqrt(std::max(0.0, var_t));
+  return r;
+}
+
+NormalFrictionTest normal_friction_test(const std::vector<ThetaCPoint>& points, double level) {
+  if (points.size() < 3)
+    throw InputError("normal-friction-test", "needs at least 3 runs (a line with a noise estimate), got " +
+                                                 std::to_string(points.size()));
+  if (!(level > 0 && level < 1)) throw InputError("level", "must be in (0, 1)");
+  NormalFrictionTest r;
+  r.points = points;
+  std::vector<double> tx, cy;
+  for (const auto& p : points) {
+    if (!(std::isfinite(p.phi) && p.phi > 0 && p.phi < M_PI / 2))
+      throw InputError(p.source, "incline angle must be in (0, 90) degrees");
+    if (!(std::isfinite(p.cos_theta_c) && p.cos_theta_c >= 0 && p.cos_theta_c <= 1))
+      throw InputError(p.source, "cos(theta_c) must be in [0, 1]");
+    tx.push_back(std::tan(p.phi));
+    cy.push_back(p.cos_theta_c);
+  }
+  const auto [lo, hi] = std::minmax_element(tx.begin(), tx.end());
+  if (!(*hi - *lo > 1e-12))
+    throw InputError("normal-friction-test", "all runs have the same angle; the test needs several angles");
+  r.line = numerics::fit_polynomial(tx, cy, 1, "cos(theta_c) against tan(phi)");
+  r.intercept = r.line.coef[0];
+  r.sigma_intercept = r.line.sigma[0];
+  r.slope = r.line.coef[1];
+  r.sigma_slope = r.line.sigma[1];
+  if (!(r.slope > 0))
+    throw InputError("normal-friction-test", "cos(theta_c) does not grow with tan(phi) (slope " +
+                                                 std::to_string(r.slope) + "); no friction coefficient follows");
+  r.mu = 1 / r.slope;  // eq c'
+  r.sigma_mu = r.sigma_slope / (r.slope * r.slope);
+  const double h = r.line.ci_half_width(0, level);
+  r.intercept_ci_low = r.intercept - h;
+  r.intercept_ci_high = r.intercept + h;
+  r.verdict = (r.intercept_ci_low > 0 || r.intercept_ci_high < 0) ? "present" : "absent";
+  return r;
+}
+
+}  // namespace tribolab::analysis

@@ -1,0 +1,92 @@
+// The seed's two diagnostics of a normal friction component (seed 000, 肆-二):
+//
+// (b) a_N against sin(theta): with theta the angle between the velocity and the -y axis
+//     (sin theta = vx/|v|, cos theta = -vy/|v|, seed eq 1.3) and a_N the acceleration toward
+//     the centre of curvature (the right normal of the velocity),
+//       a_N = (ax vy - ay vx)/|v| = g sin(phi) sin(theta) - f_N/m           (eq b)
+//     a straight line with slope g sin(phi) and intercept -f_N/m. (The seed prints
+//     a_N = a_y sin(theta) - a_x cos(theta) with cos(theta) = v_y/|v|, which is -a_N: see the
+//     errata in docs/theory.md.) Velocities and accelerations come from local quadratic fits
+//     on NON-overlapping blocks of consecutive points, so the points of the line fit have
+//     independent errors and the intercept's interval is honest.
+// (c) theta_c at the extremum of v_y (a_y = 0): cos(theta_c) = |v_y|/|v| there, and
+//       cos(theta_c) = tan(phi)/mu - f_N sin(theta_c)/(m g mu cos(phi))         (eq c)
+//     so over runs at several angles cos(theta_c) against tan(phi) is a line through the
+//     origin with slope 1/mu when f_N = 0 (eq c'). Located by a polynomial fit of y(t) around
+//     the extremum (its inflection point), with the velocity from the fits of x(t) and y(t).
+// See docs/theory.md#incline-analysis.
+#pragma once
+
+#include "numerics/polyfit.hpp"
+#include "track/track.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribolab::analysis {
+
+/// Eq b diagnostic of one run.
+struct NormalAccelDiagnostic {
+  std::vector<double> t, sin_theta, a_n;  ///< one point per block: s, 1, m/s^2
+  numerics::PolyFit line;                 ///< a_n = c0 + c1 sin_theta
+  double slope = 0;            ///< m/s^2 (expected g sin(phi))
+  double sigma_slope = 0;      ///< m/s^2
+  double slope_expected = 0;   ///< g sin(phi), m/s^2
+  double intercept = 0;        ///< m/s^2 (expected 0 for model B, -f_N/m for model A)
+  double sigma_intercept = 0;  ///< m/s^2
+  double intercept_ci_low = 0, intercept_ci_high = 0;  ///< interval at `level`, m/s^2
+  bool intercept_excludes_zero = false;
+  int block = 0;               ///< points per block
+};
+
+/// Eq b over the points of `track` with t0 < t <= t_end (the moving part; choose t_end short
+/// of the stop, where theta is undefined). `block` = points per local fit (0 = automatic).
+/// Returns empty when fewer than 3 blocks fit.
+std::optional<NormalAccelDiagnostic> normal_accel_diagnostic(const track::Track& track, double t0,
+                                                             double t_end, double phi, double g,
+                                                             int block, double level);
+
+/// Eq c diagnostic of one run.
+struct ThetaC {
+  double t_c = 0;            ///< instant of the v_y extremum, s (file time)
+  double sigma_t_c = 0;      ///< s
+  double vx = 0, vy = 0;     ///< velocity there, m/s
+  double cos_theta_c = 0;    ///< |v_y|/|v| at the extremum
+  double sigma_cos_theta_c = 0;  ///< propagated from the local fits' covariance
+  double theta_c_deg = 0;    ///< deg
+  double window_low = 0, window_high = 0;  ///< time window of the local cubic fits, s
+  numerics::PolyFit fit_x, fit_y;          ///< polynomials in (t - t_guess)
+  double t_guess = 0;        ///< centre of the window (the model's prediction), s
+};
+
+/// Locates the v_y extremum in [window_low, window_high] from polynomial fits of x(t) and
+/// y(t) of `degree` (3..6) in t - t_guess: the inflection of y where y'' rises through zero
+/// nearest t_guess. Empty when there is none in the window or the window has fewer than
+/// degree + 4 points.
+std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
+                                         double window_low, double window_high, int degree = 4);
+
+/// One run of the cos(theta_c) - tan(phi) test.
+struct ThetaCPoint {
+  double phi = 0;              ///< rad
+  double cos_theta_c = 0;
+  double sigma_cos_theta_c = 0;  ///< 0 when unknown (a table without it)
+  std::string source;          ///< file or table line it came from
+};
+
+/// Eq c over several runs (seed 000, 圖三-2): cos(theta_c) = c0 + c1 tan(phi).
+struct NormalFrictionTest {
+  std::vector<ThetaCPoint> points;
+  numerics::PolyFit line;      ///< ordinary least squares (each run one point)
+  double slope = 0, sigma_slope = 0;  ///< 1/mu when f_N = 0
+  double mu = 0, sigma_mu = 0;        ///< 1/slope and sigma_slope/slope^2
+  double intercept = 0, sigma_intercept = 0;
+  double intercept_ci_low = 0, intercept_ci_high = 0;  ///< at `level`
+  std::string verdict;         ///< "present" when the interval excludes 0, else "absent"
+};
+
+/// Fits the line; throws InputError with fewer than 3 runs or a single angle.
+NormalFrictionTest normal_friction_test(const std::vector<ThetaCPoint>& points, double level = 0.95);
+
+}  // namespace tribolab::analysis

@@ -1,0 +1,125 @@
+// Analysis of a tracked 2D run of the disc on the incline (seed 000; SPEC section 2.4):
+// model B fitted to all x(t), y(t) by nonlinear least squares (unknowns mu, v0, launch
+// point x0, y0 and launch time t0), model A (extra unknown: the normal-to-path friction
+// acceleration f_N/m) fitted by the same least squares through the integrator, a test of
+// A against B, and the seed's two diagnostics (a_N against sin(theta), eq b; theta_c at the
+// v_y extremum, eq c). Result structs carry every point and curve a report draws.
+//
+// Model of the data (docs/theory.md#incline-analysis): for t <= t0 the disc rests at
+// (x0, y0); for t > t0 it is at (x0, y0) + r(t - t0), with r the launch along +x from the
+// origin (closed form for B, integrator for A) including the rest after a stop. Residuals are
+// the x and y differences, all with one unknown noise level (estimated from the fit).
+// The camera frame is assumed aligned with the incline (x across, y up the slope), as the
+// seed's plumb-line setup makes it; a rotation of the frame is not fitted (it would be
+// identifiable from the launch direction, but is not implemented).
+#pragma once
+
+#include "analysis/incline_diagnostics.hpp"
+#include "incline/closed_form.hpp"
+#include "incline/params.hpp"
+#include "numerics/least_squares.hpp"
+#include "track/kinematics.hpp"
+#include "track/track.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribolab::analysis {
+
+struct InclineFitOptions {
+  double phi = 0;             ///< incline angle, rad, in [0, pi/2) (required input)
+  double g = 9.8;             ///< m/s^2
+  bool fit_model_a = true;    ///< also fit model A and test it against B
+  double level = 0.95;        ///< confidence level of the intervals
+  double significance = 0.05; ///< size of the A-vs-B test
+  int min_points = 10;        ///< fewest points accepted
+  /// Points per independent local fit of the a_N diagnostic; 0 = automatic (about eight
+  /// blocks, 5 to 25 points each).
+  int diagnostic_block = 0;
+  double ode_tolerance = 1e-10;  ///< integrator tolerance inside the model A fit
+
+  std::string validate() const;
+};
+
+/// A fitted value with its standard error and confidence interval.
+struct Estimate {
+  double value = 0;    ///< best fit
+  double sigma = 0;    ///< standard error (covariance, noise estimated from the residuals)
+  double ci_low = 0;   ///< confidence interval at InclineFitOptions::level (Student t)
+  double ci_high = 0;
+};
+
+/// Model B fit: unknowns mu, v0 (m/s), x0, y0 (m), t0 (s, in the file's time).
+struct ModelBFit {
+  Estimate mu, v0, x0, y0, t0;
+  double rms_residual = 0;   ///< sqrt(mean of the 2n squared residuals), m (~ the noise)
+  double rss = 0;            ///< sum of squared residuals, m^2
+  int dof = 0;               ///< 2n - 5
+  int iterations = 0;
+  std::optional<double> t_stop;          ///< stop instant in the file's time, s
+  std::optional<double> x_stop, y_stop;  ///< stop point in the file's frame, m
+  numerics::FitResult fit;   ///< the raw least-squares result (covariance, residuals)
+};
+
+/// Model A fit: model B's unknowns plus normal_accel = f_N/m (m/s^2, positive to the left
+/// of the velocity: up the slope for a launch along +x).
+struct ModelAFit {
+  Estimate mu, v0, x0, y0, t0, normal_accel;
+  double rms_residual = 0, rss = 0;  ///< m, m^2
+  int dof = 0;                       ///< 2n - 6
+  int iterations = 0;
+  numerics::FitResult fit;
+};
+
+/// Test of model A against B (nested: A with normal_accel = 0 is B).
+struct ModelTest {
+  double f_statistic = 0;   ///< (RSS_B - RSS_A) / (RSS_A / dof_A), 1 and dof_A degrees of freedom
+  double p_value = 1;       ///< P(F > f_statistic) under model B
+  bool ci_excludes_zero = false;  ///< the level-CI of normal_accel excludes 0
+  bool significant = false;       ///< p_value < significance
+  bool present = false;           ///< both: a normal friction component is present
+};
+
+struct InclineAnalysis {
+  std::vector<track::TrackPoint> data;  ///< the points fitted (file time and frame)
+  track::Kinematics kinematics;         ///< Savitzky-Golay velocities/accelerations (figures)
+  double phi = 0, g = 9.8;              ///< rad, m/s^2
+  ModelBFit model_b;
+  std::optional<ModelAFit> model_a;
+  std::optional<ModelTest> test;
+  std::optional<NormalAccelDiagnostic> a_n;  ///< eq b diagnostic (absent: too few blocks)
+  std::optional<ThetaC> theta_c;              ///< eq c diagnostic (absent: k >= 1 or no window)
+  double cos_theta_c_model = 0;  ///< model B's cos(theta_c) = k = tan(phi)/mu (eq c'), when k < 1
+  /// "present" or "absent": decided by the model A test (ModelTest::present); when model A
+  /// is not fitted, by the a_N intercept's interval (NormalAccelDiagnostic).
+  std::string verdict = "absent";
+  std::string verdict_source;  ///< "model_a_test" or "a_n_intercept"
+  // Curves for figures: models at the data times and on a fine grid (400 times over the
+  // data's span), states in the file's time and frame; residuals data - model, m.
+  std::vector<incline::State> model_b_at_data, model_b_fine;
+  std::vector<incline::State> model_a_at_data, model_a_fine;
+  std::vector<double> residual_x_b, residual_y_b, residual_x_a, residual_y_a;
+  std::vector<std::string> notes;  ///< what was skipped and why
+};
+
+/// Model B states at file times t for launch time t0 and point (x0, y0) (rest before t0).
+std::vector<incline::State> model_b_states(const incline::Parameters& p, double t0, double x0,
+                                           double y0, const std::vector<double>& t);
+/// Model A states likewise, by the integrator (Parameters::normal_accel); tolerance `tol`.
+std::vector<incline::State> model_a_states(const incline::Parameters& p, double t0, double x0,
+                                           double y0, const std::vector<double>& t,
+                                           double tol = 1e-10);
+
+/// Fits model B. Throws InputError when the data cannot support it (too few points, no
+/// motion, motion toward -x, no convergence, parameters not identifiable).
+ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& options);
+
+/// Fits model A starting from a model B fit. Throws InputError like fit_model_b.
+ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& options,
+                      const ModelBFit& start);
+
+/// The whole analysis of `incline analyze`.
+InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitOptions& options);
+
+}  // namespace tribolab::analysis

@@ -1,0 +1,125 @@
+#include "analysis/incline_slide.hpp"
+
+#include "numerics/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace tribolab::analysis {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream o;
+  o.precision(4);
+  o << v;
+  return o.str();
+}
+
+}  // namespace
+
+std::string SlideOptions::validate() const {
+  if (phi && !(std::isfinite(*phi) && *phi > 0 && *phi < M_PI / 2))
+    return "phi must be in (0, 90) degrees";
+  if (!(std::isfinite(sigma_phi) && sigma_phi >= 0)) return "sigma_phi must be >= 0";
+  if (!(std::isfinite(g) && g > 0)) return "g must be > 0";
+  if (min_points < 4) return "min_points must be >= 4";
+  return {};
+}
+
+SlideResult mu_from_slide(const track::Track& track, const SlideOptions& o) {
+  if (const std::string e = o.validate(); !e.empty()) throw InputError("mu-from-slide", e);
+  const auto& pts = track.points;
+  const std::string where = "track '" + track.name + "'";
+  if (static_cast<int>(pts.size()) < o.min_points)
+    throw InputError(where, "has " + std::to_string(pts.size()) + " points; a slide fit needs at least " +
+                                std::to_string(o.min_points));
+  const std::size_t n = pts.size();
+
+  // Straight path: principal axis of the points (largest eigenvector of their covariance).
+  double mx = 0, my = 0;
+  for (const auto& p : pts) mx += p.x, my += p.y;
+  mx /= n;
+  my /= n;
+  double sxx = 0, syy = 0, sxy = 0;
+  for (const auto& p : pts) {
+    sxx += (p.x - mx) * (p.x - mx);
+    syy += (p.y - my) * (p.y - my);
+    sxy += (p.x - mx) * (p.y - my);
+  }
+  const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+  double dx = std::cos(angle), dy = std::sin(angle);
+  // Orient along the motion (from the first point toward the last).
+  if ((pts.back().x - pts.front().x) * dx + (pts.back().y - pts.front().y) * dy < 0) dx = -dx, dy = -dy;
+  std::vector<double> s(n), d(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    s[i] = (pts[i].x - pts.front().x) * dx + (pts[i].y - pts.front().y) * dy;
+    d[i] = -(pts[i].x - mx) * dy + (pts[i].y - my) * dx;
+  }
+
+  // Noise from second differences of s (robust: median absolute value / 0.6745 / sqrt(6)).
+  std::vector<double> dd;
+  for (std::size_t i = 1; i + 1 < n; ++i) dd.push_back(std::abs(s[i + 1] - 2 * s[i] + s[i - 1]));
+  std::nth_element(dd.begin(), dd.begin() + dd.size() / 2, dd.end());
+  const double noise = dd.empty() ? 0.0 : dd[dd.size() / 2] / 0.6745 / std::sqrt(6.0);
+  const double range = *std::max_element(s.begin(), s.end()) - *std::min_element(s.begin(), s.end());
+  const double threshold = std::max(5 * noise, 0.02 * range);
+  const std::string stuck =
+      o.phi ? "; the disc is stuck, so the static coefficient is >= tan(phi) = " + fmt(std::tan(*o.phi))
+            : "; the disc is stuck";
+  if (!(range > 10 * noise) || range < 1e-4)
+    throw InputError(where, "shows no motion along a path (range " + fmt(range) + " m, noise " +
+                                fmt(noise) + " m)" + stuck);
+
+  // Rest before the release: points still within `threshold` of the first are excluded (the
+  // parabola holds only while the disc slides; one moving point lost is a small price).
+  std::size_t first = 0;
+  while (first < n && s[first] - s[0] < threshold) ++first;
+  SlideResult r;
+  for (std::size_t i = first; i < n; ++i) {
+    r.t.push_back(pts[i].t);
+    r.s.push_back(s[i]);
+  }
+  r.n_points = static_cast<int>(r.t.size());
+  if (r.n_points < o.min_points)
+    throw InputError(where, "has " + std::to_string(r.n_points) +
+                                " moving points; a slide fit needs at least " + std::to_string(o.min_points));
+  r.parabola = numerics::fit_polynomial(r.t, r.s, 2, where + " distance along the path");
+  r.a = 2 * r.parabola.coef[2];
+  r.sigma_a = 2 * r.parabola.sigma[2];
+  r.r_squared = r.parabola.r_squared;
+  r.direction_deg = std::atan2(dy, dx) * 180 / M_PI;
+  double dsum = 0;
+  for (double v : d) dsum += v * v;
+  r.straightness_rms = std::sqrt(dsum / n);
+
+  if (!(r.a - 2 * r.sigma_a > 0)) {
+    std::string msg = "is not accelerating along its path (a = " + fmt(r.a) + " +- " + fmt(r.sigma_a) +
+                      " m/s^2): the disc decelerates or is stuck";
+    if (o.phi) msg += ", so mu >= tan(phi) = " + fmt(std::tan(*o.phi));
+    throw InputError(where, msg + "; eq (a) needs a slide released from rest that speeds up");
+  }
+
+  // The seed's v–t line: central differences of consecutive frames (Tracker's stencil).
+  for (std::size_t k = 1; k + 1 < r.t.size(); ++k) {
+    r.v_t.push_back(r.t[k]);
+    r.v.push_back((r.s[k + 1] - r.s[k - 1]) / (r.t[k + 1] - r.t[k - 1]));
+  }
+  if (r.v.size() >= 3) {
+    r.velocity_line = numerics::fit_polynomial(r.v_t, r.v, 1, where + " speeds");
+    r.a_velocity_line = r.velocity_line.coef[1];
+    r.sigma_a_velocity_line = r.velocity_line.sigma[1];
+  }
+
+  if (o.phi) {
+    // seed 000, eq (a): mu = (g sin phi - a)/(g cos phi) = tan(phi) - a/(g cos phi).
+    const double phi = *o.phi, c = std::cos(phi);
+    r.mu = std::tan(phi) - r.a / (o.g * c);
+    const double dmu_da = -1 / (o.g * c);
+    const double dmu_dphi = 1 / (c * c) - r.a * std::sin(phi) / (o.g * c * c);
+    r.sigma_mu = std::hypot(dmu_da * r.sigma_a, dmu_dphi * o.sigma_phi);
+  }
+  return r;
+}
+
+}  // namespace tribolab::analysis

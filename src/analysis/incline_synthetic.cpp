@@ -1,0 +1,93 @@
+#include "analysis/incline_synthetic.hpp"
+
+#include "incline/numeric.hpp"
+#include "numerics/error.hpp"
+
+#include <cmath>
+
+namespace tribolab::analysis {
+
+std::string InclineSynthOptions::validate() const {
+  if (const std::string e = params.validate(); !e.empty()) return e;
+  if (!(params.v0 > 0)) return "v0 must be > 0 for a launch";
+  if (!(std::isfinite(fps) && fps >= 1 && fps <= 1e5)) return "fps must be in [1, 100000]";
+  if (!(std::isfinite(noise) && noise >= 0)) return "noise must be >= 0 (m)";
+  if (!(std::isfinite(t_launch) && t_launch >= 0)) return "t_launch must be >= 0 (s)";
+  if (!(std::isfinite(x0) && std::isfinite(y0))) return "launch point must be finite";
+  if (!(std::isfinite(duration) && duration >= 0)) return "duration must be >= 0 (s)";
+  if (track_name.empty()) return "track name must not be empty";
+  return {};
+}
+
+double PortableNormal::operator()() {
+  if (spare_) {
+    const double v = *spare_;
+    spare_.reset();
+    return v;
+  }
+  // Uniform deviates in (0, 1) from the top 53 bits.
+  auto uniform = [this] { return (static_cast<double>(rng_() >> 11) + 0.5) * 0x1p-53; };
+  const double u1 = uniform(), u2 = uniform();
+  const double r = std::sqrt(-2.0 * std::log(u1));
+  spare_ = r * std::sin(2 * M_PI * u2);
+  return r * std::cos(2 * M_PI * u2);
+}
+
+InclineSynthRun synthesize_incline_run(const InclineSynthOptions& o) {
+  if (const std::string e = o.validate(); !e.empty()) throw InputError("synthetic run", e);
+  const incline::Parameters& p = o.params;
+  const bool model_a = p.normal_accel != 0.0;
+
+  // Stop time after the launch (infinite when the disc never stops).
+  double t_stop_rel = incline::ClosedForm(p).t_stop();
+  if (model_a) {
+    incline::NumericOptions no;
+    no.model = incline::Model::A;
+    no.t_max = 60.0;
+    const auto r = incline::simulate(p, {}, no);
+    t_stop_rel = r.t_stop ? *r.t_stop : INFINITY;
+  }
+  double duration = o.duration;
+  if (duration == 0)
+    duration = o.t_launch + (std::isfinite(t_stop_rel) ? t_stop_rel + 0.3 : 1.5);
+  const double n_frames_real = std::floor(duration * o.fps * (1 + 1e-12)) + 1;
+  if (n_frames_real > 1e7) throw InputError("synthetic run", "more than 10^7 frames");
+  const int n_frames = static_cast<int>(n_frames_real);
+
+  std::vector<double> rel;  // times after the launch, for the simulators
+  for (int i = 0; i < n_frames; ++i) {
+    const double t = i / o.fps;
+    if (t > o.t_launch) rel.push_back(t - o.t_launch);
+  }
+  std::vector<incline::State> moving;
+  if (model_a) {
+    incline::NumericOptions no;
+    no.model = incline::Model::A;
+    const auto r = incline::simulate(p, rel, no);
+    if (r.status == incline::NumericStatus::failed)
+      throw InputError("synthetic run", "integration failed: " + r.message);
+    moving = r.samples;
+  } else {
+    moving = incline::ClosedForm(p).trajectory(rel);
+  }
+
+  InclineSynthRun run;
+  run.track.name = o.track_name;
+  if (std::isfinite(t_stop_rel)) run.t_stop = o.t_launch + t_stop_rel;
+  PortableNormal normal(o.seed);
+  std::size_t m = 0;
+  for (int i = 0; i < n_frames; ++i) {
+    const double t = i / o.fps;
+    incline::State s;  // at rest before the launch
+    if (t > o.t_launch) s = moving[m++];
+    s.t = t;
+    s.x += o.x0;
+    s.y += o.y0;
+    run.truth.push_back(s);
+    const double nx = normal(), ny = normal();
+    run.track.points.push_back({i, t, s.x + o.noise * nx, s.y + o.noise * ny});
+  }
+  return run;
+}
+
+}  // namespace tribolab::analysis
