@@ -3,6 +3,7 @@
 //   simulate      one contact from first touch to separation (seed's experiment 4)
 //   drop          release -> flight -> contact -> ... several bounces
 #include "app.hpp"
+#include "bounce_sweep_cmd.hpp"
 
 #include "bounce/contact.hpp"
 #include "bounce/drop.hpp"
@@ -381,6 +382,7 @@ void register_bounce(CLI::App& root) {
   add_contact_time(area);
   add_simulate(area);
   add_drop(area);
+  register_bounce_sweep(*area);
 }
 
 }  // namespace tribolab::cli
