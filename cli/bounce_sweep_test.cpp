@@ -96,14 +96,14 @@ TEST(BounceSweepCli, CellsEqualSimulateOneByOne) {
 // so the outputs agree to ~1e-12 (their sensitivity to theta is O(1) per rad).
 TEST(BounceSweepCli, CollisionAngleAxisMatchesSimulate) {
   const std::string dir = temp_dir("bsweep_collision");
-  run_json("bounce sweep --theta-deg 110:160:3 --omega 40:40:1 --out " + dir + "/m.csv");
+  run_json("bounce sweep --theta-deg 110:160:3 --omega 40:40:1 --tol 1e-8 --out " + dir + "/m.csv");
   EXPECT_NE(tribolab::cli::testing::slurp(dir + "/m.csv").find("angle=collision"), std::string::npos);
   const auto cells = rows(dir + "/m.csv");
   ASSERT_EQ(cells.size(), 3u);
   const bounce::Ball ball;
   for (const auto& c : cells) {
     const double theta = bounce::theta_for_collision_angle(ball, c[0], 1);
-    const json s = run_json("bounce simulate --vy -4 --tol 1e-6 --omega 40 --theta-deg " + g17(theta * kDeg));
+    const json s = run_json("bounce simulate --vy -4 --tol 1e-8 --omega 40 --theta-deg " + g17(theta * kDeg));
     EXPECT_NEAR(s["collision_angle_deg"].get<double>(), c[0], 1e-9);
     EXPECT_NEAR(c[2], s["vx"].get<double>(), 1e-9) << c[0];
     EXPECT_NEAR(c[3], s["vy"].get<double>(), 1e-9) << c[0];
