@@ -11,7 +11,9 @@
 // inside an accepted step [ta, ta + h] is located by TOMS 748 on tau -> guard(step(x_a, tau)),
 // each evaluation being a fresh 5th-order step of length tau from ta. The event time and
 // state are therefore as accurate as an accepted step (no interpolant error), at the cost of
-// 6 right-hand-side calls per root iteration — events are rare (a few per contact).
+// 5 right-hand-side calls per root iteration (the FSAL stage is skipped); the bracket end
+// reuses the accepted step's guard value, and the time is bracketed to
+// PhaseOptions::event_tol() — events are rare (a few per contact).
 // See docs/theory.md#bounce-integrator.
 #pragma once
 
