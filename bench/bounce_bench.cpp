@@ -3,9 +3,11 @@
 // 1 microsecond (seed 001, 實驗四 (二)) — as the baseline at equal accuracy.
 #include "bounce/contact.hpp"
 #include "bounce/flight.hpp"
+#include "sweep/runner.hpp"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -130,6 +132,7 @@ void BM_ContactTolerance(benchmark::State& state) {
   }
   state.counters["error"] = error_of(r);
   state.counters["steps"] = static_cast<double>(r.steps);
+  state.counters["rhs_calls"] = static_cast<double>(r.rhs_calls);
 }
 BENCHMARK(BM_ContactTolerance)->DenseRange(3, 12, 1)->Unit(benchmark::kMicrosecond);
 
@@ -170,6 +173,111 @@ void BM_FirstContact(benchmark::State& state) {
   state.counters["iterations"] = static_cast<double>(r.iterations);
 }
 BENCHMARK(BM_FirstContact)->Arg(0)->Arg(40)->Arg(500)->Unit(benchmark::kMicrosecond);
+
+// ---- The seed's full phase diagram (docs/benchmarks.md#bounce-sweep-phase-diagram) ----
+// Collision angle 100..170 deg (71 values) x spin 30..50 rad/s (21 values) at vy = -4 m/s,
+// vx = 0, mu = 0.5, the seed's fitted law: the grid of its figure 53 at 1 deg x 1 rad/s.
+// Each cell is exactly what `bounce sweep` computes (cli/bounce_sweep_cmd.cpp).
+
+tribolab::sweep::GridSpec seed_map_grid() {
+  tribolab::sweep::GridSpec g;
+  g.axes = {tribolab::sweep::Axis{tribolab::sweep::Quantity::theta_deg, 100, 170, 71},
+            tribolab::sweep::Axis{tribolab::sweep::Quantity::omega, 30, 50, 21}};
+  g.fixed_speed = 4;
+  g.fixed_mu = 0.5;
+  return g;
+}
+
+BodyState seed_map_touch(const tribolab::sweep::CellInput& in) {
+  BodyState s;
+  s.theta = theta_for_collision_angle(Ball{}, in.theta_deg, 1);
+  s.vy = -in.speed;
+  s.omega = in.omega;
+  return s;
+}
+
+/// Outgoing vx, vy, b*omega of a cell (velocities, m/s) by our solver at `tol`.
+tribolab::sweep::CellModel seed_map_model(double tol) {
+  tribolab::sweep::CellModel m;
+  m.output_names = {"vx", "vy", "omega_out", "e"};
+  const ContactOptions o = contact_options_with_tolerance(tol);
+  NormalLawSpec spec;  // the seed's fit
+  m.evaluate = [o, spec](const tribolab::sweep::CellInput& in) {
+    const ContactResult r = simulate_contact(Ball{}, spec, FrictionModel{}, seed_map_touch(in), o);
+    return tribolab::sweep::CellOutputs{r.out.vx, r.out.vy, r.out.omega * Ball{}.b, r.restitution};
+  };
+  return m;
+}
+
+const std::vector<double>& seed_map_reference() {
+  static const std::vector<double> ref = tribolab::sweep::evaluate_grid(seed_map_grid(), seed_map_model(1e-12));
+  return ref;
+}
+
+/// Accuracy of a map against the tol-1e-12 reference map: the largest error of
+/// (vx, vy, b omega) over all cells, m/s, and the number of cells off by more than
+/// 1e-3 m/s. Such cells are "flips": near grazing, the support point lifts off for a
+/// moment (d returns to 0) and a method that steps over that dip continues a contact
+/// the reference ends (docs/benchmarks.md#bounce-sweep-phase-diagram).
+struct MapError {
+  double max = 0;
+  int flips = 0;
+};
+MapError seed_map_error(const std::vector<double>& map) {
+  const std::vector<double>& ref = seed_map_reference();
+  MapError e;
+  for (std::size_t c = 0; c < ref.size() / 4; ++c) {
+    double err = 0;
+    for (std::size_t k = 0; k < 3; ++k) err = std::max(err, std::abs(map[4 * c + k] - ref[4 * c + k]));
+    e.max = std::max(e.max, err);
+    e.flips += err > 1e-3;
+  }
+  return e;
+}
+
+// Our solver over the whole map; range(0) = -log10(tol), range(1) = threads.
+void BM_SeedMapOurs(benchmark::State& state) {
+  const double tol = std::pow(10.0, -static_cast<double>(state.range(0)));
+  const tribolab::sweep::GridSpec g = seed_map_grid();
+  const tribolab::sweep::CellModel m = seed_map_model(tol);
+  tribolab::sweep::RunOptions ro;
+  ro.threads = static_cast<int>(state.range(1));
+  std::vector<double> map;
+  for (auto _ : state) {
+    map = tribolab::sweep::evaluate_grid(g, m, ro);
+    benchmark::DoNotOptimize(map.data());
+  }
+  state.SetItemsProcessed(state.iterations() * g.cell_count());
+  const MapError e = seed_map_error(map);
+  state.counters["max_error"] = e.max;
+  state.counters["flips"] = e.flips;
+}
+BENCHMARK(BM_SeedMapOurs)
+    ->ArgsProduct({{5, 8, 10}, {1, 2}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+// The seed's method (explicit 1 us steps) over the same map, one thread.
+void BM_SeedMapSeedEuler(benchmark::State& state) {
+  const tribolab::sweep::GridSpec g = seed_map_grid();
+  const NormalLaw law = resolve(NormalLawSpec{}, 1, Ball{}.mass);  // no restitution: D as given
+  std::vector<double> map(static_cast<std::size_t>(g.cell_count()) * 4);
+  for (auto _ : state) {
+    for (std::int64_t i = 0; i < g.cell_count(); ++i) {
+      const ContactResult r = seed_euler(Ball{}, law, 0.5, seed_map_touch(g.cell(i)), 1e-6);
+      map[4 * i] = r.out.vx;
+      map[4 * i + 1] = r.out.vy;
+      map[4 * i + 2] = r.out.omega * Ball{}.b;
+      map[4 * i + 3] = r.out.vy / 4;
+    }
+    benchmark::DoNotOptimize(map.data());
+  }
+  state.SetItemsProcessed(state.iterations() * g.cell_count());
+  const MapError e = seed_map_error(map);
+  state.counters["max_error"] = e.max;
+  state.counters["flips"] = e.flips;
+}
+BENCHMARK(BM_SeedMapSeedEuler)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

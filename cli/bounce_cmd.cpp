@@ -6,6 +6,7 @@
 #include "bounce_analysis_cmd.hpp"
 #include "report_bounce.hpp"
 #include "report_option.hpp"
+#include "bounce_sweep_cmd.hpp"
 
 #include "bounce/contact.hpp"
 #include "bounce/drop.hpp"
@@ -394,6 +395,7 @@ void register_bounce(CLI::App& root) {
   add_simulate(area);
   add_drop(area);
   register_bounce_analysis(area);
+  register_bounce_sweep(*area);
 }
 
 }  // namespace tribolab::cli

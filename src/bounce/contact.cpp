@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace tribolab::bounce {
@@ -240,8 +241,30 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   Mode cur_mode = mode;
   double cur_s = s;
 
+  // The integrator asks for the same state three times per accepted step (the FSAL rhs
+  // at the step end, the guards there, the observer): the last evaluation is reused when
+  // state and mode are bitwise the same (eval is a pure function of them).
+  struct EvalCache {
+    State x{};
+    Mode mode = Mode::free;
+    double s = 0;
+    Eval e;
+    bool valid = false;
+  } cache;
+  auto eval_at = [&](const State& st) -> const Eval& {
+    if (!(cache.valid && cache.mode == cur_mode && std::memcmp(&cache.s, &cur_s, sizeof cur_s) == 0 &&
+          std::memcmp(cache.x.data(), st.data(), sizeof(State)) == 0)) {
+      cache.e = model.eval(st, cur_mode, cur_s);
+      cache.x = st;
+      cache.mode = cur_mode;
+      cache.s = cur_s;
+      cache.valid = true;
+    }
+    return cache.e;
+  };
+
   auto rhs = [&](const State& st, State& dx, double) {
-    const Eval e = model.eval(st, cur_mode, cur_s);
+    const Eval& e = eval_at(st);
     dx[iX] = st[iVx];
     dx[iY] = st[iVy];
     dx[iTh] = st[iW];
@@ -253,7 +276,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     dx[iWf] = -e.f * e.v_t;
   };
   auto guards = [&](double, const State& st, std::array<double, 2>& gv) {
-    const Eval e = model.eval(st, cur_mode, cur_s);
+    const Eval& e = eval_at(st);
     gv[0] = e.d;  // separation
     const double muN = friction.mu * e.nf.N;
     switch (cur_mode) {
@@ -271,7 +294,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   };
   PeakTracker peak_d;
   auto observer = [&](double tt, const State& st) {
-    const Eval e = model.eval(st, cur_mode, cur_s);
+    const Eval& e = eval_at(st);
     peak.add(tt, e.nf.N);
     peak_d.add(tt, std::max(e.d, 0.0));
     if (history) {

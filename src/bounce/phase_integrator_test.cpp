@@ -74,5 +74,29 @@ TEST(PhaseIntegrator, PhaseStartingOnItsBoundaryIsArmedLater) {
   EXPECT_NEAR(end.t, std::numbers::pi, 1e-8);
 }
 
+TEST(PhaseIntegrator, EventTimeBracketedToTheEventTolerance) {
+  // x = cos t crosses 0 at pi/2. With a coarse explicit event tolerance (1e-4 s) the event
+  // is the upper end of a bracket narrower than that: within 1e-4 s after pi/2 (plus the
+  // ~1e-12 integration error), never before it, and the state is that of the event time
+  // (x[0] = cos(t) <= 0, x[1] = -sin(t)) to the integration tolerance.
+  Oscillator f;
+  PhaseOptions o;
+  o.abs_tol = o.rel_tol = 1e-12;
+  o.event_time_tol = 1e-4;
+  auto guards = [](double, const Vec<2>& x, std::array<double, 1>& g) { g[0] = x[0]; };
+  auto end = integrate_phase<2, 1>(f, guards, [](double, const Vec<2>&) {}, 0.0, Vec<2>{1, 0},
+                                   10.0, 1e-3, o);
+  ASSERT_EQ(end.status, PhaseStatus::guard);
+  EXPECT_GE(end.t, std::numbers::pi / 2 - 1e-10);
+  EXPECT_LE(end.t, std::numbers::pi / 2 + 1e-4 + 1e-10);
+  EXPECT_LE(end.x[0], 1e-10);
+  EXPECT_NEAR(end.x[0], std::cos(end.t), 1e-10);
+  EXPECT_NEAR(end.x[1], -std::sin(end.t), 1e-10);
+  // The automatic value: 1e-4 s x abs_tol; negative or non-finite values are invalid.
+  EXPECT_EQ(PhaseOptions{}.event_tol(), 1e-4 * PhaseOptions{}.abs_tol);
+  o.event_time_tol = -1;
+  EXPECT_FALSE(o.validate().empty());
+}
+
 }  // namespace
 }  // namespace tribolab::bounce

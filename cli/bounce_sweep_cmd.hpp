@@ -1,0 +1,13 @@
+// `tribolab bounce sweep` / `bounce merge` wired to the bounce contact solver
+// (docs/cli.md#bounce-sweep, docs/theory.md#sweeps).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace tribolab::cli {
+
+/// Adds `sweep` and `merge` under the `bounce` area command, each cell one
+/// bounce::simulate_contact from first touch.
+void register_bounce_sweep(CLI::App& bounce_area);
+
+}  // namespace tribolab::cli
