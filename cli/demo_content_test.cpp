@@ -65,8 +65,8 @@ TEST(DemoContent, ErrataPageListsEveryErratumOfBothSeeds) {
   ASSERT_NE(t1, nullptr);
   EXPECT_EQ(t0->rows.size(), incline::seed000_case_study().errata.size());
   EXPECT_EQ(t1->rows.size(), seed001_errata().size());
-  // docs/theory.md lists 7 seed 001 errata (5 bounce, 2 sweep).
-  EXPECT_EQ(seed001_errata().size(), 7u);
+  // docs/theory.md lists 9 seed 001 errata (2 analysis, 5 bounce, 2 sweep).
+  EXPECT_EQ(seed001_errata().size(), 9u);
   for (const Erratum& e : seed001_errata()) {
     EXPECT_FALSE(e.where.empty());
     EXPECT_FALSE(e.text.empty());

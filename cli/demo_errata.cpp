@@ -11,6 +11,16 @@ namespace tribolab::cli {
 
 std::vector<Erratum> seed001_errata() {
   return {
+      {"seed 001, 實驗一 (group 2 arithmetic)",
+       "The y–t fit before the impact, −4.05 t² + 0.45 t − 0.06, has derivative −8.10 t + 0.45, but the summary and e "
+       "use −8.10 t + 0.50 (e = 1.35 with 0.50, 1.33 with 0.45); the printed Δv_y = 6.98 matches neither (6.91, "
+       "6.96). Groups 1 and 3 and all four spins follow from the printed fits and periods.",
+       "test Seed001Experiment1 in src/analysis/seed001_experiment1_test.cpp"},
+      {"seed 001, 表二 and 表三, row 3",
+       "The centre is printed (0.710, 0.299) but the midpoint of A (0.825, 0.124) and B (0.594, 0.295) is "
+       "(0.7095, 0.2095); 表三 used the wrong centre and gives θ = 0.9868 rad instead of 0.637 rad, which would "
+       "reverse the spin seen in rows 1–2.",
+       "test Seed001Table3.AnglesFromTipOffsets in src/analysis/seed001_experiment1_test.cpp"},
       {"seed 001, eq 15 and the formula for Y (實驗三 5–7)",
        "The printed depth of the lowest point, Y = |−b[cos²θ + (a/b)² sin²θ]|, gives a²/b (0.221 m for the default "
        "ball) at θ = 90 deg instead of a (0.145 m). The correct depth is Y = sqrt(a² sin²θ + b² cos²θ), which the "

@@ -135,6 +135,11 @@ CaseStudy seed000_case_study() {
       "seed 000 表一: at phi = 4.82 deg, eq 十A gives mu_A = 0.6017 (0.602), printed 0.601 "
       "(the other four columns agree to the printed digits).",
       "seed 000 圖六: atan(0.634) = 32.37 deg (printed 32.39); 圖七-4 (3) should read mu < 0.383.",
+      "seed 000 肆-二-(一), eq b: with cos(theta) = v_y/|v| as printed, a_y sin(theta) - a_x "
+      "cos(theta) has the opposite sign of eq b; consistent with eq 1.3 is cos(theta) = -v_y/|v|, "
+      "i.e. a_N = (a_x v_y - a_y v_x)/|v| (test NormalAccelDiagnostic in src/analysis).",
+      "seed 000 肆-二-(二): cos(theta_c) = v_yc/|v| is negative on the way down while eq c makes it "
+      "tan(phi)/mu > 0; it is |v_yc|/|v| (test ThetaC.CosineEqualsKForModelB).",
   };
   return cs;
 }
