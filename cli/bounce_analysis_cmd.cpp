@@ -4,6 +4,7 @@
 #include "bounce_analysis_cmd.hpp"
 
 #include "app.hpp"
+#include "bounce_options.hpp"
 
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_fit.hpp"
@@ -29,33 +30,6 @@ using nlohmann::json;
 using namespace tribolab::analysis;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-void check_finite(double v, const char* option) {
-  if (!std::isfinite(v)) throw InputError(option, "must be a finite number");
-}
-
-/// "field: message" from a validate() -> an error naming --field.
-[[noreturn]] void invalid(const std::string& message) {
-  const auto colon = message.find(':');
-  if (colon != std::string::npos && colon < 24 && message.find(' ') > colon)
-    throw InputError("--" + message.substr(0, colon), message.substr(colon + 2));
-  throw InputError(message);
-}
-
-void add_ball(CLI::App* cmd, bounce::Ball& ball) {
-  cmd->add_option("--a", ball.a, "semi-major axis, m (default 0.145)");
-  cmd->add_option("--b", ball.b, "semi-minor axis, m (default 0.095)");
-  cmd->add_option("--mass", ball.mass, "mass, kg (default 0.435)");
-  cmd->add_option("--inertia", ball.inertia, "moment of inertia about the centre, kg m^2 (default 4.1e-3)");
-}
-
-void check_ball(const bounce::Ball& ball) {
-  check_finite(ball.a, "--a");
-  check_finite(ball.b, "--b");
-  check_finite(ball.mass, "--mass");
-  check_finite(ball.inertia, "--inertia");
-  if (auto e = ball.validate(); !e.empty()) invalid(e);
-}
 
 bounce::NormalModel parse_model(const std::string& name) {
   const auto m = bounce::parse_normal_model(name);
@@ -127,14 +101,14 @@ void add_analyze(CLI::App* area) {
   cmd->add_option("--track-b", opts->b, "name of the track of tip B")->required();
   cmd->add_option("--time-scale", opts->time_scale, "real seconds per file second (240 fps shown at 30: 0.125; default 1)");
   cmd->add_option("--length-unit", opts->length_unit, "unit of the file's lengths, overriding the file (m, cm, mm, ...)");
-  add_ball(cmd, opts->o.ball);
+  add_ball_options(cmd, opts->o.ball);
   cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m (default: bracketed from the flights)");
   cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s: enables mean_normal_force");
   cmd->add_option("--exclude", opts->o.exclude, "points always dropped on each side of the impact (default 0; contact frames are dropped automatically)");
   cmd->add_option("--impact", opts->o.impact, "which detected impact to analyse (default 1)");
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
-    check_ball(opts->o.ball);
+    checked_ball(opts->o.ball);
     if (!std::isfinite(opts->time_scale) || !(opts->time_scale > 0)) throw InputError("--time-scale", "must be positive");
     if (opts->floor_y) check_finite(*opts->floor_y, "--floor-y");
     if (opts->contact_duration && !(std::isfinite(*opts->contact_duration) && *opts->contact_duration > 0))
@@ -189,7 +163,7 @@ void add_fit(CLI::App* area) {
   cmd->add_flag("--restitution", opts->restitution, "fit the target restitution e instead of D (restitution-based law)");
   cmd->add_option("--friction", opts->friction, "coulomb|regularized|spring (default coulomb)");
   cmd->add_option("--slip-scale", opts->o.friction.slip_scale, "v_s of the regularized law, m/s (default 0.01)");
-  add_ball(cmd, opts->o.ball);
+  add_ball_options(cmd, opts->o.ball);
   cmd->add_option("--fix", opts->fix, "hold a parameter: NAME=VALUE with NAME in K, n, D, e, mu (repeatable)");
   cmd->add_option("--loss", opts->loss, "robust loss: huber|cauchy|none (default huber)");
   cmd->add_option("--loss-scale", opts->o.loss_scale, "residual where the robust loss bends, m/s (default 0.05)");
@@ -201,7 +175,7 @@ void add_fit(CLI::App* area) {
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     BounceFitOptions o = opts->o;
-    check_ball(o.ball);
+    checked_ball(o.ball);
     o.model = parse_model(opts->model);
     o.restitution_model = opts->restitution;
     o.friction.kind = parse_friction(opts->friction);
@@ -257,7 +231,7 @@ void add_synth_video(CLI::App* area) {
   auto opts = std::make_shared<Opts>();
   auto* cmd = area->add_subcommand("synth-video", "write a synthetic Tracker export of one bounce (tips A and B) with known truth");
   cmd->add_option("--out", opts->out, "output file (Tracker Export Data text)")->required();
-  add_ball(cmd, opts->o.ball);
+  add_ball_options(cmd, opts->o.ball);
   opts->law.add(cmd);
   cmd->add_option("--height", opts->o.height, "centre height at release, m (default 0.8)");
   cmd->add_option("--theta-deg", opts->o.theta_deg, "orientation at release, deg (default 20)");
@@ -272,7 +246,7 @@ void add_synth_video(CLI::App* area) {
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     SynthVideoOptions o = opts->o;
-    check_ball(o.ball);
+    checked_ball(o.ball);
     opts->law.apply(o.law, o.friction);
     const auto v = synth_video(o);
     io::AtomicFile file(opts->out);
@@ -300,7 +274,7 @@ void add_synth_table(CLI::App* area) {
   auto opts = std::make_shared<Opts>();
   auto* cmd = area->add_subcommand("synth-table", "write a synthetic bounce table for `bounce fit` with known truth");
   cmd->add_option("--out", opts->out, "output CSV")->required();
-  add_ball(cmd, opts->o.ball);
+  add_ball_options(cmd, opts->o.ball);
   opts->law.add(cmd);
   cmd->add_option("--rows", opts->o.rows, "bounces (default 40)");
   cmd->add_option("--speed-min", opts->o.speed_min, "smallest incoming |vy|, m/s (default 2)");
@@ -313,7 +287,7 @@ void add_synth_table(CLI::App* area) {
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     SynthTableOptions o = opts->o;
-    check_ball(o.ball);
+    checked_ball(o.ball);
     opts->law.apply(o.law, o.friction);
     for (auto [v, name] : {std::pair{o.speed_min, "--speed-min"}, {o.speed_max, "--speed-max"}, {o.vx_max, "--vx-max"},
                            {o.omega_max, "--omega-max"}, {o.noise_v, "--noise-v"}, {o.noise_omega, "--noise-omega"}})

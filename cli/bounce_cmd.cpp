@@ -4,6 +4,7 @@
 //   drop          release -> flight -> contact -> ... several bounces
 #include "app.hpp"
 #include "bounce_analysis_cmd.hpp"
+#include "bounce_options.hpp"
 #include "report_bounce.hpp"
 #include "report_option.hpp"
 #include "bounce_sweep_cmd.hpp"
@@ -34,110 +35,6 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 /// NaN/inf become JSON null (e.g. e when vy_in = 0).
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-void check_finite(double v, const char* option) {
-  if (!std::isfinite(v)) throw InputError(option, "must be a finite number");
-}
-
-/// Turns "field: message" from a validate() into an error naming the option --field.
-[[noreturn]] void invalid(const std::string& message) {
-  const auto colon = message.find(':');
-  if (colon != std::string::npos && colon < 24 && message.find(' ') > colon) {
-    throw InputError("--" + message.substr(0, colon), message.substr(colon + 2));
-  }
-  throw InputError(message);
-}
-
-struct BallOptions {
-  Ball ball;
-  void add(CLI::App* cmd) {
-    cmd->add_option("--a", ball.a, "semi-major axis, m (default 0.145)");
-    cmd->add_option("--b", ball.b, "semi-minor axis, m (default 0.095)");
-    cmd->add_option("--mass", ball.mass, "mass, kg (default 0.435)");
-    cmd->add_option("--inertia", ball.inertia, "moment of inertia about the centre, kg m^2 (default 4.1e-3)");
-  }
-  Ball get() const {
-    check_finite(ball.a, "--a");
-    check_finite(ball.b, "--b");
-    check_finite(ball.mass, "--mass");
-    check_finite(ball.inertia, "--inertia");
-    if (auto e = ball.validate(); !e.empty()) invalid(e);
-    return ball;
-  }
-};
-
-struct LawOptions {
-  std::string model = "hunt-crossley";
-  std::optional<double> K, n, D, restitution;
-  std::string friction = "coulomb";
-  double mu = 0.5, slip_scale = 0.01, k_t = 2.0e4, c_t = 0.0;
-  double tol = 1e-10;
-
-  void add(CLI::App* cmd) {
-    cmd->add_option("--model", model,
-                    "normal law: hooke|hertz|hunt-crossley|flores|lankarani-nikravesh|gonthier (default hunt-crossley)");
-    cmd->add_option("--K", K, "stiffness, N/m^n (default 101054, the seed's fit)");
-    cmd->add_option("--n", n, "exponent (default 1.51; hertz 1.5; hooke 1)");
-    cmd->add_option("--D", D, "damping, N s/m^(n+1) (hooke: N s/m) (default 60423; hertz, hooke 0)");
-    cmd->add_option("--restitution", restitution, "target central-impact restitution in (0, 1], instead of --D");
-    cmd->add_option("--mu", mu, "friction coefficient (default 0.5)");
-    cmd->add_option("--friction", friction, "friction model: coulomb|regularized|spring (default coulomb)");
-    cmd->add_option("--slip-scale", slip_scale, "v_s of the regularized law, m/s (default 0.01)");
-    cmd->add_option("--k-t", k_t, "tangential stiffness of the spring model, N/m (default 2e4)");
-    cmd->add_option("--c-t", c_t, "tangential damping of the spring model, N s/m (default 0)");
-    cmd->add_option("--tol", tol, "integrator tolerance, absolute and relative (default 1e-10)");
-  }
-
-  NormalLawSpec law() const {
-    const auto m = parse_normal_model(model);
-    if (!m) {
-      throw InputError("--model", "unknown model '" + model +
-                                      "' (hooke, hertz, hunt-crossley, flores, lankarani-nikravesh, gonthier)");
-    }
-    NormalLawSpec s;
-    s.model = *m;
-    if (D && restitution) throw InputError("--D", "give either --D or --restitution, not both");
-    if (K) check_finite(*K, "--K");
-    if (n) check_finite(*n, "--n");
-    if (D) check_finite(*D, "--D");
-    if (restitution) check_finite(*restitution, "--restitution");
-    if (*m == NormalModel::hooke && n && *n != 1) throw InputError("--n", "the hooke law is linear (n = 1)");
-    s.K = K.value_or(101054);
-    s.n = n.value_or(*m == NormalModel::hertz ? 1.5 : (*m == NormalModel::hooke ? 1.0 : 1.51));
-    s.D = D.value_or((*m == NormalModel::hertz || *m == NormalModel::hooke) ? 0.0 : 60423);
-    s.restitution = restitution;
-    if (auto e = s.validate(); !e.empty()) invalid(e);
-    return s;
-  }
-
-  FrictionModel friction_model() const {
-    const auto k = parse_friction_kind(friction);
-    if (!k) throw InputError("--friction", "unknown friction model '" + friction + "' (coulomb, regularized, spring)");
-    FrictionModel f;
-    f.kind = *k;
-    check_finite(mu, "--mu");
-    check_finite(slip_scale, "--slip-scale");
-    check_finite(k_t, "--k-t");
-    check_finite(c_t, "--c-t");
-    f.mu = mu;
-    f.slip_scale = slip_scale;
-    f.k_t = k_t;
-    f.c_t = c_t;
-    if (auto e = f.validate(); !e.empty()) invalid(e);
-    return f;
-  }
-
-  ContactOptions contact(double g) const {
-    if (!(tol > 0) || !(tol < 1e-2) || !std::isfinite(tol)) throw InputError("--tol", "must lie in (0, 0.01)");
-    ContactOptions o = contact_options_with_tolerance(tol);
-    o.g = g;
-    return o;
-  }
-};
-
-double checked_g(double g) {
-  if (!std::isfinite(g) || !(g > 0)) throw InputError("--g", "gravitational acceleration must be positive");
-  return g;
-}
 
 json energy_json(const KineticEnergy& e) {
   return {{"translational_x", e.translational_x}, {"translational_y", e.translational_y},

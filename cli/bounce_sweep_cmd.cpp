@@ -5,6 +5,7 @@
 #include "bounce_sweep_cmd.hpp"
 
 #include "bounce/contact.hpp"
+#include "bounce_options.hpp"
 #include "io/sweep_command.hpp"
 #include "io/sweep_file.hpp"
 #include "numerics/error.hpp"
@@ -25,19 +26,6 @@ using namespace tribolab::bounce;
 constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-void check_finite(double v, const char* option) {
-  if (!std::isfinite(v)) throw InputError(option, "must be a finite number");
-}
-
-/// Turns "field: message" from a validate() into an error naming the option --field.
-[[noreturn]] void invalid(const std::string& message) {
-  const auto colon = message.find(':');
-  if (colon != std::string::npos && colon < 24 && message.find(' ') > colon) {
-    throw InputError("--" + message.substr(0, colon), message.substr(colon + 2));
-  }
-  throw InputError(message);
-}
-
 /// How the swept `--theta-deg` values are read (docs/theory.md#sweeps).
 enum class AngleConvention {
   collision,    ///< the seed's collision angle (figures 53-56), 0..180 deg
@@ -47,17 +35,13 @@ enum class AngleConvention {
 /// The physical options of `bounce simulate` except --mu (owned by the sweep, sweepable).
 /// Defaults equal those of `bounce simulate` (docs/cli.md#bounce-simulate).
 struct BouncePhysicsOptions {
-  Ball ball;
-  std::string model = "hunt-crossley";
-  std::optional<double> K, n, D, restitution;
-  std::string friction = "coulomb";
-  double slip_scale = 0.01, k_t = 2.0e4, c_t = 0.0;
-  double g = 9.8;
-  double vx = 0;     ///< horizontal centre velocity at first touch, m/s
-  /// Integrator tolerance. 1e-8: every cell of the seed's map within 1e-6 m/s of a 1e-12
+  BallOptions ball;
+  /// Integrator tolerance 1e-8: every cell of the seed's map within 1e-6 m/s of a 1e-12
   /// reference; looser tolerances can step over a brief lift-off near grazing
   /// (docs/benchmarks.md#bounce-sweep-phase-diagram).
-  double tol = 1e-8;
+  LawOptions law{1e-8};
+  double g = 9.8;
+  double vx = 0;     ///< horizontal centre velocity at first touch, m/s
   std::string angle = "collision";
   CLI::App* command = nullptr;  ///< the sweep command, to check the --theta-deg range once
 
@@ -67,78 +51,9 @@ struct BouncePhysicsOptions {
                    "meaning of --theta-deg: collision (the seed's collision angle, 0..180 deg) | "
                    "orientation (major axis from the horizontal at first touch) (default collision)");
     cmd.add_option("--vx", vx, "horizontal centre velocity at first touch, m/s (default 0)");
-    cmd.add_option("--a", ball.a, "semi-major axis, m (default 0.145)");
-    cmd.add_option("--b", ball.b, "semi-minor axis, m (default 0.095)");
-    cmd.add_option("--mass", ball.mass, "mass, kg (default 0.435)");
-    cmd.add_option("--inertia", ball.inertia, "moment of inertia about the centre, kg m^2 (default 4.1e-3)");
-    cmd.add_option("--model", model,
-                   "normal law: hooke|hertz|hunt-crossley|flores|lankarani-nikravesh|gonthier (default hunt-crossley)");
-    cmd.add_option("--K", K, "stiffness, N/m^n (default 101054, the seed's fit)");
-    cmd.add_option("--n", n, "exponent (default 1.51; hertz 1.5; hooke 1)");
-    cmd.add_option("--D", D, "damping, N s/m^(n+1) (hooke: N s/m) (default 60423; hertz, hooke 0)");
-    cmd.add_option("--restitution", restitution, "target central-impact restitution in (0, 1], instead of --D");
-    cmd.add_option("--friction", friction, "friction model: coulomb|regularized|spring (default coulomb)");
-    cmd.add_option("--slip-scale", slip_scale, "v_s of the regularized law, m/s (default 0.01)");
-    cmd.add_option("--k-t", k_t, "tangential stiffness of the spring model, N/m (default 2e4)");
-    cmd.add_option("--c-t", c_t, "tangential damping of the spring model, N s/m (default 0)");
+    ball.add(&cmd);
+    law.add(&cmd, /*with_mu=*/false);  // --mu belongs to the sweep (sweepable)
     cmd.add_option("--g", g, "gravitational acceleration, m/s^2 (default 9.8)");
-    cmd.add_option("--tol", tol, "integrator tolerance, absolute and relative (default 1e-8)");
-  }
-
-  Ball checked_ball() const {
-    check_finite(ball.a, "--a");
-    check_finite(ball.b, "--b");
-    check_finite(ball.mass, "--mass");
-    check_finite(ball.inertia, "--inertia");
-    if (auto e = ball.validate(); !e.empty()) invalid(e);
-    return ball;
-  }
-
-  NormalLawSpec law() const {
-    const auto m = parse_normal_model(model);
-    if (!m) {
-      throw InputError("--model", "unknown model '" + model +
-                                      "' (hooke, hertz, hunt-crossley, flores, lankarani-nikravesh, gonthier)");
-    }
-    if (D && restitution) throw InputError("--D", "give either --D or --restitution, not both");
-    if (K) check_finite(*K, "--K");
-    if (n) check_finite(*n, "--n");
-    if (D) check_finite(*D, "--D");
-    if (restitution) check_finite(*restitution, "--restitution");
-    if (*m == NormalModel::hooke && n && *n != 1) throw InputError("--n", "the hooke law is linear (n = 1)");
-    NormalLawSpec s;
-    s.model = *m;
-    s.K = K.value_or(101054);
-    s.n = n.value_or(*m == NormalModel::hertz ? 1.5 : (*m == NormalModel::hooke ? 1.0 : 1.51));
-    s.D = D.value_or((*m == NormalModel::hertz || *m == NormalModel::hooke) ? 0.0 : 60423);
-    s.restitution = restitution;
-    if (auto e = s.validate(); !e.empty()) invalid(e);
-    return s;
-  }
-
-  /// The friction model with the sweep's default mu; each cell sets its own mu.
-  FrictionModel friction_model(double mu) const {
-    const auto k = parse_friction_kind(friction);
-    if (!k) throw InputError("--friction", "unknown friction model '" + friction + "' (coulomb, regularized, spring)");
-    check_finite(slip_scale, "--slip-scale");
-    check_finite(k_t, "--k-t");
-    check_finite(c_t, "--c-t");
-    FrictionModel f;
-    f.kind = *k;
-    f.mu = mu;
-    f.slip_scale = slip_scale;
-    f.k_t = k_t;
-    f.c_t = c_t;
-    if (auto e = f.validate(); !e.empty()) invalid(e);
-    return f;
-  }
-
-  ContactOptions contact() const {
-    if (!std::isfinite(g) || !(g > 0)) throw InputError("--g", "gravitational acceleration must be positive");
-    if (!(tol > 0) || !(tol < 1e-2) || !std::isfinite(tol)) throw InputError("--tol", "must lie in (0, 0.01)");
-    ContactOptions o = contact_options_with_tolerance(tol);
-    o.g = g;
-    return o;
   }
 
   AngleConvention convention() const {
@@ -173,7 +88,7 @@ struct BouncePhysicsOptions {
     d += " friction=" + std::string(to_string(f.kind));
     if (f.kind == FrictionKind::regularized) d += " slip_scale=" + num(f.slip_scale);
     if (f.kind == FrictionKind::spring) d += " k_t=" + num(f.k_t) + " c_t=" + num(f.c_t);
-    d += " g=" + num(o.g) + " tol=" + num(tol);
+    d += " g=" + num(o.g) + " tol=" + num(law.tol);
     return d;
   }
 };
@@ -220,10 +135,10 @@ void register_bounce_sweep(CLI::App& bounce_area) {
   physics.add_options = [opts](CLI::App& cmd) { opts->add(cmd); };
   physics.make_model = [opts]() {
     BounceCell cell;
-    cell.ball = opts->checked_ball();
-    cell.law = opts->law();
-    cell.friction = opts->friction_model(0.5);
-    cell.options = opts->contact();
+    cell.ball = opts->ball.get();
+    cell.law = opts->law.law();
+    cell.friction = opts->law.friction_model(0.5);  // each cell sets its own mu
+    cell.options = opts->law.contact(checked_g(opts->g));
     cell.convention = opts->convention();
     opts->check_theta_range(cell.convention);
     check_finite(opts->vx, "--vx");
