@@ -124,6 +124,30 @@ std::int64_t GridSpec::index_of(const std::vector<std::int64_t>& idx) const {
   return index;
 }
 
+namespace {
+
+/// Sets the field of `in` that `q` names.
+void assign(CellInput& in, Quantity q, double v, bool& ratio_swept) {
+  switch (q) {
+    case Quantity::speed: in.speed = v; break;
+    case Quantity::mu: in.mu = v; break;
+    case Quantity::theta_deg: in.theta_deg = v; break;
+    case Quantity::omega: in.omega = v; break;
+    case Quantity::ratio: in.ratio = v; ratio_swept = true; break;
+  }
+}
+
+/// omega and ratio = omega/speed determine each other: fill the one not swept.
+void complete(CellInput& in, bool ratio_swept) {
+  if (ratio_swept) {
+    in.omega = in.ratio * in.speed;
+  } else {
+    in.ratio = in.omega / in.speed;
+  }
+}
+
+}  // namespace
+
 CellInput GridSpec::at(const std::vector<double>& coords) const {
   TRIBOLAB_ASSERT(coords.size() == axes.size(), "coordinate count mismatch");
   CellInput in;
@@ -131,26 +155,14 @@ CellInput GridSpec::at(const std::vector<double>& coords) const {
   in.speed = fixed_speed;
   in.mu = fixed_mu;
   bool ratio_swept = false;
-  for (std::size_t k = 0; k < axes.size(); ++k) {
-    const double v = coords[k];
-    switch (axes[k].quantity) {
-      case Quantity::speed: in.speed = v; break;
-      case Quantity::mu: in.mu = v; break;
-      case Quantity::theta_deg: in.theta_deg = v; break;
-      case Quantity::omega: in.omega = v; break;
-      case Quantity::ratio: in.ratio = v; ratio_swept = true; break;
-    }
-  }
-  if (ratio_swept) {
-    in.omega = in.ratio * in.speed;
-  } else {
-    in.ratio = in.omega / in.speed;
-  }
+  for (std::size_t k = 0; k < axes.size(); ++k) assign(in, axes[k].quantity, coords[k], ratio_swept);
+  complete(in, ratio_swept);
   return in;
 }
 
 CellInput GridSpec::cell(std::int64_t index) const {
-  // Same arithmetic as at(), without allocating: this runs once per cell in the hot loop.
+  // Same result as at() for the cell's coordinates, without allocating: this runs once per
+  // cell in the hot loop.
   CellInput in;
   in.index = index;
   in.speed = fixed_speed;
@@ -159,21 +171,10 @@ CellInput GridSpec::cell(std::int64_t index) const {
   std::int64_t rest = index;
   for (std::size_t k = axes.size(); k-- > 0;) {
     const Axis& a = axes[k];
-    const double v = a.value(rest % a.count);
+    assign(in, a.quantity, a.value(rest % a.count), ratio_swept);
     rest /= a.count;
-    switch (a.quantity) {
-      case Quantity::speed: in.speed = v; break;
-      case Quantity::mu: in.mu = v; break;
-      case Quantity::theta_deg: in.theta_deg = v; break;
-      case Quantity::omega: in.omega = v; break;
-      case Quantity::ratio: in.ratio = v; ratio_swept = true; break;
-    }
   }
-  if (ratio_swept) {
-    in.omega = in.ratio * in.speed;
-  } else {
-    in.ratio = in.omega / in.speed;
-  }
+  complete(in, ratio_swept);
   return in;
 }
 
