@@ -13,21 +13,6 @@ namespace {
 
 using nlohmann::json;
 
-json run_json(const std::string& args) {
-  const auto r = run_tribolab(args + " --json");
-  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
-  EXPECT_TRUE(r.err.empty()) << r.err;
-  return json::parse(r.out);
-}
-
-void expect_one_line_error(const std::string& args, const std::string& must_mention) {
-  const auto r = run_tribolab(args);
-  EXPECT_NE(r.exit_code, 0) << args;
-  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
-  EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
-  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\nexpected '" << must_mention << "' in: " << r.err;
-}
-
 void write(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
 }
@@ -88,30 +73,30 @@ TEST(BounceAnalysisCli, BadInputGivesOneLine) {
       out << t << '\t' << t - 0.145 << '\t' << y << '\t' << t + 0.145 << '\t' << y << '\n';
     }
   }
-  expect_one_line_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b B", "no impact found");
-  expect_one_line_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b C", "C");
-  expect_one_line_error("bounce analyze '" + dir + "/missing.txt' --track-a A --track-b B", "missing.txt");
-  expect_one_line_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b B --time-scale -1", "--time-scale");
+  expect_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b B", "no impact found");
+  expect_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b C", "C");
+  expect_error("bounce analyze '" + dir + "/missing.txt' --track-a A --track-b B", "missing.txt");
+  expect_error("bounce analyze '" + dir + "/flight.txt' --track-a A --track-b B --time-scale -1", "--time-scale");
   run_tribolab("bounce synth-video --after 0.1 --out '" + dir + "/short.txt'");  // ~24 frames after
-  expect_one_line_error("bounce analyze '" + dir + "/short.txt' --track-a A --track-b B --time-scale 0.125 --exclude 30",
+  expect_error("bounce analyze '" + dir + "/short.txt' --track-a A --track-b B --time-scale 0.125 --exclude 30",
                         "at least 5 are needed");
   write(dir + "/apart.txt", "#multi:\n\tA\t\tB\t\t\nt\tx\ty\tx\ty\t\n0\t0\t1\t\t\n0.1\t0\t0.9\t\t\n"
                              "0.2\t\t\t0.3\t0.8\n0.3\t\t\t0.3\t0.7\n");
-  expect_one_line_error("bounce analyze '" + dir + "/apart.txt' --track-a A --track-b B", "share 0 frame");
+  expect_error("bounce analyze '" + dir + "/apart.txt' --track-a A --track-b B", "share 0 frame");
   // Tables.
   write(dir + "/bad.csv", "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n1,2,-3,4,5,6,7\n1,2,x,4,5,6,7\n");
-  expect_one_line_error("bounce fit '" + dir + "/bad.csv'", "bad.csv:3");
+  expect_error("bounce fit '" + dir + "/bad.csv'", "bad.csv:3");
   write(dir + "/nohead.csv", "theta_deg,vx_in,vy_in\n1,2,3\n");
-  expect_one_line_error("bounce fit '" + dir + "/nohead.csv'", "missing column 'omega_in'");
+  expect_error("bounce fit '" + dir + "/nohead.csv'", "missing column 'omega_in'");
   write(dir + "/short.csv", "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n1,2,-3,4,5,6\n");
-  expect_one_line_error("bounce fit '" + dir + "/short.csv'", "short.csv:2");
+  expect_error("bounce fit '" + dir + "/short.csv'", "short.csv:2");
   write(dir + "/one.csv", "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n10,1,-4,30,0.5,2,10\n");
-  expect_one_line_error("bounce fit '" + dir + "/one.csv'", "free parameters need more rows");
-  expect_one_line_error("bounce fit '" + dir + "/one.csv' --fix q=1", "unknown parameter 'q'");
-  expect_one_line_error("bounce fit '" + dir + "/one.csv' --fix n", "NAME=VALUE");
-  expect_one_line_error("bounce fit '" + dir + "/one.csv' --loss l2", "--loss");
+  expect_error("bounce fit '" + dir + "/one.csv'", "free parameters need more rows");
+  expect_error("bounce fit '" + dir + "/one.csv' --fix q=1", "unknown parameter 'q'");
+  expect_error("bounce fit '" + dir + "/one.csv' --fix n", "NAME=VALUE");
+  expect_error("bounce fit '" + dir + "/one.csv' --loss l2", "--loss");
   // No partial output when the synthetic generator fails.
-  expect_one_line_error("bounce synth-table --rows 0 --out '" + dir + "/x.csv'", "rows");
+  expect_error("bounce synth-table --rows 0 --out '" + dir + "/x.csv'", "rows");
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv"));
 }
 

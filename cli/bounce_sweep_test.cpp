@@ -24,13 +24,6 @@ namespace fs = std::filesystem;
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
-json run_json(const std::string& args) {
-  const auto r = run_tribolab(args + " --json");
-  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
-  EXPECT_TRUE(r.err.empty()) << r.err;
-  return r.out.empty() ? json() : json::parse(r.out);
-}
-
 std::string g17(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);

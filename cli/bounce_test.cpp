@@ -12,21 +12,6 @@ namespace {
 
 using nlohmann::json;
 
-json run_json(const std::string& args) {
-  const auto r = run_tribolab(args + " --json");
-  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
-  EXPECT_TRUE(r.err.empty()) << r.err;
-  return json::parse(r.out);
-}
-
-void expect_one_line_error(const std::string& args, const std::string& must_mention) {
-  const auto r = run_tribolab(args);
-  EXPECT_NE(r.exit_code, 0) << args;
-  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
-  EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
-  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\nexpected '" << must_mention << "' in: " << r.err;
-}
-
 TEST(BounceCli, ContactTimeWithoutSpinIsFreeFall) {
   const json j = run_json("bounce contact-time --height 0.7 --theta-deg 0");
   // Centre falls H - b = 0.605 m: t = sqrt(2 * 0.605 / 9.8) = 0.35136...
@@ -85,7 +70,7 @@ TEST(BounceCli, HistoryFileIsWritten) {
 TEST(BounceCli, FailedSimulateLeavesNoHistoryFile) {
   const std::string dir = temp_dir("bounce_nohist");
   const std::string file = dir + "/h.csv";
-  expect_one_line_error("bounce simulate --vy 2 --history '" + file + "'", "--vy");
+  expect_error("bounce simulate --vy 2 --history '" + file + "'", "--vy");
   EXPECT_FALSE(std::filesystem::exists(file));
 }
 
@@ -108,24 +93,24 @@ TEST(BounceCli, DropTrajectoryFile) {
 }
 
 TEST(BounceCli, BadInputIsOneLineNamingTheProblem) {
-  expect_one_line_error("bounce simulate --vy -4 --mass -1", "--mass");
-  expect_one_line_error("bounce simulate --vy -4 --a 0.05", "--b");
-  expect_one_line_error("bounce simulate --vy -4 --model kelvin", "--model");
-  expect_one_line_error("bounce simulate --vy 0", "--vy");
-  expect_one_line_error("bounce simulate --vy -4 --D 10 --restitution 0.5", "--D");
-  expect_one_line_error("bounce simulate --vy -4 --restitution 1.5", "--restitution");
-  expect_one_line_error("bounce simulate --vy -4 --friction sticky", "--friction");
-  expect_one_line_error("bounce simulate --vy -4 --mu -0.1", "--mu");
-  expect_one_line_error("bounce simulate --vy abc", "--vy");
-  expect_one_line_error("bounce simulate --vy nan", "--vy");
-  expect_one_line_error("bounce simulate --vy -4 --model hertz --D 5", "--D");
-  expect_one_line_error("bounce simulate --vy -0.1 --omega -100 --theta-deg 30", "--omega");
-  expect_one_line_error("bounce contact-time --height 0.05", "--height");
-  expect_one_line_error("bounce contact-time --height 1 --g 0", "--g");
-  expect_one_line_error("bounce contact-time --omega 3", "--height");
-  expect_one_line_error("bounce drop --height 1 --bounces 0", "--bounces");
-  expect_one_line_error("bounce drop --height 0.01", "height");
-  expect_one_line_error("bounce simulate --vy -4 --inertia 0", "--inertia");
+  expect_error("bounce simulate --vy -4 --mass -1", "--mass");
+  expect_error("bounce simulate --vy -4 --a 0.05", "--b");
+  expect_error("bounce simulate --vy -4 --model kelvin", "--model");
+  expect_error("bounce simulate --vy 0", "--vy");
+  expect_error("bounce simulate --vy -4 --D 10 --restitution 0.5", "--D");
+  expect_error("bounce simulate --vy -4 --restitution 1.5", "--restitution");
+  expect_error("bounce simulate --vy -4 --friction sticky", "--friction");
+  expect_error("bounce simulate --vy -4 --mu -0.1", "--mu");
+  expect_error("bounce simulate --vy abc", "--vy");
+  expect_error("bounce simulate --vy nan", "--vy");
+  expect_error("bounce simulate --vy -4 --model hertz --D 5", "--D");
+  expect_error("bounce simulate --vy -0.1 --omega -100 --theta-deg 30", "--omega");
+  expect_error("bounce contact-time --height 0.05", "--height");
+  expect_error("bounce contact-time --height 1 --g 0", "--g");
+  expect_error("bounce contact-time --omega 3", "--height");
+  expect_error("bounce drop --height 1 --bounces 0", "--bounces");
+  expect_error("bounce drop --height 0.01", "height");
+  expect_error("bounce simulate --vy -4 --inertia 0", "--inertia");
 }
 
 }  // namespace

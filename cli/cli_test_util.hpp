@@ -1,6 +1,9 @@
 // Runs the real `tribolab` binary for golden tests: exit code, stdout and stderr.
 #pragma once
 
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -58,6 +61,32 @@ inline int count_lines(const std::string& s) {
   int n = 0;
   for (char c : s) n += (c == '\n');
   return n;
+}
+
+/// Runs `tribolab <args> --json` that must succeed: exit 0, nothing on stderr, and stdout
+/// either empty (commands whose output is a file) or exactly one line of JSON.
+inline nlohmann::json run_json(const std::string& args) {
+  const auto r = run_tribolab(args + " --json");
+  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+  EXPECT_TRUE(r.err.empty()) << args << "\n" << r.err;
+  if (r.out.empty()) return nlohmann::json();
+  EXPECT_EQ(count_lines(r.out), 1) << args << "\n" << r.out;
+  return nlohmann::json::parse(r.out);
+}
+
+/// Bad input as the user sees it: non-zero exit, exactly one line on stderr that contains
+/// `must_mention`, and nothing on stdout.
+inline void expect_error(const RunResult& r, const std::string& must_mention, const std::string& context = "") {
+  EXPECT_NE(r.exit_code, 0) << context;
+  EXPECT_EQ(count_lines(r.err), 1) << context << "\n" << r.err;
+  EXPECT_TRUE(r.out.empty()) << context << "\n" << r.out;
+  EXPECT_NE(r.err.find(must_mention), std::string::npos)
+      << context << "\nexpected '" << must_mention << "' in: " << r.err;
+}
+
+/// Runs `tribolab <args>` and checks it fails as `expect_error(result, ...)` describes.
+inline void expect_error(const std::string& args, const std::string& must_mention) {
+  expect_error(run_tribolab(args), must_mention, args);
 }
 
 }  // namespace tribolab::cli::testing

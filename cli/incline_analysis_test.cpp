@@ -16,21 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-json run_json(const std::string& args) {
-  const auto r = run_tribolab(args + " --json");
-  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
-  EXPECT_EQ(count_lines(r.out), 1) << r.out;
-  return json::parse(r.out);
-}
-
-void expect_error(const std::string& args, const std::string& needle) {
-  const auto r = run_tribolab(args);
-  EXPECT_NE(r.exit_code, 0) << args;
-  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
-  EXPECT_NE(r.err.find(needle), std::string::npos) << args << "\n" << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
-}
-
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 const std::string kSeedRun = " --mu 0.634 --phi-deg 20.96 --v0 2.62 ";
