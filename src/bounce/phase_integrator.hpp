@@ -382,7 +382,25 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     const double factor =
         err_norm == 0 ? 5.0 : std::clamp(0.9 * std::pow(err_norm, -0.2), 0.2, 5.0);
     if (err_norm > 1) {
-      h *= std::max(factor, 0.1);
+      // Rejected. When an armed guard with a known rate is <= 0 at the trial end, the step
+      // may have failed because the right-hand side is not smooth beyond that event (the
+      // normal force's kink at d = 0, seen by the later stages): the retry is aimed just
+      // past the guard's zero, estimated by the quadratic through g and g' at the start
+      // and g at the trial end, so that little of the step lies beyond it.
+      double h_new = h * std::max(factor, 0.1);
+      if constexpr (has_rates) {
+        eval_guards(t + h, x_new, g_b, r_b);  // k7 was evaluated there: no new model call
+        for (std::size_t i = 0; i < E; ++i) {
+          if (!armed[i] || g_b[i] > 0 || !(r_a[i] < 0)) continue;
+          const double c = (g_b[i] - g_a[i] - r_a[i] * h) / (h * h);
+          // Root of g_a + r_a tau + c tau^2 in (0, h]: the smaller positive one.
+          const double disc = r_a[i] * r_a[i] - 4 * c * g_a[i];
+          double tau = -g_a[i] / r_a[i];
+          if (c != 0 && disc >= 0) tau = 2 * g_a[i] / (-r_a[i] + std::sqrt(disc));
+          if (tau > 0 && tau < h) h_new = std::min(h_new, std::max(1.05 * tau, 0.1 * h));
+        }
+      }
+      h = h_new;
       continue;
     }
     // Accepted step [t, t + h]: look for guards crossing to <= 0.
