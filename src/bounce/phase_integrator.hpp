@@ -12,11 +12,13 @@
 // the step's continuous extension (Dormand–Prince's 4th-order dense output, Hairer et al.
 // §II.6, built from the stages already computed: no new right-hand-side calls, one guard
 // evaluation per root iteration); then one exact 5th-order step of the located length from
-// ta gives the event state (as accurate as an accepted step). A guard that is positive at
-// both ends of a step can still dip below zero inside it (a brief lift-off near grazing):
-// when the guard supplies its rate, a cubic Hermite on (g, g') at both ends flags a possible
-// interior minimum, the minimum of g on the dense output is searched there, and a
-// non-positive minimum is an event at the first crossing before it.
+// ta gives the event state, and the zero is re-located next to it on that step's own dense
+// output (detail::polish_event), so the event is as accurate as an accepted step.
+// A guard that is positive at both ends of a step can still dip below zero inside it (a
+// brief lift-off near grazing): when the guard supplies its rate, a cubic Hermite on
+// (g, g') at both ends flags a possible interior minimum, the minimum of g on the dense
+// output is searched there, and a non-positive minimum is an event at the first crossing
+// before it.
 
 #pragma once
 
