@@ -275,12 +275,20 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     dx[iWn] = (e.nf.N - e.nf.elastic) * e.d_dot;
     dx[iWf] = -e.f * e.v_t;
   };
-  auto guards = [&](double, const State& st, std::array<double, 2>& gv) {
+  // Guards and their rates (NaN = not supplied): the rates of the separation guard d and
+  // of the slip guard let the integrator find a brief dip below zero inside one step.
+  constexpr double kNoRate = std::numeric_limits<double>::quiet_NaN();
+  auto guards = [&](double, const State& st, std::array<double, 2>& gv, std::array<double, 2>& rate) {
     const Eval& e = eval_at(st);
     gv[0] = e.d;  // separation
+    rate[0] = e.d_dot;
+    rate[1] = kNoRate;
     const double muN = friction.mu * e.nf.N;
     switch (cur_mode) {
-      case Mode::coulomb_slip: gv[1] = cur_s * e.v_t; break;
+      case Mode::coulomb_slip:
+        gv[1] = cur_s * e.v_t;
+        rate[1] = cur_s * model.slip_accel(e, st[iW]);
+        break;
       case Mode::coulomb_stick: gv[1] = muN - std::abs(e.f_req); break;
       case Mode::spring_elastic:
         gv[1] = muN - std::abs(friction.k_t * st[iU] + friction.c_t * e.v_t);
@@ -312,6 +320,12 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   };
   if (history) history->clear();
 
+  // Phases that ended at once at the same time, in a row: two such (stick ends at once,
+  // then slip ends at once) mean a point where neither friction phase can go on (e.g. the
+  // spring model as the load vanishes, both guards negative to rounding). The next phase
+  // then keeps its friction guard waiting until it becomes positive instead of ending at
+  // once again, so that time moves on.
+  int immediate_run = 0;
   bool done = false;
   while (!done) {
     if (r.n_phases >= options.max_phases) {
@@ -321,8 +335,11 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     }
     cur_mode = mode;
     cur_s = s;
+    const unsigned patient = immediate_run >= 2 ? 2u : 0u;  // guard 1: friction
     const PhaseEnd<kN> end = integrate_phase<kN, 2>(rhs, guards, observer, t, x,
-                                                    options.max_duration, h, options.integrator);
+                                                    options.max_duration, h, options.integrator,
+                                                    patient);
+    immediate_run = end.immediate ? immediate_run + 1 : 0;
     r.steps += end.steps;
     r.rhs_calls += end.rhs_calls;
     if (r.n_phases < kMaxStoredPhases) r.phases[r.n_phases] = {kind_of(cur_mode, cur_s), t, end.t};

@@ -7,14 +7,19 @@
 //
 // Stepper: Dormand & Prince 1980 (J. Comp. Appl. Math. 6, 19-26), the 5th-order solution
 // propagated, the embedded 4th-order one for the error estimate, standard step control
-// (Hairer, Nørsett & Wanner, Solving ODE I, §II.4). Events: a guard that becomes <= 0
-// inside an accepted step [ta, ta + h] is located by TOMS 748 on tau -> guard(step(x_a, tau)),
-// each evaluation being a fresh 5th-order step of length tau from ta. The event time and
-// state are therefore as accurate as an accepted step (no interpolant error), at the cost of
-// 5 right-hand-side calls per root iteration (the FSAL stage is skipped); the bracket end
-// reuses the accepted step's guard value, and the time is bracketed to
-// PhaseOptions::event_tol() — events are rare (a few per contact).
-// See docs/theory.md#bounce-integrator.
+// (Hairer, Nørsett & Wanner, Solving ODE I, §II.4). Events (docs/theory.md#bounce-integrator):
+// a guard that becomes <= 0 inside an accepted step [ta, ta + h] is located by TOMS 748 on
+// the step's continuous extension (Dormand–Prince's 4th-order dense output, Hairer et al.
+// §II.6, built from the stages already computed: no new right-hand-side calls, one guard
+// evaluation per root iteration); then one exact 5th-order step of the located length from
+// ta gives the event state, and the zero is re-located next to it on that step's own dense
+// output (detail::polish_event), so the event is as accurate as an accepted step.
+// A guard that is positive at both ends of a step can still dip below zero inside it (a
+// brief lift-off near grazing): when the guard supplies its rate, a cubic Hermite on
+// (g, g') at both ends flags a possible interior minimum, the minimum of g on the dense
+// output is searched there, and a non-positive minimum is an event at the first crossing
+// before it.
+
 #pragma once
 
 #include "numerics/roots.hpp"
@@ -25,6 +30,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 namespace tribolab::bounce {
 
@@ -93,18 +99,36 @@ inline constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192,
                         b5 = -2187.0 / 6784, b6 = 11.0 / 84;
 inline constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
                         e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
+// Dense output (Hairer, Nørsett & Wanner §II.6, the 4th-order continuous extension of
+// dopri5; Shampine 1986, Math. Comp. 46, 135-150).
+inline constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700410799.0,
+                        d4 = -10690763975.0 / 1880347072.0, d5 = 701980252875.0 / 199316789632.0,
+                        d6 = -1453857185.0 / 822651844.0, d7 = 69997945.0 / 29380423.0;
 
 }  // namespace detail
 
+/// The stages k3..k6 of one Dormand–Prince step (k2 is not used by the dense output).
+template <std::size_t N>
+struct DopriStages {
+  Vec<N> k3, k4, k5, k6;
+};
+
 /// One Dormand–Prince step of length h from (t, x) with k1 = f(t, x). Writes the 5th-order
 /// solution to x_new, f(t + h, x_new) to k7 (FSAL; skipped, and k7 left unset, when
-/// `fsal` is false and err == nullptr: a trial step that only needs x_new) and, when
-/// err != nullptr, the error estimate (5th minus 4th order).
+/// `fsal` is false and err == nullptr: a trial step that only needs x_new), when
+/// err != nullptr the error estimate (5th minus 4th order), and when stages != nullptr the
+/// stages the dense output needs.
 template <std::size_t N, class Rhs>
 void dopri_step(Rhs& rhs, double t, const Vec<N>& x, const Vec<N>& k1, double h, Vec<N>& x_new,
-                Vec<N>& k7, Vec<N>* err, bool fsal = true) {
+                Vec<N>& k7, Vec<N>* err, bool fsal = true, DopriStages<N>* stages = nullptr) {
   using namespace detail;
-  Vec<N> k2, k3, k4, k5, k6, y;
+  DopriStages<N> local;
+  DopriStages<N>& st = stages ? *stages : local;
+  Vec<N>& k3 = st.k3;
+  Vec<N>& k4 = st.k4;
+  Vec<N>& k5 = st.k5;
+  Vec<N>& k6 = st.k6;
+  Vec<N> k2, y;
   for (std::size_t i = 0; i < N; ++i) y[i] = x[i] + h * a21 * k1[i];
   rhs(y, k2, t + c2 * h);
   for (std::size_t i = 0; i < N; ++i) y[i] = x[i] + h * (a31 * k1[i] + a32 * k2[i]);
@@ -127,23 +151,193 @@ void dopri_step(Rhs& rhs, double t, const Vec<N>& x, const Vec<N>& k1, double h,
   }
 }
 
+/// The continuous extension of one accepted Dormand–Prince step [t, t + h]: a polynomial
+/// in s = (tau / h) through x (s = 0) and x_new (s = 1) with the slopes k1 and k7 there,
+/// 4th-order accurate inside (Hairer, Nørsett & Wanner §II.6, dopri5's CONTD5).
+template <std::size_t N>
+struct DopriDense {
+  Vec<N> r1, r2, r3, r4, r5;
+
+  void build(const Vec<N>& x, const Vec<N>& x_new, const Vec<N>& k1, const DopriStages<N>& st,
+             const Vec<N>& k7, double h) {
+    using namespace detail;
+    for (std::size_t i = 0; i < N; ++i) {
+      r1[i] = x[i];
+      r2[i] = x_new[i] - x[i];
+      r3[i] = h * k1[i] - r2[i];
+      r4[i] = r2[i] - h * k7[i] - r3[i];
+      r5[i] = h * (d1 * k1[i] + d3 * st.k3[i] + d4 * st.k4[i] + d5 * st.k5[i] + d6 * st.k6[i] +
+                   d7 * k7[i]);
+    }
+  }
+  /// The state at s = tau / h in [0, 1].
+  void at(double s, Vec<N>& out) const {
+    const double s1 = 1 - s;
+    for (std::size_t i = 0; i < N; ++i)
+      out[i] = r1[i] + s * (r2[i] + s1 * (r3[i] + s * (r4[i] + s1 * r5[i])));
+  }
+};
+
+namespace detail {
+
+/// Where the cubic Hermite p on [0, 1] with p(0) = p0, p(1) = p1, p'(0) = m0, p'(1) = m1
+/// (slopes per unit s) has an interior local minimum: its s, or -1 when there is none.
+inline double hermite_interior_minimum(double p0, double p1, double m0, double m1) {
+  // p(s) = p0 + m0 s + c s^2 + e s^3 with c = 3 (p1 - p0) - 2 m0 - m1, e = m0 + m1 - 2 (p1 - p0).
+  const double dp = p1 - p0;
+  const double c = 3 * dp - 2 * m0 - m1;
+  const double e = m0 + m1 - 2 * dp;
+  // p'(s) = m0 + 2 c s + 3 e s^2; a minimum where p' changes from - to +.
+  const double A = 3 * e, B = 2 * c, C = m0;
+  double roots[2];
+  int n = 0;
+  if (std::abs(A) <= 1e-14 * (std::abs(B) + std::abs(C))) {
+    if (B != 0) roots[n++] = -C / B;
+  } else {
+    const double disc = B * B - 4 * A * C;
+    if (disc < 0) return -1;
+    const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+    if (q != 0) roots[n++] = q / A;
+    if (q != 0) roots[n++] = C / q;
+  }
+  for (int k = 0; k < n; ++k) {
+    const double s = roots[k];
+    if (s > 0 && s < 1 && 2 * c + 6 * e * s > 0) return s;
+  }
+  return -1;
+}
+
+}  // namespace detail
+
+namespace detail {
+
+/// The event of guard `i` located at tau1 on the dense output of the step [t, t + h] is
+/// refined: one exact step of length tau1 from (t, x) (its FSAL stage included) gives the
+/// state there and a new dense output on [t, t + tau1], which matches that exact state and
+/// its slope at tau1 and so is accurate to a far higher order near tau1 than the first one
+/// (its error grows like (tau - tau1)^2 away from the end). The guard's zero is
+/// re-bracketed near tau1 on it (expanding probes from event_tol, guided by a secant) and
+/// located by TOMS 748 to event_tol. Returns the event time (guard <= 0 there, state in
+/// xs); costs 6 right-hand-side calls plus a few guard evaluations. If the zero lies
+/// after tau1 beyond the reach of that extrapolation, it falls back to TOMS 748 on exact
+/// steps over [tau1, h] when the guard is <= 0 at the step end (g_h), and otherwise (a dip
+/// seen on the first dense output but not by the exact step) returns -1: no event.
+template <std::size_t N, class Rhs, class GuardValue>
+double polish_event(Rhs& rhs, GuardValue& guard_value, std::size_t i, double t, const Vec<N>& x,
+                    const Vec<N>& k1, double g0, double g_h, double h, double tau1,
+                    const PhaseOptions& opt, Vec<N>& xs, std::size_t& rhs_calls) {
+  DopriStages<N> st;
+  Vec<N> ke;
+  dopri_step<N>(rhs, t, x, k1, tau1, xs, ke, nullptr, true, &st);
+  rhs_calls += 6;
+  DopriDense<N> dense;
+  dense.build(x, xs, k1, st, ke, tau1);
+  auto guard_at = [&](double tau) {
+    if (tau == 0) return g0;
+    Vec<N> y;
+    dense.at(tau / tau1, y);
+    return guard_value(t + tau, y, i);
+  };
+  const double g1 = guard_value(t + tau1, xs, i);
+  const double etol = opt.event_tol();
+  if (!(g1 > 0) && guard_at(std::max(0.0, tau1 - etol)) > 0) return tau1;  // the usual case
+  // Bracket [lo, hi] with guard(lo) > 0 >= guard(hi), one end at tau1.
+  const bool left = !(g1 > 0);  // the zero is before tau1
+  const double reach = left ? tau1 : 0.25 * (h - tau1);  // how far the dense output is trusted
+  double lo = tau1, hi = tau1, g_lo = g1, g_hi = g1;
+  double step = left ? etol : 0.5 * etol;
+  bool found = false;
+  for (int it = 0; it < 40 && !found; ++it) {
+    step = std::min(step, reach);
+    const double probe = left ? tau1 - step : tau1 + step;
+    const double gp = guard_at(probe);
+    (left ? lo : hi) = probe;
+    (left ? g_lo : g_hi) = gp;
+    found = left ? gp > 0 : !(gp > 0);
+    if (found || step == reach) break;
+    // Secant through (tau1, g1) and the probe predicts the zero; overshoot it by half.
+    const double slope = (gp - g1) / (probe - tau1);
+    const double predicted = slope != 0 ? std::abs(g1 / slope) : 0;
+    step = std::max(8 * step, 1.5 * predicted);
+  }
+  if (!found) {
+    if (g_h > 0) return -1;  // a dip the exact step does not confirm
+    // Exact steps from t over [tau1, h] (guard > 0 at tau1, <= 0 at h).
+    auto exact = [&](double tau) {
+      if (tau == tau1) return g1;
+      if (tau == h) return g_h;
+      Vec<N> y, ky;
+      dopri_step<N>(rhs, t, x, k1, tau, y, ky, nullptr, false);
+      rhs_calls += 5;
+      return guard_value(t + tau, y, i);
+    };
+    numerics::RootOptions ro;
+    ro.x_tol = etol;
+    const numerics::RootResult root = numerics::find_root(exact, tau1, h, ro);
+    const double tau = root.converged ? root.hi : h;
+    Vec<N> ky;
+    dopri_step<N>(rhs, t, x, k1, tau, xs, ky, nullptr, false);
+    rhs_calls += 5;
+    return tau;
+  }
+  auto phi = [&](double tau) {
+    if (tau == lo) return g_lo;
+    if (tau == hi) return g_hi;
+    return guard_at(tau);
+  };
+  double tau = hi;
+  if (hi - lo > etol) {
+    numerics::RootOptions ro;
+    ro.x_tol = etol;
+    const numerics::RootResult root = numerics::find_root(phi, lo, hi, ro);
+    if (root.converged) tau = root.hi;
+  }
+  if (tau != tau1) dense.at(tau / tau1, xs);
+  return tau;
+}
+
+}  // namespace detail
+
 /// Integrates x' = rhs(x, dxdt, t) from (t0, x0) until t_end or until one of the E guards
-/// (guards(t, x, g) fills g[0..E)) falls to <= 0. A guard that is <= 0 at t0 is armed only
-/// once it has become positive (so a phase may start exactly on its boundary); if it is
-/// still negative at the first step end, the phase ends at once (immediate = true).
+/// falls to <= 0. guards(t, x, g) fills g[0..E); a guard functor that also takes a second
+/// array, guards(t, x, g, rate), fills rate[i] = dg_i/dt too (NaN when unknown), which
+/// enables the detection of a guard dipping below zero inside a step (see the top of this
+/// file). A guard that is <= 0 at t0 is armed only once it has become positive (so a phase
+/// may start exactly on its boundary); if it is still negative at the first step end, the
+/// phase ends at once (immediate = true) — unless its bit is set in `patient_guards`: such a
+/// guard then just waits to become positive (used to leave a point where two phases both
+/// end at once, see contact.cpp).
 /// observer(t, x) is called at t0 and after every accepted step and at the end.
 template <std::size_t N, std::size_t E, class Rhs, class Guards, class Observer>
 PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, double t0,
                             const Vec<N>& x0, double t_end, double h0,
-                            const PhaseOptions& opt) {
+                            const PhaseOptions& opt, unsigned patient_guards = 0) {
+  using G = std::array<double, E>;
+  constexpr bool has_rates = std::is_invocable_v<Guards&, double, const Vec<N>&, G&, G&>;
+  auto eval_guards = [&](double tt, const Vec<N>& st, G& g, G& rate) {
+    if constexpr (has_rates) {
+      guards(tt, st, g, rate);
+    } else {
+      guards(tt, st, g);
+      rate.fill(std::numeric_limits<double>::quiet_NaN());
+    }
+  };
+  auto guard_value = [&](double tt, const Vec<N>& st, std::size_t i) {
+    G g{}, rate{};
+    eval_guards(tt, st, g, rate);
+    return g[i];
+  };
   PhaseEnd<N> out;
   out.t = t0;
   out.x = x0;
   double t = t0;
-  Vec<N> x = x0, k1, x_new, k7, err;
-  std::array<double, E> g_a{}, g_b{};
+  Vec<N> x = x0, k1, x_new, k7, err, x_ev;
+  DopriStages<N> stages;
+  DopriDense<N> dense;
+  bool dense_built = false;
+  G g_a{}, g_b{}, r_a{}, r_b{};
   std::array<bool, E> armed{};
-  guards(t, x, g_a);
+  eval_guards(t, x, g_a, r_a);
   for (std::size_t i = 0; i < E; ++i) armed[i] = g_a[i] > 0;
   rhs(x, k1, t);
   ++out.rhs_calls;
@@ -169,7 +363,7 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
       out.status = PhaseStatus::step_underflow;
       break;
     }
-    dopri_step<N>(rhs, t, x, k1, h, x_new, k7, &err);
+    dopri_step<N>(rhs, t, x, k1, h, x_new, k7, &err, true, &stages);
     out.rhs_calls += 6;
     double err_norm = 0;
     bool finite = true;
@@ -190,53 +384,127 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     const double factor =
         err_norm == 0 ? 5.0 : std::clamp(0.9 * std::pow(err_norm, -0.2), 0.2, 5.0);
     if (err_norm > 1) {
-      h *= std::max(factor, 0.1);
+      // Rejected. When an armed guard with a known rate is <= 0 at the trial end, the step
+      // may have failed because the right-hand side is not smooth beyond that event (the
+      // normal force's kink at d = 0, seen by the later stages): the retry is aimed just
+      // past the guard's zero, estimated by the quadratic through g and g' at the start
+      // and g at the trial end, so that little of the step lies beyond it.
+      double h_new = h * std::max(factor, 0.1);
+      if constexpr (has_rates) {
+        eval_guards(t + h, x_new, g_b, r_b);  // k7 was evaluated there: no new model call
+        for (std::size_t i = 0; i < E; ++i) {
+          if (!armed[i] || g_b[i] > 0 || !(r_a[i] < 0)) continue;
+          const double c = (g_b[i] - g_a[i] - r_a[i] * h) / (h * h);
+          // Root of g_a + r_a tau + c tau^2 in (0, h]: the smaller positive one.
+          const double disc = r_a[i] * r_a[i] - 4 * c * g_a[i];
+          double tau = -g_a[i] / r_a[i];
+          if (c != 0 && disc >= 0) tau = 2 * g_a[i] / (-r_a[i] + std::sqrt(disc));
+          if (tau > 0 && tau < h) h_new = std::min(h_new, std::max(1.05 * tau, 0.1 * h));
+        }
+      }
+      h = h_new;
       continue;
     }
     // Accepted step [t, t + h]: look for guards crossing to <= 0.
     ++out.steps;
-    guards(t + h, x_new, g_b);
+    dense_built = false;
+    auto guard_at = [&](std::size_t i, double tau) {
+      if (tau == 0) return g_a[i];
+      if (tau == h) return g_b[i];  // the accepted step itself: same bits as x_new
+      if (!dense_built) {
+        dense.build(x, x_new, k1, stages, k7, h);
+        dense_built = true;
+      }
+      Vec<N> xs;
+      dense.at(tau / h, xs);
+      G gs{}, rs{};
+      eval_guards(t + tau, xs, gs, rs);
+      return gs[i];
+    };
+    eval_guards(t + h, x_new, g_b, r_b);
+    numerics::RootOptions root_options;
+    root_options.x_tol = opt.event_tol();
+    // For an armed guard i: h if it is <= 0 at the step end; else, if it dips to <= 0
+    // inside the step, a time where it does so; else -1.
+    auto first_zero_bound = [&](std::size_t i) -> double {
+      if (!(g_b[i] > 0)) return h;
+      // Positive at both ends: a dip below zero inside? Only where the guard falls at the
+      // start and rises at the end (rates known), and its cubic Hermite has an interior
+      // minimum; that minimum is then searched on the dense output.
+      if (!(r_a[i] < 0 && r_b[i] > 0)) return -1;
+      const double s_min = detail::hermite_interior_minimum(g_a[i], g_b[i], h * r_a[i], h * r_b[i]);
+      if (s_min < 0) return -1;
+      double lo_m = 0, hi_m = h, tau_m = s_min * h;
+      double g_m = guard_at(i, tau_m);
+      // Golden-section search for the minimum on [0, h], started at the Hermite minimum;
+      // it stops at a non-positive value or when the minimum is known to 1e-3 h (then g
+      // there is within ~1e-6 g'' h^2 / 2 of the minimum, far below the tolerance).
+      constexpr double kGold = 0.3819660112501051;
+      for (int it = 0; it < 40 && g_m > 0 && hi_m - lo_m > 1e-3 * h; ++it) {
+        const bool right = tau_m - lo_m < hi_m - tau_m;
+        const double probe = right ? tau_m + kGold * (hi_m - tau_m) : tau_m - kGold * (tau_m - lo_m);
+        const double g_p = guard_at(i, probe);
+        if (g_p < g_m) {
+          (right ? lo_m : hi_m) = tau_m;
+          tau_m = probe;
+          g_m = g_p;
+        } else {
+          (right ? hi_m : lo_m) = probe;
+        }
+      }
+      return g_m > 0 ? -1 : tau_m;
+    };
     int hit = -1;
     double tau_hit = h;
     bool immediate = false;
-    for (std::size_t i = 0; i < E; ++i) {
-      if (!armed[i]) {
-        if (g_b[i] > 0) {
-          armed[i] = true;
-        } else if (g_b[i] < 0 && out.steps == 1) {
-          hit = static_cast<int>(i);
-          tau_hit = 0;
-          immediate = true;
-          break;
-        }
-        continue;
-      }
-      if (g_b[i] > 0) continue;
-      auto phi = [&](double tau) {
-        if (tau == 0) return g_a[i];
-        if (tau == h) return g_b[i];  // the accepted step itself: same bits as x_new
-        Vec<N> xs, ks;
-        dopri_step<N>(rhs, t, x, k1, tau, xs, ks, nullptr, false);
-        out.rhs_calls += 5;
-        std::array<double, E> gs{};
-        guards(t + tau, xs, gs);
-        return gs[i];
-      };
-      numerics::RootOptions root_options;
-      root_options.x_tol = opt.event_tol();
-      const numerics::RootResult root = numerics::find_root(phi, 0.0, h, root_options);
-      const double tau = root.converged ? root.hi : h;  // hi: the guard is <= 0 there
-      if (tau <= tau_hit) {
-        tau_hit = tau;
+    std::array<bool, E> newly_armed{};
+    for (std::size_t i = 0; i < E && !immediate; ++i) {
+      if (armed[i]) continue;
+      if (g_b[i] > 0) {
+        newly_armed[i] = true;
+      } else if (g_b[i] < 0 && out.steps == 1 && !((patient_guards >> i) & 1u)) {
         hit = static_cast<int>(i);
+        tau_hit = 0;
+        immediate = true;
       }
     }
+    // The earliest zero of an armed guard on the dense output, among those not excluded
+    // (a dip the exact step did not confirm), then refined by polish_event.
+    std::array<bool, E> excluded{};
+    for (std::size_t attempt = 0; attempt < E && !immediate; ++attempt) {
+      hit = -1;
+      tau_hit = h;
+      for (std::size_t i = 0; i < E; ++i) {
+        if (!armed[i] || excluded[i]) continue;
+        const double hi = first_zero_bound(i);  // the guard is <= 0 at tau = hi; -1: none
+        if (hi < 0) continue;
+        auto phi = [&](double tau) { return guard_at(i, tau); };
+        const numerics::RootResult root = numerics::find_root(phi, 0.0, hi, root_options);
+        const double tau = root.converged ? root.hi : hi;  // root.hi: the guard is <= 0 there
+        if (tau <= tau_hit) {
+          tau_hit = tau;
+          hit = static_cast<int>(i);
+        }
+      }
+      if (hit < 0 || tau_hit == h) break;
+      const std::size_t ih = static_cast<std::size_t>(hit);
+      const double tau = detail::polish_event(rhs, guard_value, ih, t, x, k1, g_a[ih], g_b[ih], h,
+                                              tau_hit, opt, x_ev, out.rhs_calls);
+      if (tau >= 0) {
+        tau_hit = tau;
+        break;
+      }
+      excluded[ih] = true;  // the dip was not confirmed: look again without this guard
+      hit = -1;
+      tau_hit = h;
+    }
+    for (std::size_t i = 0; i < E; ++i) armed[i] = armed[i] || newly_armed[i];
     if (hit >= 0) {
       Vec<N> xs = x;
-      if (tau_hit > 0) {
-        Vec<N> ks;
-        dopri_step<N>(rhs, t, x, k1, tau_hit, xs, ks, nullptr, false);
-        out.rhs_calls += 5;
+      if (tau_hit == h) {
+        xs = x_new;
+      } else if (tau_hit > 0) {
+        xs = x_ev;
       }
       out.status = PhaseStatus::guard;
       out.guard = hit;
@@ -251,6 +519,7 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     x = x_new;
     k1 = k7;
     g_a = g_b;
+    r_a = r_b;
     observer(t, x);
     h *= std::min(factor, 5.0);
   }

@@ -98,5 +98,88 @@ TEST(PhaseIntegrator, EventTimeBracketedToTheEventTolerance) {
   EXPECT_FALSE(o.validate().empty());
 }
 
+// x'' = 2 from x = 0.999, x' = -2: x = (t - 1)^2 - 0.001 dips below 0 on
+// (1 - 0.0316, 1 + 0.0316) and is positive at t = 0 and t = 3. Dormand–Prince integrates
+// this quadratic exactly, so a first step of 3 s is accepted and jumps over the dip.
+struct Parabola {
+  void operator()(const Vec<2>& x, Vec<2>& dx, double) const {
+    dx[0] = x[1];
+    dx[1] = 2;
+  }
+};
+
+TEST(PhaseIntegrator, DipInsideAStepIsFoundWithGuardRates) {
+  Parabola f;
+  PhaseOptions o;
+  o.abs_tol = o.rel_tol = 1e-6;
+  auto observer = [](double, const Vec<2>&) {};
+  const double t_root = 1 - std::sqrt(0.001);
+  auto with_rate = [](double, const Vec<2>& x, std::array<double, 1>& g, std::array<double, 1>& r) {
+    g[0] = x[0];
+    r[0] = x[1];
+  };
+  auto end = integrate_phase<2, 1>(f, with_rate, observer, 0.0, Vec<2>{0.999, -2}, 3.0, 3.0, o);
+  ASSERT_EQ(end.status, PhaseStatus::guard);
+  EXPECT_EQ(end.steps, 1u);  // the dip was inside the first (and only) step
+  // The polynomial is integrated exactly: the event time to the event tolerance (1e-10 s)
+  // plus rounding.
+  EXPECT_NEAR(end.t, t_root, 1e-9);
+  EXPECT_LE(end.x[0], 0);
+  EXPECT_NEAR(end.x[1], 2 * (t_root - 1), 1e-8);  // x' = 2 (t - 1), |x''| = 2: 2 x 1e-9 s
+  // Without rates the guard is only tested at step ends: the same step misses the dip.
+  auto without_rate = [](double, const Vec<2>& x, std::array<double, 1>& g) { g[0] = x[0]; };
+  auto missed = integrate_phase<2, 1>(f, without_rate, observer, 0.0, Vec<2>{0.999, -2}, 3.0, 3.0, o);
+  EXPECT_EQ(missed.status, PhaseStatus::reached_end);
+  // A dip that stays above zero ((t - 1)^2 + 0.001) is not an event.
+  auto above = integrate_phase<2, 1>(f, with_rate, observer, 0.0, Vec<2>{1.001, -2}, 3.0, 3.0, o);
+  EXPECT_EQ(above.status, PhaseStatus::reached_end);
+  EXPECT_NEAR(above.x[0], 4.001, 1e-12);
+}
+
+TEST(PhaseIntegrator, DenseOutputIsFourthOrderInside) {
+  // The continuous extension of one step of x' = x from 1: error at mid-step falls by
+  // 2^5 = 32 per halving of h (local error O(h^5) of a 4th-order interpolant).
+  auto f = [](const Vec<1>& x, Vec<1>& dx, double) { dx[0] = x[0]; };
+  auto err = [&](double h) {
+    Vec<1> x{1}, k1{1}, xn, k7;
+    DopriStages<1> st;
+    dopri_step<1>(f, 0.0, x, k1, h, xn, k7, nullptr, true, &st);
+    DopriDense<1> d;
+    d.build(x, xn, k1, st, k7, h);
+    Vec<1> mid;
+    d.at(0.5, mid);
+    return std::abs(mid[0] - std::exp(0.5 * h));
+  };
+  EXPECT_NEAR(std::log2(err(0.1) / err(0.05)), 5.0, 0.3);  // asymptotic order, pre-asymptotic spread
+}
+
+TEST(PhaseIntegrator, EventOnDenseOutputMatchesExactSteps) {
+  // x = cos t crosses 0 at pi/2: located on the dense output and refined by one exact step,
+  // the event time and state are as accurate as the integration itself at every tolerance
+  // (the error of a 4th-order interpolant alone would be ~ the tolerance, not below it).
+  Oscillator f;
+  auto guards = [](double, const Vec<2>& x, std::array<double, 1>& g) { g[0] = x[0]; };
+  for (double tol : {1e-6, 1e-9, 1e-12}) {
+    PhaseOptions o;
+    o.abs_tol = o.rel_tol = tol;
+    auto end = integrate_phase<2, 1>(f, guards, [](double, const Vec<2>&) {}, 0.0, Vec<2>{1, 0},
+                                     10.0, 1e-3, o);
+    ASSERT_EQ(end.status, PhaseStatus::guard);
+    // Global error over ~1.6 rad: a few steps x tol (10 x tol); the time tolerance 1e-4 tol.
+    EXPECT_NEAR(end.t, std::numbers::pi / 2, 10 * tol) << tol;
+    EXPECT_NEAR(end.x[0], std::cos(end.t), 10 * tol) << tol;
+    EXPECT_NEAR(end.x[1], -std::sin(end.t), 10 * tol) << tol;
+  }
+}
+
+TEST(PhaseIntegrator, HermiteInteriorMinimum) {
+  // p = (s - 1/2)^2 on [0, 1]: p0 = p1 = 1/4, slopes -1 and +1: minimum at s = 1/2.
+  EXPECT_NEAR(detail::hermite_interior_minimum(0.25, 0.25, -1, 1), 0.5, 1e-15);
+  // Monotone (slopes of one sign, no interior turning point): none.
+  EXPECT_EQ(detail::hermite_interior_minimum(1, 0, -1, -1), -1);
+  // A maximum inside only (slopes + then -): none.
+  EXPECT_EQ(detail::hermite_interior_minimum(0, 0, 1, -1), -1);
+}
+
 }  // namespace
 }  // namespace tribolab::bounce
