@@ -333,7 +333,7 @@ report::Report sweep_report(const SweepReportData& d) {
   for (std::int64_t slice : shown) {
     const std::string label = slice_label(d.boundary, slice);
     SweepMapStyle st;
-    st.title = "e" + (label.empty() ? std::string() : ", " + label);
+    st.title = "Restitution e" + (label.empty() ? std::string() : ", " + label);
     st.x_title = x_title;
     st.y_title = y_title;
     st.max_side = kReportMaxSide;
@@ -351,7 +351,7 @@ report::Report sweep_report(const SweepReportData& d) {
     for (std::int64_t slice : shown) {
       const std::string label = slice_label(d.boundary, slice);
       SweepMapStyle st;
-      st.title = "ω_out" + (label.empty() ? std::string() : ", " + label);
+      st.title = "Outgoing spin ω_out" + (label.empty() ? std::string() : ", " + label);
       st.x_title = x_title;
       st.y_title = y_title;
       st.colorbar_title = "ω_out (rad/s)";

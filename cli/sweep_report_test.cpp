@@ -47,8 +47,10 @@ std::vector<std::string> titles(const std::string& html) {
   return out;
 }
 
-/// Whether a title is that of an e map ("e" or "e, speed = 3 m/s").
-bool is_e_map(const std::string& title) { return title == "e" || title.rfind("e, ", 0) == 0; }
+/// Whether a title is that of an e map ("Restitution e" or "Restitution e, speed = 3 m/s").
+bool is_e_map(const std::string& title) {
+  return title == "Restitution e" || title.rfind("Restitution e, ", 0) == 0;
+}
 
 /// (x, y) of every point of the "e = 1 boundary" traces of the e maps, in order (gaps skipped).
 std::vector<std::pair<double, double>> drawn_boundary(const std::string& html) {
@@ -148,7 +150,7 @@ TEST(SweepReportCli, ThirdAxisGivesOneMapPerValueUpToSix) {
   int e_maps = 0, spin_maps = 0;
   for (const std::string& t : titles(b)) {
     e_maps += is_e_map(t);
-    spin_maps += t.rfind("ω_out, ", 0) == 0;
+    spin_maps += t.rfind("Outgoing spin ω_out, ", 0) == 0;
   }
   EXPECT_EQ(e_maps, 6);
   EXPECT_EQ(spin_maps, 6);
