@@ -192,5 +192,50 @@ TEST(SweepReportCli, FailedSweepOrMergeWritesNoReport) {
   EXPECT_FALSE(fs::exists(dir + "/r.html"));
 }
 
+// `bounce merge --report` rebuilds the cell model from the header's physics line: with
+// options far from the defaults (another law and friction, a restitution target, negative
+// v_x, the orientation convention) the figures still equal those of the unsharded sweep.
+TEST(SweepReportCli, MergeRebuildsNonDefaultPhysics) {
+  const std::string dir = temp_dir("sreport_physics");
+  for (const std::string physics :
+       {std::string(" --model flores --restitution 0.95 --friction regularized --slip-scale 0.02 --vx -0.3"),
+        std::string(" --model hunt-crossley --K 2e5 --n 1.5 --D 100 --friction spring --k-t 3e4 --c-t 2 --g 9.81"),
+        std::string(" --model hertz --a 0.14 --mass 0.4 --inertia 4e-3")}) {
+    const std::string sweep = "bounce sweep --angle orientation --theta-deg 10:60:6 --omega 30:50:4 --tol 1e-6 --mu 0.4" +
+                              physics;
+    run_json(sweep + " --restart --out " + dir + "/all.csv --report " + dir + "/all.html");
+    run_json(sweep + " --restart --shard 0/2 --out " + dir + "/p0.csv");
+    run_json(sweep + " --restart --shard 1/2 --out " + dir + "/p1.csv");
+    std::filesystem::remove(dir + "/merged.csv");
+    run_json("bounce merge " + dir + "/p0.csv " + dir + "/p1.csv --out " + dir + "/merged.csv --report " + dir +
+             "/merged.html");
+    const json a = figures_of(slurp(dir + "/all.html"));
+    EXPECT_FALSE(a.empty()) << physics;
+    EXPECT_EQ(figures_of(slurp(dir + "/merged.html")), a) << physics;
+  }
+}
+
+// A header whose physics this tribolab did not write cannot be reported on: the merge fails
+// before writing anything.
+TEST(SweepReportCli, MergeRefusesPhysicsItCannotRebuild) {
+  const std::string dir = temp_dir("sreport_foreign");
+  for (const char* part : {"0", "1"}) {
+    run_json(kSweep + " --shard " + part + "/2 --out " + dir + "/p" + part + ".csv");
+    std::string text = slurp(dir + "/p" + part + ".csv");
+    const auto at = text.find(" tol=");
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at, " colour=red");
+    std::ofstream(dir + "/p" + part + ".csv", std::ios::binary) << text;
+  }
+  expect_error("bounce merge " + dir + "/p0.csv " + dir + "/p1.csv --out " + dir + "/all.csv --report " + dir +
+                   "/r.html",
+               "colour=red");
+  EXPECT_FALSE(fs::exists(dir + "/all.csv"));
+  EXPECT_FALSE(fs::exists(dir + "/r.html"));
+  // Without --report the same files merge (the physics line is only compared, not read).
+  run_json("bounce merge " + dir + "/p0.csv " + dir + "/p1.csv --out " + dir + "/all.csv");
+  EXPECT_TRUE(fs::exists(dir + "/all.csv"));
+}
+
 }  // namespace
 }  // namespace tribolab::cli::testing
