@@ -4,12 +4,16 @@
 #include "report_sweep.hpp"
 
 #include "report/format.hpp"
+#include "report/html.hpp"
 #include "sweep/synthetic.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+
+#include <unistd.h>
 
 namespace tribolab::cli {
 namespace {
@@ -150,6 +154,24 @@ TEST(SweepReport, ThirdAxisDrawsAtMostSixSlices) {
     EXPECT_EQ(per->rows.front()[0], "speed = 3 m/s");
     EXPECT_EQ(per->rows.back()[0], "speed = 5 m/s");
   }
+}
+
+// The size bound of docs/cli.md#bounce-sweep: a grid far larger than what is drawn (7
+// slices of 401 x 401) gives 6 slices of 201 x 201 values and a file under 15 MB.
+TEST(SweepReport, HugeGridStaysUnderTheDocumentedSize) {
+  sweep::GridSpec g = seed_window(401, 401);
+  g.axes.insert(g.axes.begin(), sweep::Axis{sweep::Quantity::speed, 3, 5, 7});
+  const SweepReportData d = data_for(g, sweep::synthetic::wave_model());
+  const report::Report r = sweep_report(d);
+  EXPECT_EQ(figures(r), 6 + 6 + 2);
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("tribolab_sweep_report_size_" + std::to_string(::getpid()) + ".html"))
+          .string();
+  report::write_html(r, path);
+  const auto bytes = std::filesystem::file_size(path);
+  std::filesystem::remove(path);
+  EXPECT_LT(bytes, 15'000'000u);
+  EXPECT_GT(bytes, 10'000'000u) << "12 maps of 201 x 201 full-precision values are drawn";
 }
 
 }  // namespace
