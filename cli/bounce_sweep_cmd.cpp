@@ -11,12 +11,15 @@
 #include "numerics/error.hpp"
 #include "sweep_cmd.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace tribolab::cli {
 namespace {
@@ -127,31 +130,76 @@ struct BounceCell {
   }
 };
 
+/// The cell model of the parsed options (throws InputError naming an invalid option).
+sweep::CellModel build_model(const BouncePhysicsOptions& opts) {
+  BounceCell cell;
+  cell.ball = opts.ball.get();
+  cell.law = opts.law.law();
+  cell.friction = opts.law.friction_model(0.5);  // each cell sets its own mu
+  cell.options = opts.law.contact(checked_g(opts.g));
+  cell.convention = opts.convention();
+  opts.check_theta_range(cell.convention);
+  check_finite(opts.vx, "--vx");
+  cell.vx = opts.vx;
+  cell.direction = opts.vx < 0 ? -1 : 1;  // as collision_angle_deg in `bounce simulate`
+  sweep::CellModel model;
+  model.output_names = {"vx", "vy", "omega_out", "e"};
+  model.description = opts.description(cell.ball, cell.law, cell.friction, cell.options);
+  model.mass = cell.ball.mass;
+  model.inertia = cell.ball.inertia;
+  model.evaluate = [cell](const sweep::CellInput& in) { return cell(in); };
+  return model;
+}
+
+/// The inverse of BouncePhysicsOptions::description: each key=value becomes its option and
+/// goes through the same parser and checks; the rebuilt model must describe itself with
+/// exactly the same line, else the description is refused.
+sweep::CellModel model_from_description(const std::string& description) {
+  static const std::pair<const char*, const char*> kKeys[] = {
+      {"angle", "--angle"}, {"vx", "--vx"},        {"a", "--a"},        {"b", "--b"},
+      {"mass", "--mass"},   {"inertia", "--inertia"}, {"law", "--model"}, {"K", "--K"},
+      {"n", "--n"},         {"restitution", "--restitution"}, {"D", "--D"}, {"friction", "--friction"},
+      {"slip_scale", "--slip-scale"}, {"k_t", "--k-t"}, {"c_t", "--c-t"}, {"g", "--g"}, {"tol", "--tol"}};
+  const std::string kind = "bounce-contact";
+  auto refuse = [&](const std::string& why) {
+    return InputError("--report", "cannot rebuild the physics of the sweep file (" + why + "): '" +
+                                      description.substr(0, 60) + "'");
+  };
+  if (description.rfind(kind + " ", 0) != 0) throw refuse("not a bounce-contact sweep");
+  std::vector<std::string> args;  // CLI11 parses a vector from its back
+  std::size_t p = kind.size() + 1;
+  while (p < description.size()) {
+    const std::size_t q = std::min(description.find(' ', p), description.size());
+    const std::string word = description.substr(p, q - p);
+    p = q + 1;
+    const auto eq = word.find('=');
+    const std::string key = word.substr(0, eq);
+    const auto it = std::find_if(std::begin(kKeys), std::end(kKeys), [&](const auto& k) { return key == k.first; });
+    if (eq == std::string::npos || it == std::end(kKeys)) throw refuse("unknown field '" + word.substr(0, 30) + "'");
+    args.push_back(std::string(it->second) + "=" + word.substr(eq + 1));
+  }
+  std::reverse(args.begin(), args.end());
+  BouncePhysicsOptions opts;
+  CLI::App app;
+  opts.add(app);
+  try {
+    app.parse(args);
+  } catch (const CLI::Error& e) {
+    throw refuse(e.what());
+  }
+  sweep::CellModel model = build_model(opts);
+  if (model.description != description) throw refuse("it does not read back to the same options");
+  return model;
+}
+
 }  // namespace
 
 void register_bounce_sweep(CLI::App& bounce_area) {
   auto opts = std::make_shared<BouncePhysicsOptions>();
   SweepPhysics physics;
   physics.add_options = [opts](CLI::App& cmd) { opts->add(cmd); };
-  physics.make_model = [opts]() {
-    BounceCell cell;
-    cell.ball = opts->ball.get();
-    cell.law = opts->law.law();
-    cell.friction = opts->law.friction_model(0.5);  // each cell sets its own mu
-    cell.options = opts->law.contact(checked_g(opts->g));
-    cell.convention = opts->convention();
-    opts->check_theta_range(cell.convention);
-    check_finite(opts->vx, "--vx");
-    cell.vx = opts->vx;
-    cell.direction = opts->vx < 0 ? -1 : 1;  // as collision_angle_deg in `bounce simulate`
-    sweep::CellModel model;
-    model.output_names = {"vx", "vy", "omega_out", "e"};
-    model.description = opts->description(cell.ball, cell.law, cell.friction, cell.options);
-    model.mass = cell.ball.mass;
-    model.inertia = cell.ball.inertia;
-    model.evaluate = [cell](const sweep::CellInput& in) { return cell(in); };
-    return model;
-  };
+  physics.make_model = [opts]() { return build_model(*opts); };
+  physics.model_from_description = model_from_description;
   physics.default_mu = 0.5;
   physics.default_speed = 4.0;
   register_sweep_commands(bounce_area, std::move(physics));

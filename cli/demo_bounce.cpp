@@ -3,6 +3,7 @@
 // release height, and the heat maps of figures 53-56 with the e = 1 boundary.
 #include "demo.hpp"
 #include "report_bounce.hpp"
+#include "report_sweep.hpp"
 #include "report_util.hpp"
 
 #include "bounce/contact.hpp"
@@ -224,48 +225,14 @@ void add_drop(report::Section& s, std::ostream& log) {
       << " m (D = 6000), " << (seed.bounces.empty() ? 0.0 : seed.bounces[0].apex_height) << " m (seed's law)\n";
 }
 
-/// A theta x spin heat map of e for one (speed) slice of `values`, with the e = 1 boundary.
+/// A theta x spin heat map of e for one slice with the e = 1 boundary (cli/report_sweep.hpp).
 report::Figure heat_map(const std::string& title, const sweep::GridSpec& grid, const std::vector<double>& values,
                         std::size_t n_out, int e_index, std::int64_t slice, const sweep::ContourResult& contour,
                         const std::string& spin_title) {
-  const auto& th = grid.axes[grid.axes.size() - 2];
-  const auto& sp = grid.axes.back();
-  report::HeatMap h;
-  for (std::int64_t j = 0; j < sp.count; ++j) h.x.push_back(sp.value(j));
-  for (std::int64_t i = 0; i < th.count; ++i) h.y.push_back(th.value(i));
-  const std::int64_t per_slice = th.count * sp.count;
-  for (std::int64_t i = 0; i < th.count; ++i) {
-    std::vector<double> row;
-    for (std::int64_t j = 0; j < sp.count; ++j)
-      row.push_back(values[static_cast<std::size_t>(slice * per_slice + i * sp.count + j) * n_out +
-                           static_cast<std::size_t>(e_index)]);
-    h.z.push_back(std::move(row));
-  }
-  h.colorbar_title = "e";
-  h.colorscale = report::ColorScale::RdBu;
-  h.z_mid = 1.0;
-  report::Figure f;
-  f.title = title;
-  f.x_axis.title = spin_title;
-  f.y_axis.title = "collision angle (deg)";
-  f.heatmap = std::move(h);
-  report::Series b = named("e = 1 boundary");
-  b.mode = report::Mode::Lines;
-  b.color = "black";
-  for (const auto& line : contour.lines) {
-    if (line.slice != slice) continue;
-    if (!b.x.empty()) {
-      b.x.push_back(std::numeric_limits<double>::quiet_NaN());
-      b.y.push_back(std::numeric_limits<double>::quiet_NaN());
-    }
-    for (const auto& p : line.points) {
-      b.x.push_back(p.spin);
-      b.y.push_back(p.theta_deg);
-    }
-  }
-  if (!b.x.empty()) f.series.push_back(std::move(b));
-  f.height_px = 420;
-  return f;
+  SweepMapStyle style;
+  style.title = title;
+  style.x_title = spin_title;
+  return sweep_heat_map(grid, values, n_out, e_index, slice, &contour, style);
 }
 
 double max_of(const std::vector<double>& values, std::size_t n_out, int idx, std::int64_t from, std::int64_t to) {

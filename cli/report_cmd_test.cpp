@@ -143,6 +143,8 @@ TEST(ReportCmd, BadReportPathIsOneErrorLineAndNoOutput) {
   expect_bad_report("bounce simulate --vy -4", "");
   expect_bad_report("bounce drop --height 0.8", "");
   expect_bad_report("bounce contact-time --height 0.8", "");
+  expect_bad_report("bounce sweep --theta-deg 100:170:3 --omega 30:50:2 --out '" + dir + "/w.csv'", dir + "/w.csv");
+  expect_bad_report("bounce merge '" + dir + "/p0.csv' --out '" + dir + "/all.csv'", dir + "/all.csv");
   const std::string in = bouncing_table(dir);
   expect_bad_report("track kinematics '" + in + "' --out '" + dir + "/k.csv'", dir + "/k.csv");
 }

@@ -4,8 +4,10 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <unistd.h>
 
@@ -14,6 +16,8 @@
 #include "io/sweep_file.hpp"
 #include "io/sweep_mpi.hpp"
 #include "numerics/error.hpp"
+#include "report_option.hpp"
+#include "report_sweep.hpp"
 
 namespace tribolab::cli {
 namespace {
@@ -54,7 +58,7 @@ class InterruptGuard {
 };
 
 struct SweepArgs {
-  std::string theta, omega, ratio, speed, mu, shard, out, contour, threshold;
+  std::string theta, omega, ratio, speed, mu, shard, out, contour, threshold, report;
   int threads = 0;
   bool restart = false, json = false;
   double contour_tol = 1e-9;
@@ -92,6 +96,18 @@ io::SweepCommandOptions to_options(const SweepArgs& a, const SweepPhysics& physi
   }
   o.contour.x_tol_rel = a.contour_tol;
   if (auto e = o.validate(); !e.empty()) throw InputError(e);
+  if (!a.report.empty()) {
+    // A shard holds every N-th cell of the grid: no map to draw. Checked before any work.
+    if (o.shard.count > 1) {
+      throw InputError("--report", "needs the whole grid, not one shard; merge the shards with `tribolab bounce "
+                                   "merge ... --report FILE.html`");
+    }
+    for (const std::string* p : {&o.out, &o.contour_out, &o.threshold_out}) {
+      if (!p->empty() && (a.report == *p || a.report == *p + ".partial")) {
+        throw InputError("--report", "must not be the same file as --out, --contour or --threshold");
+      }
+    }
+  }
   return o;
 }
 
@@ -136,12 +152,34 @@ void run_sweep(const SweepArgs& args, const SweepPhysics& physics) {
                        " of " + std::to_string(r.cells_shard) + " cells saved in " + r.out +
                        "; run the same command again to resume");
     }
+    // Built from the completed file, read back: the same report for a fresh, resumed or
+    // reused sweep, and the same boundary points as --contour.
+    write_report_if_requested(args.report, [&] {
+      sweep::ContourOptions co = o.contour;
+      co.threads = o.threads;
+      return sweep_report(sweep_report_data(o.out, model, co, "bounce sweep"));
+    });
     print_result(io::sweep_result_json(r, o), args.json);
   } catch (...) {
     // Every rank sees the same error; only rank 0 prints it (one line, SPEC section 5).
     if (rank != 0) (void)std::freopen("/dev/null", "w", stderr);
     throw;
   }
+}
+
+/// The cell model that wrote the sweep file `path` (its header's physics description).
+sweep::CellModel model_of_sweep_file(const std::string& path, const SweepPhysics& physics) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "no such file");
+  std::string line;
+  if (!std::getline(in, line) || in.eof()) {
+    throw InputError(path + ":1", "not a tribolab sweep file (no complete header line)");
+  }
+  const io::SweepHeader h = io::parse_header(line, path + ":1");
+  if (!physics.model_from_description) {
+    throw InputError("--report", "this command cannot rebuild the physics of " + path);
+  }
+  return physics.model_from_description(h.model);
 }
 
 }  // namespace
@@ -173,6 +211,7 @@ void register_sweep_commands(CLI::App& bounce_area, SweepPhysics physics) {
                   "Write the spin threshold and energy ratio per angle to this CSV");
   cmd->add_option("--contour-tol", args->contour_tol,
                   "Root tolerance of boundary points, fraction of the grid spacing (default 1e-9)");
+  add_report_option(*cmd, args->report);
   add_json_flag(*cmd, args->json);
   if (shared_physics->add_options) shared_physics->add_options(*cmd);
   cmd->callback([args, shared_physics] { run_sweep(*args, *shared_physics); });
@@ -180,14 +219,28 @@ void register_sweep_commands(CLI::App& bounce_area, SweepPhysics physics) {
   auto inputs = std::make_shared<std::vector<std::string>>();
   auto merge_out = std::make_shared<std::string>();
   auto merge_json = std::make_shared<bool>(false);
+  auto merge_report = std::make_shared<std::string>();
   CLI::App* merge = bounce_area.add_subcommand(
       "merge", "Join the shard files of one `bounce sweep` into the full map, exactly");
   merge->add_option("files", *inputs, "Shard files (every shard i/N exactly once, any order)")
       ->required();
   merge->add_option("--out", *merge_out, "Merged output CSV")->required();
+  add_report_option(*merge, *merge_report);
   add_json_flag(*merge, *merge_json);
-  merge->callback([inputs, merge_out, merge_json] {
+  merge->callback([inputs, merge_out, merge_json, merge_report, shared_physics] {
+    // The physics is rebuilt from the first shard's header before anything is written, so
+    // a file this tribolab cannot report on fails without output.
+    std::optional<sweep::CellModel> model;
+    if (!merge_report->empty()) {
+      if (*merge_report == *merge_out) throw InputError("--report", "must not be the same file as --out");
+      if (!inputs->empty()) model = model_of_sweep_file(inputs->front(), *shared_physics);
+    }
     const io::MergeResult r = io::run_merge_command(*inputs, *merge_out);
+    if (model) {
+      write_report_if_requested(*merge_report, [&] {
+        return sweep_report(sweep_report_data(r.out, *model, sweep::ContourOptions{}, "bounce merge"));
+      });
+    }
     print_result(nlohmann::json{{"out", r.out}, {"shards", r.shards}, {"cells", r.cells}},
                  *merge_json);
   });

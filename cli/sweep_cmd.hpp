@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <string>
 
 #include "sweep/runner.hpp"
 
@@ -17,12 +18,16 @@ struct SweepPhysics {
   /// --restitution, --friction, --slip-scale, --g, --vx, ...) to the sweep command, bound
   /// to state that make_model reads. Must not add the options the sweep owns: --theta-deg,
   /// --omega, --ratio, --speed, --mu, --out, --shard, --threads, --restart, --contour,
-  /// --threshold, --contour-tol, --json.
+  /// --threshold, --contour-tol, --report, --json.
   std::function<void(CLI::App& sweep_command)> add_options;
   /// Builds the cell model after parsing (called once per run); throws InputError naming
   /// the option for invalid values. Per cell, CellInput carries theta_deg, omega, the
   /// incoming speed |vy| (vy = -speed) and mu, swept or fixed.
   std::function<sweep::CellModel()> make_model;
+  /// Rebuilds the cell model from the physics description recorded in a sweep file's header
+  /// (CellModel::description), for `bounce merge --report`, which has no physical options.
+  /// Throws InputError when the description is not one this physics wrote.
+  std::function<sweep::CellModel(const std::string& description)> model_from_description;
   double default_mu = 0.5;     ///< --mu when not given (SPEC section 3 default)
   double default_speed = 4.0;  ///< --speed when not given, m/s (seed 001 figure 53)
 };
