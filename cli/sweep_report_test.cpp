@@ -197,7 +197,7 @@ TEST(SweepReportCli, FailedSweepOrMergeWritesNoReport) {
 // v_x, the orientation convention) the figures still equal those of the unsharded sweep.
 TEST(SweepReportCli, MergeRebuildsNonDefaultPhysics) {
   const std::string dir = temp_dir("sreport_physics");
-  for (const std::string physics :
+  for (const std::string& physics :
        {std::string(" --model flores --restitution 0.95 --friction regularized --slip-scale 0.02 --vx -0.3"),
         std::string(" --model hunt-crossley --K 2e5 --n 1.5 --D 100 --friction spring --k-t 3e4 --c-t 2 --g 9.81"),
         std::string(" --model hertz --a 0.14 --mass 0.4 --inertia 4e-3")}) {
