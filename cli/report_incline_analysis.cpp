@@ -166,11 +166,11 @@ void add_incline_analysis_equations(report::Section& s) {
   s.add_equation("dv/dt = −g cos φ μ v̂ + (f_N/m) n̂ − g sin φ ŷ", "seed 000, 肆-三; docs/theory.md#incline-analysis",
                  "model A: a friction component f_N normal to the path (n̂ = left normal of v̂); f_N = 0 is model B");
   s.add_equation("F = (RSS_B − RSS_A) / (RSS_A / (2n − 6))", "docs/theory.md#incline-analysis",
-                 "A against B, nested models; p = P(F_{1, 2n−6} > F)");
+                 "A against B, nested models; p = the probability that an F(1, 2n − 6) variable exceeds F");
   s.add_equation("a_N = (a_x v_y − a_y v_x)/|v| = g sin φ sin θ − f_N/m,   sin θ = v_x/|v|", "seed 000, eq b",
                  "sign corrected, see the errata");
   s.add_equation("cos θ_c = tan φ/μ − f_N sin θ_c/(m g μ cos φ)", "seed 000, eq c",
-                 "at the extremum of v_y (a_y = 0); cos θ_c = |v_y|/|v|");
+                 "at the extremum of the velocity down the slope (zero acceleration there); cos θ_c = |v_y| / |v|");
   s.add_equation("cos θ_c = k = tan φ / μ", "seed 000, eq c'", "model B (f_N = 0)");
 }
 
