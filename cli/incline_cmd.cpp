@@ -293,6 +293,7 @@ void add_mu_from_stop(CLI::App* area) {
     j["v0"] = r.v0;
     j["best_phi_deg"] = nullptr;
     j["best_sigma_mu"] = nullptr;
+    std::optional<incline::AngleAdvice> advice;
     if (!s->plate_size.empty()) {
       const double plate = number(s->plate_size, "--plate-size");
       if (!(plate > 0)) throw InputError("--plate-size", "must be > 0, got " + s->plate_size);
@@ -302,8 +303,9 @@ void add_mu_from_stop(CLI::App* area) {
           r.mu, r.v0, incline::SetupConstraint::launch_speed, m.sigma_phi, m.sigma_pos, plate, m.g);
       j["best_phi_deg"] = incline::rad_to_deg(a.phi);
       j["best_sigma_mu"] = a.sigma_mu;
+      advice = a;
     }
-    write_report_if_requested(s->report, [&] { return incline_stop_report(m, r, has_sigma); });
+    write_report_if_requested(s->report, [&] { return incline_stop_report(m, r, has_sigma, advice); });
     print_result(j, s->json);
   });
 }

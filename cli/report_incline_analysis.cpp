@@ -387,7 +387,7 @@ report::Report incline_normal_test_report(const analysis::NormalFrictionTest& re
 }
 
 report::Report incline_stop_report(const incline::StopMeasurement& m, const incline::MuFromStopResult& res,
-                                   bool has_sigma) {
+                                   bool has_sigma, const std::optional<incline::AngleAdvice>& advice) {
   report::Report r;
   r.title = "tribolab incline mu-from-stop";
   r.subtitle = "μ from the stopping point alone (seed 000, eq 十A)";
@@ -410,6 +410,12 @@ report::Report incline_stop_report(const incline::StopMeasurement& m, const incl
               {"v_0 implied by x_stop (m/s)", format_value(res.v0, 5)},
               {"∂μ/∂φ (1/rad), ∂μ/∂x, ∂μ/∂y (1/m)",
                format_value(res.dmu_dphi, 4) + ", " + format_value(res.dmu_dx, 4) + ", " + format_value(res.dmu_dy, 4)}};
+  if (advice) {
+    out.rows.push_back({"best angle for the same v_0 and uncertainties (deg)",
+                        format_value(incline::rad_to_deg(advice->phi), 4) +
+                            (advice->at_boundary ? " (the largest angle whose stop fits the plate)" : "")});
+    out.rows.push_back({"σ_μ at the best angle", format_value(advice->sigma_mu, 3)});
+  }
   s.add_table(std::move(out));
   s.add_equation("r k^3 − 8 k^2 − 4 r k + 8 = 0,   r = |x_{stop}/y_{stop}|,   μ = tan φ / k", "seed 000, eq 十A (eq 10.3)",
                  "the unique root in (0, 1), by bracketing; eqs 八 and 九 divided");

@@ -65,8 +65,9 @@ report::Report incline_normal_test_report(const analysis::NormalFrictionTest& r)
 
 /// `incline mu-from-stop --report`: the inputs, mu ± sigma (eq 十A), and model B's
 /// trajectory with that mu and the implied v0 to the stop, with the measured stop point.
-/// `has_sigma`: uncertainties were given (else sigma_mu is not shown).
+/// `has_sigma`: uncertainties were given (else sigma_mu is not shown); `advice`: the
+/// best-angle advice of --plate-size, when asked for.
 report::Report incline_stop_report(const incline::StopMeasurement& m, const incline::MuFromStopResult& r,
-                                   bool has_sigma);
+                                   bool has_sigma, const std::optional<incline::AngleAdvice>& advice = {});
 
 }  // namespace tribolab::cli

@@ -133,11 +133,15 @@ TEST(InclineAnalysisReport, NormalFrictionTestFromATableHasNoErrorBars) {
 TEST(InclineAnalysisReport, MuFromStopShowsInputsResultAndTrajectory) {
   // Seed 000, table 1 at 20.96 deg.
   const auto [j, html] = json_and_report(
-      "incline mu-from-stop --phi-deg 20.96 --x-stop 0.6197 --y-stop -0.2808 --sigma-phi-deg 0.1 --sigma-pos 0.002", 1);
+      "incline mu-from-stop --phi-deg 20.96 --x-stop 0.6197 --y-stop -0.2808 --sigma-phi-deg 0.1 --sigma-pos 0.002 "
+      "--plate-size 1",
+      1);
   EXPECT_SHOWS(html, format_uncertain(j["mu"], j["sigma_mu"]));
   EXPECT_SHOWS(html, format_value(j["k"], 6));
   EXPECT_SHOWS(html, format_value(j["v0"], 5));
   EXPECT_SHOWS(html, format_uncertain(0.6197, 0.002));
+  EXPECT_SHOWS(html, format_value(j["best_phi_deg"], 4));
+  EXPECT_SHOWS(html, format_value(j["best_sigma_mu"], 3));
   EXPECT_SHOWS(html, "seed 000, eq 十A");
   EXPECT_SHOWS(html, "Trajectory to the stop");
 }
