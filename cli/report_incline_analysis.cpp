@@ -312,7 +312,9 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
   t.rows = {{"a along the path (m/s^2), parabola", format_uncertain(r.a, r.sigma_a)},
             {"a from the v–t line (m/s^2), seed's method", format_uncertain(r.a_velocity_line, r.sigma_a_velocity_line)},
             {"μ (eq a)", r.mu ? format_uncertain(*r.mu, *r.sigma_mu) : "— (needs --phi-deg)"},
-            {"φ (deg)", o.phi ? format_uncertain(incline::rad_to_deg(*o.phi), incline::rad_to_deg(o.sigma_phi)) : "—"},
+            {"φ (deg)", !o.phi                ? "—"
+                        : o.sigma_phi > 0 ? format_uncertain(incline::rad_to_deg(*o.phi), incline::rad_to_deg(o.sigma_phi))
+                                          : format_value(incline::rad_to_deg(*o.phi), 6)},
             {"R^2 of the parabola", format_value(r.r_squared, 6)},
             {"moving points used", std::to_string(r.n_points)},
             {"direction of motion (deg)", format_value(r.direction_deg, 4)},
