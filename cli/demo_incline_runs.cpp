@@ -102,9 +102,11 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
       analysis::InclineFitOptions ob = o;
       ob.fit_model_a = false;
       const analysis::InclineAnalysis ab = analysis::analyze_incline_run(track, ob);
-      if (ab.theta_c) nft.push_back({o.phi, ab.theta_c->cos_theta_c, ab.theta_c->sigma_cos_theta_c, path});
-      nft_files += " " + data_path(run);
-      nft_angles += std::string(nft_angles.empty() ? "" : ",") + run.phi_deg;
+      if (ab.theta_c) {  // the command would refuse a run without one; the demo's runs all have it
+        nft.push_back({o.phi, ab.theta_c->cos_theta_c, ab.theta_c->sigma_cos_theta_c, data_path(run)});
+        nft_files += " " + data_path(run);
+        nft_angles += std::string(nft_angles.empty() ? "" : ",") + run.phi_deg;
+      }
     }
     analyses.push_back(std::move(a));
   }
