@@ -3,7 +3,9 @@
 //
 //   void add_incline_case_study(report::Report& r, std::ostream& log);
 //
-// in its own cli/demo_<name>.cpp and list it in demo_case_studies() (cli/demo_cmd.cpp).
+// in its own cli/demo_<name>.cpp and list it in demo_case_studies() (cli/demo_cmd.cpp). A case
+// study that analyses shipped files takes the data folder as a third argument and is listed
+// through a lambda capturing it (see "incline runs").
 #pragma once
 
 #include "report/report.hpp"
@@ -21,8 +23,9 @@ struct CaseStudy {
   std::function<void(report::Report&, std::ostream& log)> build;
 };
 
-/// The case studies of `tribolab demo`, in report order.
-std::vector<CaseStudy> demo_case_studies();
+/// The case studies of `tribolab demo`, in report order. `data_dir` (= <--out>/data) is
+/// where case studies that analyse shipped files write them (write_demo_file).
+std::vector<CaseStudy> demo_case_studies(const std::string& data_dir);
 
 /// An erratum found in a seed, with the independent check that shows it.
 struct Erratum {
@@ -36,6 +39,10 @@ std::vector<Erratum> seed001_errata();
 
 /// Seed 000: table 1, figures 二, 四-八 and the printed-number checks (cli/demo_incline.cpp).
 void add_incline_case_study(report::Report& r, std::ostream& log);
+
+/// Seed 000's shipped tracked runs (data/demo/incline/), written to `data_dir` and analysed
+/// as `incline analyze`, `normal-friction-test` and `mu-from-slide` do (cli/demo_incline_runs.cpp).
+void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std::string& data_dir);
 
 /// Seed 001: geometry, table 4, figures 45-48, a drop, heat maps 53-56 (cli/demo_bounce.cpp).
 void add_bounce_case_study(report::Report& r, std::ostream& log);

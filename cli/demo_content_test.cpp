@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace tribolab::cli {
@@ -72,6 +74,68 @@ TEST(DemoContent, ErrataPageListsEveryErratumOfBothSeeds) {
     EXPECT_FALSE(e.text.empty());
     EXPECT_FALSE(e.check.empty()) << e.where;
   }
+}
+
+/// The cell of `row` under the header `column` of `t`.
+std::string cell(const report::Table& t, const std::vector<std::string>& row, const std::string& column) {
+  for (std::size_t i = 0; i < t.header.size(); ++i)
+    if (t.header[i] == column) return row.at(i);
+  ADD_FAILURE() << "no column " << column;
+  return {};
+}
+
+TEST(DemoContent, InclineRunsRecoverTheTruthTheirScriptUsed) {
+  report::Report r;
+  std::ostringstream log;
+  const std::string dir = (std::filesystem::temp_directory_path() / "tribolab_demo_incline_runs").string();
+  std::filesystem::remove_all(dir);
+  add_incline_runs_case_study(r, log, dir);
+  const report::Table* made = find_table(r, "Runs: how each was made");
+  const report::Table* t = find_table(r, "Runs: the truth");
+  ASSERT_NE(made, nullptr);
+  ASSERT_NE(t, nullptr);
+  ASSERT_EQ(made->rows.size(), 6u);  // five angles and the model A run
+  ASSERT_EQ(t->rows.size(), 6u);
+  std::ifstream script(std::string(TRIBOLAB_SOURCE_DIR) + "/data/demo/incline/make.sh");
+  std::stringstream make_sh;
+  make_sh << script.rdbuf();
+  for (std::size_t i = 0; i < t->rows.size(); ++i) {
+    const auto& row = t->rows[i];
+    const std::string file = cell(*made, made->rows[i], "file");  // data/incline/<name>
+    EXPECT_EQ("data/incline/" + cell(*t, row, "file"), file);
+    // The file was written for the user, and the truth shown is the script's: its make.sh
+    // line has exactly these options and writes this file.
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + file.substr(5))) << file;
+    const std::string line = "incline synth " + cell(*made, made->rows[i], "made by: tribolab incline synth ...") +
+                             " --out \"$OUT/" + file.substr(13) + "\"";
+    EXPECT_NE(make_sh.str().find(line), std::string::npos) << line;
+    EXPECT_EQ(cell(*made, made->rows[i], "repeat with").rfind("tribolab incline analyze " + file + " --phi-deg ", 0), 0u);
+    // The shipped data is fixed, so these are exact checks of this data: every mu and v0 of
+    // the accepted model holds the truth in its 95 % interval.
+    EXPECT_EQ(cell(*t, row, "μ truth in 95 % interval"), "yes") << file;
+    EXPECT_EQ(cell(*t, row, "v_0 truth in 95 % interval"), "yes") << file;
+  }
+  // The verdict both ways: the seed's run is model B, the run with f_N/m = 0.3 model A.
+  EXPECT_EQ(cell(*t, t->rows[2], "verdict: normal friction"), "absent");
+  EXPECT_EQ(cell(*t, t->rows[5], "verdict: normal friction"), "present");
+  EXPECT_EQ(cell(*t, t->rows[5], "model (by the verdict)"), "A");
+  // The normal-friction test over the five model B angles: mu within 2 sigma of 0.634, and
+  // no intercept (the runs have no normal friction).
+  const report::Table* nft = find_table(r, "Across angles: line");
+  ASSERT_NE(nft, nullptr);
+  for (const auto& row : nft->rows) {
+    if (row[0] == "μ = 1/c_1") {
+      const double mu = std::stod(row[1]), sigma = std::stod(row[1].substr(row[1].find("± ") + 3));
+      EXPECT_NEAR(mu, 0.634, 2 * sigma) << row[1];
+    }
+    if (row[0] == "verdict: normal friction") {
+      EXPECT_EQ(row[1], "absent");
+    }
+  }
+  // The slide: eq (a) recovers mu.
+  EXPECT_NE(find_table(r, "Slide: acceleration"), nullptr);
+  EXPECT_NE(log.str().find("slide: mu = "), std::string::npos) << log.str();
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -32,7 +32,8 @@ TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
   EXPECT_EQ(html.find("<script src"), std::string::npos);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
   EXPECT_NE(html.find("About this report"), std::string::npos);
-  for (const char* heading : {"Incline (seed 000): table 1", "Bounce: table 4", "Errata found in the seeds"})
+  for (const char* heading : {"Incline (seed 000): table 1", "Incline runs: tracked launches analysed",
+                              "Bounce: table 4", "Errata found in the seeds"})
     EXPECT_NE(html.find(heading), std::string::npos) << heading;
   EXPECT_NE(r.out.find("table 1:"), std::string::npos) << r.out;  // the summary on stdout
 }
@@ -44,10 +45,12 @@ TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
   ASSERT_EQ(count_lines(r.out), 1) << r.out;  // one JSON object, no progress lines
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["report"], dir + "/report.html");
-  EXPECT_EQ(j["case_studies"], nlohmann::json::parse(R"(["about", "incline", "bounce", "errata"])"));
+  EXPECT_EQ(j["case_studies"], nlohmann::json::parse(R"(["about", "incline", "incline runs", "bounce", "errata"])"));
   // about 0, incline 7 x 5 (二, 四, 五, 六, 七) + 4 (八), bounce 1 + 4 + 1 + 1 + 5 (maps 53-55).
-  EXPECT_EQ(j["figures"], 51);
-  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 1);
+  // incline runs: 2 full analyses x (7 kinematics + 2 residuals + a_N + theta_c), the
+  // normal-friction test 1, the slide 3.
+  EXPECT_EQ(j["figures"], 51 + 2 * 11 + 1 + 3);
+  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 5 + 1);
   const std::string html = slurp(dir + "/report.html");
   EXPECT_EQ(j["figures"].get<std::size_t>(), count(html, "class=\"tribolab-plot\""));
   EXPECT_EQ(j["sections"].get<std::size_t>(), count(html, "<section id="));

@@ -15,6 +15,8 @@
 #include "io/track_import.hpp"
 #include "io/tracker_export.hpp"
 #include "numerics/error.hpp"
+#include "report_incline_analysis.hpp"
+#include "report_option.hpp"
 
 #include <cmath>
 #include <memory>
@@ -105,7 +107,9 @@ void add_synth(CLI::App* area) {
   auto s = std::make_shared<SynthText>();
   cmd->add_option("--mu", s->mu, "Kinetic friction coefficient (> 0)")->required();
   cmd->add_option("--phi-deg", s->phi_deg, "Incline angle, degrees, in [0, 90)")->required();
-  cmd->add_option("--v0", s->v0, "Launch speed along +x, m/s (> 0)")->required();
+  cmd->add_option("--v0", s->v0,
+                  "Launch speed along +x, m/s (>= 0; 0 = released from rest: a straight slide down the slope)")
+      ->required();
   cmd->add_option("--g", s->g, "Gravitational acceleration, m/s^2 (default 9.8)");
   cmd->add_option("--normal-accel", s->normal_accel,
                   "Model A: normal friction / mass, m/s^2, positive left of the velocity (default 0 = model B)");
@@ -129,7 +133,7 @@ void add_synth(CLI::App* area) {
     if (!(o.params.mu > 0)) throw InputError("--mu", "must be > 0, got " + s->mu);
     o.params.phi = incline::deg_to_rad(parse_angle_deg(s->phi_deg, "--phi-deg", true));
     o.params.v0 = number(s->v0, "--v0");
-    if (!(o.params.v0 > 0)) throw InputError("--v0", "must be > 0, got " + s->v0);
+    if (!(o.params.v0 >= 0)) throw InputError("--v0", "must be >= 0, got " + s->v0);
     o.params.g = parse_g(s->g);
     o.params.normal_accel = number(s->normal_accel, "--normal-accel");
     o.fps = number(s->fps, "--fps");
@@ -186,7 +190,7 @@ void add_synth(CLI::App* area) {
 // ---- mu-from-slide -------------------------------------------------------------------
 
 struct SlideText {
-  std::string file, phi_deg, sigma_phi_deg, g = "9.8";
+  std::string file, phi_deg, sigma_phi_deg, g = "9.8", report;
   TrackInput in;
   bool json = false;
 };
@@ -202,6 +206,7 @@ void add_mu_from_slide(CLI::App* area) {
   add_track_input(cmd, s->in);
   add_json_flag(*cmd, s->json);
   set_types(cmd);
+  add_report_option(*cmd, s->report);
   cmd->callback([s] {
     analysis::SlideOptions o;
     if (!s->phi_deg.empty()) o.phi = incline::deg_to_rad(parse_angle_deg(s->phi_deg, "--phi-deg", false));
@@ -226,6 +231,7 @@ void add_mu_from_slide(CLI::App* area) {
     j["direction_deg"] = r.direction_deg;
     j["straightness_rms"] = r.straightness_rms;
     j["track"] = t.name;
+    write_report_if_requested(s->report, [&] { return incline_slide_report(s->file, r, o); });
     print_result(j, s->json);
   });
 }
@@ -233,7 +239,7 @@ void add_mu_from_slide(CLI::App* area) {
 // ---- analyze -------------------------------------------------------------------------
 
 struct AnalyzeText {
-  std::string file, phi_deg, g = "9.8", block = "0";
+  std::string file, phi_deg, g = "9.8", block = "0", report;
   TrackInput in;
   bool no_model_a = false, json = false;
 };
@@ -322,6 +328,7 @@ void add_analyze(CLI::App* area) {
   add_track_input(cmd, s->in);
   add_json_flag(*cmd, s->json);
   set_types(cmd);
+  add_report_option(*cmd, s->report);
   cmd->callback([s] {
     analysis::InclineFitOptions o;
     o.phi = incline::deg_to_rad(parse_angle_deg(s->phi_deg, "--phi-deg", true));
@@ -335,6 +342,7 @@ void add_analyze(CLI::App* area) {
     const analysis::InclineAnalysis a = analysis::analyze_incline_run(t, o);
     json j = analysis_json(a);
     j["track"] = t.name;
+    write_report_if_requested(s->report, [&] { return incline_analyze_report(s->file, a); });
     print_result(j, s->json);
   });
 }
@@ -343,7 +351,7 @@ void add_analyze(CLI::App* area) {
 
 struct NormalTestText {
   std::vector<std::string> files;
-  std::string phi_deg, table, g = "9.8";
+  std::string phi_deg, table, g = "9.8", report;
   TrackInput in;
   bool json = false;
 };
@@ -406,6 +414,7 @@ void add_normal_friction_test(CLI::App* area) {
   add_track_input(cmd, s->in);
   add_json_flag(*cmd, s->json);
   set_types(cmd);
+  add_report_option(*cmd, s->report);
   cmd->get_option("--phi-deg")->type_name("NUM[,NUM...]");
   cmd->callback([s] {
     std::vector<analysis::ThetaCPoint> pts;
@@ -454,6 +463,7 @@ void add_normal_friction_test(CLI::App* area) {
     j["verdict"] = r.verdict;
     j["n_runs"] = r.points.size();
     j["runs"] = runs;
+    write_report_if_requested(s->report, [&] { return incline_normal_test_report(r); });
     print_result(j, s->json);
   });
 }

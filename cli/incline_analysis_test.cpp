@@ -139,6 +139,12 @@ TEST(InclineAnalysisCli, BadInput) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.txt"));
   expect_error("incline synth" + kSeedRun + "--format xml --out " + dir + "/x.txt", "--format");
   expect_error("incline normal-friction-test", "--table");
+  // Released from rest (--v0 0) the disc must slide (tan phi > mu) and follow model B.
+  expect_error("incline synth --mu 0.634 --phi-deg 20 --v0 0 --out " + dir + "/x.txt", "stays");
+  expect_error("incline synth --mu 0.634 --phi-deg 41 --v0 0 --normal-accel 0.3 --out " + dir + "/x.txt",
+               "normal_accel");
+  expect_error("incline synth --mu 0.634 --phi-deg 41 --v0 -1 --out " + dir + "/x.txt", "--v0");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.txt"));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "app.hpp"
 #include "incline_analysis_cmd.hpp"
 #include "report_incline.hpp"
+#include "report_incline_analysis.hpp"
 #include "report_option.hpp"
 
 #include "incline/closed_form.hpp"
@@ -240,7 +241,7 @@ void add_simulate(CLI::App* area) {
 // ---- mu-from-stop --------------------------------------------------------------------
 
 struct MuFromStopText {
-  std::string phi_deg, x_stop, y_stop, sigma_phi_deg, sigma_pos, g = "9.8", plate_size;
+  std::string phi_deg, x_stop, y_stop, sigma_phi_deg, sigma_pos, g = "9.8", plate_size, report;
   bool json = false;
 };
 
@@ -258,6 +259,7 @@ void add_mu_from_stop(CLI::App* area) {
                   "Largest usable stop distance, m: enables the best-angle advice");
   add_json_flag(*cmd, s->json);
   name_option_types(cmd);
+  add_report_option(*cmd, s->report);
   cmd->callback([s] {
     incline::StopMeasurement m;
     const double phi_deg = number(s->phi_deg, "--phi-deg");
@@ -291,6 +293,7 @@ void add_mu_from_stop(CLI::App* area) {
     j["v0"] = r.v0;
     j["best_phi_deg"] = nullptr;
     j["best_sigma_mu"] = nullptr;
+    std::optional<incline::AngleAdvice> advice;
     if (!s->plate_size.empty()) {
       const double plate = number(s->plate_size, "--plate-size");
       if (!(plate > 0)) throw InputError("--plate-size", "must be > 0, got " + s->plate_size);
@@ -300,7 +303,9 @@ void add_mu_from_stop(CLI::App* area) {
           r.mu, r.v0, incline::SetupConstraint::launch_speed, m.sigma_phi, m.sigma_pos, plate, m.g);
       j["best_phi_deg"] = incline::rad_to_deg(a.phi);
       j["best_sigma_mu"] = a.sigma_mu;
+      advice = a;
     }
+    write_report_if_requested(s->report, [&] { return incline_stop_report(m, r, has_sigma, advice); });
     print_result(j, s->json);
   });
 }

@@ -165,5 +165,42 @@ TEST(InclineSynth, ModelARunUsesTheIntegrator) {
   EXPECT_GT(a.track.points.back().y, b.track.points.back().y + 0.005);
 }
 
+TEST(InclineSynth, ReleaseFromRestSlidesStraightDownTheFallLine) {
+  // v0 = 0 on an incline steeper than atan(mu): y = y0 - (beta - alpha) t^2/2, x = x0.
+  InclineSynthOptions o;
+  o.params.mu = 0.634;
+  o.params.phi = incline::deg_to_rad(41.09);
+  o.params.v0 = 0;
+  o.noise = 0;
+  o.fps = 100;
+  o.duration = 0.6;
+  const InclineSynthRun run = synthesize_incline_run(o);
+  const double a = o.params.beta() - o.params.alpha();  // eq (a): the seed's 1.758 m/s^2
+  EXPECT_NEAR(a, 1.758, 0.005);
+  EXPECT_FALSE(run.t_stop);
+  for (const auto& p : run.track.points) {
+    const double tr = std::max(0.0, p.t - o.t_launch);
+    EXPECT_EQ(p.x, o.x0);  // exactly: no motion across the slope
+    EXPECT_NEAR(p.y, o.y0 - 0.5 * a * tr * tr, 1e-12);
+  }
+  // And the slide analysis recovers mu exactly from noise-free data (the parabola is exact).
+  SlideOptions so;
+  so.phi = o.params.phi;
+  EXPECT_NEAR(*mu_from_slide(run.track, so).mu, 0.634, 1e-9);
+}
+
+TEST(InclineSynth, ReleaseFromRestMustSlideAndBeModelB) {
+  InclineSynthOptions o;
+  o.params.v0 = 0;
+  o.params.mu = 0.634;
+  o.params.phi = incline::deg_to_rad(20);  // tan(20 deg) = 0.36 < mu: the disc stays
+  EXPECT_NE(o.validate().find("stays"), std::string::npos);
+  o.params.phi = incline::deg_to_rad(41);
+  EXPECT_TRUE(o.validate().empty());
+  o.params.normal_accel = 0.2;
+  EXPECT_NE(o.validate().find("normal_accel"), std::string::npos);
+  EXPECT_THROW(synthesize_incline_run(o), InputError);
+}
+
 }  // namespace
 }  // namespace tribolab::analysis

@@ -9,7 +9,11 @@ namespace tribolab::analysis {
 
 std::string InclineSynthOptions::validate() const {
   if (const std::string e = params.validate(); !e.empty()) return e;
-  if (!(params.v0 > 0)) return "v0 must be > 0 for a launch";
+  if (!(params.v0 >= 0)) return "v0 must be >= 0 (0: released from rest)";
+  if (params.v0 == 0 && params.normal_accel != 0)
+    return "a release from rest (v0 = 0) is a model B slide: normal_accel must be 0";
+  if (params.v0 == 0 && params.stays_at_rest())
+    return "released from rest the disc stays (tan(phi) <= mu_s): give v0 > 0 or a steeper phi";
   if (!(std::isfinite(fps) && fps >= 1 && fps <= 1e5)) return "fps must be in [1, 100000]";
   if (!(std::isfinite(noise) && noise >= 0)) return "noise must be >= 0 (m)";
   if (!(std::isfinite(t_launch) && t_launch >= 0)) return "t_launch must be >= 0 (s)";

@@ -1,7 +1,9 @@
 // Synthetic tracked runs of the disc on the incline (seed 000), made by the project's own
 // simulators with realistic measurement noise: the test data of the incline analyses and the
 // demo's data (`tribolab incline synth`). The disc rests at the launch point until the launch
-// time, is launched along +x, and rests after it stops. Model B runs use the closed form
+// time, is launched along +x, and rests after it stops; with v0 = 0 it is released from rest
+// there and slides straight down the fall line (-y) when tan(phi) > mu_s (the straight slide
+// of seed 000, 肆-一-(二), eq a, closed form: y = -(beta - alpha) t^2 / 2). Model B runs use the closed form
 // (src/incline/closed_form.hpp), model A runs (normal_accel != 0) the integrator
 // (src/incline/numeric.hpp). See docs/theory.md#incline-analysis.
 #pragma once
@@ -19,7 +21,8 @@
 namespace tribolab::analysis {
 
 struct InclineSynthOptions {
-  /// mu, phi, v0, g and (model A) normal_accel of the simulated launch.
+  /// mu, phi, v0, g and (model A) normal_accel of the simulated launch; v0 = 0 releases
+  /// the disc from rest (model B only; it must slide: tan(phi) > mu_s).
   incline::Parameters params;
   double fps = 80;          ///< frame rate, 1/s (seed 000: 80; 80-240 typical)
   double noise = 0.001;     ///< standard deviation of the Gaussian position noise, m (1 mm)
