@@ -35,6 +35,11 @@ TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
   for (const char* heading : {"Incline (seed 000): table 1", "Bounce: table 4", "Errata found in the seeds"})
     EXPECT_NE(html.find(heading), std::string::npos) << heading;
   EXPECT_NE(r.out.find("table 1:"), std::string::npos) << r.out;  // the summary on stdout
+  // The shipped bounce data is written next to the report, for the commands the report shows.
+  for (const char* f : {"higher.txt", "ordinary.txt", "backspin.txt", "table.csv"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/data/bounce/" + f)) << f;
+  EXPECT_NE(html.find("tribolab bounce analyze data/bounce/higher.txt --track-a A --track-b B --time-scale 0.125"),
+            std::string::npos);
 }
 
 TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
@@ -44,10 +49,11 @@ TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
   ASSERT_EQ(count_lines(r.out), 1) << r.out;  // one JSON object, no progress lines
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["report"], dir + "/report.html");
-  EXPECT_EQ(j["case_studies"], nlohmann::json::parse(R"(["about", "incline", "bounce", "errata"])"));
-  // about 0, incline 7 x 5 (二, 四, 五, 六, 七) + 4 (八), bounce 1 + 4 + 1 + 1 + 5 (maps 53-55).
-  EXPECT_EQ(j["figures"], 51);
-  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 1);
+  EXPECT_EQ(j["case_studies"], nlohmann::json::parse(R"(["about", "incline", "bounce", "bounce-runs", "errata"])"));
+  // about 0, incline 7 x 5 (二, 四, 五, 六, 七) + 4 (八), bounce 1 + 4 + 1 + 1 + 5 (maps 53-55),
+  // bounce-runs 3 x 6 (videos) + 5 (table fit).
+  EXPECT_EQ(j["figures"], 51 + 23);
+  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 4 + 1);
   const std::string html = slurp(dir + "/report.html");
   EXPECT_EQ(j["figures"].get<std::size_t>(), count(html, "class=\"tribolab-plot\""));
   EXPECT_EQ(j["sections"].get<std::size_t>(), count(html, "<section id="));
