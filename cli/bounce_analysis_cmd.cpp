@@ -105,8 +105,8 @@ void add_analyze(CLI::App* area) {
   cmd->add_option("--time-scale", opts->time_scale, "real seconds per file second (240 fps shown at 30: 0.125; default 1)");
   cmd->add_option("--length-unit", opts->length_unit, "unit of the file's lengths, overriding the file (m, cm, mm, ...)");
   add_ball_options(cmd, opts->o.ball);
-  cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m (default: bracketed from the flights)");
-  cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s: enables mean_normal_force");
+  cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m (default: from the flights and --contact-duration; needed for e_height without it)");
+  cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s (to half a frame): enables mean_normal_force, and locates the floor when --floor-y is not given");
   cmd->add_option("--exclude", opts->o.exclude, "points always dropped on each side of the impact (default 0; contact frames are dropped automatically)");
   cmd->add_option("--impact", opts->o.impact, "which detected impact to analyse (default 1)");
   add_report_option(*cmd, opts->report);
@@ -137,6 +137,7 @@ void add_analyze(CLI::App* area) {
               {"floor_y", r.floor_y},
               {"floor_given", r.floor_given},
               {"floor_half_width", r.floor_half_width},
+              {"floor_method", r.floor_method},
               {"theta_impact_deg", r.theta_impact_deg},
               {"collision_angle_deg", r.collision_angle_deg},
               {"energy_pre", r.pre.energy.total()},

@@ -153,7 +153,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
       fit.y = seg->grid_y;
       f.series.push_back(std::move(fit));
     }
-    Series floor = named("floor (" + std::string(r.floor_given ? "given" : "estimated") + ")", report::Mode::Lines);
+    Series floor = named("floor (" + std::string(r.floor_given ? "given" : "from the flights") + ")", report::Mode::Lines);
     floor.color = "black";
     floor.x = {c.x.empty() ? 0 : *std::min_element(c.x.begin(), c.x.end()),
                c.x.empty() ? 0 : *std::max_element(c.x.begin(), c.x.end())};
@@ -240,12 +240,17 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
   t.header = {"quantity", "value", "note"};
   t.rows.push_back({"impact time t_i (s)", v4(r.impact_time), "where the two y–t parabolas meet"});
   t.rows.push_back({"e from velocities", format_uncertain(r.e_velocity, r.sigma_e_velocity), "−v_y,after / v_y,before"});
+  const std::string floor_note =
+      r.floor_method == "given" ? "--floor-y"
+      : r.floor_method == "contact_duration"
+          ? "where both flights touch the floor a contact duration apart"
+          : "middle of a ±" + v4(1e3 * r.floor_half_width) + " mm bracket from the flights (not trusted for e)";
   t.rows.push_back({"e from apex heights", format_uncertain(r.e_height, r.sigma_e_height),
-                    r.floor_given ? "sqrt(H'/H), floor given"
-                                  : "sqrt(H'/H), floor estimated from the flights (±" +
-                                        v4(1e3 * r.floor_half_width) +
-                                        " mm bracket): give --floor-y for a trustworthy value"});
-  t.rows.push_back({"floor y (m)", v4(r.floor_y), r.floor_given ? "--floor-y" : "middle of the bracket"});
+                    r.floor_method == "bracket"
+                        ? "not reported: the floor estimated without --floor-y or --contact-duration is not "
+                          "reliable enough (docs/theory.md#bounce-analysis)"
+                        : "sqrt(H'/H)"});
+  t.rows.push_back({"floor y (m)", v4(r.floor_y), floor_note});
   t.rows.push_back({"θ at the impact (deg)", v4(r.theta_impact_deg), "pre-impact spin line at t_i"});
   t.rows.push_back({"collision angle (deg)", v4(r.collision_angle_deg), "seed 001, figure 三十"});
   const double e0 = r.pre.energy.total(), e1 = r.post.energy.total();
@@ -276,7 +281,11 @@ void add_bounce_analysis_equations(report::Section& s, const BounceAnalysis& r) 
   s.add_equation("e_v = −v_{y,after} / v_{y,before}", "seed 001, 實驗一 (恢復係數 e)");
   s.add_equation("e_h = sqrt(H'/H),   H = y_0 − v_y^2/(2 a_y) − y_{floor}", "seed 001, 實驗二 (三)",
                  r.floor_given ? "apex heights of the centre above the given floor"
-                               : "floor estimated from the lowest point h = y − Y(θ) of the flights; see docs/theory.md#bounce-analysis");
+                               : "floor from the lowest point h = y − Y(θ) of the flights; see docs/theory.md#bounce-analysis");
+  if (r.floor_method == "contact_duration") {
+    s.add_equation("h_{pre}(t_c) = y_{floor} = h_{post}(t_c + T),   h = y − Y(θ),   t_i − T ≤ t_c ≤ t_i",
+                   "docs/theory.md#bounce-analysis", "the floor from the flights: touch at t_c, separation T later");
+  }
   s.add_equation("Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ)", "seed 001, eq 20", "depth of the lowest point below the centre");
   s.add_equation("E = m v_x^2/2 + m v_y^2/2 + I ω^2/2", "seed 001, 討論", "kinetic energy, translational and rotational");
   if (r.mean_normal_force) {

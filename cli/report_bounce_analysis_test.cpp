@@ -83,7 +83,10 @@ TEST(BounceAnalyzeReport, WithoutContactDurationHasNoForce) {
       run_with_report("report_bounce_analyze_nf", "bounce analyze '" + kVideo + "' --track-a A --track-b B --time-scale 0.125");
   EXPECT_FALSE(j.contains("mean_normal_force"));
   EXPECT_EQ(html.find("mean normal force"), std::string::npos);
-  EXPECT_NE(html.find("floor estimated"), std::string::npos);  // e_height's caveat is shown
+  // Without --floor-y or --contact-duration the floor is only bracketed: no e_height, and why.
+  EXPECT_EQ(j["floor_method"], "bracket");
+  EXPECT_TRUE(j["e_height"].is_null());
+  EXPECT_NE(html.find("not reported: the floor estimated without --floor-y"), std::string::npos);
 }
 
 TEST(BounceAnalyzeReport, BadPathIsOneErrorLine) {
