@@ -5,6 +5,8 @@
 
 #include "app.hpp"
 #include "bounce_options.hpp"
+#include "report_bounce_analysis.hpp"
+#include "report_option.hpp"
 
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_fit.hpp"
@@ -92,6 +94,7 @@ void add_analyze(CLI::App* area) {
     std::string length_unit;
     BounceAnalyzeOptions o;
     std::optional<double> floor_y, contact_duration;
+    std::string report;
     bool json = false;
   };
   auto opts = std::make_shared<Opts>();
@@ -102,10 +105,11 @@ void add_analyze(CLI::App* area) {
   cmd->add_option("--time-scale", opts->time_scale, "real seconds per file second (240 fps shown at 30: 0.125; default 1)");
   cmd->add_option("--length-unit", opts->length_unit, "unit of the file's lengths, overriding the file (m, cm, mm, ...)");
   add_ball_options(cmd, opts->o.ball);
-  cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m (default: bracketed from the flights)");
-  cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s: enables mean_normal_force");
+  cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m (default: from the flights and --contact-duration; needed for e_height without it)");
+  cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s (to half a frame): enables mean_normal_force, and locates the floor when --floor-y is not given");
   cmd->add_option("--exclude", opts->o.exclude, "points always dropped on each side of the impact (default 0; contact frames are dropped automatically)");
   cmd->add_option("--impact", opts->o.impact, "which detected impact to analyse (default 1)");
+  add_report_option(*cmd, opts->report);
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     checked_ball(opts->o.ball);
@@ -133,6 +137,7 @@ void add_analyze(CLI::App* area) {
               {"floor_y", r.floor_y},
               {"floor_given", r.floor_given},
               {"floor_half_width", r.floor_half_width},
+              {"floor_method", r.floor_method},
               {"theta_impact_deg", r.theta_impact_deg},
               {"collision_angle_deg", r.collision_angle_deg},
               {"energy_pre", r.pre.energy.total()},
@@ -145,6 +150,11 @@ void add_analyze(CLI::App* area) {
       j["mean_normal_force"] = *r.mean_normal_force;
       j["sigma_mean_normal_force"] = *r.sigma_mean_normal_force;
     }
+    write_report_if_requested(opts->report, [&] {
+      return bounce_analyze_report("tribolab bounce analyze " + opts->file + " --track-a " + opts->a + " --track-b " +
+                                       opts->b + " --time-scale " + io::format_number(opts->time_scale),
+                                   o.ball, r);
+    });
     print_result(j, opts->json);
   });
 }
@@ -153,6 +163,7 @@ void add_fit(CLI::App* area) {
   struct Opts {
     std::string file, model = "hunt-crossley", friction = "coulomb", loss = "huber";
     std::vector<std::string> fix;
+    std::string report;
     bool restitution = false, json = false;
     BounceFitOptions o;
   };
@@ -172,6 +183,7 @@ void add_fit(CLI::App* area) {
   cmd->add_option("--D0", opts->o.D0, "starting D (default 5e4)");
   cmd->add_option("--e0", opts->o.e0, "starting e (default 0.8)");
   cmd->add_option("--mu0", opts->o.mu0, "starting mu (default 0.5)");
+  add_report_option(*cmd, opts->report);
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     BounceFitOptions o = opts->o;
@@ -217,6 +229,12 @@ void add_fit(CLI::App* area) {
       j["sigma_e"] = r.sigma_e;
     }
     if (opts->json) j["residuals"] = res;
+    write_report_if_requested(opts->report, [&] {
+      std::string command = "tribolab bounce fit " + opts->file + " --model " + opts->model + " --friction " + opts->friction;
+      if (o.restitution_model) command += " --restitution";
+      for (const auto& f : opts->fix) command += " --fix " + f;
+      return bounce_fit_report(command, rows, o, r);
+    });
     print_result(j, opts->json);
   });
 }

@@ -38,6 +38,26 @@ TEST(BounceAnalysisCli, SynthVideoThenAnalyzeRecoversTheTruth) {
   EXPECT_TRUE(f.contains("mean_normal_force"));
 }
 
+TEST(BounceAnalysisCli, ContactDurationLocatesTheFloorForEHeight) {
+  const auto dir = temp_dir("bounce_analyze_floor");
+  const std::string video = dir + "/video.txt";
+  const json truth = run_json("bounce synth-video --seed 11 --out '" + video + "'");
+  const std::string base = "bounce analyze '" + video + "' --track-a A --track-b B --time-scale 0.125";
+  // Neither --floor-y nor --contact-duration: the floor is only bracketed and e_height null.
+  const json none = run_json(base);
+  EXPECT_EQ(none["floor_method"], "bracket");
+  EXPECT_TRUE(none["e_height"].is_null());
+  // The contact duration to the nearest frame, as a team counts it (240 fps).
+  const double T = std::round((truth["t_separation"].get<double>() - truth["t_touch"].get<double>()) * 240) / 240;
+  const json r = run_json(base + " --contact-duration " + std::to_string(T));
+  EXPECT_EQ(r["floor_method"], "contact_duration");
+  // The floor (truth y = 0) to a few mm: half a frame of T (2 ms) at ~2 m/s (dfloor/dT).
+  EXPECT_NEAR(r["floor_y"].get<double>(), 0.0, 0.005);
+  // 4 standard uncertainties (deterministic seed; the error is at most 1.73 sd when the
+  // uniform error of T dominates).
+  EXPECT_NEAR(r["e_height"].get<double>(), truth["e_height"].get<double>(), 4 * r["sigma_e_height"].get<double>());
+}
+
 TEST(BounceAnalysisCli, SynthIsDeterministicBySeed) {
   const auto dir = temp_dir("bounce_synth_seed");
   run_json("bounce synth-table --rows 5 --seed 3 --out '" + dir + "/a.csv'");

@@ -4,8 +4,8 @@
 //   void add_incline_case_study(report::Report& r, std::ostream& log);
 //
 // in its own cli/demo_<name>.cpp and list it in demo_case_studies() (cli/demo_cmd.cpp). A case
-// study that analyses shipped files takes the data folder as a third argument and is listed
-// through a lambda capturing it (see "incline runs").
+// study that writes files (e.g. the shipped data it analyses) also takes the DemoContext and is
+// listed through a lambda that binds it.
 #pragma once
 
 #include "report/report.hpp"
@@ -23,9 +23,13 @@ struct CaseStudy {
   std::function<void(report::Report&, std::ostream& log)> build;
 };
 
-/// The case studies of `tribolab demo`, in report order. `data_dir` (= <--out>/data) is
-/// where case studies that analyse shipped files write them (write_demo_file).
-std::vector<CaseStudy> demo_case_studies(const std::string& data_dir);
+/// What a case study may need besides the report and the log.
+struct DemoContext {
+  std::string out;  ///< the demo's --out folder; shipped data files go to <out>/data/
+};
+
+/// The case studies of `tribolab demo`, in report order; those that write files get `context`.
+std::vector<CaseStudy> demo_case_studies(const DemoContext& context);
 
 /// An erratum found in a seed, with the independent check that shows it.
 struct Erratum {
@@ -46,6 +50,11 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
 
 /// Seed 001: geometry, table 4, figures 45-48, a drop, heat maps 53-56 (cli/demo_bounce.cpp).
 void add_bounce_case_study(report::Report& r, std::ostream& log);
+
+/// Seed 001 on shipped data: three filmed bounces analysed as `bounce analyze` does and a
+/// table fitted as `bounce fit` does, against the truth (cli/demo_bounce_runs.cpp); writes the
+/// files to <context.out>/data/bounce/.
+void add_bounce_runs_case_study(report::Report& r, std::ostream& log, const DemoContext& context);
 
 /// The errata of both seeds (cli/demo_errata.cpp).
 void add_errata_section(report::Report& r, std::ostream& log);

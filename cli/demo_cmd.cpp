@@ -39,7 +39,7 @@ void run_demo(const DemoOptions& opt) {
   r.subtitle = "Written by “tribolab demo” (tribolab " + std::string(report::tribolab_version()) +
                ") from data shipped with the project.";
   nlohmann::json studies = nlohmann::json::array();
-  for (const CaseStudy& c : demo_case_studies((std::filesystem::path(opt.out) / "data").string())) {
+  for (const CaseStudy& c : demo_case_studies(DemoContext{opt.out})) {
     log << "demo: " << c.name << '\n' << std::flush;
     c.build(r, log);
     studies.push_back(c.name);
@@ -55,13 +55,16 @@ void run_demo(const DemoOptions& opt) {
 
 }  // namespace
 
-std::vector<CaseStudy> demo_case_studies(const std::string& data_dir) {
+std::vector<CaseStudy> demo_case_studies(const DemoContext& context) {
   return {
       {"about", add_about_section},
       {"incline", add_incline_case_study},
-      {"incline runs",
-       [data_dir](report::Report& r, std::ostream& log) { add_incline_runs_case_study(r, log, data_dir); }},
+      {"incline-runs",
+       [context](report::Report& r, std::ostream& log) {
+         add_incline_runs_case_study(r, log, (std::filesystem::path(context.out) / "data").string());
+       }},
       {"bounce", add_bounce_case_study},
+      {"bounce-runs", [context](report::Report& r, std::ostream& log) { add_bounce_runs_case_study(r, log, context); }},
       {"errata", add_errata_section},
   };
 }

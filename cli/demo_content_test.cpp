@@ -1,8 +1,11 @@
 // In-process tests of the demo's content: the numbers the report shows are the library's
 // (table 1 from incline::seed000_case_study), and every erratum is on the errata page.
+#include "cli_test_util.hpp"
 #include "demo.hpp"
 
+#include "analysis/bounce_analyze.hpp"
 #include "incline/case_study.hpp"
+#include "io/track_import.hpp"
 #include "report/format.hpp"
 
 #include <gtest/gtest.h>
@@ -136,6 +139,57 @@ TEST(DemoContent, InclineRunsRecoverTheTruthTheirScriptUsed) {
   EXPECT_NE(find_table(r, "Slide: acceleration"), nullptr);
   EXPECT_NE(log.str().find("slide: mu = "), std::string::npos) << log.str();
   std::filesystem::remove_all(dir);
+}
+
+std::vector<const report::Table*> find_tables(const report::Report& r, const std::string& caption_start) {
+  std::vector<const report::Table*> found;
+  for (const auto& s : r.sections)
+    for (const auto& b : s.blocks)
+      if (const auto* t = std::get_if<report::Table>(&b); t && t->caption.rfind(caption_start, 0) == 0) found.push_back(t);
+  return found;
+}
+
+TEST(DemoContent, BounceRunsShowTheAnalysisOfTheShippedFilesAgainstTheTruth) {
+  report::Report r;
+  std::ostringstream log;
+  const std::string out = testing::temp_dir("demo_bounce_runs");
+  add_bounce_runs_case_study(r, log, DemoContext{out});
+  ASSERT_EQ(r.sections.size(), 4u);  // three videos and the table fit
+  EXPECT_EQ(r.figure_count(), 3 * 6 + 5);
+  const auto truth = find_tables(r, "Recovered vs the simulation's truth");
+  ASSERT_EQ(truth.size(), 3u);
+  // The first run is the seed's headline: e > 1 from velocities and from heights, and the
+  // recovered value's 95% interval holds the truth (rows 6 and 7 of the table).
+  const auto& higher = *truth[0];
+  ASSERT_EQ(higher.rows[6][0], "e from velocities");
+  ASSERT_EQ(higher.rows[7][0], "e from apex heights");
+  for (int row : {6, 7}) {
+    EXPECT_GT(std::stod(higher.rows[row][2]), 1.0) << higher.rows[row][0];
+    EXPECT_EQ(higher.rows[row][3], "yes") << higher.rows[row][0] << ": " << higher.rows[row][1] << " vs " << higher.rows[row][2];
+  }
+  // Over the 30 velocity/restitution/apex rows of the three runs, a 95% interval misses
+  // the truth about 1.5 times; more than 5 misses (P < 0.5% by the binomial law) would mean
+  // intervals that are too narrow. (The data are fixed, so this is a golden check.)
+  int misses = 0;
+  for (const auto* t : truth)
+    for (const auto& row : t->rows) misses += row[3] == "no" ? 1 : 0;
+  EXPECT_LE(misses, 5) << log.str();
+  // The numbers are those of analyze_bounce on the file the demo wrote (as the command would).
+  io::ImportOptions io;
+  io.time_scale = 0.125;
+  io.tracks = {"A", "B"};
+  const auto set = io::read_tracks(out + "/data/bounce/higher.txt", io);
+  analysis::BounceAnalyzeOptions o;
+  o.floor_y = 0.0;
+  const auto a = analysis::analyze_bounce(set.find("A"), set.find("B"), o);
+  EXPECT_EQ(higher.rows[6][1], report::format_uncertain(a.e_velocity, a.sigma_e_velocity));
+  EXPECT_EQ(higher.rows[0][1], report::format_uncertain(a.pre.vx, a.pre.sigma_vx));
+  // The table fit: the law that made the table is inside the 95% intervals of D/K and mu.
+  const auto fit = find_tables(r, "Fitted vs the law that made the table");
+  ASSERT_EQ(fit.size(), 1u);
+  ASSERT_EQ(fit[0]->rows.size(), 5u);
+  EXPECT_EQ(fit[0]->rows[3][3], "yes") << fit[0]->rows[3][1];  // mu
+  EXPECT_EQ(fit[0]->rows[4][3], "yes") << fit[0]->rows[4][1];  // D/K
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The "incline runs" case study of the demo (seed 000, issue 7 item 3): the synthetic tracked
+// The "incline-runs" case study of the demo (seed 000, issue 7 item 3): the synthetic tracked
 // runs shipped in data/demo/incline/ (made by its make.sh) are written to <out>/data/incline/
 // and analysed by the same library calls as `incline analyze`, `normal-friction-test` and
 // `mu-from-slide`, each shown with the command that repeats it from the demo folder and the

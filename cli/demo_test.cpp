@@ -36,6 +36,11 @@ TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
                               "Bounce: table 4", "Errata found in the seeds"})
     EXPECT_NE(html.find(heading), std::string::npos) << heading;
   EXPECT_NE(r.out.find("table 1:"), std::string::npos) << r.out;  // the summary on stdout
+  // The shipped bounce data is written next to the report, for the commands the report shows.
+  for (const char* f : {"higher.txt", "ordinary.txt", "backspin.txt", "table.csv"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/data/bounce/" + f)) << f;
+  EXPECT_NE(html.find("tribolab bounce analyze data/bounce/higher.txt --track-a A --track-b B --time-scale 0.125"),
+            std::string::npos);
 }
 
 TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
@@ -45,12 +50,13 @@ TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
   ASSERT_EQ(count_lines(r.out), 1) << r.out;  // one JSON object, no progress lines
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["report"], dir + "/report.html");
-  EXPECT_EQ(j["case_studies"], nlohmann::json::parse(R"(["about", "incline", "incline runs", "bounce", "errata"])"));
+  EXPECT_EQ(j["case_studies"],
+            nlohmann::json::parse(R"(["about", "incline", "incline-runs", "bounce", "bounce-runs", "errata"])"));
   // about 0, incline 7 x 5 (二, 四, 五, 六, 七) + 4 (八), bounce 1 + 4 + 1 + 1 + 5 (maps 53-55).
-  // incline runs: 2 full analyses x (7 kinematics + 2 residuals + a_N + theta_c), the
-  // normal-friction test 1, the slide 3.
-  EXPECT_EQ(j["figures"], 51 + 2 * 11 + 1 + 3);
-  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 5 + 1);
+  // incline-runs: 2 full analyses x (7 kinematics + 2 residuals + a_N + theta_c), the
+  // normal-friction test 1, the slide 3. bounce-runs: 3 x 6 (videos) + 5 (table fit).
+  EXPECT_EQ(j["figures"], 51 + 2 * 11 + 1 + 3 + 3 * 6 + 5);
+  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 5 + 4 + 1);
   const std::string html = slurp(dir + "/report.html");
   EXPECT_EQ(j["figures"].get<std::size_t>(), count(html, "class=\"tribolab-plot\""));
   EXPECT_EQ(j["sections"].get<std::size_t>(), count(html, "<section id="));

@@ -1,5 +1,5 @@
 // Report pages of the tracked-run analyses of seed 000 (`incline analyze`, `mu-from-slide`,
-// `normal-friction-test`, `mu-from-stop`) and the building blocks the demo's "incline runs"
+// `normal-friction-test`, `mu-from-stop`) and the building blocks the demo's "incline-runs"
 // case study shares with them. Every number shown is the analysis result's own (the same
 // values the command prints as JSON), formatted with report::format_uncertain.
 #pragma once

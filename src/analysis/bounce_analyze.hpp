@@ -26,7 +26,7 @@ struct BounceAnalyzeOptions {
   /// Points always dropped on each side of the impact split, e.g. 0; frames in contact are
   /// also dropped automatically (see trim in docs/theory.md#bounce-analysis).
   int exclude = 0;
-  std::optional<double> floor_y;        ///< floor height, m; default: from the impact (see theory)
+  std::optional<double> floor_y;        ///< floor height, m; default: from the flights (see theory)
   std::optional<double> contact_duration;  ///< s; enables the mean normal force, e.g. 0.004
   int impact = 1;                       ///< which detected impact to analyse (1 = first)
   track::ImpactOptions impacts;         ///< impact detection on the centre track
@@ -63,10 +63,14 @@ struct BounceAnalysis {
   double impact_time = 0;            ///< s: where the two fitted y parabolas meet
   SegmentFit pre, post;
   double e_velocity = 0, sigma_e_velocity = 0;  ///< -vy_post / vy_pre at impact_time
-  double e_height = 0, sigma_e_height = 0;      ///< sqrt(H'/H)
+  double e_height = 0, sigma_e_height = 0;      ///< sqrt(H'/H); NaN when floor_method is "bracket"
   double floor_y = 0;                ///< m (given, or y_centre(impact) - Y(theta_impact))
   bool floor_given = false;
-  double floor_half_width = 0;       ///< m: half-width of the floor's bracket (0 when given)
+  double floor_half_width = 0;       ///< m: half-width of the floor's bracket (0 unless "bracket")
+  /// How the floor was found: "given" (floor_y option), "contact_duration" (both flights meet
+  /// the floor contact_duration apart; recommended without floor_y) or "bracket" (neither
+  /// given: unreliable at high frame rates, see docs/theory.md#bounce-analysis).
+  std::string floor_method = "given";
   double theta_impact_deg = 0;       ///< pre-impact spin fit at impact_time, wrapped to (-180, 180]
   double collision_angle_deg = 0;    ///< bounce::collision_angle_deg at the impact
   std::optional<double> mean_normal_force, sigma_mean_normal_force;  ///< N

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <iostream>
 
 namespace tribolab::analysis {
@@ -58,11 +60,13 @@ TEST(BounceAnalyze, ExactDataRecoversTheFlights) {
 // accept within 3 sd (for n = 200: 190 +- 9.2, i.e. 181..199).
 struct Coverage {
   int n = 0;
-  int vx_pre = 0, vx_post = 0, vy_pre = 0, vy_post = 0, om_pre = 0, om_post = 0, e = 0, eh = 0, floor_bracket = 0, eh_default = 0;
+  int vx_pre = 0, vx_post = 0, vy_pre = 0, vy_post = 0, om_pre = 0, om_post = 0, e = 0, eh = 0, floor_bracket = 0, eh_default = 0, eh_duration = 0;
+  double eh_duration_abs_z = 0;  ///< sum of |error| / sigma of e_height with the floor from T
 };
 
 Coverage run_coverage(double fps, int runs) {
   Coverage c;
+  std::mt19937_64 rng(42);
   for (int s = 0; s < runs; ++s) {
     SynthVideoOptions o;
     o.fps = fps;
@@ -74,6 +78,15 @@ Coverage run_coverage(double fps, int runs) {
     with_floor.floor_y = 0;  // the seed's procedure: y = 0 set on the floor in Tracker
     const auto rf = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), with_floor);
     const auto& tr = v.truth;
+    // Without the floor but with a contact duration known to within half a frame, as
+    // analyze_bounce assumes (uniform error, sd dt / sqrt 12): the truth plus a uniform error
+    // in +-dt/2. (Rounding the truth to whole frames would give nearly the same error in every
+    // run here, the synthetic contacts all lasting ~20 ms, which a coverage count cannot test.)
+    std::uniform_real_distribution<double> half_frame(-0.5 / fps, 0.5 / fps);
+    BounceAnalyzeOptions with_duration;
+    with_duration.contact_duration = tr.t_separation - tr.t_touch + half_frame(rng);
+    const auto rd = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), with_duration);
+    EXPECT_EQ(rd.floor_method, "contact_duration");
     auto in = [&](double est, double sigma, double truth, int dof) {
       return std::abs(est - truth) <= sigma * (dof > 60 ? 1.96 : 2.0);
     };
@@ -88,12 +101,14 @@ Coverage run_coverage(double fps, int runs) {
     c.e += in(r.e_velocity, r.sigma_e_velocity, -vyq / vyp, r.pre.n_points);
     c.eh += in(rf.e_height, rf.sigma_e_height, std::sqrt(tr.post_apex / tr.release_apex), r.post.n_points);
     c.floor_bracket += std::abs(r.floor_y - tr.floor_y) <= r.floor_half_width;
+    c.eh_duration_abs_z += std::abs(rd.e_height - std::sqrt(tr.post_apex / tr.release_apex)) / rd.sigma_e_height;
+    c.eh_duration += in(rd.e_height, rd.sigma_e_height, std::sqrt(tr.post_apex / tr.release_apex), r.post.n_points);
     c.eh_default += in(r.e_height, r.sigma_e_height, std::sqrt(tr.post_apex / tr.release_apex), r.post.n_points);
   }
   std::cout << "coverage at " << fps << " fps over " << c.n << " runs: vx " << c.vx_pre << "/" << c.vx_post
             << " vy " << c.vy_pre << "/" << c.vy_post << " omega " << c.om_pre << "/" << c.om_post
-            << " e " << c.e << " e_height " << c.eh << " (floor estimated: " << c.eh_default << ", floor in bracket "
-            << c.floor_bracket << ")\n";
+            << " e " << c.e << " e_height " << c.eh << " (floor from the contact duration: " << c.eh_duration
+            << ", mean |z| " << c.eh_duration_abs_z / c.n << "; floor bracketed: " << c.eh_default << ", floor in bracket " << c.floor_bracket << ")\n";
   return c;
 }
 
@@ -103,12 +118,25 @@ void expect_binomial(int covered, int n, const char* what) {
   EXPECT_LE(covered, std::min<double>(n, mean + 3 * sd)) << what;
 }
 
+/// e_height with the floor from the contact duration. Its error is mostly the floor's, which
+/// is uniform (T known to +-dt/2): a uniform error of sd sigma never exceeds sqrt(3) sigma =
+/// 1.73 sigma, so the 95% interval covers it in (nearly) every run; only the lower binomial
+/// bound applies. That the intervals are not needlessly wide is checked by the mean |z|
+/// (0.87 for a uniform error, 0.80 for a normal one; well-sized intervals lie near these).
+void expect_floor_from_duration(const Coverage& c) {
+  EXPECT_GE(c.eh_duration, 0.95 * c.n - 3 * std::sqrt(c.n * 0.95 * 0.05));
+  const double mean_abs_z = c.eh_duration_abs_z / c.n;
+  EXPECT_GT(mean_abs_z, 0.5) << "intervals wider than the errors warrant";
+  EXPECT_LT(mean_abs_z, 1.2) << "intervals narrower than the errors";
+}
+
 TEST(BounceAnalyze, IntervalsCoverTheTruthAt240Fps) {
   const auto c = run_coverage(240, 200);
   for (auto [k, name] : {std::pair{c.vx_pre, "vx pre"}, {c.vx_post, "vx post"}, {c.vy_pre, "vy pre"},
                          {c.vy_post, "vy post"}, {c.om_pre, "omega pre"}, {c.om_post, "omega post"},
                          {c.e, "e_velocity"}, {c.eh, "e_height"}})
     expect_binomial(k, c.n, name);
+  expect_floor_from_duration(c);
 }
 
 TEST(BounceAnalyze, IntervalsCoverTheTruthAt80Fps) {
@@ -117,6 +145,7 @@ TEST(BounceAnalyze, IntervalsCoverTheTruthAt80Fps) {
                          {c.vy_post, "vy post"}, {c.om_pre, "omega pre"}, {c.om_post, "omega post"},
                          {c.e, "e_velocity"}, {c.eh, "e_height"}})
     expect_binomial(k, c.n, name);
+  expect_floor_from_duration(c);
 }
 
 }  // namespace

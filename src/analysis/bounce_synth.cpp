@@ -63,7 +63,8 @@ SynthVideo synth_video(const SynthVideoOptions& o) {
   tr.touch = first.state;
   tr.t_separation = first.t_contact + c.contact_duration;
   tr.separation = c.out;
-  tr.separation.x += first.state.x;  // the contact's x starts from the touch's x
+  // simulate_contact starts from the touch state itself, so out.x and the history's x are
+  // already positions in the video's frame.
   tr.floor_y = 0;
   tr.release_apex = o.vy > 0 ? o.height + o.vy * o.vy / (2 * g) : o.height;
   tr.post_apex = tr.separation.y + std::max(0.0, tr.separation.vy) * std::max(0.0, tr.separation.vy) / (2 * g);
@@ -94,7 +95,6 @@ SynthVideo synth_video(const SynthVideoOptions& o) {
       const double tc = t - tr.t_touch;
       while (h + 1 < history.size() && history[h + 1].t <= tc) ++h;
       s = history[h].state;
-      s.x += first.state.x;
     }
     const double ca = o.ball.a * std::cos(s.theta), sa = o.ball.a * std::sin(s.theta);
     // A is the tip at -a along the major axis, B at +a, so theta = atan2(B - A).
