@@ -89,4 +89,19 @@ inline void expect_error(const std::string& args, const std::string& must_mentio
   expect_error(run_tribolab(args), must_mention, args);
 }
 
+/// `<command> --report BAD` for the bad report paths (wrong suffix, missing folder, a folder):
+/// each fails as expect_error says, naming --report, and leaves no file; when `out_file` is
+/// given, the command's other output must not appear either.
+inline void expect_bad_report_paths(const std::string& command, const std::string& out_file = "") {
+  const std::string dir = temp_dir("report_bad");
+  for (const std::string& bad : {dir + "/r.txt", dir + "/missing/r.html", dir}) {
+    expect_error(run_tribolab(command + " --report '" + bad + "'"), "--report", command + " --report " + bad);
+    if (!out_file.empty()) {
+      EXPECT_FALSE(std::filesystem::exists(out_file)) << command;
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/r.txt")) << command;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/missing")) << command;
+}
+
 }  // namespace tribolab::cli::testing

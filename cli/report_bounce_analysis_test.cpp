@@ -45,19 +45,6 @@ std::pair<json, std::string> run_with_report(const std::string& name, const std:
   return {json::parse(r.out), html};
 }
 
-void expect_bad_report(const std::string& command) {
-  const std::string dir = temp_dir("report_bounce_bad");
-  for (const std::string& bad : {dir + "/r.txt", dir + "/missing/r.html", dir}) {
-    const auto r = run_tribolab(command + " --report '" + bad + "'");
-    EXPECT_NE(r.exit_code, 0) << bad;
-    EXPECT_EQ(count_lines(r.err), 1) << r.err;
-    EXPECT_NE(r.err.find("--report"), std::string::npos) << r.err;
-    EXPECT_TRUE(r.out.empty()) << r.out;
-  }
-  EXPECT_FALSE(fs::exists(dir + "/r.txt"));
-  EXPECT_FALSE(fs::exists(dir + "/missing"));
-}
-
 TEST(BounceAnalyzeReport, ShowsTheNumbersOfTheJson) {
   const auto [j, html] = run_with_report(
       "report_bounce_analyze",
@@ -90,7 +77,7 @@ TEST(BounceAnalyzeReport, WithoutContactDurationHasNoForce) {
 }
 
 TEST(BounceAnalyzeReport, BadPathIsOneErrorLine) {
-  expect_bad_report("bounce analyze '" + kVideo + "' --track-a A --track-b B --time-scale 0.125");
+  expect_bad_report_paths("bounce analyze '" + kVideo + "' --track-a A --track-b B --time-scale 0.125");
 }
 
 TEST(BounceFitReport, ShowsTheNumbersOfTheJson) {
@@ -109,7 +96,7 @@ TEST(BounceFitReport, ShowsTheNumbersOfTheJson) {
   EXPECT_NE(html.find("Hunt &amp; Crossley"), std::string::npos);  // the contact law's equation
 }
 
-TEST(BounceFitReport, BadPathIsOneErrorLine) { expect_bad_report("bounce fit '" + kTable + "'"); }
+TEST(BounceFitReport, BadPathIsOneErrorLine) { expect_bad_report_paths("bounce fit '" + kTable + "'"); }
 
 }  // namespace
 }  // namespace tribolab::cli::testing

@@ -39,22 +39,6 @@ std::string expect_report(const std::string& name, const std::string& command, s
   return html;
 }
 
-/// A bad --report: one error line naming --report, nothing on stdout, no output file.
-void expect_bad_report(const std::string& command, const std::string& out_file) {
-  const std::string dir = temp_dir("report_bad");
-  for (const std::string& bad : {dir + "/r.txt", dir + "/missing/r.html", dir}) {
-    const auto r = run_tribolab(command + " --report '" + bad + "'");
-    EXPECT_NE(r.exit_code, 0) << command << " --report " << bad;
-    EXPECT_EQ(count_lines(r.err), 1) << r.err;
-    EXPECT_NE(r.err.find("--report"), std::string::npos) << r.err;
-    EXPECT_TRUE(r.out.empty()) << r.out;
-    if (!out_file.empty()) {
-      EXPECT_FALSE(fs::exists(out_file)) << command;
-    }
-  }
-  EXPECT_FALSE(fs::exists(dir + "/missing"));
-}
-
 TEST(ReportCmd, InclineSimulateModelBOverlaysClosedFormAndNumeric) {
   const std::string out = temp_dir("report_sim") + "/t.csv";
   const std::string html =
@@ -136,17 +120,17 @@ TEST(ReportCmd, TrackKinematicsWithErrorBarsAndImpacts) {
 
 TEST(ReportCmd, BadReportPathIsOneErrorLineAndNoOutput) {
   const std::string dir = temp_dir("report_bad_out");
-  expect_bad_report("incline simulate --mu 0.6 --phi-deg 20 --v0 2 --out '" + dir + "/s.csv'", dir + "/s.csv");
-  expect_bad_report("incline families --mu 0.6 --phi-deg 20 --vary v0 --values 1,2 --out '" + dir + "/f.csv'",
+  expect_bad_report_paths("incline simulate --mu 0.6 --phi-deg 20 --v0 2 --out '" + dir + "/s.csv'", dir + "/s.csv");
+  expect_bad_report_paths("incline families --mu 0.6 --phi-deg 20 --vary v0 --values 1,2 --out '" + dir + "/f.csv'",
                     dir + "/f.csv");
-  expect_bad_report("incline predict --mu 0.6 --phi-deg 20 --v0 2", "");
-  expect_bad_report("bounce simulate --vy -4", "");
-  expect_bad_report("bounce drop --height 0.8", "");
-  expect_bad_report("bounce contact-time --height 0.8", "");
-  expect_bad_report("bounce sweep --theta-deg 100:170:3 --omega 30:50:2 --out '" + dir + "/w.csv'", dir + "/w.csv");
-  expect_bad_report("bounce merge '" + dir + "/p0.csv' --out '" + dir + "/all.csv'", dir + "/all.csv");
+  expect_bad_report_paths("incline predict --mu 0.6 --phi-deg 20 --v0 2", "");
+  expect_bad_report_paths("bounce simulate --vy -4", "");
+  expect_bad_report_paths("bounce drop --height 0.8", "");
+  expect_bad_report_paths("bounce contact-time --height 0.8", "");
+  expect_bad_report_paths("bounce sweep --theta-deg 100:170:3 --omega 30:50:2 --out '" + dir + "/w.csv'", dir + "/w.csv");
+  expect_bad_report_paths("bounce merge '" + dir + "/p0.csv' --out '" + dir + "/all.csv'", dir + "/all.csv");
   const std::string in = bouncing_table(dir);
-  expect_bad_report("track kinematics '" + in + "' --out '" + dir + "/k.csv'", dir + "/k.csv");
+  expect_bad_report_paths("track kinematics '" + in + "' --out '" + dir + "/k.csv'", dir + "/k.csv");
 }
 
 }  // namespace
