@@ -135,11 +135,13 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   };
   BounceFitResult out;
   out.fit = numerics::fit_least_squares(residuals, 3 * N, params, fo);
-  // A second start from the data: the median restitution -vy_out/vy_in and the Hunt–Crossley
-  // relation e(chi v_in) give the damping (or e) that matches the typical rebound, which
-  // avoids the local minima a poor damping start falls into (friction branches). The start
-  // with the lower cost wins.
-  if (!params[2].fixed && o.model != bounce::NormalModel::hooke) {
+  // A second start from the data: the median restitution -vy_out/vy_in and the central-impact
+  // relation of the law — Hunt–Crossley e(chi v_in), or for Hooke's linear spring-dashpot
+  // e(zeta) with zeta = D / (2 sqrt(K m)) — give the damping (or e) that matches the typical
+  // rebound. This avoids the local minima a poor damping start falls into (friction
+  // branches), and for Hooke a default D0 that overdamps the contact so that no bounce ends.
+  // The start with the lower cost wins.
+  if (!params[2].fixed) {
     std::vector<double> e_rows, v_rows;
     for (const auto& r : rows) {
       e_rows.push_back(-r.vy_out / r.vy_in);
@@ -153,6 +155,14 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
     auto second = params;
     if (o.restitution_model) {
       second[2].initial = e_med;
+    } else if (hooke) {
+      double zeta = 0.9;  // heavily damped but still separating when e_med is out of reach
+      try {
+        zeta = bounce::hooke_damping_ratio(e_med);
+      } catch (const InputError&) {
+      }
+      const double D = 2 * zeta * std::sqrt(std::exp(params[0].initial) * o.ball.mass);
+      second[2].initial = std::clamp(std::log(D), std::log(1e-6), std::log(1e10));
     } else {
       const double chi = bounce::hunt_crossley_chi_v(e_med) / median(v_rows);
       second[2].initial = std::clamp(std::log(chi * std::exp(params[0].initial)), std::log(1e-6), std::log(1e10));

@@ -69,6 +69,29 @@ TEST(BounceFit, AllFourParametersWithinTheirIntervals) {
   EXPECT_NEAR(r.D / r.K, 60423.0 / 101054, 0.01 * 60423.0 / 101054);
 }
 
+// Hooke's linear spring-dashpot: the default start (K0 = 1e5 N/m, D0 = 5e4 N s/m) is ~100
+// times critical damping, so no bounce ends there; the start from the median restitution
+// (zeta from e(zeta)) must still reach the law that made the table. Noise-free rows: the
+// fitted D and mu equal the truth to the integrator's accuracy (1e-4 relative is loose
+// against ~1e-9 m/s outputs, strict against any other local minimum).
+TEST(BounceFit, HookeFitsFromTheDefaultStart) {
+  SynthTableOptions t;
+  t.rows = 15;
+  t.noise_v = t.noise_omega = 0;
+  t.law.model = bounce::NormalModel::hooke;
+  t.law.K = 2e5;
+  t.law.D = 120;  // zeta = 120 / (2 sqrt(2e5 * 0.435)) = 0.20
+  const auto rows = synth_table(t);
+  BounceFitOptions o;
+  o.model = bounce::NormalModel::hooke;
+  o.fixed = {{"K", 2e5}};
+  o.tolerance = 1e-11;
+  const auto r = fit_bounces(rows, o);
+  EXPECT_NEAR(r.D, 120, 120 * 1e-4);
+  EXPECT_NEAR(r.mu, 0.5, 1e-4);
+  EXPECT_DOUBLE_EQ(r.n, 1.0);
+}
+
 TEST(BounceFit, RejectsWhatTheDataCannotSupport) {
   SynthTableOptions t;
   t.rows = 1;
