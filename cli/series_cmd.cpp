@@ -29,7 +29,7 @@ std::vector<std::string> per_file_values(const std::string& text, std::size_t n_
   if (values.size() == 1) return std::vector<std::string>(n_files, values.front());
   if (values.size() != n_files)
     throw InputError(option, "gives " + std::to_string(values.size()) + " values for " + std::to_string(n_files) +
-                                 " files (give one value for all, or one per file)");
+                                 (n_files == 1 ? " file" : " files") + " (give one value for all, or one per file)");
   return values;
 }
 

@@ -219,7 +219,9 @@ InclineSeriesSummary summarize_incline_series(const std::vector<InclineRunPoint>
       tc_angles.insert(p.phi);
     }
   }
-  if (angles.size() < 2) {
+  if (runs.empty()) {
+    r.theta_c_note = "no runs were analysed";
+  } else if (angles.size() < 2) {
     r.theta_c_note = "the runs share one angle; the cos(theta_c)-tan(phi) test (eq c') needs runs at several angles";
   } else if (tc.size() < 3 || tc_angles.size() < 2) {
     r.theta_c_note = std::to_string(tc.size()) + " run(s) at " + std::to_string(tc_angles.size()) +

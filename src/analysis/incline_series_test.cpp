@@ -248,7 +248,8 @@ TEST(SlideSeries, WeightedMuSkipsRunsWithoutAnAngle) {
 TEST(InclineSeries, NoRunsGiveNotesNotExceptions) {
   const InclineSeriesSummary s = summarize_incline_series({});
   EXPECT_FALSE(s.mu);
-  EXPECT_FALSE(s.scaling_note.empty());
+  EXPECT_EQ(s.scaling_note, "no runs were analysed");
+  EXPECT_EQ(s.theta_c_note, "no runs were analysed");
   EXPECT_FALSE(s.normal_friction);
 }
 
