@@ -114,10 +114,10 @@ std::string relation_title(analysis::StopRelation r) {
 
 std::pair<std::string, std::string> relation_axes(analysis::StopRelation r) {
   switch (r) {
-    case analysis::StopRelation::t_vs_v0: return {"v_0 (m/s)", "t_stop (s)"};
-    case analysis::StopRelation::x_vs_v0sq: return {"v_0^2 (m^2/s^2)", "x_stop (m)"};
-    case analysis::StopRelation::y_vs_v0sq: return {"v_0^2 (m^2/s^2)", "y_stop (m)"};
-    case analysis::StopRelation::y_vs_x: return {"x_stop (m)", "y_stop (m)"};
+    case analysis::StopRelation::t_vs_v0: return {"v_0 (m/s)", "t_{stop} (s)"};
+    case analysis::StopRelation::x_vs_v0sq: return {"v_0^2 (m^2/s^2)", "x_{stop} (m)"};
+    case analysis::StopRelation::y_vs_v0sq: return {"v_0^2 (m^2/s^2)", "y_{stop} (m)"};
+    case analysis::StopRelation::y_vs_x: return {"x_{stop} (m)", "y_{stop} (m)"};
   }
   return {};
 }
@@ -141,9 +141,9 @@ int add_scaling(report::Section& s, const std::string& title, const analysis::In
                       interval(sc.fit.ci_low, sc.fit.ci_high), opt_value(sc.mu),
                       "[" + opt_value(sc.mu_ci_low) + ", " + opt_value(sc.mu_ci_high) + "]", opt_value(sc.slope_model)});
   s.add_table(std::move(t));
-  s.add_equation("t_stop/v_0 = μ cos φ / (g(μ^2 cos^2 φ − sin^2 φ)),  x_stop/v_0^2 = 2μ cos φ / (g(4μ^2 cos^2 φ − sin^2 φ))",
+  s.add_equation("t_{stop}/v_0 = μ cos φ / (g(μ^2 cos^2 φ − sin^2 φ)),  x_{stop}/v_0^2 = 2μ cos φ / (g(4μ^2 cos^2 φ − sin^2 φ))",
                  "seed 000, eqs 七, 八");
-  s.add_equation("y_stop/v_0^2 = −sin φ / (4g(μ^2 cos^2 φ − sin^2 φ)),  y_stop/x_stop = −k(4 − k^2)/(8(1 − k^2)), k = tan φ/μ",
+  s.add_equation("y_{stop}/v_0^2 = −sin φ / (4g(μ^2 cos^2 φ − sin^2 φ)),  y_{stop}/x_{stop} = −k(4 − k^2)/(8(1 − k^2)), k = tan φ/μ",
                  "seed 000, eqs 九, 十");
   int n = 0;
   for (const auto& sc : sum.scaling) {
@@ -204,8 +204,8 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
   else st.rows.push_back({"weighted μ (inverse-variance)", "— (no run analysed)"});
   st.rows.push_back({"outliers (|pull| > 3)", sum.outliers.empty() ? "none" : std::to_string(sum.outliers.size())});
   s.add_table(std::move(st));
-  s.add_equation("μ̄ = Σ w_i μ_i / Σ w_i,  w_i = 1/σ_i^2,  σ_μ̄ = 1/√(Σ w_i),  χ^2 = Σ w_i (μ_i − μ̄)^2 (n − 1 dof)",
-                 "docs/theory.md#series-of-runs", "pull_i = (μ_i − μ̄)/√(σ_i^2 − σ_μ̄^2)");
+  s.add_equation("μ̄ = Σ w_i μ_i / Σ w_i,  w_i = 1/σ_i^2,  σ_{μ̄} = 1/√(Σ w_i),  χ^2 = Σ w_i (μ_i − μ̄)^2 (n − 1 dof)",
+                 "docs/theory.md#series-of-runs", "pull of run i: (μ_i − μ̄)/√(σ_i² − σ² of the mean)");
   if (!sum.outliers.empty()) {
     std::vector<std::string> items;
     for (const auto& o : sum.outliers) items.push_back(o);
@@ -216,7 +216,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
   // The table of runs, each linking to its own report.
   Table t;
   t.caption = title + ": runs";
-  t.header = {"run", "φ (deg)", "μ", "pull", "v_0 (m/s)", "t_stop (s)", "x_stop (m)", "y_stop (m)", "f_N/m (m/s^2)",
+  t.header = {"run", "φ (deg)", "μ", "pull", "v_0 (m/s)", "t_{stop} (s)", "x_{stop} (m)", "y_{stop} (m)", "f_N/m (m/s^2)",
               "verdict", "note"};
   std::vector<double> mu, smu, fn, sfn;
   std::vector<bool> outlier;
