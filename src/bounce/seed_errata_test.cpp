@@ -79,6 +79,7 @@ void expect_single_contact(const ContactResult& r) {
   ASSERT_GT(r.out.vy, 0);
   const double t0 = 1e-4;  // leave the floor first (gap grows like -d_dot t, d_dot < 0)
   const FlightResult next = first_contact(ball, free_flight(r.out, 9.8, t0));
+  ASSERT_EQ(next.status, FlightStatus::contact) << next.message;
   EXPECT_GT(t0 + next.t_contact, r.out.vy / 9.8) << "a second contact before the apex";
 }
 
@@ -118,6 +119,8 @@ TEST(SeedMapErrata, SeedLawStaysFarBelowOneOnTheMap) {
   const MapMax m = grid_max(kDSeed, -1);
   EXPECT_NEAR(m.e, 0.5156243749, 1e-8);  // `bounce sweep ... --tol 1e-10`, both grids
   EXPECT_LT(m.e, 0.6);
+  // That cell is one contact too, so the whole impact gives the same largest e.
+  expect_single_contact(cell(kDSeed, m.chi_deg, m.omega));
 }
 
 TEST(SeedMapErrata, ElasticContactReachesAtMostE1378) {
@@ -146,6 +149,7 @@ TEST(SeedMapErrata, ElasticContactReachesAtMostE1378) {
   const MapMax ccw = grid_max(0, +1);
   EXPECT_NEAR(ccw.e, 1.3095906138, 1e-8);
   EXPECT_DOUBLE_EQ(ccw.chi_deg, 100);
+  expect_single_contact(cell(0, ccw.chi_deg, ccw.omega));
 }
 
 TEST(SeedMapErrata, EAboveOneNeedsDampingBelow11749) {
