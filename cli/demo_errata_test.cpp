@@ -5,6 +5,7 @@
 #include "bounce/normal_law.hpp"
 #include "cli_test_util.hpp"
 #include "demo.hpp"
+#include "incline/case_study.hpp"
 #include "report/format.hpp"
 #include "report/html.hpp"
 #include "report/report.hpp"
@@ -98,6 +99,20 @@ TEST(DemoErrata, DampingThresholdBracketsTheMapsLastEAboveOne) {
   EXPECT_TRUE(mentions(theory_errata(), "11749"));
   EXPECT_GT(map_max("--D " + std::to_string(0.99 * D_star)), 1);
   EXPECT_LT(map_max("--D " + std::to_string(1.01 * D_star)), 1);
+}
+
+TEST(DemoErrata, MuAtMostTanPhiIsCitedWhereTheSeedPrintsIt) {
+  // Seed 000 prints "mu <= 0.383" in 伍-三-(三)-4 (3), the v_y cases of 圖七-3; 圖七-4Y's case (3)
+  // (item 6) reads "mu < 0.383". We used to cite 圖七-4 (3). That mu = 0.383 = tan(20.96 deg)
+  // belongs to case (2) (terminal speed, no stop) is computed in
+  // SeedIncline.EqualityMuEqualsTanPhiNeverStops.
+  int cited = 0;
+  for (const std::string& e : incline::seed000_case_study().errata) {
+    EXPECT_EQ(e.find("圖七-4 (3) should"), std::string::npos) << e;
+    if (e.find("伍-三-(三)-4 (3)") != std::string::npos && e.find("圖七-3") != std::string::npos) ++cited;
+  }
+  EXPECT_EQ(cited, 1);
+  EXPECT_NE(theory_errata().find("**伍-三-(三)-4 (3)**, on the v_y of\n  圖七-3"), std::string::npos);
 }
 
 /// `text` cites our internal spec: "SPEC" as a word followed by a space, '§' or "'s" (the

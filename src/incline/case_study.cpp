@@ -138,7 +138,7 @@ CaseStudy seed000_case_study() {
       "mu <= 0.383 where mu < 0.383 is meant (mu = 0.383 is its case (2)); 圖七-4Y's case (3) rightly reads mu < 0.383.",
       "seed 000 at the equality mu = tan(phi) (k = 1): 伍-三-(三)-2 says y comes to rest for mu >= 0.383, but at "
       "mu = 0.383 v_y = (v_x0/2)(u^2 - 1) tends to -v_x0/2 and y falls for ever (the stop needs mu > tan(phi), as "
-      "陸-一 derives); and v_y has no extremum there (圖六-3 (2), 圖七-3 (2)): a_y = -2 alpha u^2/(1 + u^2) < 0 "
+      "陸-一 derives); and v_y has no extremum there (伍-三-(二)-3 (2), 伍-三-(三)-4 (2)): a_y = -2 alpha u^2/(1 + u^2) < 0 "
       "throughout (test SeedIncline.EqualityMuEqualsTanPhiNeverStops).",
       "seed 000 圖六-1 and 圖七-1: x does not always tend to a constant 'stopping position'. x has a finite limit "
       "only for k = tan(phi)/mu < 2 (2 v_x0^2/(alpha (4 - k^2)), eq 八 as t -> infinity), and it is a stop only for "
