@@ -170,7 +170,12 @@ void add_analyze(CLI::App* area) {
               {"n_impacts", r.impacts.impacts.size()},
               {"noise", r.impacts.noise_y},
               {"tip_distance_mean", r.body.length_mean},
-              {"tip_distance_sd", r.body.length_sd}};
+              {"tip_distance_sd", r.body.length_sd},
+              {"gravity", r.gravity},
+              {"sigma_gravity", num(r.sigma_gravity)},
+              {"gravity_tilt_deg", r.gravity_tilt_deg},
+              {"sigma_gravity_tilt_deg", num(r.sigma_gravity_tilt_deg)},
+              {"warnings", r.warnings}};
     if (r.mean_normal_force) {
       j["mean_normal_force"] = num(*r.mean_normal_force);
       j["sigma_mean_normal_force"] = num(*r.sigma_mean_normal_force);

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace tribolab::analysis {
@@ -200,7 +201,9 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
   // the flights just where the touch and the separation are read. Once located, every kept
   // frame after the touch (pre) or before the separation (post) is in contact by definition:
   // drop them and fit again, until none is left (docs/theory.md#bounce-analysis).
+  const int pre_trimmed = r.pre.n_points, post_trimmed = r.post.n_points;
   for (int pass = 0;; ++pass) {
+    r.warnings.clear();
     // First pass about the detector's time, then the exact meeting point of the parabolas.
     fit_segment(rows, r.pre, imp.t, "pre-impact");
     fit_segment(rows, r.post, imp.t, "post-impact");
@@ -377,6 +380,17 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
     r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
     r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
     if (!dropped || pass == 5) break;
+  }
+  // A few contact frames pass the trim test (measured: at most 1 before and 3 after at 240
+  // fps); many more mean the floor (or T) puts the ball on the floor while the flights show
+  // free flight: a wrong --floor-y (e.g. in other units or another origin).
+  for (auto [trimmed, now, which] : {std::tuple{pre_trimmed, r.pre.n_points, "pre"}, {post_trimmed, r.post.n_points, "post"}}) {
+    const int lost = trimmed - now;
+    if (lost > std::max(3, trimmed / 10)) {
+      const std::string what = r.floor_method == "given" ? "--floor-y" : r.floor_method == "contact_duration" ? "--contact-duration" : "floor";
+      throw InputError(what, "puts the ball on the floor during " + std::to_string(lost) + " frames of the " + which +
+                                 "-impact flight that move as free flight; check the floor's height (file frame, m) and the contact duration");
+    }
   }
   check_gravity(rows, r);
   return r;

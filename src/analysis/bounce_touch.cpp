@@ -167,12 +167,17 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
 
   const OutVec o0 = evaluate(P0);
   if (!std::isfinite(o0(oTouch)) || !std::isfinite(o0(oSep))) {
-    const std::string which = !std::isfinite(o0(oTouch)) ? "pre" : "post";
+    const bool pre = !std::isfinite(o0(oTouch));
+    const SegmentFit& seg = pre ? r.pre : r.post;
+    // Height of the flight's lowest point at the impact time, to say where the floor should be.
+    const double h_imp = seg.y_parabola.coef[0] -
+                         bounce::support_depth(ball, seg.spin.theta_ref + seg.spin.omega * (t_imp - seg.spin.t_ref));
+    const std::string where = std::string(pre ? "pre" : "post") + "-impact flight (its lowest point is at y = " +
+                              std::to_string(h_imp).substr(0, 7) + " m at the impact time)";
     if (method == "given")
-      throw InputError("--floor-y", "the floor lies above the lowest point of the ball in the " + which +
-                                        "-impact flight; check the floor's height and the track's origin");
-    throw InputError("the first touch and separation could not be located on the fitted flights of '" +
-                     r.body.point_a + "' and '" + r.body.point_b + "' (" + which + "-impact flight); give --floor-y");
+      throw InputError("--floor-y", "the floor at y = " + std::to_string(*options.floor_y).substr(0, 7) +
+                                        " m does not meet the fitted " + where + "; check the floor's height and the track's origin");
+    throw InputError("the first touch and separation could not be located on the fitted " + where + "; give --floor-y");
   }
   // Linear propagation, central differences with steps of 1e-3 standard deviations.
   Eigen::Matrix<double, kOuts, kParams> J = Eigen::Matrix<double, kOuts, kParams>::Zero();

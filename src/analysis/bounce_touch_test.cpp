@@ -4,6 +4,7 @@
 // docs/theory.md#bounce-analysis.
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_synth.hpp"
+#include "numerics/error.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -201,6 +202,24 @@ TEST(BounceTouch, BracketedFloorStatesNoUncertainty) {
   EXPECT_FALSE(x.r.mean_normal_force.has_value());
   ASSERT_EQ(x.r.warnings.size(), 1u);
   EXPECT_NE(x.r.warnings[0].find("floor not known"), std::string::npos);
+}
+
+// A floor far from the flights (another origin, other units) cannot be met at one touch: an
+// InputError naming --floor-y, not numbers. 0.3 m above the true floor puts the ball on it
+// for most of the pre-impact flight; 0.3 m below, the flights never reach it near the impact.
+TEST(BounceTouch, FloorFarFromTheFlightsIsAnError) {
+  SynthVideoOptions o;
+  const auto v = synth_video(o);
+  for (double floor : {0.3, -0.3}) {
+    BounceAnalyzeOptions ao;
+    ao.floor_y = floor;
+    try {
+      analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), ao);
+      ADD_FAILURE() << "no error for floor " << floor;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("--floor-y"), std::string::npos) << e.what();
+    }
+  }
 }
 
 /// The case's filmed run (seed 5) analysed with the tips turned by `turn_deg` about the
