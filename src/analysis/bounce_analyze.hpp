@@ -1,9 +1,11 @@
 // Analysis of one tracked bounce of the rugby ball (seed 001, experiment 1): the two tips
 // A and B give the centre (midpoint) and the orientation; the impact is found on the centre
 // track; each flight segment gets an x–t line, a y–t parabola (with R^2) and a linear
-// theta–t spin fit; velocities are the fits' derivatives at the impact time; restitution
-// from velocities and from apex heights; energies; orientation and collision angle at the
-// impact; the mean normal force over a given contact duration.
+// theta–t spin fit; velocities are the fits' derivatives at the impact time; first touch and
+// separation located where each flight's lowest point meets the floor; restitution from the
+// velocities at touch and separation (as bounce simulate) and from apex heights; energies;
+// orientation, collision angle and contact-point velocity at the touch; the mean normal
+// force over the contact duration, with uncertainties propagated from the fits and the floor.
 // See docs/theory.md#bounce-analysis.
 #pragma once
 
@@ -28,7 +30,9 @@ struct BounceAnalyzeOptions {
   int exclude = 0;
   std::optional<double> floor_y;        ///< floor height, m; default: from the flights (see theory)
   double sigma_floor_y = 0;             ///< standard uncertainty of a given floor_y, m (e.g. 0.001)
-  std::optional<double> contact_duration;  ///< s; enables the mean normal force, e.g. 0.004
+  /// s, counted in frames (uncertain by half a frame): divides the impulse for the mean
+  /// normal force, and locates the floor without floor_y; default: the located contact.
+  std::optional<double> contact_duration;
   int impact = 1;                       ///< which detected impact to analyse (1 = first)
   track::ImpactOptions impacts;         ///< impact detection on the centre track
   int grid_points = 101;                ///< samples of each fitted curve for figures (>= 2)
