@@ -177,7 +177,7 @@ void add_simulate(CLI::App* area) {
       check_finite(v, name);
     const NormalLawSpec spec = o->law.law();
     const FrictionModel fr = o->law.friction_model();
-    const ContactOptions copt = o->law.contact(checked_g(o->g));
+    const ContactOptions copt = o->law.contact(checked_g(o->g, /*zero_allowed=*/true));  // starts at touch
     if (!(o->vy < 0)) throw InputError("--vy", "the ball must be falling at first touch (vy < 0)");
     BodyState s;
     s.theta = o->theta_deg / kDeg;

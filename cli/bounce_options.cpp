@@ -2,6 +2,7 @@
 
 #include "io/text.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
 
@@ -21,9 +22,8 @@ void invalid(const std::string& message) {
   throw InputError(message);
 }
 
-double checked_g(double g) {
-  if (!std::isfinite(g) || !(g > 0)) throw InputError("--g", "gravitational acceleration must be positive");
-  return g;
+double checked_g(double g, bool zero_allowed) {
+  return check_range(g, zero_allowed ? ranges::gravity_or_zero : ranges::gravity, "--g");
 }
 
 void add_ball_options(CLI::App* cmd, Ball& ball) {

@@ -136,7 +136,7 @@ sweep::CellModel build_model(const BouncePhysicsOptions& opts) {
   cell.ball = opts.ball.get();
   cell.law = opts.law.law();
   cell.friction = opts.law.friction_model(0.5);  // each cell sets its own mu
-  cell.options = opts.law.contact(checked_g(opts.g));
+  cell.options = opts.law.contact(checked_g(opts.g, /*zero_allowed=*/true));  // cells start at touch
   cell.convention = opts.convention();
   opts.check_theta_range(cell.convention);
   check_finite(opts.vx, "--vx");

@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
 #include <limits>
@@ -80,20 +81,16 @@ Parameters parse_launch(const LaunchText& t, const std::string& skip = "") {
     }
     return number(text, option);
   };
-  p.mu = need(t.mu, "--mu", 0.0);
-  if (p.mu < 0) throw InputError("--mu", "must be >= 0, got " + t.mu);
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  p.mu = check_range(need(t.mu, "--mu", 0.0), ranges::friction, "--mu");
   const double phi_deg = need(t.phi_deg, "--phi-deg", 0.0);
   if (!(phi_deg >= 0 && phi_deg < 90))
     throw InputError("--phi-deg", "must be in [0, 90), got " + t.phi_deg);
   p.phi = incline::deg_to_rad(phi_deg);
-  p.v0 = need(t.v0, "--v0", 0.0);
-  if (p.v0 < 0) throw InputError("--v0", "must be >= 0, got " + t.v0);
-  p.g = number(t.g, "--g");
-  if (!(p.g > 0)) throw InputError("--g", "must be > 0, got " + t.g);
-  if (!t.mu_static.empty()) {
-    p.mu_static = number(t.mu_static, "--mu-static");
-    if (*p.mu_static < 0) throw InputError("--mu-static", "must be >= 0, got " + t.mu_static);
-  }
+  p.v0 = check_range(need(t.v0, "--v0", 0.0), ranges::speed, "--v0");
+  p.g = check_range(number(t.g, "--g"), ranges::gravity, "--g");
+  if (!t.mu_static.empty())
+    p.mu_static = check_range(number(t.mu_static, "--mu-static"), ranges::friction, "--mu-static");
   p.check();
   return p;
 }

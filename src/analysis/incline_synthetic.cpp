@@ -1,5 +1,7 @@
 #include "analysis/incline_synthetic.hpp"
 
+#include "analysis/frame_rotation.hpp"
+
 #include "incline/numeric.hpp"
 #include "numerics/error.hpp"
 
@@ -19,6 +21,8 @@ std::string InclineSynthOptions::validate() const {
   if (!(std::isfinite(t_launch) && t_launch >= 0)) return "t_launch must be >= 0 (s)";
   if (!(std::isfinite(x0) && std::isfinite(y0))) return "launch point must be finite";
   if (!(std::isfinite(duration) && duration >= 0)) return "duration must be >= 0 (s)";
+  if (!(std::isfinite(frame_rotation) && std::abs(frame_rotation) <= 0.35))
+    return "frame rotation must be within +-20 degrees";
   if (track_name.empty()) return "track name must not be empty";
   return {};
 }
@@ -85,8 +89,7 @@ InclineSynthRun synthesize_incline_run(const InclineSynthOptions& o) {
     incline::State s;  // at rest before the launch
     if (t > o.t_launch) s = moving[m++];
     s.t = t;
-    s.x += o.x0;
-    s.y += o.y0;
+    s = rotate_state(s, o.frame_rotation, o.x0, o.y0);
     run.truth.push_back(s);
     const double nx = normal(), ny = normal();
     run.track.points.push_back({i, t, s.x + o.noise * nx, s.y + o.noise * ny});
