@@ -98,7 +98,7 @@ FrictionModel LawOptions::friction_model(double mu_value) const {
 }
 
 ContactOptions LawOptions::contact(double g) const {
-  if (!(tol > 0) || !(tol < 1e-2) || !std::isfinite(tol)) throw InputError("--tol", "must lie in (0, 0.01)");
+  check_range(tol, ranges::tolerance, "--tol");
   ContactOptions o = contact_options_with_tolerance(tol);
   o.g = g;
   return o;

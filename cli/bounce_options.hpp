@@ -22,7 +22,7 @@ void check_finite(double v, const char* option);
 /// Turns "field: message" from a validate() into an InputError naming the option --field.
 [[noreturn]] void invalid(const std::string& message);
 
-/// g within the physical range, else an InputError naming --g: (0, 1000] m/s^2 where a
+/// g within the physical range, else an InputError naming --g: [0.01, 1000] m/s^2 where a
 /// flight needs gravity (contact-time, drop, synth-video), [0, 1000] with `zero_allowed` where
 /// the command starts at first touch (simulate, sweep): a contact without gravity is the
 /// idealisation of the exact central Hunt-Crossley restitution (docs/theory.md).

@@ -72,8 +72,7 @@ void add_track_input(CLI::App* cmd, TrackInput& in) {
 
 track::Track read_one_track(const std::string& file, const TrackInput& in) {
   io::ImportOptions o;
-  o.time_scale = number(in.time_scale, "--time-scale");
-  if (!(o.time_scale > 0)) throw InputError("--time-scale", "must be > 0, got " + in.time_scale);
+  o.time_scale = check_range(number(in.time_scale, "--time-scale"), ranges::time_scale, "--time-scale");
   if (!in.track.empty()) o.tracks = {in.track};
   const track::TrackSet set = io::read_tracks(file, o);
   if (!in.track.empty()) return set.find(in.track);
@@ -213,8 +212,8 @@ void add_mu_from_slide(CLI::App* area) {
     if (!s->phi_deg.empty()) o.phi = incline::deg_to_rad(parse_angle_deg(s->phi_deg, "--phi-deg", false));
     if (!s->sigma_phi_deg.empty()) {
       if (!o.phi) throw InputError("--sigma-phi-deg", "needs --phi-deg");
-      const double v = number(s->sigma_phi_deg, "--sigma-phi-deg");
-      if (!(v >= 0)) throw InputError("--sigma-phi-deg", "must be >= 0, got " + s->sigma_phi_deg);
+      const double v = check_range(number(s->sigma_phi_deg, "--sigma-phi-deg"), ranges::angle_sigma_deg,
+                                   "--sigma-phi-deg");
       o.sigma_phi = incline::deg_to_rad(v);
     }
     o.g = parse_g(s->g);

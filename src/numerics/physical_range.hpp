@@ -24,20 +24,29 @@ struct PhysicalRange {
 namespace ranges {
 inline constexpr PhysicalRange speed{0, 1e3, "m/s"};                 ///< |v| of a launch
 inline constexpr PhysicalRange velocity{-1e3, 1e3, "m/s"};           ///< a signed velocity component
-inline constexpr PhysicalRange gravity{0, 1e3, "m/s^2", true};       ///< g > 0 (a flight needs it)
+inline constexpr PhysicalRange gravity{0.01, 1e3, "m/s^2"};          ///< g > 0 (a flight needs it)
 inline constexpr PhysicalRange gravity_or_zero{0, 1e3, "m/s^2"};     ///< g >= 0 (from touch)
 inline constexpr PhysicalRange friction{0, 10, ""};                  ///< a friction coefficient
 inline constexpr PhysicalRange accel{-1e3, 1e3, "m/s^2"};            ///< a signed acceleration
 inline constexpr PhysicalRange position{-1e3, 1e3, "m"};             ///< a coordinate
-inline constexpr PhysicalRange size{0, 10, "m", true};               ///< a body's dimension
+inline constexpr PhysicalRange size{1e-3, 10, "m"};                  ///< a body's dimension
 inline constexpr PhysicalRange height{0, 1e3, "m", true};            ///< a release height
-inline constexpr PhysicalRange mass{0, 1e3, "kg", true};
-inline constexpr PhysicalRange inertia{0, 1e3, "kg m^2", true};
+inline constexpr PhysicalRange mass{1e-6, 1e3, "kg"};
+inline constexpr PhysicalRange inertia{1e-12, 1e3, "kg m^2"};
+inline constexpr PhysicalRange stiffness{0, 1e12, "N/m^n", true};    ///< contact stiffness K
+inline constexpr PhysicalRange damping{0, 1e12, "N s/m^(n+1)"};      ///< contact damping D
+inline constexpr PhysicalRange tangential_stiffness{0, 1e12, "N/m", true};
+inline constexpr PhysicalRange tangential_damping{0, 1e12, "N s/m"};
+inline constexpr PhysicalRange tolerance{1e-14, 1e-2, ""};           ///< integrator tolerance
 inline constexpr PhysicalRange spin{-1e5, 1e5, "rad/s"};             ///< an angular velocity
 inline constexpr PhysicalRange angle_deg{-360, 360, "deg"};          ///< an orientation
 inline constexpr PhysicalRange duration{0, 1e4, "s"};                ///< a time span
 inline constexpr PhysicalRange noise{0, 1, "m"};                     ///< a position noise
 inline constexpr PhysicalRange frame_rate{1, 1e5, "1/s"};
+inline constexpr PhysicalRange distance{0, 1e3, "m", true};          ///< a positive length on the table
+inline constexpr PhysicalRange step{0, 1e4, "s", true};              ///< a time step or span > 0
+inline constexpr PhysicalRange angle_sigma_deg{0, 10, "deg"};        ///< uncertainty of an angle
+inline constexpr PhysicalRange time_scale{1e-5, 1e3, ""};            ///< real seconds per file second
 }  // namespace ranges
 
 /// Shortest round-trip-ish form of v for messages ("1e+308", "1000", "0.5").
