@@ -368,13 +368,25 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     }
   }
 
-  // Diagnostics: eq b on the moving part short of the stop (theta undefined at v = 0).
-  const double t_move_end =
-      b.t_stop ? b.t0.value + 0.9 * (*b.t_stop - b.t0.value) : t.back();
-  // The diagnostics need the incline's frame: the points turned back by model B's rotation.
-  const track::Track incline_frame = derotate_track(track, psi_b, b.x0.value, b.y0.value);
-  a.a_n = normal_accel_diagnostic(incline_frame, b.t0.value, t_move_end, o.phi, o.g,
-                                  o.diagnostic_block, o.level);
+  // Diagnostics: eq b on the moving part short of the stop (theta undefined at v = 0), in the
+  // incline's frame: the points turned back by the fitted rotation. Model A's rotation, launch
+  // and stop when it is fitted: A nests B, so they are unbiased whether or not a normal friction
+  // component is present, whereas model B's psi absorbs part of one (f_N/m = 1 m/s^2 turned
+  // B's psi by 4.7 deg and took 0.4 m/s^2 off the eq b intercept).
+  double t0_d = b.t0.value, x0_d = b.x0.value, y0_d = b.y0.value, psi_d = psi_b;
+  std::optional<double> t_stop_d = b.t_stop;
+  if (a.model_a) {
+    const ModelAFit& fa = *a.model_a;
+    t0_d = fa.t0.value, x0_d = fa.x0.value, y0_d = fa.y0.value, psi_d = fa.frame_rotation.value;
+    incline::NumericOptions no;
+    no.model = incline::Model::A;
+    no.t_max = 60.0;
+    const auto r = incline::simulate(launch(fa.mu.value, o.phi, fa.v0.value, o.g, fa.normal_accel.value), {}, no);
+    t_stop_d = r.t_stop ? std::optional<double>(t0_d + *r.t_stop) : std::nullopt;
+  }
+  const double t_move_end = t_stop_d ? t0_d + 0.9 * (*t_stop_d - t0_d) : t.back();
+  const track::Track incline_frame = derotate_track(track, psi_d, x0_d, y0_d);
+  a.a_n = normal_accel_diagnostic(incline_frame, t0_d, t_move_end, o.phi, o.g, o.diagnostic_block, o.level);
   if (!a.a_n) a.notes.push_back("a_N diagnostic skipped: fewer than 3 blocks of moving points");
 
   // Eq c: the v_y extremum exists when the disc stops (k < 1); locate it from model B.
