@@ -74,6 +74,9 @@ TEST(PhysicalRanges, EveryCommandRefusesOutOfRangeNumbersUniformly) {
            {"bounce contact-time --height 0.5 --b 1e-300", "--b"},
            {"bounce drop --height 0.5 --g 1e308", "--g"},
            {"bounce sweep --theta-deg 100:170:2 --omega 30:50:2 --vx 1e308 --out " + dir + "/x.csv", "--vx"},
+           {"bounce sweep --theta-deg 100:170:2 --omega 30:50:2 --speed 1e308 --out " + dir + "/x.csv", "--speed"},
+           {"bounce sweep --theta-deg 100:170:2 --omega 1e300:1e301:2 --out " + dir + "/x.csv", "--omega"},
+           {"bounce sweep --theta-deg 100:170:2 --omega 30:50:2 --mu 0:1e308:2 --out " + dir + "/x.csv", "--mu"},
            {"bounce synth-video --height 1e308 --out " + dir + "/x.txt", "--height"},
            {"track kinematics" + run + "--time-scale 1e308 --out " + dir + "/x.csv", "--time-scale"},
        })
