@@ -117,6 +117,10 @@ void add_analyze(CLI::App* area) {
     check_range(opts->time_scale, ranges::time_scale, "--time-scale");  // docs/cli.md#physical-ranges
     if (opts->floor_y) check_range(*opts->floor_y, ranges::position, "--floor-y");
     if (opts->contact_duration) check_range(*opts->contact_duration, PhysicalRange{0, 10, "s", true}, "--contact-duration");
+    if (!std::isfinite(opts->time_scale) || !(opts->time_scale > 0)) throw InputError("--time-scale", "must be positive");
+    if (opts->floor_y) check_finite(*opts->floor_y, "--floor-y");
+    if (opts->contact_duration && !(std::isfinite(*opts->contact_duration) && *opts->contact_duration > 0))
+      throw InputError("--contact-duration", "must be a positive number of seconds");
     io::ImportOptions io;
     io.time_scale = opts->time_scale;
     io.length_unit = opts->length_unit;
