@@ -17,6 +17,7 @@
 #include "io/track_import.hpp"
 #include "io/tracker_export.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
 #include <map>
@@ -114,6 +115,9 @@ void add_analyze(CLI::App* area) {
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     checked_ball(opts->o.ball);
+    check_range(opts->time_scale, ranges::time_scale, "--time-scale");  // docs/cli.md#physical-ranges
+    if (opts->floor_y) check_range(*opts->floor_y, ranges::position, "--floor-y");
+    if (opts->contact_duration) check_range(*opts->contact_duration, PhysicalRange{0, 10, "s", true}, "--contact-duration");
     if (!std::isfinite(opts->time_scale) || !(opts->time_scale > 0)) throw InputError("--time-scale", "must be positive");
     if (opts->floor_y) check_finite(*opts->floor_y, "--floor-y");
     if (!(std::isfinite(opts->o.sigma_floor_y) && opts->o.sigma_floor_y >= 0 && opts->o.sigma_floor_y < 1))
@@ -225,8 +229,9 @@ void add_fit(CLI::App* area) {
     check_finite(o.friction.slip_scale, "--slip-scale");
     for (auto [v, name] : {std::pair{o.K0, "--K0"}, {o.n0, "--n0"}, {o.D0, "--D0"}, {o.e0, "--e0"}, {o.mu0, "--mu0"}, {o.loss_scale, "--loss-scale"}})
       check_finite(v, name);
-    if (!(o.K0 > 0)) throw InputError("--K0", "must be positive");
-    if (!(o.D0 > 0)) throw InputError("--D0", "must be positive");
+    check_range(o.K0, ranges::stiffness, "--K0");  // docs/cli.md#physical-ranges
+    check_range(o.D0, PhysicalRange{0, 1e12, "N s/m^(n+1)", true}, "--D0");
+    check_range(o.loss_scale, PhysicalRange{0, 1e3, "m/s", true}, "--loss-scale");
     if (!(o.n0 >= 1 && o.n0 <= 3)) throw InputError("--n0", "must lie in [1, 3]");
     if (!(o.e0 > 0.02 && o.e0 <= 1)) throw InputError("--e0", "must lie in (0.02, 1]");
     if (!(o.mu0 >= 0 && o.mu0 <= 3)) throw InputError("--mu0", "must lie in [0, 3]");
