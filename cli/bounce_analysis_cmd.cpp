@@ -17,6 +17,7 @@
 #include "io/track_import.hpp"
 #include "io/tracker_export.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
 #include <map>
@@ -106,6 +107,7 @@ void add_analyze(CLI::App* area) {
   cmd->add_option("--length-unit", opts->length_unit, "unit of the file's lengths, overriding the file (m, cm, mm, ...)");
   add_ball_options(cmd, opts->o.ball);
   cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m (default: from the flights and --contact-duration; needed for e_height without it)");
+  cmd->add_option("--sigma-floor-y", opts->o.sigma_floor_y, "standard uncertainty of --floor-y, m (default 0)");
   cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s (to half a frame): enables mean_normal_force, and locates the floor when --floor-y is not given");
   cmd->add_option("--exclude", opts->o.exclude, "points always dropped on each side of the impact (default 0; contact frames are dropped automatically)");
   cmd->add_option("--impact", opts->o.impact, "which detected impact to analyse (default 1)");
@@ -113,8 +115,13 @@ void add_analyze(CLI::App* area) {
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     checked_ball(opts->o.ball);
+    check_range(opts->time_scale, ranges::time_scale, "--time-scale");  // docs/cli.md#physical-ranges
+    if (opts->floor_y) check_range(*opts->floor_y, ranges::position, "--floor-y");
+    if (opts->contact_duration) check_range(*opts->contact_duration, PhysicalRange{0, 10, "s", true}, "--contact-duration");
     if (!std::isfinite(opts->time_scale) || !(opts->time_scale > 0)) throw InputError("--time-scale", "must be positive");
     if (opts->floor_y) check_finite(*opts->floor_y, "--floor-y");
+    if (!(std::isfinite(opts->o.sigma_floor_y) && opts->o.sigma_floor_y >= 0 && opts->o.sigma_floor_y < 1))
+      throw InputError("--sigma-floor-y", "must lie in [0, 1) m");
     if (opts->contact_duration && !(std::isfinite(*opts->contact_duration) && *opts->contact_duration > 0))
       throw InputError("--contact-duration", "must be a positive number of seconds");
     io::ImportOptions io;
@@ -139,16 +146,44 @@ void add_analyze(CLI::App* area) {
               {"floor_half_width", r.floor_half_width},
               {"floor_method", r.floor_method},
               {"theta_impact_deg", r.theta_impact_deg},
-              {"collision_angle_deg", r.collision_angle_deg},
+              {"collision_angle_deg", num(r.collision_angle_deg)},
+              {"sigma_collision_angle_deg", num(r.sigma_collision_angle_deg)},
+              {"collision_angle_impact_deg", num(r.collision_angle_impact_deg)},
+              {"t_touch", r.t_touch},
+              {"sigma_t_touch", num(r.sigma_t_touch)},
+              {"t_separation", r.t_separation},
+              {"sigma_t_separation", num(r.sigma_t_separation)},
+              {"contact_duration", r.contact_duration},
+              {"sigma_contact_duration", num(r.sigma_contact_duration)},
+              {"theta_touch_deg", r.theta_touch_deg},
+              {"sigma_theta_touch_deg", num(r.sigma_theta_touch_deg)},
+              {"vy_touch", r.vy_touch},
+              {"sigma_vy_touch", num(r.sigma_vy_touch)},
+              {"vy_separation", r.vy_separation},
+              {"sigma_vy_separation", num(r.sigma_vy_separation)},
+              {"e_velocity_common", num(r.e_velocity_common)},
+              {"sigma_e_velocity_common", num(r.sigma_e_velocity_common)},
+              {"contact_point_vx", num(r.contact_point_vx)},
+              {"contact_point_vy", num(r.contact_point_vy)},
+              {"contact_point_speed", num(r.contact_point_speed)},
+              {"sigma_contact_point_vx", num(r.sigma_contact_point_vx)},
+              {"sigma_contact_point_vy", num(r.sigma_contact_point_vy)},
+              {"sigma_contact_point_speed", num(r.sigma_contact_point_speed)},
               {"energy_pre", r.pre.energy.total()},
               {"energy_post", r.post.energy.total()},
               {"n_impacts", r.impacts.impacts.size()},
               {"noise", r.impacts.noise_y},
               {"tip_distance_mean", r.body.length_mean},
-              {"tip_distance_sd", r.body.length_sd}};
+              {"tip_distance_sd", r.body.length_sd},
+              {"gravity", r.gravity},
+              {"sigma_gravity", num(r.sigma_gravity)},
+              {"gravity_tilt_deg", r.gravity_tilt_deg},
+              {"sigma_gravity_tilt_deg", num(r.sigma_gravity_tilt_deg)},
+              {"warnings", r.warnings}};
     if (r.mean_normal_force) {
-      j["mean_normal_force"] = *r.mean_normal_force;
-      j["sigma_mean_normal_force"] = *r.sigma_mean_normal_force;
+      j["mean_normal_force"] = num(*r.mean_normal_force);
+      j["sigma_mean_normal_force"] = num(*r.sigma_mean_normal_force);
+      j["force_duration_method"] = r.force_duration_method;
     }
     write_report_if_requested(opts->report, [&] {
       return bounce_analyze_report("tribolab bounce analyze " + opts->file + " --track-a " + opts->a + " --track-b " +
@@ -194,8 +229,9 @@ void add_fit(CLI::App* area) {
     check_finite(o.friction.slip_scale, "--slip-scale");
     for (auto [v, name] : {std::pair{o.K0, "--K0"}, {o.n0, "--n0"}, {o.D0, "--D0"}, {o.e0, "--e0"}, {o.mu0, "--mu0"}, {o.loss_scale, "--loss-scale"}})
       check_finite(v, name);
-    if (!(o.K0 > 0)) throw InputError("--K0", "must be positive");
-    if (!(o.D0 > 0)) throw InputError("--D0", "must be positive");
+    check_range(o.K0, ranges::stiffness, "--K0");  // docs/cli.md#physical-ranges
+    check_range(o.D0, PhysicalRange{0, 1e12, "N s/m^(n+1)", true}, "--D0");
+    check_range(o.loss_scale, PhysicalRange{0, 1e3, "m/s", true}, "--loss-scale");
     if (!(o.n0 >= 1 && o.n0 <= 3)) throw InputError("--n0", "must lie in [1, 3]");
     if (!(o.e0 > 0.02 && o.e0 <= 1)) throw InputError("--e0", "must lie in (0.02, 1]");
     if (!(o.mu0 >= 0 && o.mu0 <= 3)) throw InputError("--mu0", "must lie in [0, 3]");

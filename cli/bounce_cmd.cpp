@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
 #include <limits>
@@ -22,6 +23,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace tribolab::cli {
@@ -124,9 +126,9 @@ void add_contact_time(CLI::App* area) {
   add_report_option(*cmd, o->report);
   cmd->callback([o] {
     const Ball ball = o->ball.get();
-    check_finite(o->height, "--height");
-    check_finite(o->omega, "--omega");
-    check_finite(o->theta_deg, "--theta-deg");
+    check_range(o->height, ranges::height, "--height");  // docs/cli.md#physical-ranges
+    check_range(o->omega, ranges::spin, "--omega");
+    check_range(o->theta_deg, ranges::angle_deg, "--theta-deg");
     if (o->direction != 1 && o->direction != -1) throw InputError("--direction", "must be 1 or -1");
     FlightOptions fo;
     fo.g = checked_g(o->g);
@@ -173,11 +175,12 @@ void add_simulate(CLI::App* area) {
   add_report_option(*cmd, o->report);
   cmd->callback([o] {
     const Ball ball = o->ball.get();
-    for (auto [v, name] : {std::pair{o->vx, "--vx"}, {o->vy, "--vy"}, {o->omega, "--omega"}, {o->theta_deg, "--theta-deg"}})
-      check_finite(v, name);
+    for (auto [v, r, name] : {std::tuple{o->vx, ranges::velocity, "--vx"}, {o->vy, ranges::velocity, "--vy"},
+                              {o->omega, ranges::spin, "--omega"}, {o->theta_deg, ranges::angle_deg, "--theta-deg"}})
+      check_range(v, r, name);  // docs/cli.md#physical-ranges
     const NormalLawSpec spec = o->law.law();
     const FrictionModel fr = o->law.friction_model();
-    const ContactOptions copt = o->law.contact(checked_g(o->g));
+    const ContactOptions copt = o->law.contact(checked_g(o->g, /*zero_allowed=*/true));  // starts at touch
     if (!(o->vy < 0)) throw InputError("--vy", "the ball must be falling at first touch (vy < 0)");
     BodyState s;
     s.theta = o->theta_deg / kDeg;
@@ -225,9 +228,12 @@ void add_drop(CLI::App* area) {
   add_report_option(*cmd, o->report);
   cmd->callback([o] {
     const Ball ball = o->ball.get();
-    for (auto [v, name] : {std::pair{o->height, "--height"}, {o->omega, "--omega"}, {o->theta_deg, "--theta-deg"},
-                           {o->vx, "--vx"}, {o->vy, "--vy"}, {o->rest_height, "--rest-height"}, {o->sample_dt, "--sample-dt"}})
-      check_finite(v, name);
+    for (auto [v, r, name] :
+         {std::tuple{o->height, ranges::height, "--height"}, {o->omega, ranges::spin, "--omega"},
+          {o->theta_deg, ranges::angle_deg, "--theta-deg"}, {o->vx, ranges::velocity, "--vx"},
+          {o->vy, ranges::velocity, "--vy"}, {o->rest_height, PhysicalRange{0, 1e3, "m"}, "--rest-height"},
+          {o->sample_dt, PhysicalRange{0, 10, "s"}, "--sample-dt"}})
+      check_range(v, r, name);  // docs/cli.md#physical-ranges
     if (o->bounces < 1 || o->bounces > 10000) throw InputError("--bounces", "must lie in 1..10000");
     if (!(o->rest_height >= 0)) throw InputError("--rest-height", "must be >= 0");
     if (!(o->trajectory.empty() && o->report.empty()) && !(o->sample_dt > 0)) throw InputError("--sample-dt", "must be positive");
@@ -235,7 +241,7 @@ void add_drop(CLI::App* area) {
     const FrictionModel fr = o->law.friction_model();
     DropOptions d;
     d.flight.g = checked_g(o->g);
-    d.contact = o->law.contact(o->g);
+    d.contact = o->law.contact(d.flight.g);
     d.max_bounces = static_cast<std::size_t>(o->bounces);
     d.rest_height = o->rest_height;
     d.sample_dt = o->trajectory.empty() && o->report.empty() ? 0.0 : o->sample_dt;

@@ -2,6 +2,7 @@
 
 #include "io/text.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
 
@@ -21,9 +22,8 @@ void invalid(const std::string& message) {
   throw InputError(message);
 }
 
-double checked_g(double g) {
-  if (!std::isfinite(g) || !(g > 0)) throw InputError("--g", "gravitational acceleration must be positive");
-  return g;
+double checked_g(double g, bool zero_allowed) {
+  return check_range(g, zero_allowed ? ranges::gravity_or_zero : ranges::gravity, "--g");
 }
 
 void add_ball_options(CLI::App* cmd, Ball& ball) {
@@ -98,7 +98,7 @@ FrictionModel LawOptions::friction_model(double mu_value) const {
 }
 
 ContactOptions LawOptions::contact(double g) const {
-  if (!(tol > 0) || !(tol < 1e-2) || !std::isfinite(tol)) throw InputError("--tol", "must lie in (0, 0.01)");
+  check_range(tol, ranges::tolerance, "--tol");
   ContactOptions o = contact_options_with_tolerance(tol);
   o.g = g;
   return o;

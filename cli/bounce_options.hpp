@@ -22,8 +22,11 @@ void check_finite(double v, const char* option);
 /// Turns "field: message" from a validate() into an InputError naming the option --field.
 [[noreturn]] void invalid(const std::string& message);
 
-/// g > 0 and finite, else an InputError naming --g.
-double checked_g(double g);
+/// g within the physical range, else an InputError naming --g: [0.01, 1000] m/s^2 where a
+/// flight needs gravity (contact-time, drop, synth-video), [0, 1000] with `zero_allowed` where
+/// the command starts at first touch (simulate, sweep): a contact without gravity is the
+/// idealisation of the exact central Hunt-Crossley restitution (docs/theory.md).
+double checked_g(double g, bool zero_allowed = false);
 
 /// --a --b --mass --inertia (SPEC section 5, "ball options").
 void add_ball_options(CLI::App* cmd, bounce::Ball& ball);

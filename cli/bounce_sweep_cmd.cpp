@@ -9,6 +9,7 @@
 #include "io/sweep_command.hpp"
 #include "io/sweep_file.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 #include "sweep_cmd.hpp"
 
 #include <algorithm>
@@ -136,10 +137,10 @@ sweep::CellModel build_model(const BouncePhysicsOptions& opts) {
   cell.ball = opts.ball.get();
   cell.law = opts.law.law();
   cell.friction = opts.law.friction_model(0.5);  // each cell sets its own mu
-  cell.options = opts.law.contact(checked_g(opts.g));
+  cell.options = opts.law.contact(checked_g(opts.g, /*zero_allowed=*/true));  // cells start at touch
   cell.convention = opts.convention();
   opts.check_theta_range(cell.convention);
-  check_finite(opts.vx, "--vx");
+  check_range(opts.vx, ranges::velocity, "--vx");  // docs/cli.md#physical-ranges
   cell.vx = opts.vx;
   cell.direction = opts.vx < 0 ? -1 : 1;  // as collision_angle_deg in `bounce simulate`
   sweep::CellModel model;

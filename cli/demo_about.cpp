@@ -1,5 +1,5 @@
 // The first section of the demo report: what tribolab is, where the two studies come from,
-// and the conventions every later section uses (SPEC section 1).
+// and the conventions every later section uses (docs/theory.md).
 #include "demo.hpp"
 
 namespace tribolab::cli {
@@ -59,7 +59,7 @@ void add_about_section(report::Report& r, std::ostream& log) {
       {"e = −v_y,out / v_y,in", "coefficient of restitution of a bounce", "—"},
   };
   s.add_table(t);
-  s.add_equation("Y(θ)^2 = a^2 sin^2 θ + b^2 cos^2 θ", "SPEC §3.1",
+  s.add_equation("Y(θ)^2 = a^2 sin^2 θ + b^2 cos^2 θ", "seed 001, eq 20; docs/theory.md#bounce-geometry",
                  "Height of the centre of a resting ellipse above its lowest point (the "
                  "support distance) at orientation θ.");
 

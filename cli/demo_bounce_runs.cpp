@@ -98,11 +98,12 @@ std::vector<std::string> truth_row(const std::string& name, double value, double
 }
 
 /// Recovered vs truth for one analysed video.
-report::Table truth_table(const analysis::BounceAnalysis& r, const analysis::SynthVideoTruth& t) {
+report::Table truth_table(const analysis::BounceAnalysis& r, const analysis::SynthVideoTruth& t, const bounce::Ball& ball) {
   const double ti = r.impact_time;
   const double vy_pre = t.vy_flight(true, ti), vy_post = t.vy_flight(false, ti);
   report::Table tab;
-  tab.caption = "Recovered vs the simulation's truth (flight velocities at the analysed impact time)";
+  tab.caption = "Recovered vs the simulation's truth (v_y at the analysed impact time; e from velocities from "
+                "the first touch to the separation, as the contact simulation defines it)";
   tab.header = {"quantity", "tribolab (± 1 s.u.)", "truth", "truth in the 95% interval"};
   tab.rows = {truth_row("v_x before (m/s)", r.pre.vx, r.pre.sigma_vx, t.touch.vx),
               truth_row("v_y before (m/s)", r.pre.vy, r.pre.sigma_vy, vy_pre),
@@ -110,10 +111,15 @@ report::Table truth_table(const analysis::BounceAnalysis& r, const analysis::Syn
               truth_row("v_x after (m/s)", r.post.vx, r.post.sigma_vx, t.separation.vx),
               truth_row("v_y after (m/s)", r.post.vy, r.post.sigma_vy, vy_post),
               truth_row("ω after (rad/s)", r.post.omega, r.post.sigma_omega, t.separation.omega),
-              truth_row("e from velocities", r.e_velocity, r.sigma_e_velocity, -vy_post / vy_pre),
+              truth_row("e from velocities", r.e_velocity, r.sigma_e_velocity, -t.separation.vy / t.touch.vy),
               truth_row("e from apex heights", r.e_height, r.sigma_e_height, std::sqrt(t.post_apex / t.release_apex)),
               truth_row("apex height before (m)", r.pre.apex_height, r.pre.sigma_apex_height, t.release_apex),
-              truth_row("apex height after (m)", r.post.apex_height, r.post.sigma_apex_height, t.post_apex)};
+              truth_row("apex height after (m)", r.post.apex_height, r.post.sigma_apex_height, t.post_apex),
+              truth_row("first touch (s)", r.t_touch, r.sigma_t_touch, t.t_touch),
+              truth_row("separation (s)", r.t_separation, r.sigma_t_separation, t.t_separation),
+              truth_row("collision angle at the touch (deg)", r.collision_angle_deg, r.sigma_collision_angle_deg,
+                        bounce::collision_angle_deg(ball, t.touch.theta, t.touch.vx < 0 ? -1 : 1)),
+              truth_row("e at one instant (impact time)", r.e_velocity_common, r.sigma_e_velocity_common, -vy_post / vy_pre)};
   const double theta_true = bounce::wrap_angle(t.touch.theta + t.touch.omega * (ti - t.t_touch)) * kDeg;
   tab.rows.push_back({"θ at the impact time (deg)", v4(r.theta_impact_deg), v4(theta_true), "—"});
   tab.rows.push_back({"impact time (s)", v4(ti), v4(t.t_touch) + " – " + v4(t.t_separation),
@@ -156,12 +162,14 @@ void add_run(report::Report& rep, const Run& run, const std::string& data_dir, s
   s.add_paragraph("The floor is y = 0 in the file, as the seed sets it in Tracker; the contact duration is the "
                   "number of frames in contact (" + v4(contact * 1e3) + " ms; truth " +
                   v4(1e3 * (truth.t_separation - truth.t_touch)) + " ms).");
-  s.add_table(truth_table(r, truth));
+  s.add_table(truth_table(r, truth, run.options.ball));
   s.add_table(bounce_segments_table(r));
   s.add_table(bounce_restitution_table(r));
   add_bounce_analysis_figures(s, run.title, r);
   log << "  " << run.file << ": e_velocity " << format_uncertain(r.e_velocity, r.sigma_e_velocity) << " (truth "
-      << v4(-truth.vy_flight(false, r.impact_time) / truth.vy_flight(true, r.impact_time)) << "), e_height "
+      << v4(-truth.separation.vy / truth.touch.vy) << "), collision angle "
+      << format_uncertain(r.collision_angle_deg, r.sigma_collision_angle_deg) << " deg (truth "
+      << v4(bounce::collision_angle_deg(run.options.ball, truth.touch.theta, truth.touch.vx < 0 ? -1 : 1)) << "), e_height "
       << format_uncertain(r.e_height, r.sigma_e_height) << " (truth " << v4(std::sqrt(truth.post_apex / truth.release_apex))
       << ")\n";
 }

@@ -70,8 +70,11 @@ TEST(DemoContent, ErrataPageListsEveryErratumOfBothSeeds) {
   ASSERT_NE(t1, nullptr);
   EXPECT_EQ(t0->rows.size(), incline::seed000_case_study().errata.size());
   EXPECT_EQ(t1->rows.size(), seed001_errata().size());
-  // docs/theory.md lists 9 seed 001 errata (2 analysis, 5 bounce, 2 sweep).
-  EXPECT_EQ(seed001_errata().size(), 9u);
+  // docs/theory.md lists 11 seed 001 errata (2 analysis, 5 bounce, 2 sweep, 2 experiment 2).
+  EXPECT_EQ(seed001_errata().size(), 11u);
+  // Seed 000: the 13 of the first reading and 4 of the second (k = 1, x limit, appendix
+  // typos, figure 八's mu), each also in docs/theory.md.
+  EXPECT_EQ(incline::seed000_case_study().errata.size(), 17u);
   for (const Erratum& e : seed001_errata()) {
     EXPECT_FALSE(e.where.empty());
     EXPECT_FALSE(e.text.empty());
@@ -102,6 +105,7 @@ TEST(DemoContent, InclineRunsRecoverTheTruthTheirScriptUsed) {
   std::ifstream script(std::string(TRIBOLAB_SOURCE_DIR) + "/data/demo/incline/make.sh");
   std::stringstream make_sh;
   make_sh << script.rdbuf();
+  int misses = 0;
   for (std::size_t i = 0; i < t->rows.size(); ++i) {
     const auto& row = t->rows[i];
     const std::string file = cell(*made, made->rows[i], "file");  // data/incline/<name>
@@ -113,11 +117,15 @@ TEST(DemoContent, InclineRunsRecoverTheTruthTheirScriptUsed) {
                              " --out \"$OUT/" + file.substr(13) + "\"";
     EXPECT_NE(make_sh.str().find(line), std::string::npos) << line;
     EXPECT_EQ(cell(*made, made->rows[i], "repeat with").rfind("tribolab incline analyze " + file + " --phi-deg ", 0), 0u);
-    // The shipped data is fixed, so these are exact checks of this data: every mu and v0 of
-    // the accepted model holds the truth in its 95 % interval.
-    EXPECT_EQ(cell(*t, row, "μ truth in 95 % interval"), "yes") << file;
-    EXPECT_EQ(cell(*t, row, "v_0 truth in 95 % interval"), "yes") << file;
+    // The shipped data is fixed, so these are exact checks of this data: the mu and v0 of the
+    // accepted model hold the truth in their 95 % intervals, all but at most one of the 12
+    // (P(two or more misses) = 12 % for correct intervals). Since the camera frame's rotation
+    // is fitted (docs/theory.md#incline-analysis) run_20.96deg.txt's mu misses: 0.63312 with
+    // interval [0.63229, 0.63394] against 0.634, a 2.1-sigma draw of its noise.
+    misses += cell(*t, row, "μ truth in 95 % interval") == "no";
+    misses += cell(*t, row, "v_0 truth in 95 % interval") == "no";
   }
+  EXPECT_LE(misses, 1);
   // The verdict both ways: the seed's run is model B, the run with f_N/m = 0.3 model A.
   EXPECT_EQ(cell(*t, t->rows[2], "verdict: normal friction"), "absent");
   EXPECT_EQ(cell(*t, t->rows[5], "verdict: normal friction"), "present");
@@ -167,9 +175,9 @@ TEST(DemoContent, BounceRunsShowTheAnalysisOfTheShippedFilesAgainstTheTruth) {
     EXPECT_GT(std::stod(higher.rows[row][2]), 1.0) << higher.rows[row][0];
     EXPECT_EQ(higher.rows[row][3], "yes") << higher.rows[row][0] << ": " << higher.rows[row][1] << " vs " << higher.rows[row][2];
   }
-  // Over the 30 velocity/restitution/apex rows of the three runs, a 95% interval misses
-  // the truth about 1.5 times; more than 5 misses (P < 0.5% by the binomial law) would mean
-  // intervals that are too narrow. (The data are fixed, so this is a golden check.)
+  // Over the 42 velocity/restitution/apex/touch rows of the three runs, a 95% interval
+  // misses the truth about 2.1 times; more than 5 misses (P = 1.7% by the binomial law) would
+  // mean intervals that are too narrow. (The data are fixed, so this is a golden check.)
   int misses = 0;
   for (const auto* t : truth)
     for (const auto& row : t->rows) misses += row[3] == "no" ? 1 : 0;

@@ -42,10 +42,17 @@ std::vector<Erratum> seed001_errata() {
        "δ is the instantaneous, not the maximum, deformation.",
        "docs/theory.md#bounce-normal-laws (Hunt & Crossley 1975, J. Appl. Mech. 42)"},
       {"seed 001, 討論 四 (fitted law vs heat maps)",
-       "In SI units the fitted law gives a central restitution of 0.44 at 4 m/s, and the contact simulation never "
-       "gives e > 1 over the maps' range (largest about 0.53 at 4 m/s, 0.33 at 8 m/s). The seed's figures 53–56 "
-       "show e > 1 there, so they cannot come from the law as printed; e > 1 needs D below about 9e3 N s/m^2.51.",
-       "Figures 53 and 54 in this report (seed's law: no e = 1 boundary; low damping: boundary shown)"},
+       "In SI units the fitted law N = 101054 d^1.51 (1 + 0.598 d′) gives a central restitution of 0.364 at 4 m/s "
+       "(exact relation 1 − e z = (1 + z) exp(−z(1 + e)), z = 0.598 × 4; 0.344 with gravity during the 22 ms "
+       "contact). Over the seed's map (collision angle 100–170 deg, spin 30–50 rad/s clockwise — the sense that "
+       "drives the contact point into the floor —, v_y = −4 m/s, v_x = 0, μ = 0.5) the contact simulation gives "
+       "at most e = 0.516 (0.253 at 8 m/s), never e > 1: the seed's figures 53–56 cannot come from the law as "
+       "printed. An elastic contact (D = 0) reaches at most e = 1.378 on that map (at 125.7 deg and 50 rad/s, its "
+       "edge), and e > 1 occurs somewhere on it only for D < 11749 N s/m^2.51 (1.17e4, a fifth of the seed's "
+       "60423). With counter-clockwise spin: 0.532, 0.328, 1.310 and D < 10920. (Our earlier 0.44, 1.25 and "
+       "about 9e3 were wrong.)",
+       "tests SeedLawErrata and SeedMapErrata in src/bounce/seed_errata_test.cpp (whole map, refined between "
+       "grid points, bisection on D); independent Python in docs/errata_checks/; figures 53 and 54 in this report"},
       {"seed 001 (sweep), the energy-ratio threshold 2.56",
        "Rebound above the drop height is said to need about 35 rad/s at v_y = 4 m/s and a rotational to vertical "
        "kinetic energy ratio above 2.56. Since I ≤ m a², the ratio is at most (a ω / v_y)² = 1.61 for a = 0.145 m "
@@ -53,8 +60,20 @@ std::vector<Erratum> seed001_errata() {
        "bounce sweep --threshold (energy ratio at each angle's threshold); docs/theory.md#sweeps"},
       {"seed 001 (sweep), figure 55's z axis",
        "The text of experiment 4 (陸、四(二) 8) calls it initial over final speed; the poster and the z = 1 "
-       "discussion of figure 56 use final over initial. tribolab's maps use e = −v_y,out / v_y,in.",
+       "discussion of figure 56 use final over initial. tribolab's maps use e = −v_y,out / v_y,in. The slides "
+       "also invert its y axis (initial centre speed over spin; the text: spin over speed, ω/|v_y|).",
        "Figure 55 in this report (e = −v_y,out / v_y,in)"},
+      {"seed 001, 伍-二 (二) 1–3 (figure 32)",
+       "Item 1 says e < 1 for 180° > θ > 0°, which contains the 100–160° where item 2 says e > 1 in most throws; "
+       "item 3 repeats 170–180°. Item 1 presumably means 100° > θ > 0°.",
+       "the three items of 伍-二 (二) against each other"},
+      {"seed 001, 肆-四 (三) and the slides (e from heights)",
+       "e = sqrt(H′/H) with H, H′ the centre's apex heights above the floor is said to equal |v_f|/|v_i|. The "
+       "centre is at height Y(θ) (b ≤ Y ≤ a) when the contact starts and ends, so the velocity ratio at touch and "
+       "separation is sqrt((H′ − Y_out)/(H − Y_in)): for H = H′ = 0.7 m it is 1.044 or 0.958 when the ball touches "
+       "on a tip and leaves on its side or the reverse, a ±4 % difference at the e = 1 boundary of figure 32. "
+       "sqrt(H′/H) answers the seed's question (does the centre rise higher?) but is not the e of the maps.",
+       "docs/errata_checks/seed000.py (heights); bounce analyze reports both (e_velocity, e_height)"},
   };
 }
 
@@ -70,7 +89,8 @@ void add_errata_section(report::Report& r, std::ostream& log) {
   for (const std::string& e : cs.errata)
     t0.rows.push_back({std::to_string(++i), e,
                        "recomputed in 'Incline: printed numbers checked' and table 1 above where a number is "
-                       "involved; tests in src/incline/case_study_test.cpp and inverse_test.cpp"});
+                       "involved; tests in src/incline/case_study_test.cpp, inverse_test.cpp and seed_errata_test.cpp; "
+                       "independent scripts in docs/errata_checks/"});
   s.add_table(std::move(t0));
   report::Table t1;
   t1.caption = "Seed 001 (bounce)";

@@ -15,6 +15,7 @@
 #include "io/track_import.hpp"
 #include "io/tracker_export.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 #include "report_incline_analysis.hpp"
 #include "report_option.hpp"
 #include "incline_series.hpp"
@@ -59,11 +60,7 @@ double parse_angle_deg(const std::string& text, const std::string& option, bool 
   return v;
 }
 
-double parse_g(const std::string& text) {
-  const double g = number(text, "--g");
-  if (!(g > 0)) throw InputError("--g", "must be > 0, got " + text);
-  return g;
-}
+double parse_g(const std::string& text) { return check_range(number(text, "--g"), ranges::gravity, "--g"); }
 
 /// File, track and time-scale options shared by the commands that read tracked data.
 struct TrackInput {
@@ -78,8 +75,7 @@ void add_track_input(CLI::App* cmd, TrackInput& in) {
 
 track::Track read_one_track(const std::string& file, const TrackInput& in) {
   io::ImportOptions o;
-  o.time_scale = number(in.time_scale, "--time-scale");
-  if (!(o.time_scale > 0)) throw InputError("--time-scale", "must be > 0, got " + in.time_scale);
+  o.time_scale = check_range(number(in.time_scale, "--time-scale"), ranges::time_scale, "--time-scale");
   if (!in.track.empty()) o.tracks = {in.track};
   const track::TrackSet set = io::read_tracks(file, o);
   if (!in.track.empty()) return set.find(in.track);
@@ -100,7 +96,8 @@ json interval(double lo, double hi) { return json::array({lo, hi}); }
 struct SynthText {
   std::string mu, phi_deg, v0, g = "9.8", normal_accel = "0", fps = "80", noise = "0.001",
                                       seed = "1", t_offset = "0.1", x0 = "0.05", y0 = "0",
-                                      duration = "0", format = "export", track_name = "disc", out;
+                                      duration = "0", format = "export", track_name = "disc", out,
+                                      frame_rotation_deg = "0";
   bool json = false;
 };
 
@@ -127,32 +124,35 @@ void add_synth(CLI::App* area) {
   cmd->add_option("--format", s->format,
                   "export (Tracker Export Data text, tab delimited; default) or csv (track,frame,t,x,y)");
   cmd->add_option("--track-name", s->track_name, "Name of the track (default disc)");
+  cmd->add_option("--frame-rotation-deg", s->frame_rotation_deg,
+                  "Camera axes turned against the incline: points rotated CCW about the launch point, deg "
+                  "(default 0, within +-20)");
   cmd->add_option("--out", s->out, "Output file")->required();
   add_json_flag(*cmd, s->json);
   set_types(cmd);
   cmd->callback([s] {
     analysis::InclineSynthOptions o;
-    o.params.mu = number(s->mu, "--mu");
+    // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+    o.params.mu = check_range(number(s->mu, "--mu"), ranges::friction, "--mu");
     if (!(o.params.mu > 0)) throw InputError("--mu", "must be > 0, got " + s->mu);
     o.params.phi = incline::deg_to_rad(parse_angle_deg(s->phi_deg, "--phi-deg", true));
-    o.params.v0 = number(s->v0, "--v0");
-    if (!(o.params.v0 >= 0)) throw InputError("--v0", "must be >= 0, got " + s->v0);
+    o.params.v0 = check_range(number(s->v0, "--v0"), ranges::speed, "--v0");
     o.params.g = parse_g(s->g);
-    o.params.normal_accel = number(s->normal_accel, "--normal-accel");
-    o.fps = number(s->fps, "--fps");
-    if (!(o.fps >= 1 && o.fps <= 1e5)) throw InputError("--fps", "must be in [1, 100000], got " + s->fps);
-    o.noise = number(s->noise, "--noise");
-    if (!(o.noise >= 0)) throw InputError("--noise", "must be >= 0, got " + s->noise);
+    o.params.normal_accel = check_range(number(s->normal_accel, "--normal-accel"), ranges::accel, "--normal-accel");
+    o.fps = check_range(number(s->fps, "--fps"), ranges::frame_rate, "--fps");
+    o.noise = check_range(number(s->noise, "--noise"), ranges::noise, "--noise");
+    const double turn = number(s->frame_rotation_deg, "--frame-rotation-deg");
+    if (!(std::abs(turn) <= 20))
+      throw InputError("--frame-rotation-deg", "must be within [-20, 20] deg, got " + s->frame_rotation_deg);
+    o.frame_rotation = incline::deg_to_rad(turn);
     const double seed = number(s->seed, "--seed");
     if (!(seed >= 0 && seed <= 9.007199254740992e15 && seed == std::floor(seed)))
       throw InputError("--seed", "must be an integer >= 0, got " + s->seed);
     o.seed = static_cast<std::uint64_t>(seed);
-    o.t_launch = number(s->t_offset, "--t-offset");
-    if (!(o.t_launch >= 0)) throw InputError("--t-offset", "must be >= 0, got " + s->t_offset);
-    o.x0 = number(s->x0, "--x0");
-    o.y0 = number(s->y0, "--y0");
-    o.duration = number(s->duration, "--duration");
-    if (!(o.duration >= 0)) throw InputError("--duration", "must be >= 0, got " + s->duration);
+    o.t_launch = check_range(number(s->t_offset, "--t-offset"), ranges::duration, "--t-offset");
+    o.x0 = check_range(number(s->x0, "--x0"), ranges::position, "--x0");
+    o.y0 = check_range(number(s->y0, "--y0"), ranges::position, "--y0");
+    o.duration = check_range(number(s->duration, "--duration"), ranges::duration, "--duration");
     if (s->format != "export" && s->format != "csv")
       throw InputError("--format", "must be export or csv, got '" + s->format + "'");
     if (s->track_name.empty() || s->track_name.find_first_of(",\t;\n\"") != std::string::npos)
@@ -227,8 +227,8 @@ void add_mu_from_slide(CLI::App* area) {
       if (!phi_text[i].empty()) o.phi = incline::deg_to_rad(parse_angle_deg(phi_text[i], "--phi-deg", false));
       if (!sigma_text[i].empty()) {
         if (!o.phi) throw InputError("--sigma-phi-deg", "needs --phi-deg");
-        const double v = number(sigma_text[i], "--sigma-phi-deg");
-        if (!(v >= 0)) throw InputError("--sigma-phi-deg", "must be >= 0, got " + sigma_text[i]);
+        const double v = check_range(number(sigma_text[i], "--sigma-phi-deg"), ranges::angle_sigma_deg,
+                                     "--sigma-phi-deg");
         o.sigma_phi = incline::deg_to_rad(v);
       }
       o.g = parse_g(s->g);
@@ -301,7 +301,7 @@ void slide_series(const SlideText& s, const std::vector<analysis::SlideOptions>&
 
 struct AnalyzeText {
   std::vector<std::string> files;
-  std::string phi_deg, g = "9.8", block = "0", report;
+  std::string phi_deg, g = "9.8", block = "0", report, frame_rotation = "fit";
   TrackInput in;
   bool no_model_a = false, json = false;
 };
@@ -323,6 +323,12 @@ json analysis_json(const analysis::InclineAnalysis& a) {
   j["sigma_y0"] = b.y0.sigma;
   j["ci95"] = {{"mu", estimate_ci(b.mu)}, {"v0", estimate_ci(b.v0)}, {"t0", estimate_ci(b.t0)},
                {"x0", estimate_ci(b.x0)}, {"y0", estimate_ci(b.y0)}};
+  // Frame rotation psi (docs/theory.md#incline-analysis): the launch direction's angle in the
+  // file's frame; 0 with a zero-width interval under --frame-rotation none.
+  j["frame_rotation_deg"] = incline::rad_to_deg(b.frame_rotation.value);
+  j["sigma_frame_rotation_deg"] = incline::rad_to_deg(b.frame_rotation.sigma);
+  j["frame_rotation_ci95_deg"] = interval(incline::rad_to_deg(b.frame_rotation.ci_low),
+                                          incline::rad_to_deg(b.frame_rotation.ci_high));
   j["rms_residual"] = b.rms_residual;
   j["n_points"] = a.data.size();
   j["k"] = std::tan(a.phi) / b.mu.value;
@@ -356,6 +362,10 @@ json analysis_json(const analysis::InclineAnalysis& a) {
                     {"normal_accel", m.normal_accel.value},
                     {"sigma_normal_accel", m.normal_accel.sigma},
                     {"normal_accel_ci95", estimate_ci(m.normal_accel)},
+                    {"frame_rotation_deg", incline::rad_to_deg(m.frame_rotation.value)},
+                    {"frame_rotation_ci95_deg", interval(incline::rad_to_deg(m.frame_rotation.ci_low),
+                                                         incline::rad_to_deg(m.frame_rotation.ci_high))},
+                    {"normal_accel_rotation_correlation", m.rotation_correlation},
                     {"rms_residual", m.rms_residual},
                     {"f_statistic", a.test->f_statistic},
                     {"p_value", a.test->p_value},
@@ -433,12 +443,17 @@ void add_analyze(CLI::App* area) {
   cmd->add_option("--block", s->block,
                   "Points per local fit of the a_N diagnostic (>= 5; default 0 = about 8 blocks)");
   cmd->add_flag("--no-model-a", s->no_model_a, "Skip model A (the verdict then comes from the a_N intercept)");
+  cmd->add_option("--frame-rotation", s->frame_rotation,
+                  "fit: fit the camera frame's rotation against the incline (default); none: frame known aligned");
   add_track_input(cmd, s->in);
   add_json_flag(*cmd, s->json);
   set_types(cmd);
+  cmd->get_option("--frame-rotation")->type_name("fit|none");
   add_report_option(*cmd, s->report);
   cmd->callback([s] {
     const auto phi_text = per_file_values(s->phi_deg, s->files.size(), "--phi-deg");
+    if (s->frame_rotation != "fit" && s->frame_rotation != "none")
+      throw InputError("--frame-rotation", "must be fit or none, got '" + s->frame_rotation + "'");
     std::vector<analysis::InclineFitOptions> per(s->files.size());
     std::vector<double> phi_deg(s->files.size());
     for (std::size_t i = 0; i < per.size(); ++i) {
@@ -451,6 +466,7 @@ void add_analyze(CLI::App* area) {
         throw InputError("--block", "must be 0 or an integer in [5, 1000], got " + s->block);
       o.diagnostic_block = static_cast<int>(block);
       o.fit_model_a = !s->no_model_a;
+      o.fit_frame_rotation = s->frame_rotation == "fit";
     }
     if (s->files.size() > 1) return analyze_series(*s, per, phi_deg);
     const analysis::InclineFitOptions& o = per.front();

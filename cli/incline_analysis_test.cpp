@@ -58,6 +58,28 @@ TEST(InclineAnalysisCli, AnalyzeDetectsModelA) {
   EXPECT_LT(j["model_a"]["p_value"].get<double>(), 0.05);
 }
 
+TEST(InclineAnalysisCli, ATurnedCameraFrameIsFittedNotCalledNormalFriction) {
+  // Model B filmed with the axes turned 1 deg: the rotation is reported with its interval and
+  // the verdict stays absent; holding the frame aligned (--frame-rotation none) reproduces the
+  // old defect (present, f_N/m ~0.15 m/s^2, far outside its interval).
+  const std::string dir = temp_dir("incline_turned");
+  const std::string f = dir + "/run.txt";
+  run_json("incline synth" + kSeedRun + "--fps 120 --seed 12 --frame-rotation-deg 1 --out " + f);
+  const json j = run_json("incline analyze " + f + " --phi-deg 20.96");
+  const json& ci = j["frame_rotation_ci95_deg"];
+  EXPECT_LE(ci[0].get<double>(), 1.0) << ci;
+  EXPECT_GE(ci[1].get<double>(), 1.0) << ci;
+  EXPECT_LT(j["sigma_frame_rotation_deg"].get<double>(), 0.05);  // ~0.02 deg at 1 mm noise
+  EXPECT_EQ(j["normal_friction"]["verdict"], "absent");
+  for (const char* key : {"frame_rotation_deg", "frame_rotation_ci95_deg", "normal_accel_rotation_correlation"})
+    EXPECT_TRUE(j["model_a"].contains(key)) << key;
+  const json n = run_json("incline analyze " + f + " --phi-deg 20.96 --frame-rotation none");
+  EXPECT_EQ(n["normal_friction"]["verdict"], "present");
+  EXPECT_EQ(n["frame_rotation_deg"].get<double>(), 0.0);
+  EXPECT_GT(n["model_a"]["normal_accel"].get<double>(), 0.05);
+  expect_error(run_tribolab("incline analyze " + f + " --phi-deg 20.96 --frame-rotation maybe"), "--frame-rotation");
+}
+
 TEST(InclineAnalysisCli, SynthIsDeterministic) {
   const std::string dir = temp_dir("incline_synth_det");
   run_json("incline synth" + kSeedRun + "--seed 9 --out " + dir + "/a.txt");

@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
 #include <limits>
@@ -80,20 +81,16 @@ Parameters parse_launch(const LaunchText& t, const std::string& skip = "") {
     }
     return number(text, option);
   };
-  p.mu = need(t.mu, "--mu", 0.0);
-  if (p.mu < 0) throw InputError("--mu", "must be >= 0, got " + t.mu);
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  p.mu = check_range(need(t.mu, "--mu", 0.0), ranges::friction, "--mu");
   const double phi_deg = need(t.phi_deg, "--phi-deg", 0.0);
   if (!(phi_deg >= 0 && phi_deg < 90))
     throw InputError("--phi-deg", "must be in [0, 90), got " + t.phi_deg);
   p.phi = incline::deg_to_rad(phi_deg);
-  p.v0 = need(t.v0, "--v0", 0.0);
-  if (p.v0 < 0) throw InputError("--v0", "must be >= 0, got " + t.v0);
-  p.g = number(t.g, "--g");
-  if (!(p.g > 0)) throw InputError("--g", "must be > 0, got " + t.g);
-  if (!t.mu_static.empty()) {
-    p.mu_static = number(t.mu_static, "--mu-static");
-    if (*p.mu_static < 0) throw InputError("--mu-static", "must be >= 0, got " + t.mu_static);
-  }
+  p.v0 = check_range(need(t.v0, "--v0", 0.0), ranges::speed, "--v0");
+  p.g = check_range(number(t.g, "--g"), ranges::gravity, "--g");
+  if (!t.mu_static.empty())
+    p.mu_static = check_range(number(t.mu_static, "--mu-static"), ranges::friction, "--mu-static");
   p.check();
   return p;
 }
@@ -179,7 +176,7 @@ void add_simulate(CLI::App* area) {
     const bool model_a = s->model == "A";
     if (!s->normal_accel.empty()) {
       if (!model_a) throw InputError("--normal-accel", "applies to --model A only");
-      p.normal_accel = number(s->normal_accel, "--normal-accel");
+      p.normal_accel = check_range(number(s->normal_accel, "--normal-accel"), ranges::accel, "--normal-accel");
     }
     std::string method = s->method.empty() ? (model_a ? "numeric" : "analytic") : s->method;
     if (method != "analytic" && method != "numeric")
@@ -188,14 +185,10 @@ void add_simulate(CLI::App* area) {
       throw InputError("--method", "analytic is model B's closed form; model A has none (use numeric)");
     double t_end = incline::default_duration(p);
     if (!s->t_end.empty()) {
-      t_end = number(s->t_end, "--t-end");
-      if (!(t_end > 0)) throw InputError("--t-end", "must be > 0, got " + s->t_end);
+      t_end = check_range(number(s->t_end, "--t-end"), ranges::step, "--t-end");
     }
     double dt = t_end / 500;
-    if (!s->dt.empty()) {
-      dt = number(s->dt, "--dt");
-      if (!(dt > 0)) throw InputError("--dt", "must be > 0, got " + s->dt);
-    }
+    if (!s->dt.empty()) dt = check_range(number(s->dt, "--dt"), ranges::step, "--dt");
     if (!std::isfinite(t_end) || !std::isfinite(dt) || !(dt > 0))
       throw InputError("--t-end", "the default duration is not finite for these parameters; give --t-end and --dt");
     const std::vector<double> times = time_grid(t_end, dt);
@@ -266,24 +259,22 @@ void add_mu_from_stop(CLI::App* area) {
     if (!(phi_deg > 0 && phi_deg < 90))
       throw InputError("--phi-deg", "must be in (0, 90), got " + s->phi_deg);
     m.phi = incline::deg_to_rad(phi_deg);
-    m.x_stop = number(s->x_stop, "--x-stop");
+    m.x_stop = check_range(number(s->x_stop, "--x-stop"), ranges::position, "--x-stop");
     if (!(m.x_stop > 0))
       throw InputError("--x-stop", "must be > 0 (launch along +x); no physical root, got " + s->x_stop);
-    m.y_stop = number(s->y_stop, "--y-stop");
+    m.y_stop = check_range(number(s->y_stop, "--y-stop"), ranges::position, "--y-stop");
     if (!(m.y_stop < 0))
       throw InputError("--y-stop", "must be < 0 (the disc ends below the launch line); no physical root, got " + s->y_stop);
     const bool has_sigma = !s->sigma_phi_deg.empty() || !s->sigma_pos.empty();
     if (!s->sigma_phi_deg.empty()) {
-      const double v = number(s->sigma_phi_deg, "--sigma-phi-deg");
-      if (v < 0) throw InputError("--sigma-phi-deg", "must be >= 0, got " + s->sigma_phi_deg);
+      const double v = check_range(number(s->sigma_phi_deg, "--sigma-phi-deg"), ranges::angle_sigma_deg,
+                                   "--sigma-phi-deg");
       m.sigma_phi = incline::deg_to_rad(v);
     }
     if (!s->sigma_pos.empty()) {
-      m.sigma_pos = number(s->sigma_pos, "--sigma-pos");
-      if (m.sigma_pos < 0) throw InputError("--sigma-pos", "must be >= 0, got " + s->sigma_pos);
+      m.sigma_pos = check_range(number(s->sigma_pos, "--sigma-pos"), ranges::noise, "--sigma-pos");
     }
-    m.g = number(s->g, "--g");
-    if (!(m.g > 0)) throw InputError("--g", "must be > 0, got " + s->g);
+    m.g = check_range(number(s->g, "--g"), ranges::gravity, "--g");
     const incline::MuFromStopResult r = incline::mu_from_stop(m);
     json j;
     j["mu"] = r.mu;
@@ -295,8 +286,7 @@ void add_mu_from_stop(CLI::App* area) {
     j["best_sigma_mu"] = nullptr;
     std::optional<incline::AngleAdvice> advice;
     if (!s->plate_size.empty()) {
-      const double plate = number(s->plate_size, "--plate-size");
-      if (!(plate > 0)) throw InputError("--plate-size", "must be > 0, got " + s->plate_size);
+      const double plate = check_range(number(s->plate_size, "--plate-size"), ranges::distance, "--plate-size");
       if (!(m.sigma_phi > 0 || m.sigma_pos > 0))
         throw InputError("--plate-size", "the advice needs --sigma-phi-deg or --sigma-pos > 0");
       const incline::AngleAdvice a = incline::best_angle(
@@ -353,8 +343,9 @@ void add_families(CLI::App* area) {
       if (o.vary == incline::FamilyParameter::phi) {
         if (!(v >= 0 && v < 90)) throw InputError("--values", "phi must be in [0, 90) degrees, got " + field);
         v = incline::deg_to_rad(v);
-      } else if (v < 0) {
-        throw InputError("--values", s->vary + " must be >= 0, got " + field);
+      } else {
+        check_range(v, o.vary == incline::FamilyParameter::v0 ? ranges::speed : ranges::friction,
+                    "--values (" + s->vary + ")");
       }
       o.values.push_back(v);
     }
@@ -363,8 +354,7 @@ void add_families(CLI::App* area) {
       throw InputError("--samples", "must be an integer in [2, 1000000], got " + s->samples);
     o.samples = static_cast<int>(samples);
     if (!s->t_end.empty()) {
-      o.t_end = number(s->t_end, "--t-end");
-      if (!(o.t_end > 0)) throw InputError("--t-end", "must be > 0, got " + s->t_end);
+      o.t_end = check_range(number(s->t_end, "--t-end"), ranges::step, "--t-end");
     }
     const incline::Family f = incline::make_family(o);
     write_report_if_requested(s->report, [&] { return incline_families_report(o, f); });

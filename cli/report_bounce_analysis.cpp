@@ -67,7 +67,7 @@ Series fit_curve(const SegmentFit& seg, const std::string& name, const std::vect
 }
 
 /// A dotted vertical line at the impact time spanning the y range of the figure's series.
-void mark_impact(Figure& f, double t_impact) {
+void mark_time(Figure& f, double t, const char* name, report::Dash dash, const char* color) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const Series& s : f.series)
     for (double y : s.y)
@@ -76,12 +76,23 @@ void mark_impact(Figure& f, double t_impact) {
         hi = std::max(hi, y);
       }
   if (!std::isfinite(lo)) return;
-  Series m = named("impact time", report::Mode::Lines);
-  m.dash = report::Dash::Dot;
-  m.color = "black";
-  m.x = {t_impact, t_impact};
+  Series m = named(name, report::Mode::Lines);
+  m.dash = dash;
+  m.color = color;
+  m.x = {t, t};
   m.y = {lo, hi};
   f.series.push_back(std::move(m));
+}
+
+/// Vertical lines at the first touch, the impact time (impulse centroid) and the separation.
+void mark_impact(Figure& f, const BounceAnalysis& r) {
+  const std::size_t n = f.series.size();
+  mark_time(f, r.t_touch, "first touch", report::Dash::Dash, "gray");
+  // The marks' extent is taken from the data only, not from the marks added here.
+  auto extent = f.series.back().y;
+  mark_time(f, r.impact_time, "impact time (impulse centroid)", report::Dash::Dot, "black");
+  mark_time(f, r.t_separation, "separation", report::Dash::Dash, "gray");
+  for (std::size_t i = n; i < f.series.size(); ++i) f.series[i].y = extent;
 }
 
 /// Tip positions from the body row: A = centre - (L/2) u, B = centre + (L/2) u.
@@ -113,7 +124,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     add_data(f, r, "centre", [](const auto& row) { return row.xc; });
     f.series.push_back(fit_curve(r.pre, "x–t line before", r.pre.grid_x));
     f.series.push_back(fit_curve(r.post, "x–t line after", r.post.grid_x));
-    mark_impact(f, ti);
+    mark_impact(f, r);
     f.caption = "Tips, centre (their midpoint) and the fitted lines x = x_0 + v_x (t − t_i); R² = " +
                 r2(r.pre.x_line.r_squared) + " before, " + r2(r.post.x_line.r_squared) + " after.";
     s.add_figure(std::move(f));
@@ -124,10 +135,11 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     add_data(f, r, "centre", [](const auto& row) { return row.yc; });
     f.series.push_back(fit_curve(r.pre, "y–t parabola before", r.pre.grid_y));
     f.series.push_back(fit_curve(r.post, "y–t parabola after", r.post.grid_y));
-    mark_impact(f, ti);
+    mark_impact(f, r);
     f.caption = "Tips, centre and the fitted parabolas y = y_0 + v_y (t − t_i) + a_y (t − t_i)²/2; R² = " +
                 r2(r.pre.y_parabola.r_squared) + " before, " + r2(r.post.y_parabola.r_squared) +
-                " after. The impact time t_i is where the parabolas meet.";
+                " after. The impact time t_i is where the parabolas meet; first touch and separation (dashed) where "
+                "the lowest point of each flight, y − Y(θ), is on the floor.";
     s.add_figure(std::move(f));
   }
   {
@@ -177,7 +189,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
       f.series.push_back(std::move(rx));
       f.series.push_back(std::move(ry));
     }
-    mark_impact(f, ti);
+    mark_impact(f, r);
     f.caption = "Centre minus fitted line (x) or parabola (y) on the fitted frames; rms " +
                 v4(1e3 * r.pre.x_line.rms) + " / " + v4(1e3 * r.pre.y_parabola.rms) + " mm before, " +
                 v4(1e3 * r.post.x_line.rms) + " / " + v4(1e3 * r.post.y_parabola.rms) +
@@ -189,9 +201,10 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     add_data(f, r, "θ", [](const auto& row) { return kDeg * row.theta; });
     f.series.push_back(fit_curve(r.pre, "θ = θ_ref + ω t before", r.pre.grid_theta, kDeg));
     f.series.push_back(fit_curve(r.post, "θ = θ_ref + ω t after", r.post.grid_theta, kDeg));
-    mark_impact(f, ti);
+    mark_impact(f, r);
     f.caption = "Orientation of the line from tip A to tip B, unwrapped, with the fitted spin lines; θ at the "
-                "impact = " + v4(r.theta_impact_deg) + " deg (wrapped).";
+                "first touch = " + format_uncertain(r.theta_touch_deg, r.sigma_theta_touch_deg) + " deg, at the impact time " +
+                v4(r.theta_impact_deg) + " deg (wrapped).";
     s.add_figure(std::move(f));
   }
   {
@@ -204,7 +217,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
       w.y = {seg->omega, seg->omega};
       f.series.push_back(std::move(w));
     }
-    mark_impact(f, ti);
+    mark_impact(f, r);
     f.caption = "Spin from a short sliding window of θ per frame, and the slope of each fitted θ line "
                 "(constant in flight).";
     s.add_figure(std::move(f));
@@ -214,7 +227,8 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
 
 report::Table bounce_segments_table(const BounceAnalysis& r) {
   Table t;
-  t.caption = "Before and after the impact (values at the impact time, ± one standard uncertainty)";
+  t.caption = "Before and after the impact (± one standard uncertainty; v_x and ω are constant in flight, v_y at "
+              "the impact time and, below, at the first touch / separation; energies at the first touch / separation)";
   t.header = {"quantity", "before", "after"};
   auto row = [&](const std::string& name, const std::function<std::string(const SegmentFit&)>& f) {
     t.rows.push_back({name, f(r.pre), f(r.post)});
@@ -222,6 +236,8 @@ report::Table bounce_segments_table(const BounceAnalysis& r) {
   row("v_x (m/s)", [](const SegmentFit& s) { return format_uncertain(s.vx, s.sigma_vx); });
   row("v_y (m/s)", [](const SegmentFit& s) { return format_uncertain(s.vy, s.sigma_vy); });
   row("ω (rad/s)", [](const SegmentFit& s) { return format_uncertain(s.omega, s.sigma_omega); });
+  t.rows.push_back({"v_y at first touch / separation (m/s)", format_uncertain(r.vy_touch, r.sigma_vy_touch),
+                    format_uncertain(r.vy_separation, r.sigma_vy_separation)});
   row("a_y (m/s²)", [](const SegmentFit& s) { return format_uncertain(s.acceleration_y, s.sigma_acceleration_y); });
   row("R² of x–t", [](const SegmentFit& s) { return r2(s.x_line.r_squared); });
   row("R² of y–t", [](const SegmentFit& s) { return r2(s.y_parabola.r_squared); });
@@ -236,10 +252,19 @@ report::Table bounce_segments_table(const BounceAnalysis& r) {
 
 report::Table bounce_restitution_table(const BounceAnalysis& r) {
   Table t;
-  t.caption = "Restitution, orientation and energy at the impact";
+  t.caption = "Restitution, orientation and energy at the first touch (± one standard uncertainty)";
   t.header = {"quantity", "value", "note"};
-  t.rows.push_back({"impact time t_i (s)", v4(r.impact_time), "where the two y–t parabolas meet"});
-  t.rows.push_back({"e from velocities", format_uncertain(r.e_velocity, r.sigma_e_velocity), "−v_y,after / v_y,before"});
+  t.rows.push_back({"first touch t_c (s)", format_uncertain(r.t_touch, r.sigma_t_touch),
+                    "lowest point of the pre-impact flight on the floor"});
+  t.rows.push_back({"separation t_s (s)", format_uncertain(r.t_separation, r.sigma_t_separation),
+                    "lowest point of the post-impact flight leaves the floor"});
+  t.rows.push_back({"contact duration (s)", format_uncertain(r.contact_duration, r.sigma_contact_duration),
+                    r.floor_method == "contact_duration" ? "given (--contact-duration)" : "t_s − t_c"});
+  t.rows.push_back({"impact time t_i (s)", v4(r.impact_time), "where the two y–t parabolas meet (impulse centroid)"});
+  t.rows.push_back({"e from velocities", format_uncertain(r.e_velocity, r.sigma_e_velocity),
+                    "−v_y(t_s) / v_y(t_c): as bounce simulate"});
+  t.rows.push_back({"e at one instant", format_uncertain(r.e_velocity_common, r.sigma_e_velocity_common),
+                    "−v_y,after(t_i) / v_y,before(t_i): gravity between touch and separation biases it up"});
   const std::string floor_note =
       r.floor_method == "given" ? "--floor-y"
       : r.floor_method == "contact_duration"
@@ -251,8 +276,15 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
                           "reliable enough (docs/theory.md#bounce-analysis)"
                         : "sqrt(H'/H)"});
   t.rows.push_back({"floor y (m)", v4(r.floor_y), floor_note});
-  t.rows.push_back({"θ at the impact (deg)", v4(r.theta_impact_deg), "pre-impact spin line at t_i"});
-  t.rows.push_back({"collision angle (deg)", v4(r.collision_angle_deg), "seed 001, figure 三十"});
+  t.rows.push_back({"θ at the first touch (deg)", format_uncertain(r.theta_touch_deg, r.sigma_theta_touch_deg),
+                    "pre-impact spin line at t_c"});
+  t.rows.push_back({"collision angle (deg)", format_uncertain(r.collision_angle_deg, r.sigma_collision_angle_deg),
+                    "at the first touch, seed 001 figure 三十 (as bounce simulate and sweep)"});
+  t.rows.push_back({"θ, collision angle at t_i (deg)", v4(r.theta_impact_deg) + ", " + v4(r.collision_angle_impact_deg),
+                    "at the impact time, for comparison only"});
+  t.rows.push_back({"contact point speed at touch (m/s)", format_uncertain(r.contact_point_speed, r.sigma_contact_point_speed),
+                    "(v_x, v_y) = (" + v4(r.contact_point_vx) + ", " + v4(r.contact_point_vy) +
+                        "): centre velocity + ω × r_contact, seed 001 figure 52"});
   const double e0 = r.pre.energy.total(), e1 = r.post.energy.total();
   t.rows.push_back({"kinetic energy before → after (J)", v4(e0) + " → " + v4(e1),
                     "change " + v4(e1 - e0) + " J (" + v4(100 * (e1 - e0) / e0) + " %)"});
@@ -261,8 +293,13 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
                     "rotational energy lost in the contact"});
   if (r.mean_normal_force) {
     t.rows.push_back({"mean normal force (N)", format_uncertain(*r.mean_normal_force, *r.sigma_mean_normal_force),
-                      "m (v_y,after − v_y,before) / T"});
+                      std::string("impulse / T, T ") + (r.force_duration_method == "given" ? "given" : "= t_s − t_c") +
+                          " (its uncertainty included)"});
   }
+  t.rows.push_back({"g seen by the flights (m/s²)", format_uncertain(r.gravity, r.sigma_gravity),
+                    "tilt " + format_uncertain(r.gravity_tilt_deg, r.sigma_gravity_tilt_deg) +
+                        " deg; 9.8 and 0 expected (frame rate, level camera)"});
+  for (const auto& w : r.warnings) t.rows.push_back({"warning", w, ""});
   t.rows.push_back({"tip distance (m)", format_uncertain(r.body.length_mean, r.body.length_sd),
                     "mean ± sd over frames; should be 2a"});
   t.rows.push_back({"position noise of the centre (mm)", v4(1e3 * r.impacts.noise_y), "robust estimate"});
@@ -278,7 +315,10 @@ void add_bounce_analysis_equations(report::Section& s, const BounceAnalysis& r) 
                  "one parabola per flight; t_i where they meet (the centroid of the normal impulse)");
   s.add_equation("θ = θ_{ref} + ω (t − t_{ref})", "docs/theory.md#bounce-analysis",
                  "the seed reads ω = 2π/T from the period; a line through every frame gives its uncertainty");
-  s.add_equation("e_v = −v_{y,after} / v_{y,before}", "seed 001, 實驗一 (恢復係數 e)");
+  s.add_equation("e_v = −v_{y,after}(t_s) / v_{y,before}(t_c)", "seed 001, 實驗一 (恢復係數 e); docs/theory.md#bounce-analysis",
+                 "velocities at the first touch and at the separation, as the contact model defines e");
+  s.add_equation("y_{before}(t_c) − Y(θ_{before}(t_c)) = y_{floor} = y_{after}(t_s) − Y(θ_{after}(t_s))",
+                 "docs/theory.md#bounce-analysis", "first touch t_c and separation t_s on the fitted flights");
   s.add_equation("e_h = sqrt(H'/H),   H = y_0 − v_y^2/(2 a_y) − y_{floor}", "seed 001, 實驗二 (三)",
                  r.floor_given ? "apex heights of the centre above the given floor"
                                : "floor from the lowest point h = y − Y(θ) of the flights; see docs/theory.md#bounce-analysis");
@@ -289,8 +329,9 @@ void add_bounce_analysis_equations(report::Section& s, const BounceAnalysis& r) 
   s.add_equation("Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ)", "seed 001, eq 20", "depth of the lowest point below the centre");
   s.add_equation("E = m v_x^2/2 + m v_y^2/2 + I ω^2/2", "seed 001, 討論", "kinetic energy, translational and rotational");
   if (r.mean_normal_force) {
-    s.add_equation("N_{mean} = m (v_{y,after} − v_{y,before}) / T", "seed 001, 實驗一; docs/theory.md#bounce-analysis",
-                   "both velocities at t_i, so gravity's impulse cancels");
+    s.add_equation("N_{mean} = m (v_{y,after}(t_i) − v_{y,before}(t_i)) / T = m (v_y(t_s) − v_y(t_c)) / T + m g",
+                   "seed 001, 實驗一; docs/theory.md#bounce-analysis",
+                   "the impulse over the contact duration T (given, or t_s − t_c)");
   }
 }
 

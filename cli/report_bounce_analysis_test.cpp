@@ -54,9 +54,10 @@ TEST(BounceAnalyzeReport, ShowsTheNumbersOfTheJson) {
   for (const char* seg : {"pre", "post"})
     for (const char* key : {"vx", "vy", "omega", "ay", "apex_height"})
       EXPECT_NE(html.find(cell(j[seg], key)), std::string::npos) << seg << "." << key << " = " << cell(j[seg], key);
-  for (const char* key : {"e_velocity", "e_height", "mean_normal_force"})
+  for (const char* key : {"e_velocity", "e_height", "mean_normal_force", "collision_angle_deg", "t_touch", "t_separation",
+                          "contact_duration", "contact_point_speed", "e_velocity_common", "theta_touch_deg"})
     EXPECT_NE(html.find(cell(j, key)), std::string::npos) << key << " = " << cell(j, key);
-  for (const auto& [key, v] : {std::pair{"theta_impact_deg", j["theta_impact_deg"]}, {"collision_angle_deg", j["collision_angle_deg"]},
+  for (const auto& [key, v] : {std::pair{"theta_impact_deg", j["theta_impact_deg"]}, {"collision_angle_impact_deg", j["collision_angle_impact_deg"]},
                                {"energy_pre", j["energy_pre"]}, {"energy_post", j["energy_post"]}, {"impact_time", j["impact_time"]}})
     EXPECT_NE(html.find(report::format_value(v.get<double>(), 4)), std::string::npos) << key;
   // The equations cite the seed.

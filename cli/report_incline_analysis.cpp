@@ -165,8 +165,9 @@ void add_incline_analysis_equations(report::Section& s) {
   add_model_b_equations(s);
   s.add_equation("dv/dt = −g cos φ μ v̂ + (f_N/m) n̂ − g sin φ ŷ", "seed 000, 肆-三; docs/theory.md#incline-analysis",
                  "model A: a friction component f_N normal to the path (n̂ = left normal of v̂); f_N = 0 is model B");
-  s.add_equation("F = (RSS_B − RSS_A) / (RSS_A / (2n − 6))", "docs/theory.md#incline-analysis",
-                 "A against B, nested models; p = the probability that an F(1, 2n − 6) variable exceeds F");
+  s.add_equation("F = (RSS_B − RSS_A) / (RSS_A / (2n − 7))", "docs/theory.md#incline-analysis",
+                 "A against B, nested models, both with the camera frame's rotation ψ fitted (2n − 6 without it); "
+                 "p = the probability that an F(1, 2n − 7) variable exceeds F");
   s.add_equation("a_N = (a_x v_y − a_y v_x)/|v| = g sin φ sin θ − f_N/m,   sin θ = v_x/|v|", "seed 000, eq b",
                  "sign corrected, see the errata");
   s.add_equation("cos θ_c = tan φ/μ − f_N sin θ_c/(m g μ cos φ)", "seed 000, eq c",
@@ -191,6 +192,11 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
   key.header = {"quantity", "value"};
   key.rows = {{"φ (deg)", format_value(incline::rad_to_deg(a.phi), 5)},
               {"k = tan φ / μ", format_value(std::tan(a.phi) / b.mu.value, 5)},
+              {"camera frame rotation ψ (deg)",
+               b.frame_rotation.sigma > 0
+                   ? format_uncertain(incline::rad_to_deg(b.frame_rotation.value),
+                                      incline::rad_to_deg(b.frame_rotation.sigma))
+                   : "0 (not fitted)"},
               {"rms residual, model B (m)", format_value(b.rms_residual, 4)},
               {"t_stop (s)", b.t_stop ? format_value(*b.t_stop, 5) : "—"},
               {"x_stop, y_stop (m)", b.x_stop ? format_value(*b.x_stop, 5) + ", " + format_value(*b.y_stop, 5) : "—"}};
@@ -205,6 +211,7 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
     cmp.rows = {{"f_N/m, model A (m/s^2)", format_uncertain(m.normal_accel.value, m.normal_accel.sigma)},
                 {"95 % interval of f_N/m", interval(m.normal_accel.ci_low, m.normal_accel.ci_high)},
                 {"μ, model A", format_uncertain(m.mu.value, m.mu.sigma)},
+                {"correlation of f_N/m with the frame rotation", format_value(m.rotation_correlation, 3)},
                 {"rms residual A / B (m)", format_value(m.rms_residual, 4) + " / " + format_value(b.rms_residual, 4)},
                 {"F statistic", format_value(a.test->f_statistic, 4)},
                 {"p value", format_value(a.test->p_value, 3)},

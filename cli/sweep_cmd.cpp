@@ -16,6 +16,7 @@
 #include "io/sweep_file.hpp"
 #include "io/sweep_mpi.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 #include "report_option.hpp"
 #include "report_sweep.hpp"
 
@@ -84,6 +85,21 @@ io::SweepCommandOptions to_options(const SweepArgs& a, const SweepPhysics& physi
     if (v.axis) o.grid.axes.push_back(*v.axis);
     else o.grid.fixed_mu = v.value;
   }
+  // Physical ranges of the swept quantities (numerics/physical_range.hpp, docs/cli.md#physical-ranges).
+  for (const sweep::Axis& ax : o.grid.axes) {
+    const char* option = ax.quantity == sweep::Quantity::speed   ? "--speed"
+                         : ax.quantity == sweep::Quantity::mu    ? "--mu"
+                         : ax.quantity == sweep::Quantity::omega ? "--omega"
+                         : ax.quantity == sweep::Quantity::ratio ? "--ratio"
+                                                                 : nullptr;
+    const PhysicalRange r = ax.quantity == sweep::Quantity::speed ? ranges::speed
+                            : ax.quantity == sweep::Quantity::mu  ? ranges::friction
+                            : ax.quantity == sweep::Quantity::ratio ? PhysicalRange{-1e5, 1e5, "rad/m"}
+                                                                     : ranges::spin;
+    if (option) for (double v : {ax.lo, ax.hi}) check_range(v, r, option);
+  }
+  check_range(o.grid.fixed_speed, ranges::speed, "--speed");
+  check_range(o.grid.fixed_mu, ranges::friction, "--mu");
   sweep::sort_axes(o.grid.axes);
   if (!a.shard.empty()) o.shard = io::parse_shard(a.shard, "--shard");
   o.out = a.out;

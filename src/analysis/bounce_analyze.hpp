@@ -1,9 +1,11 @@
 // Analysis of one tracked bounce of the rugby ball (seed 001, experiment 1): the two tips
 // A and B give the centre (midpoint) and the orientation; the impact is found on the centre
 // track; each flight segment gets an x–t line, a y–t parabola (with R^2) and a linear
-// theta–t spin fit; velocities are the fits' derivatives at the impact time; restitution
-// from velocities and from apex heights; energies; orientation and collision angle at the
-// impact; the mean normal force over a given contact duration.
+// theta–t spin fit; velocities are the fits' derivatives at the impact time; first touch and
+// separation located where each flight's lowest point meets the floor; restitution from the
+// velocities at touch and separation (as bounce simulate) and from apex heights; energies;
+// orientation, collision angle and contact-point velocity at the touch; the mean normal
+// force over the contact duration, with uncertainties propagated from the fits and the floor.
 // See docs/theory.md#bounce-analysis.
 #pragma once
 
@@ -27,7 +29,10 @@ struct BounceAnalyzeOptions {
   /// also dropped automatically (see trim in docs/theory.md#bounce-analysis).
   int exclude = 0;
   std::optional<double> floor_y;        ///< floor height, m; default: from the flights (see theory)
-  std::optional<double> contact_duration;  ///< s; enables the mean normal force, e.g. 0.004
+  double sigma_floor_y = 0;             ///< standard uncertainty of a given floor_y, m (e.g. 0.001)
+  /// s, counted in frames (uncertain by half a frame): divides the impulse for the mean
+  /// normal force, and locates the floor without floor_y; default: the located contact.
+  std::optional<double> contact_duration;
   int impact = 1;                       ///< which detected impact to analyse (1 = first)
   track::ImpactOptions impacts;         ///< impact detection on the centre track
   int grid_points = 101;                ///< samples of each fitted curve for figures (>= 2)
@@ -50,7 +55,7 @@ struct SegmentFit {
   double apex_y = 0;               ///< centre height there, m (above the file's origin)
   double apex_height = 0;          ///< apex_y - floor_y, m
   double sigma_apex_height = 0;    ///< m (fit covariance, floor included)
-  bounce::KineticEnergy energy;    ///< at the impact, from vx, vy, omega, J
+  bounce::KineticEnergy energy;    ///< J, from vx, omega and vy at t_touch (pre) / t_separation (post)
   /// Fitted curves sampled on a grid over the segment's time span, for figures.
   std::vector<double> grid_t, grid_x, grid_y, grid_theta;
 };
@@ -62,7 +67,8 @@ struct BounceAnalysis {
   std::size_t impact_used = 0;       ///< index into impacts.impacts
   double impact_time = 0;            ///< s: where the two fitted y parabolas meet
   SegmentFit pre, post;
-  double e_velocity = 0, sigma_e_velocity = 0;  ///< -vy_post / vy_pre at impact_time
+  /// -vy_separation / vy_touch: simulate's e (velocities at first touch and at separation)
+  double e_velocity = 0, sigma_e_velocity = 0;
   double e_height = 0, sigma_e_height = 0;      ///< sqrt(H'/H); NaN when floor_method is "bracket"
   double floor_y = 0;                ///< m (given, or y_centre(impact) - Y(theta_impact))
   bool floor_given = false;
@@ -72,8 +78,38 @@ struct BounceAnalysis {
   /// given: unreliable at high frame rates, see docs/theory.md#bounce-analysis).
   std::string floor_method = "given";
   double theta_impact_deg = 0;       ///< pre-impact spin fit at impact_time, wrapped to (-180, 180]
-  double collision_angle_deg = 0;    ///< bounce::collision_angle_deg at the impact
+  double collision_angle_deg = 0;    ///< bounce::collision_angle_deg at first touch (t_touch)
   std::optional<double> mean_normal_force, sigma_mean_normal_force;  ///< N
+
+  // First touch and separation, located on the fitted flights and the ball's geometry: the
+  // lowest point h(t) = y(t) - Y(theta(t)) meets the floor (docs/theory.md#bounce-analysis).
+  // Sigmas propagate the fit covariances and the floor's (or the contact duration's) error.
+  double t_touch = 0, sigma_t_touch = 0;            ///< first touch (pre-impact flight), s
+  double t_separation = 0, sigma_t_separation = 0;  ///< separation (post-impact flight), s
+  /// t_separation - t_touch, s (with floor_method "contact_duration": the given value)
+  double contact_duration = 0, sigma_contact_duration = 0;
+  double theta_touch_deg = 0, sigma_theta_touch_deg = 0;  ///< orientation at t_touch, deg
+  double sigma_collision_angle_deg = 0;  ///< of collision_angle_deg (now at t_touch), deg
+  double collision_angle_impact_deg = 0; ///< collision angle at impact_time (the old instant), deg
+  double vy_touch = 0, sigma_vy_touch = 0;            ///< centre vy at t_touch (pre fit), m/s
+  double vy_separation = 0, sigma_vy_separation = 0;  ///< centre vy at t_separation (post fit), m/s
+  /// -pre.vy / post.vy at impact_time (both flights at one instant: the old e_velocity)
+  double e_velocity_common = 0, sigma_e_velocity_common = 0;
+  /// Velocity of the material point at the support point at t_touch: centre velocity +
+  /// omega x r_contact (bounce::contact_point_velocity), m/s; speed = its magnitude.
+  double contact_point_vx = 0, contact_point_vy = 0, contact_point_speed = 0;
+  double sigma_contact_point_vx = 0, sigma_contact_point_vy = 0, sigma_contact_point_speed = 0;
+  /// Contact duration dividing the impulse for mean_normal_force: "given" (contact_duration
+  /// option, uncertain by a uniform half frame) or "located" (t_separation - t_touch).
+  std::string force_duration_method;
+  /// Gravity seen by the flights: magnitude and tilt from the file's -y axis (positive: g
+  /// has a +x component), from y parabolas and x parabolas of both flights (weighted). A
+  /// wrong frame rate scales the magnitude (by the square of the rate's error); a turned
+  /// camera tilts it.
+  double gravity = 0, sigma_gravity = 0;            ///< m/s^2
+  double gravity_tilt_deg = 0, sigma_gravity_tilt_deg = 0;  ///< deg
+  /// Plain-language warnings (floor unknown, gravity not 9.8 m/s^2 or tilted), empty if none.
+  std::vector<std::string> warnings;
 };
 
 /// Analyses tracks `a` and `b` (the two tips). Throws InputError when the tracks share too

@@ -1,10 +1,13 @@
 // docs/theory.md#bounce-synthetic.
 #include "analysis/bounce_synth.hpp"
 
+#include "numerics/physical_range.hpp"
+
 #include "bounce/flight.hpp"
 #include "numerics/error.hpp"
 
 #include <cmath>
+#include <tuple>
 #include <numbers>
 #include <random>
 
@@ -24,7 +27,13 @@ std::string SynthVideoOptions::validate() const {
   if (auto e = ball.validate(); !e.empty()) return e;
   if (auto e = law.validate(); !e.empty()) return e;
   if (auto e = friction.validate(); !e.empty()) return e;
-  for (double v : {height, theta_deg, omega, vx, vy, after, fps, noise, time_factor})
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  for (const auto& [v, r, name] :
+       {std::tuple{height, ranges::height, "height"}, {theta_deg, ranges::angle_deg, "theta-deg"},
+        {omega, ranges::spin, "omega"}, {vx, ranges::velocity, "vx"}, {vy, ranges::velocity, "vy"},
+        {time_factor, PhysicalRange{1e-3, 1e5, ""}, "time-factor"}})
+    if (auto e = range_error(v, r, name); !e.empty()) return e;
+  for (double v : {after, fps, noise})
     if (!std::isfinite(v)) return "options must be finite numbers";
   if (!(height > ball.a)) return "height: the release height must exceed the semi-major axis a";
   if (!(after > 0 && after <= 10)) return "after: must lie in (0, 10] s";

@@ -46,10 +46,14 @@ TEST(NormalAccelDiagnostic, LineHasSlopeGSinPhiThroughTheOriginForModelB) {
 }
 
 TEST(NormalAccelDiagnostic, InterceptIsMinusTheNormalAcceleration) {
-  // Model A with f_N/m = 1 m/s^2: eq b's intercept is -f_N/m (same bias budget as above).
+  // Model A with f_N/m = 1 m/s^2: eq b's intercept is -f_N/m. Noise-free bias of the blocks:
+  // 0.071 m/s^2 measured here, larger than model B's (< 0.05) because the path curves faster;
+  // the window runs from model A's launch to 0.9 of its stop (until the frame-rotation fix it
+  // ended at model B's stop, which the unmodelled f_N put earlier and which hid part of this
+  // bias). Tolerance 0.08 = that bias plus margin; the noisy intercept's sigma is ~1 m/s^2.
   const auto a = analyze(run_options(20.96, 1e-7, 1, 1.0));
   ASSERT_TRUE(a.a_n.has_value());
-  EXPECT_NEAR(a.a_n->intercept, -1.0, 0.06);
+  EXPECT_NEAR(a.a_n->intercept, -1.0, 0.08);
   EXPECT_NEAR(a.a_n->slope, a.a_n->slope_expected, 0.03 * a.a_n->slope_expected);
   EXPECT_TRUE(a.a_n->intercept_excludes_zero);
 }

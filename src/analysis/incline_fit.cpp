@@ -1,5 +1,6 @@
 #include "analysis/incline_fit.hpp"
 
+#include "analysis/frame_rotation.hpp"
 #include "incline/inverse.hpp"
 #include "incline/numeric.hpp"
 #include "numerics/error.hpp"
@@ -36,6 +37,10 @@ incline::Parameters launch(double mu, double phi, double v0, double g, double no
 }
 
 std::string where(const track::Track& t) { return "track '" + t.name + "'"; }
+
+/// Bound of the fitted frame rotation, rad (20 deg): a camera turned further is not a small
+/// misalignment (and the launch would not be "along +x").
+constexpr double kMaxFrameRotation = 0.35;
 
 /// Rough starting values read off the data: launch time and point, speed, friction.
 struct Guess {
@@ -114,7 +119,7 @@ std::string InclineFitOptions::validate() const {
 }
 
 std::vector<incline::State> model_b_states(const incline::Parameters& p, double t0, double x0,
-                                           double y0, const std::vector<double>& t) {
+                                           double y0, const std::vector<double>& t, double psi) {
   const incline::ClosedForm cf(p);
   std::vector<incline::State> out;
   out.reserve(t.size());
@@ -122,15 +127,25 @@ std::vector<incline::State> model_b_states(const incline::Parameters& p, double 
     incline::State s;  // at rest before the launch
     if (ti > t0) s = cf.at(ti - t0);
     s.t = ti;
-    s.x += x0;
-    s.y += y0;
-    out.push_back(s);
+    out.push_back(rotate_state(s, psi, x0, y0));
   }
   return out;
 }
 
+track::Track derotate_track(const track::Track& track, double psi, double x0, double y0) {
+  track::Track r = track;
+  const double c = std::cos(psi), n = std::sin(psi);
+  for (auto& q : r.points) {
+    const double u = q.x - x0, v = q.y - y0;
+    q.x = x0 + c * u + n * v;
+    q.y = y0 - n * u + c * v;
+  }
+  return r;
+}
+
 std::vector<incline::State> model_a_states(const incline::Parameters& p, double t0, double x0,
-                                           double y0, const std::vector<double>& t, double tol) {
+                                           double y0, const std::vector<double>& t, double tol,
+                                           double psi) {
   std::vector<double> rel;
   for (double ti : t)
     if (ti > t0) rel.push_back(ti - t0);
@@ -152,9 +167,7 @@ std::vector<incline::State> model_a_states(const incline::Parameters& p, double 
     incline::State s;
     if (ti > t0) s = moving.at(m++);
     s.t = ti;
-    s.x += x0;
-    s.y += y0;
-    out.push_back(s);
+    out.push_back(rotate_state(s, psi, x0, y0));
   }
   return out;
 }
@@ -181,9 +194,9 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
   const std::vector<double> t = times_of(track);
 
   auto residuals = [&](const double* q, double* r) {
-    if (!(q[0] > 0 && q[1] > 0) || !std::isfinite(q[4])) return false;
+    if (!(q[0] > 0 && q[1] > 0) || !std::isfinite(q[4]) || !std::isfinite(q[5])) return false;
     try {
-      const auto s = model_b_states(launch(q[0], o.phi, q[1], o.g), q[4], q[2], q[3], t);
+      const auto s = model_b_states(launch(q[0], o.phi, q[1], o.g), q[4], q[2], q[3], t, q[5]);
       for (int i = 0; i < n; ++i) {
         r[i] = pts[i].x - s[i].x;
         r[n + i] = pts[i].y - s[i].y;
@@ -207,6 +220,7 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
         {"x0", g.x0, std::nullopt, std::nullopt, false},
         {"y0", g.y0, std::nullopt, std::nullopt, false},
         {"t0", g.t0, t.front() - 5.0, t.back(), false},
+        {"frame_rotation", 0.0, -kMaxFrameRotation, kMaxFrameRotation, !o.fit_frame_rotation},
     };
     numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params);
     // Keep the best: a converged fit over any other, then the lower cost.
@@ -227,6 +241,7 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
   r.x0 = estimate(best, 2, o.level);
   r.y0 = estimate(best, 3, o.level);
   r.t0 = estimate(best, 4, o.level);
+  r.frame_rotation = estimate(best, 5, o.level);
   r.rms_residual = best.rms;
   r.rss = 2 * best.cost;
   r.dof = best.dof;
@@ -234,9 +249,13 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
   const incline::ClosedForm cf(launch(r.mu.value, o.phi, r.v0.value, o.g));
   const incline::Prediction pr = cf.predict();
   if (pr.t_stop) {
+    incline::State stop;
+    stop.x = *pr.x_stop;
+    stop.y = *pr.y_stop;
+    stop = rotate_state(stop, r.frame_rotation.value, r.x0.value, r.y0.value);
     r.t_stop = r.t0.value + *pr.t_stop;
-    r.x_stop = r.x0.value + *pr.x_stop;
-    r.y_stop = r.y0.value + *pr.y_stop;
+    r.x_stop = stop.x;
+    r.y_stop = stop.y;
   }
   return r;
 }
@@ -247,10 +266,11 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
   const int n = static_cast<int>(pts.size());
   const std::vector<double> t = times_of(track);
   auto residuals = [&](const double* q, double* r) {
-    if (!(q[0] > 0 && q[1] > 0) || !std::isfinite(q[4]) || !std::isfinite(q[5])) return false;
+    if (!(q[0] > 0 && q[1] > 0) || !std::isfinite(q[4]) || !std::isfinite(q[5]) || !std::isfinite(q[6]))
+      return false;
     try {
       const auto s = model_a_states(launch(q[0], o.phi, q[1], o.g, q[5]), q[4], q[2], q[3], t,
-                                    o.ode_tolerance);
+                                    o.ode_tolerance, q[6]);
       for (int i = 0; i < n; ++i) {
         r[i] = pts[i].x - s[i].x;
         r[n + i] = pts[i].y - s[i].y;
@@ -268,6 +288,8 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
       {"y0", start.y0.value, std::nullopt, std::nullopt, false},
       {"t0", start.t0.value, t.front() - 5.0, t.back(), false},
       {"normal_accel", 0.0, -accel_bound, accel_bound, false},
+      {"frame_rotation", start.frame_rotation.value, -kMaxFrameRotation, kMaxFrameRotation,
+       !o.fit_frame_rotation},
   };
   numerics::FitOptions fo;
   // The integrator's error (~tolerance) limits how flat the cost can be resolved.
@@ -285,6 +307,11 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
   r.y0 = estimate(f, 3, o.level);
   r.t0 = estimate(f, 4, o.level);
   r.normal_accel = estimate(f, 5, o.level);
+  r.frame_rotation = estimate(f, 6, o.level);
+  if (o.fit_frame_rotation) {
+    const double v55 = f.covariance(5, 5), v66 = f.covariance(6, 6);
+    if (v55 > 0 && v66 > 0) r.rotation_correlation = f.covariance(5, 6) / std::sqrt(v55 * v66);
+  }
   r.rms_residual = f.rms;
   r.rss = 2 * f.cost;
   r.dof = f.dof;
@@ -304,8 +331,9 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
   const std::vector<double> t = times_of(track), fine = fine_grid(t);
   const ModelBFit& b = a.model_b;
   const incline::Parameters pb = launch(b.mu.value, o.phi, b.v0.value, o.g);
-  a.model_b_at_data = model_b_states(pb, b.t0.value, b.x0.value, b.y0.value, t);
-  a.model_b_fine = model_b_states(pb, b.t0.value, b.x0.value, b.y0.value, fine);
+  const double psi_b = b.frame_rotation.value;
+  a.model_b_at_data = model_b_states(pb, b.t0.value, b.x0.value, b.y0.value, t, psi_b);
+  a.model_b_fine = model_b_states(pb, b.t0.value, b.x0.value, b.y0.value, fine, psi_b);
   for (std::size_t i = 0; i < t.size(); ++i) {
     a.residual_x_b.push_back(track.points[i].x - a.model_b_at_data[i].x);
     a.residual_y_b.push_back(track.points[i].y - a.model_b_at_data[i].y);
@@ -316,8 +344,11 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
       ModelAFit fa = fit_model_a(track, o, b);
       const incline::Parameters pa =
           launch(fa.mu.value, o.phi, fa.v0.value, o.g, fa.normal_accel.value);
-      a.model_a_at_data = model_a_states(pa, fa.t0.value, fa.x0.value, fa.y0.value, t, o.ode_tolerance);
-      a.model_a_fine = model_a_states(pa, fa.t0.value, fa.x0.value, fa.y0.value, fine, o.ode_tolerance);
+      const double psi_a = fa.frame_rotation.value;
+      a.model_a_at_data =
+          model_a_states(pa, fa.t0.value, fa.x0.value, fa.y0.value, t, o.ode_tolerance, psi_a);
+      a.model_a_fine =
+          model_a_states(pa, fa.t0.value, fa.x0.value, fa.y0.value, fine, o.ode_tolerance, psi_a);
       for (std::size_t i = 0; i < t.size(); ++i) {
         a.residual_x_a.push_back(track.points[i].x - a.model_a_at_data[i].x);
         a.residual_y_a.push_back(track.points[i].y - a.model_a_at_data[i].y);
@@ -337,10 +368,25 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     }
   }
 
-  // Diagnostics: eq b on the moving part short of the stop (theta undefined at v = 0).
-  const double t_move_end =
-      b.t_stop ? b.t0.value + 0.9 * (*b.t_stop - b.t0.value) : t.back();
-  a.a_n = normal_accel_diagnostic(track, b.t0.value, t_move_end, o.phi, o.g, o.diagnostic_block, o.level);
+  // Diagnostics: eq b on the moving part short of the stop (theta undefined at v = 0), in the
+  // incline's frame: the points turned back by the fitted rotation. Model A's rotation, launch
+  // and stop when it is fitted: A nests B, so they are unbiased whether or not a normal friction
+  // component is present, whereas model B's psi absorbs part of one (f_N/m = 1 m/s^2 turned
+  // B's psi by 4.7 deg and took 0.4 m/s^2 off the eq b intercept).
+  double t0_d = b.t0.value, x0_d = b.x0.value, y0_d = b.y0.value, psi_d = psi_b;
+  std::optional<double> t_stop_d = b.t_stop;
+  if (a.model_a) {
+    const ModelAFit& fa = *a.model_a;
+    t0_d = fa.t0.value, x0_d = fa.x0.value, y0_d = fa.y0.value, psi_d = fa.frame_rotation.value;
+    incline::NumericOptions no;
+    no.model = incline::Model::A;
+    no.t_max = 60.0;
+    const auto r = incline::simulate(launch(fa.mu.value, o.phi, fa.v0.value, o.g, fa.normal_accel.value), {}, no);
+    t_stop_d = r.t_stop ? std::optional<double>(t0_d + *r.t_stop) : std::nullopt;
+  }
+  const double t_move_end = t_stop_d ? t0_d + 0.9 * (*t_stop_d - t0_d) : t.back();
+  const track::Track incline_frame = derotate_track(track, psi_d, x0_d, y0_d);
+  a.a_n = normal_accel_diagnostic(incline_frame, t0_d, t_move_end, o.phi, o.g, o.diagnostic_block, o.level);
   if (!a.a_n) a.notes.push_back("a_N diagnostic skipped: fewer than 3 blocks of moving points");
 
   // Eq c: the v_y extremum exists when the disc stops (k < 1); locate it from model B.
@@ -356,7 +402,7 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     const double T = *b.t_stop - b.t0.value;
     const double lo = std::max(b.t0.value + 0.02 * T, t_c - 0.35 * T);
     const double hi = std::min(*b.t_stop - 0.1 * T, t_c + 0.35 * T);
-    a.theta_c = theta_c_diagnostic(track, t_c, lo, hi, 4);
+    a.theta_c = theta_c_diagnostic(incline_frame, t_c, lo, hi, 4);
     if (!a.theta_c) a.notes.push_back("theta_c diagnostic skipped: too few points around the v_y extremum");
   } else {
     a.notes.push_back("theta_c diagnostic skipped: the fitted motion does not stop (k >= 1), so v_y has no extremum");

@@ -9,9 +9,11 @@
 // (x0, y0); for t > t0 it is at (x0, y0) + r(t - t0), with r the launch along +x from the
 // origin (closed form for B, integrator for A) including the rest after a stop. Residuals are
 // the x and y differences, all with one unknown noise level (estimated from the fit).
-// The camera frame is assumed aligned with the incline (x across, y up the slope), as the
-// seed's plumb-line setup makes it; a rotation of the frame is not fitted (it would be
-// identifiable from the launch direction, but is not implemented).
+// The camera frame may be turned against the incline by a small unknown angle psi (a plumb
+// line set off, a tripod not level): the model is rotated by psi about the launch point
+// (analysis/frame_rotation.hpp) and psi is fitted as a nuisance parameter in both models
+// (InclineFitOptions::fit_frame_rotation), so a turned frame is not mistaken for normal
+// friction. The diagnostics run on the de-rotated points.
 #pragma once
 
 #include "analysis/incline_diagnostics.hpp"
@@ -38,6 +40,9 @@ struct InclineFitOptions {
   /// blocks, 5 to 25 points each).
   int diagnostic_block = 0;
   double ode_tolerance = 1e-10;  ///< integrator tolerance inside the model A fit
+  /// Fit the rotation psi of the camera frame against the incline (a nuisance parameter in
+  /// models B and A); false holds psi = 0 (frame known to be aligned).
+  bool fit_frame_rotation = true;
 
   std::string validate() const;
 };
@@ -50,12 +55,13 @@ struct Estimate {
   double ci_high = 0;
 };
 
-/// Model B fit: unknowns mu, v0 (m/s), x0, y0 (m), t0 (s, in the file's time).
+/// Model B fit: unknowns mu, v0 (m/s), x0, y0 (m), t0 (s, in the file's time) and the frame
+/// rotation psi (rad; value 0, sigma 0 when not fitted).
 struct ModelBFit {
-  Estimate mu, v0, x0, y0, t0;
+  Estimate mu, v0, x0, y0, t0, frame_rotation;
   double rms_residual = 0;   ///< sqrt(mean of the 2n squared residuals), m (~ the noise)
   double rss = 0;            ///< sum of squared residuals, m^2
-  int dof = 0;               ///< 2n - 5
+  int dof = 0;               ///< 2n - 6 (2n - 5 without the frame rotation)
   int iterations = 0;
   std::optional<double> t_stop;          ///< stop instant in the file's time, s
   std::optional<double> x_stop, y_stop;  ///< stop point in the file's frame, m
@@ -65,9 +71,12 @@ struct ModelBFit {
 /// Model A fit: model B's unknowns plus normal_accel = f_N/m (m/s^2, positive to the left
 /// of the velocity: up the slope for a launch along +x).
 struct ModelAFit {
-  Estimate mu, v0, x0, y0, t0, normal_accel;
+  Estimate mu, v0, x0, y0, t0, normal_accel, frame_rotation;  ///< frame_rotation: psi, rad
+  /// Correlation of normal_accel and frame_rotation in the fit's covariance (0 when the
+  /// rotation is not fitted): how far one can stand in for the other.
+  double rotation_correlation = 0;
   double rms_residual = 0, rss = 0;  ///< m, m^2
-  int dof = 0;                       ///< 2n - 6
+  int dof = 0;                       ///< 2n - 7 (2n - 6 without the frame rotation)
   int iterations = 0;
   numerics::FitResult fit;
 };
@@ -103,13 +112,16 @@ struct InclineAnalysis {
   std::vector<std::string> notes;  ///< what was skipped and why
 };
 
-/// Model B states at file times t for launch time t0 and point (x0, y0) (rest before t0).
+/// Model B states at file times t for launch time t0 and point (x0, y0) (rest before t0),
+/// turned by the frame rotation psi (rad) about the launch point.
 std::vector<incline::State> model_b_states(const incline::Parameters& p, double t0, double x0,
-                                           double y0, const std::vector<double>& t);
+                                           double y0, const std::vector<double>& t, double psi = 0);
 /// Model A states likewise, by the integrator (Parameters::normal_accel); tolerance `tol`.
 std::vector<incline::State> model_a_states(const incline::Parameters& p, double t0, double x0,
                                            double y0, const std::vector<double>& t,
-                                           double tol = 1e-10);
+                                           double tol = 1e-10, double psi = 0);
+/// The track turned back by -psi about (x0, y0): the points in the incline's frame.
+track::Track derotate_track(const track::Track& track, double psi, double x0, double y0);
 
 /// Fits model B. Throws InputError when the data cannot support it (too few points, no
 /// motion, motion toward -x, no convergence, parameters not identifiable).

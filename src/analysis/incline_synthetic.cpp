@@ -1,9 +1,13 @@
 #include "analysis/incline_synthetic.hpp"
 
+#include "analysis/frame_rotation.hpp"
+
 #include "incline/numeric.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
+#include <tuple>
 
 namespace tribolab::analysis {
 
@@ -14,11 +18,13 @@ std::string InclineSynthOptions::validate() const {
     return "a release from rest (v0 = 0) is a model B slide: normal_accel must be 0";
   if (params.v0 == 0 && params.stays_at_rest())
     return "released from rest the disc stays (tan(phi) <= mu_s): give v0 > 0 or a steeper phi";
-  if (!(std::isfinite(fps) && fps >= 1 && fps <= 1e5)) return "fps must be in [1, 100000]";
-  if (!(std::isfinite(noise) && noise >= 0)) return "noise must be >= 0 (m)";
-  if (!(std::isfinite(t_launch) && t_launch >= 0)) return "t_launch must be >= 0 (s)";
-  if (!(std::isfinite(x0) && std::isfinite(y0))) return "launch point must be finite";
-  if (!(std::isfinite(duration) && duration >= 0)) return "duration must be >= 0 (s)";
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  for (const auto& [v, r, name] : {std::tuple{fps, ranges::frame_rate, "fps"}, {noise, ranges::noise, "noise"},
+                                   {t_launch, ranges::duration, "t_launch"}, {x0, ranges::position, "x0"},
+                                   {y0, ranges::position, "y0"}, {duration, ranges::duration, "duration"}})
+    if (auto e = range_error(v, r, name); !e.empty()) return e;
+  if (!(std::isfinite(frame_rotation) && std::abs(frame_rotation) <= 0.35))
+    return "frame rotation must be within +-20 degrees";
   if (track_name.empty()) return "track name must not be empty";
   return {};
 }
@@ -85,8 +91,7 @@ InclineSynthRun synthesize_incline_run(const InclineSynthOptions& o) {
     incline::State s;  // at rest before the launch
     if (t > o.t_launch) s = moving[m++];
     s.t = t;
-    s.x += o.x0;
-    s.y += o.y0;
+    s = rotate_state(s, o.frame_rotation, o.x0, o.y0);
     run.truth.push_back(s);
     const double nx = normal(), ny = normal();
     run.track.points.push_back({i, t, s.x + o.noise * nx, s.y + o.noise * ny});

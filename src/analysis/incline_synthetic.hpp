@@ -28,6 +28,10 @@ struct InclineSynthOptions {
   double noise = 0.001;     ///< standard deviation of the Gaussian position noise, m (1 mm)
   double t_launch = 0.1;    ///< launch instant in the file's time (frame 0 is t = 0), s
   double x0 = 0.05, y0 = 0.0;  ///< launch point in the file's frame, m
+  /// Camera frame turned against the incline, rad (0: aligned; a plumb line set off: ~0.01):
+  /// the marked points are the incline-frame ones rotated counterclockwise by this angle
+  /// about the launch point (analysis/frame_rotation.hpp). Within +-20 deg.
+  double frame_rotation = 0;
   /// Recording length, s; 0 = until 0.3 s after the stop (or 1.5 s after the launch when
   /// the disc does not stop).
   double duration = 0;

@@ -1,4 +1,5 @@
 #include "bounce/friction.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <cmath>
 
@@ -21,10 +22,11 @@ std::optional<FrictionKind> parse_friction_kind(std::string_view name) {
 }
 
 std::string FrictionModel::validate() const {
-  if (!std::isfinite(mu) || !(mu >= 0)) return "mu: friction coefficient must be >= 0";
-  if (!std::isfinite(slip_scale) || !(slip_scale > 0)) return "slip-scale: must be positive (m/s)";
-  if (!std::isfinite(k_t) || !(k_t > 0)) return "k-t: tangential stiffness must be positive (N/m)";
-  if (!std::isfinite(c_t) || !(c_t >= 0)) return "c-t: tangential damping must be >= 0 (N s/m)";
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  if (auto e = range_error(mu, ranges::friction, "mu"); !e.empty()) return e;
+  if (auto e = range_error(slip_scale, PhysicalRange{0, 1e3, "m/s", true}, "slip-scale"); !e.empty()) return e;
+  if (auto e = range_error(k_t, ranges::tangential_stiffness, "k-t"); !e.empty()) return e;
+  if (auto e = range_error(c_t, ranges::tangential_damping, "c-t"); !e.empty()) return e;
   return {};
 }
 

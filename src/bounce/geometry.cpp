@@ -1,5 +1,7 @@
 #include "bounce/geometry.hpp"
 
+#include "numerics/physical_range.hpp"
+
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
 
@@ -9,11 +11,12 @@
 namespace tribolab::bounce {
 
 std::string Ball::validate() const {
-  if (!std::isfinite(a) || !(a > 0)) return "a: semi-major axis must be a positive number of metres";
-  if (!std::isfinite(b) || !(b > 0)) return "b: semi-minor axis must be a positive number of metres";
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  if (auto e = range_error(a, ranges::size, "a"); !e.empty()) return e;
+  if (auto e = range_error(b, ranges::size, "b"); !e.empty()) return e;
   if (b > a) return "b: semi-minor axis must not exceed the semi-major axis a (a >= b)";
-  if (!std::isfinite(mass) || !(mass > 0)) return "mass: must be a positive number of kg";
-  if (!std::isfinite(inertia) || !(inertia > 0)) return "inertia: must be a positive number of kg m^2";
+  if (auto e = range_error(mass, ranges::mass, "mass"); !e.empty()) return e;
+  if (auto e = range_error(inertia, ranges::inertia, "inertia"); !e.empty()) return e;
   return {};
 }
 

@@ -1,4 +1,5 @@
 #include "bounce/normal_law.hpp"
+#include "numerics/physical_range.hpp"
 
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
@@ -31,7 +32,8 @@ std::optional<NormalModel> parse_normal_model(std::string_view name) {
 }
 
 std::string NormalLawSpec::validate() const {
-  if (!std::isfinite(K) || !(K > 0)) return "K: stiffness must be positive";
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  if (auto e = range_error(K, ranges::stiffness, "K"); !e.empty()) return e;
   if (model != NormalModel::hooke && (!std::isfinite(n) || !(n >= 1) || n > 3))
     return "n: exponent must lie in [1, 3]";
   if (restitution) {
@@ -41,7 +43,7 @@ std::string NormalLawSpec::validate() const {
       return "restitution: the hertz law is purely elastic (e = 1); use hunt-crossley, flores, "
              "lankarani-nikravesh or gonthier for e < 1";
   } else {
-    if (!std::isfinite(D) || !(D >= 0)) return "D: damping must be >= 0";
+    if (auto e = range_error(D, ranges::damping, "D"); !e.empty()) return e;
     if (model == NormalModel::hertz && D != 0)
       return "D: the hertz law has no damping (D = 0); use hunt-crossley for K d^n + D d^n d_dot";
   }

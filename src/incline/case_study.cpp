@@ -134,7 +134,28 @@ CaseStudy seed000_case_study() {
       "seed 000 圖五-4Y: a_y0 = -g sin(20.96 deg) = -3.51 m/s^2 (printed -3.50).",
       "seed 000 表一: at phi = 4.82 deg, eq 十A gives mu_A = 0.6017 (0.602), printed 0.601 "
       "(the other four columns agree to the printed digits).",
-      "seed 000 圖六: atan(0.634) = 32.37 deg (printed 32.39); 圖七-4 (3) should read mu < 0.383.",
+      "seed 000 圖六: atan(0.634) = 32.37 deg (printed 32.39). 伍-三-(三)-4 (3), on the v_y of 圖七-3, reads "
+      "mu <= 0.383 where mu < 0.383 is meant (mu = 0.383 is its case (2)); 圖七-4Y's case (3) rightly reads mu < 0.383.",
+      "seed 000 at the equality mu = tan(phi) (k = 1): 伍-三-(三)-2 says y comes to rest for mu >= 0.383, but at "
+      "mu = 0.383 v_y = (v_x0/2)(u^2 - 1) tends to -v_x0/2 and y falls for ever (the stop needs mu > tan(phi), as "
+      "陸-一 derives); and v_y has no extremum there (伍-三-(二)-3 (2), 伍-三-(三)-4 (2)): a_y = -2 alpha u^2/(1 + u^2) < 0 "
+      "throughout (test SeedIncline.EqualityMuEqualsTanPhiNeverStops).",
+      "seed 000 圖六-1 and 圖七-1: x does not always tend to a constant 'stopping position'. x has a finite limit "
+      "only for k = tan(phi)/mu < 2 (2 v_x0^2/(alpha (4 - k^2)), eq 八 as t -> infinity), and it is a stop only for "
+      "k < 1; for k >= 2 x grows without bound (like t^((k-2)/(k-1))): mu <= 0.192 at 圖七's 20.96 deg (mu = 0 "
+      "gives x = v0 t, as 圖七-1 itself says), phi >= 51.7 deg at 圖六's mu = 0.634. Appendices 七-九 take the "
+      "limits without the conditions k < 1 (七, 九) and k < 2 (八) (test SeedIncline.XHasALimitOnlyBelowKEqualsTwo).",
+      "seed 000 appendix typos: 附錄一 drops a sign (sqrt(alpha^2 - a_x^2)/a_x = -sqrt((alpha/a_x)^2 - 1) for a_x < 0, "
+      "so z of (1.8) comes out negative; harmless, only cosh enters (1.10)) and writes -(beta/alpha) dv_x for "
+      "-(beta/v_x) dv_x after (1.8); 附錄四 is headed a_x - v_x for 式四, which is a_y; 附錄五 quotes (2.2) with "
+      "denominator alpha^2 - beta^2 instead of (alpha^2 - beta^2)/alpha; 附錄七 puts a minus before the limit that "
+      "vanishes in the (right) result; 附錄九 writes (beta-1)/alpha, (beta+1)/alpha for beta/alpha -/+ 1 "
+      "(docs/errata_checks/seed000.py, sympy).",
+      "seed 000 圖八: inverted with the correct eqs 七-十, the measured slopes give mu = 0.562 (t_f/v_x0 = 0.2063), "
+      "0.556 (x_f/v_x0^2 = 0.0958), 0.567 (y_f/v_x0^2 = -0.0165) and 0.514 (y_f/x_f = -0.1994 at 10.46 deg): mean "
+      "0.550, sd 0.024, all below the 0.585 the seed compares with; against the correct theory slopes at 0.585 "
+      "(0.1966, 0.09089, -0.01537, -0.1709) the measurements differ by 5 %, 5 %, 7 % and 17 % (test "
+      "SeedIncline.Figure8MeasuredSlopesImplyMuNear055).",
       "seed 000 肆-二-(一), eq b: with cos(theta) = v_y/|v| as printed, a_y sin(theta) - a_x "
       "cos(theta) has the opposite sign of eq b; consistent with eq 1.3 is cos(theta) = -v_y/|v|, "
       "i.e. a_N = (a_x v_y - a_y v_x)/|v| (test NormalAccelDiagnostic in src/analysis).",

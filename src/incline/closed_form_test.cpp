@@ -228,7 +228,10 @@ TEST(ClosedForm, StartingAtRestStaysOrSlides) {
 
 TEST(ClosedForm, NeverProducesNaN) {
   for (double k : {0.0, 1e-12, 0.3, 1 - 1e-12, 1.0, 1 + 1e-12, 1.5, 2 - 1e-12, 2.0, 2 + 1e-12, 5.0, 60.0}) {
-    const Parameters p = k == 0 ? make(0.5, 0.0, 1.0) : with_k(k, 30.0, 1.0);
+    // k = 1e-12 from a nearly flat incline (mu = 0.5): tan(30 deg)/k would be mu = 6e11,
+    // outside the physical range of mu (docs/cli.md#physical-ranges) that validate() enforces.
+    Parameters p = k == 0 ? make(0.5, 0.0, 1.0) : with_k(k, 30.0, 1.0);
+    if (k > 0 && k < 1e-6) p.phi = std::atan(0.5 * k), p.mu = 0.5;
     const ClosedForm cf(p);
     const Prediction pr = cf.predict();
     std::vector<double> ts = {0, 1e-300, 1e-9, 0.01, 1, 10, 100};

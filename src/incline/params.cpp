@@ -1,6 +1,7 @@
 #include "incline/params.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <limits>
 
@@ -16,14 +17,15 @@ const char* to_string(Regime regime) {
 }
 
 std::string Parameters::validate() const {
-  if (!std::isfinite(mu) || mu < 0) return "mu must be a finite number >= 0";
+  // Physical ranges: numerics/physical_range.hpp, docs/cli.md#physical-ranges.
+  if (auto e = range_error(mu, ranges::friction, "mu"); !e.empty()) return e;
   if (!std::isfinite(phi) || phi < 0 || phi >= M_PI / 2)
     return "phi must be in [0, 90) degrees";
-  if (!std::isfinite(v0) || v0 < 0) return "v0 must be a finite number >= 0";
-  if (!std::isfinite(g) || g <= 0) return "g must be a finite number > 0";
-  if (mu_static && (!std::isfinite(*mu_static) || *mu_static < 0))
-    return "mu_static must be a finite number >= 0";
-  if (!std::isfinite(normal_accel)) return "normal_accel must be finite";
+  if (auto e = range_error(v0, ranges::speed, "v0"); !e.empty()) return e;
+  if (auto e = range_error(g, ranges::gravity, "g"); !e.empty()) return e;
+  if (mu_static)
+    if (auto e = range_error(*mu_static, ranges::friction, "mu_static"); !e.empty()) return e;
+  if (auto e = range_error(normal_accel, ranges::accel, "normal_accel"); !e.empty()) return e;
   return {};
 }
 

@@ -1,5 +1,7 @@
 #include "io/track_import.hpp"
 
+#include "numerics/physical_range.hpp"
+
 #include "io/text.hpp"
 #include "io/track_csv.hpp"
 #include "io/tracker_export.hpp"
@@ -34,10 +36,9 @@ bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.
 }  // namespace
 
 std::string ImportOptions::validate() const {
-  if (!std::isfinite(time_scale) || !(time_scale > 0)) {
-    return "--time-scale must be a positive number (real seconds per file second), got " +
-           format_number(time_scale);
-  }
+  // Physical range: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  if (auto e = range_error(time_scale, ranges::time_scale, "--time-scale"); !e.empty())
+    return e + " (real seconds per file second)";
   if (!length_unit.empty()) {
     try {
       metres_per_unit(length_unit, "--length-unit");
