@@ -34,6 +34,9 @@ struct BounceFitOptions {
   numerics::RobustLoss loss = numerics::RobustLoss::huber;
   double loss_scale = 0.05;          ///< m/s: residual size where the robust loss bends
   double tolerance = 1e-9;           ///< simulate_contact integrator tolerance
+  /// Covariance estimator: Huber's sandwich (default; docs/theory.md#bounce-fit) or the
+  /// Gauss-Newton s^2 (J^T J)^-1 used before.
+  numerics::Covariance covariance = numerics::Covariance::sandwich;
   std::string validate() const;
 };
 

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace tribolab::numerics {
 
@@ -68,6 +69,59 @@ bool evaluate(const ceres::CostFunction& cost, const std::vector<double>& p,
   if (!cost.Evaluate(blocks, r.data(), nullptr)) return false;
   for (double v : r) {
     if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
+// Huber's sandwich (Huber 1967, Proc. 5th Berkeley Symp. 1; Huber & Ronchetti, Robust
+// Statistics, 2009, section 7.6) for the M-estimator minimising (1/2) sum rho(r_i^2):
+// the estimating equation is sum psi_i = 0 with psi_i = rho'(r_i^2) r_i J_i^T, its derivative
+// (Gauss-Newton, r'' dropped) H = sum (rho' + 2 rho'' r_i^2) J_i^T J_i, and
+// Cov = N/(N - F) H^-1 (sum psi_i psi_i^T) H^-1 (F free parameters; the factor is the HC1
+// small-sample correction). For Huber's loss H counts the inliers only and psi is the
+// residual clipped at the loss scale. When H is not positive definite (a redescending loss
+// such as Cauchy with many large residuals), the IRLS weights rho' alone make the bread,
+// H = sum rho' J_i^T J_i. J is the raw residuals' Jacobian (central differences or autodiff).
+bool sandwich_covariance(const ceres::CostFunction& cost, const std::vector<double>& p,
+                         const std::vector<FitParameter>& parameters, const FitOptions& options,
+                         FitResult& r) {
+  const int P = static_cast<int>(p.size());
+  const int N = static_cast<int>(r.residuals.size());
+  std::vector<int> free;
+  for (int i = 0; i < P; ++i) {
+    if (!parameters[i].fixed) free.push_back(i);
+  }
+  const int F = static_cast<int>(free.size());
+  if (N <= F) return false;
+  std::vector<double> res(N);
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(N, P);
+  const double* blocks[] = {p.data()};
+  double* jacobians[] = {J.data()};
+  if (!cost.Evaluate(blocks, res.data(), jacobians) || !J.allFinite()) return false;
+  std::unique_ptr<ceres::LossFunction> loss(make_loss(options));
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(F, F), Hw = H, B = H;
+  Eigen::VectorXd j(F);
+  for (int i = 0; i < N; ++i) {
+    for (int k = 0; k < F; ++k) j[k] = J(i, free[k]);
+    const double sq = res[i] * res[i];
+    double rho[3] = {sq, 1.0, 0.0};
+    if (loss) loss->Evaluate(sq, rho);
+    const double psi = rho[1] * res[i];
+    H += (rho[1] + 2 * rho[2] * sq) * j * j.transpose();
+    Hw += rho[1] * j * j.transpose();
+    B += psi * psi * j * j.transpose();
+  }
+  Eigen::LLT<Eigen::MatrixXd> llt(H);
+  if (llt.info() != Eigen::Success) {
+    llt.compute(Hw);
+    if (llt.info() != Eigen::Success) return false;
+  }
+  const Eigen::MatrixXd Hinv = llt.solve(Eigen::MatrixXd::Identity(F, F));
+  const Eigen::MatrixXd C = (static_cast<double>(N) / (N - F)) * Hinv * B * Hinv;
+  if (!C.allFinite()) return false;
+  r.covariance = Eigen::MatrixXd::Zero(P, P);
+  for (int a = 0; a < F; ++a) {
+    for (int b = 0; b < F; ++b) r.covariance(free[a], free[b]) = C(a, b);
   }
   return true;
 }
@@ -174,6 +228,14 @@ FitResult solve_with_cost(std::unique_ptr<ceres::CostFunction> cost, int num_res
     r.noise_scale = r.dof > 0 ? std::sqrt(ss / r.dof) : std::numeric_limits<double>::quiet_NaN();
   }
   r.covariance = c * (r.noise_scale * r.noise_scale);
+  if (options.covariance == Covariance::sandwich) {
+    if (!sandwich_covariance(*cost, p, parameters, options, r)) {
+      r.status = FitStatus::not_identifiable;
+      r.message = "the data cannot determine every free parameter (singular sandwich bread); fix one "
+                  "or add data";
+      return r;
+    }
+  }
   for (int i = 0; i < P; ++i) {
     r.sigma[i] = parameters[i].fixed ? 0.0 : std::sqrt(std::max(0.0, r.covariance(i, i)));
   }
