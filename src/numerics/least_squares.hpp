@@ -36,6 +36,12 @@ enum class Covariance {
   /// the loss's derivatives at s = r^2 (Ceres convention). Needs no noise level, allows
   /// unequal noise across residuals and down-weights outliers as the fit does.
   sandwich,
+  /// Huber's scalar correction for an M-estimator (Huber 1981, Robust Statistics, eq. 7.6.x;
+  /// as R's MASS::rlm): K^2 [sum psi^2 / (N - F)] / m^2 (J^T J)^-1 with psi = rho' r,
+  /// m = mean(rho' + 2 rho'' r^2), K = 1 + (F/N) var(rho' + 2 rho'' r^2) / m^2. Equals
+  /// s^2 (J^T J)^-1 without a loss; assumes one noise level, but counts outliers only at
+  /// their clipped size and is far steadier than the sandwich in small samples.
+  huber,
 };
 
 struct FitOptions {
