@@ -181,6 +181,48 @@ TEST(BounceSweepCli, MergedShardsEqualTheWholeSweep) {
   EXPECT_EQ(slurp(dir + "/merged.csv"), slurp(dir + "/all.csv"));
 }
 
+// A version-1 file (written before whole impacts: the first contact phase only, outputs vx vy
+// omega_out e, model bounce-contact) is still read: merged, and reported with the physics
+// rebuilt from its header. It is made here from a v2 file's first-phase columns, which are
+// what the old cell computed.
+TEST(BounceSweepCli, ReadsVersionOneFiles) {
+  const std::string dir = temp_dir("bsweep_v1");
+  run_json(kMap + " --out " + dir + "/new.csv");
+  std::ifstream in(dir + "/new.csv");
+  std::string line, v1;
+  std::getline(in, line);
+  line.replace(line.find("v2"), 2, "v1");
+  line.replace(line.find("outputs vx vy omega_out e contacts contact_duration vx_first vy_first omega_first e_first "
+                         "duration_first"),
+               std::string("outputs vx vy omega_out e contacts contact_duration vx_first vy_first omega_first e_first "
+                           "duration_first").size(),
+               "outputs vx vy omega_out e");
+  line.replace(line.find("model bounce-impact"), 19, "model bounce-contact");
+  v1 = line + "\ntheta_deg,omega,vx,vy,omega_out,e\n";
+  std::getline(in, line);  // columns
+  while (std::getline(in, line)) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string x;
+    while (std::getline(ss, x, ',')) f.push_back(x);
+    ASSERT_EQ(f.size(), 13u);
+    v1 += f[0] + "," + f[1] + "," + f[8] + "," + f[9] + "," + f[10] + "," + f[11] + "\n";
+  }
+  {
+    std::ofstream out(dir + "/old.csv", std::ios::binary);
+    out << v1;
+  }
+  const json m = run_json("bounce merge " + dir + "/old.csv --out " + dir + "/merged.csv --report " + dir + "/r.html");
+  EXPECT_EQ(m["cells"].get<int>(), 40) << m.dump();
+  const std::string merged = slurp(dir + "/merged.csv");
+  EXPECT_EQ(merged.substr(merged.find('\n')), v1.substr(v1.find('\n')));  // same cells, relabelled v2
+  EXPECT_NE(slurp(dir + "/r.html").find("first contact phase only"), std::string::npos);
+  // A v2 file's report counts the impacts with several contacts and the first-phase e.
+  run_json("bounce merge " + dir + "/new.csv --out " + dir + "/m2.csv --report " + dir + "/r2.html");
+  EXPECT_NE(slurp(dir + "/r2.html").find("cells whose impact has several contacts"), std::string::npos);
+  EXPECT_NE(slurp(dir + "/r2.html").find("largest e of the first contact phase alone"), std::string::npos);
+}
+
 // A run killed mid-write leaves a checkpoint ending in a torn line; running the same command
 // again completes it to the bytes of an uninterrupted run.
 TEST(BounceSweepCli, ResumedRunEqualsUninterrupted) {
