@@ -337,6 +337,10 @@ void add_synth_table(CLI::App* area) {
   cmd->add_option("--omega-max", opts->o.omega_max, "incoming omega in [-omega-max, omega-max], rad/s (default 50)");
   cmd->add_option("--noise-v", opts->o.noise_v, "noise sd of the outgoing vx, vy, m/s (default 0.02)");
   cmd->add_option("--noise-omega", opts->o.noise_omega, "noise sd of the outgoing omega, rad/s (default 0.5)");
+  cmd->add_option("--outlier-fraction", opts->o.outlier_fraction,
+                  "fraction of rows with a gross error on one outgoing value (default 0)");
+  cmd->add_option("--outlier-v", opts->o.outlier_v,
+                  "size of a gross error, m/s: uniform in [v, 2v], random sign; omega: v/b (default 0.3)");
   cmd->add_option("--seed", opts->o.seed, "random seed (default 1)");
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
@@ -344,7 +348,8 @@ void add_synth_table(CLI::App* area) {
     checked_ball(o.ball);
     opts->law.apply(o.law, o.friction);
     for (auto [v, name] : {std::pair{o.speed_min, "--speed-min"}, {o.speed_max, "--speed-max"}, {o.vx_max, "--vx-max"},
-                           {o.omega_max, "--omega-max"}, {o.noise_v, "--noise-v"}, {o.noise_omega, "--noise-omega"}})
+                           {o.omega_max, "--omega-max"}, {o.noise_v, "--noise-v"}, {o.noise_omega, "--noise-omega"},
+                           {o.outlier_fraction, "--outlier-fraction"}, {o.outlier_v, "--outlier-v"}})
       check_finite(v, name);
     const auto rows = synth_table(o);
     io::AtomicFile file(opts->out);

@@ -1,6 +1,7 @@
 // `tribolab bounce`: the spinning-ellipse bounce of seed 001 (docs/cli.md#bounce).
 //   contact-time  first contact after release from an apex (seed's experiment 3, table 4)
-//   simulate      one contact from first touch to separation (seed's experiment 4)
+//   simulate      the impact from first touch to free flight (seed's experiment 4), every
+//                 contact of it (docs/theory.md#bounce-contact, "whole impact")
 //   drop          release -> flight -> contact -> ... several bounces
 #include "app.hpp"
 #include "bounce_analysis_cmd.hpp"
@@ -12,6 +13,7 @@
 #include "bounce/contact.hpp"
 #include "bounce/drop.hpp"
 #include "bounce/flight.hpp"
+#include "bounce/impact.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
@@ -79,6 +81,30 @@ json contact_json(const Ball& ball, const ContactResult& r, NormalModel model) {
       {"phases", phases},
       {"steps", r.steps},
   };
+}
+
+/// The whole impact: contact_json of the summed result, the number of contacts, the first
+/// contact phase alone and each contact's times (docs/cli.md#bounce-simulate).
+json impact_json(const Ball& ball, const ImpactResult& r, NormalModel model) {
+  json j = contact_json(ball, r.whole, model);
+  j["impact_status"] = std::string(to_string(r.status));
+  j["contacts"] = r.contacts;
+  const ContactResult& f = r.first;
+  j["first_phase"] = {{"vx", f.out.vx},
+                      {"vy", f.out.vy},
+                      {"omega", f.out.omega},
+                      {"e", num(f.restitution)},
+                      {"contact_duration", f.contact_duration},
+                      {"peak_force", f.peak_force},
+                      {"energy_out", f.energy_out.total()}};
+  json list = json::array();
+  for (std::size_t i = 0; i < std::min(r.contacts, kMaxStoredContacts); ++i) {
+    const ImpactContact& c = r.contact[i];
+    list.push_back({{"t_touch", c.t_touch}, {"t_separation", c.t_separation}, {"vy_in", c.vy_in},
+                    {"vy_out", c.vy_out}, {"peak_force", c.peak_force}});
+  }
+  j["contact_list"] = list;
+  return j;
 }
 
 void write_history(const std::string& path, const std::vector<ContactSample>& hist) {
@@ -162,7 +188,8 @@ void add_simulate(CLI::App* area) {
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* cmd = area->add_subcommand("simulate", "One contact from first touch (gap 0) to separation (seed 001, experiment 4)");
+  auto* cmd = area->add_subcommand("simulate", "The impact from first touch (gap 0) until the ball flies free to its apex: "
+                                               "every contact of it (seed 001, experiment 4)");
   cmd->add_option("--vx", o->vx, "centre velocity at first touch, m/s (default 0)");
   cmd->add_option("--vy", o->vy, "centre velocity at first touch, m/s (< 0)")->required();
   cmd->add_option("--omega", o->omega, "spin at first touch, rad/s, CCW positive (default 0)");
@@ -193,11 +220,14 @@ void add_simulate(CLI::App* area) {
                                   "vy + omega X = " + io::format_number(pv.vy) + " m/s): no contact");
     }
     std::vector<ContactSample> hist;
-    const ContactResult r = simulate_contact(ball, spec, fr, s, copt, o->history.empty() && o->report.empty() ? nullptr : &hist);
-    if (r.status == ContactStatus::failed) throw InputError(std::string("contact simulation failed: ") + std::string(r.message));
-    write_report_if_requested(o->report, [&] { return bounce_simulate_report(ball, fr, r, hist); });
+    ImpactOptions io;
+    io.contact = copt;
+    const ImpactResult r = simulate_impact(ball, spec, fr, s, io, o->history.empty() && o->report.empty() ? nullptr : &hist);
+    if (r.status == ImpactStatus::failed || r.status == ImpactStatus::max_contacts)
+      throw InputError(std::string("contact simulation failed: ") + std::string(r.message));
+    write_report_if_requested(o->report, [&] { return bounce_simulate_report(ball, fr, r.whole, hist, r.contacts); });
     if (!o->history.empty()) write_history(o->history, hist);
-    print_result(contact_json(ball, r, spec.model), o->json);
+    print_result(impact_json(ball, r, spec.model), o->json);
   });
 }
 

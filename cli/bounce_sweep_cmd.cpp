@@ -1,10 +1,12 @@
-// The physics of `tribolab bounce sweep`: every cell is one contact of bounce::simulate_contact
-// from first touch (no flight), with the ball, normal law, friction law, g and tolerance of
+// The physics of `tribolab bounce sweep`: every cell is one whole impact of
+// bounce::simulate_impact from first touch (the first contact and any further contact before
+// the ball flies free to its apex), with the ball, normal law, friction law, g and tolerance of
 // `bounce simulate`. The sweep options themselves (grid, shard, threads, resume, contour) are
 // in cli/sweep_cmd.cpp. docs/cli.md#bounce-sweep, docs/theory.md#sweeps.
 #include "bounce_sweep_cmd.hpp"
 
 #include "bounce/contact.hpp"
+#include "bounce/impact.hpp"
 #include "bounce_options.hpp"
 #include "io/sweep_command.hpp"
 #include "io/sweep_file.hpp"
@@ -82,10 +84,10 @@ struct BouncePhysicsOptions {
 
   /// One line recording every physical option (the sweep file header; a resume or merge
   /// with other physics is refused).
-  std::string description(const Ball& b, const NormalLawSpec& s, const FrictionModel& f,
-                          const ContactOptions& o) const {
+  std::string description(const std::string& kind, const Ball& b, const NormalLawSpec& s,
+                          const FrictionModel& f, const ContactOptions& o) const {
     auto num = [](double v) { return io::format_number_exact(v); };
-    std::string d = "bounce-contact angle=" + angle + " vx=" + num(vx) + " a=" + num(b.a) + " b=" + num(b.b) +
+    std::string d = kind + " angle=" + angle + " vx=" + num(vx) + " a=" + num(b.a) + " b=" + num(b.b) +
                     " mass=" + num(b.mass) + " inertia=" + num(b.inertia) + " law=" + std::string(to_string(s.model)) +
                     " K=" + num(s.K) + " n=" + num(s.n);
     d += s.restitution ? " restitution=" + num(*s.restitution) : " D=" + num(s.D);
@@ -97,6 +99,18 @@ struct BouncePhysicsOptions {
   }
 };
 
+/// The cell's physics, recorded as the first word of the model description: the whole
+/// impact (this version), or the first contact phase alone (files written before; read
+/// back for `--report` only).
+const std::string kImpactKind = "bounce-impact";
+const std::string kContactKind = "bounce-contact";
+
+/// Output columns of a whole-impact cell (docs/cli.md#bounce-sweep): the whole impact, then
+/// the first contact phase alone.
+const std::vector<std::string> kImpactOutputs = {"vx",       "vy",          "omega_out",   "e",
+                                                 "contacts", "contact_duration", "vx_first", "vy_first",
+                                                 "omega_first", "e_first",  "duration_first"};
+
 /// Everything one cell needs, fixed for the whole sweep (shared read-only by the threads).
 struct BounceCell {
   Ball ball;
@@ -106,9 +120,12 @@ struct BounceCell {
   AngleConvention convention = AngleConvention::collision;
   double vx = 0;
   int direction = 1;  ///< direction of horizontal motion for the collision angle (sign of vx, +1 at 0)
+  bool whole_impact = true;  ///< false: the first contact phase only (kContactKind files)
 
-  /// vx, vy, omega_out, e of one contact; all NaN when the contact point does not approach
-  /// the floor at first touch (no contact) or the integrator fails.
+  /// The kImpactOutputs of one impact (first-phase only: vx, vy, omega_out, e); all NaN
+  /// when the contact point does not approach the floor at first touch (no contact) or the
+  /// integrator fails; the whole-impact values NaN when a later contact or flight search
+  /// fails or the contacts never end (max_contacts).
   sweep::CellOutputs operator()(const sweep::CellInput& in) const {
     sweep::CellOutputs out;
     out.fill(kNaN);
@@ -121,18 +138,39 @@ struct BounceCell {
     if (!(contact_point_velocity(ball, s.theta, s.vx, s.vy, s.omega).vy < 0)) return out;
     FrictionModel f = friction;
     f.mu = in.mu;
-    const ContactResult r = simulate_contact(ball, law, f, s, options);
-    if (r.status == ContactStatus::failed) return out;
-    out[0] = r.out.vx;
-    out[1] = r.out.vy;
-    out[2] = r.out.omega;
-    out[3] = r.restitution;
+    if (!whole_impact) {
+      const ContactResult r = simulate_contact(ball, law, f, s, options);
+      if (r.status == ContactStatus::failed) return out;
+      out[0] = r.out.vx;
+      out[1] = r.out.vy;
+      out[2] = r.out.omega;
+      out[3] = r.restitution;
+      return out;
+    }
+    ImpactOptions io;
+    io.contact = options;
+    const ImpactResult r = simulate_impact(ball, law, f, s, io);
+    if (r.first.status == ContactStatus::failed) return out;
+    if (r.status == ImpactStatus::free_flight || r.status == ImpactStatus::rest) {
+      out[0] = r.whole.out.vx;
+      out[1] = r.whole.out.vy;
+      out[2] = r.whole.out.omega;
+      out[3] = r.whole.restitution;
+      out[4] = static_cast<double>(r.contacts);
+      out[5] = r.whole.contact_duration;
+    }
+    out[6] = r.first.out.vx;
+    out[7] = r.first.out.vy;
+    out[8] = r.first.out.omega;
+    out[9] = r.first.restitution;
+    out[10] = r.first.contact_duration;
     return out;
   }
 };
 
-/// The cell model of the parsed options (throws InputError naming an invalid option).
-sweep::CellModel build_model(const BouncePhysicsOptions& opts) {
+/// The cell model of the parsed options (throws InputError naming an invalid option); `kind`
+/// kContactKind rebuilds the first-phase model of older files.
+sweep::CellModel build_model(const BouncePhysicsOptions& opts, const std::string& kind = kImpactKind) {
   BounceCell cell;
   cell.ball = opts.ball.get();
   cell.law = opts.law.law();
@@ -143,9 +181,10 @@ sweep::CellModel build_model(const BouncePhysicsOptions& opts) {
   check_range(opts.vx, ranges::velocity, "--vx");  // docs/cli.md#physical-ranges
   cell.vx = opts.vx;
   cell.direction = opts.vx < 0 ? -1 : 1;  // as collision_angle_deg in `bounce simulate`
+  cell.whole_impact = kind == kImpactKind;
   sweep::CellModel model;
-  model.output_names = {"vx", "vy", "omega_out", "e"};
-  model.description = opts.description(cell.ball, cell.law, cell.friction, cell.options);
+  model.output_names = cell.whole_impact ? kImpactOutputs : std::vector<std::string>{"vx", "vy", "omega_out", "e"};
+  model.description = opts.description(kind, cell.ball, cell.law, cell.friction, cell.options);
   model.mass = cell.ball.mass;
   model.inertia = cell.ball.inertia;
   model.evaluate = [cell](const sweep::CellInput& in) { return cell(in); };
@@ -161,12 +200,15 @@ sweep::CellModel model_from_description(const std::string& description) {
       {"mass", "--mass"},   {"inertia", "--inertia"}, {"law", "--model"}, {"K", "--K"},
       {"n", "--n"},         {"restitution", "--restitution"}, {"D", "--D"}, {"friction", "--friction"},
       {"slip_scale", "--slip-scale"}, {"k_t", "--k-t"}, {"c_t", "--c-t"}, {"g", "--g"}, {"tol", "--tol"}};
-  const std::string kind = "bounce-contact";
   auto refuse = [&](const std::string& why) {
     return InputError("--report", "cannot rebuild the physics of the sweep file (" + why + "): '" +
                                       description.substr(0, 60) + "'");
   };
-  if (description.rfind(kind + " ", 0) != 0) throw refuse("not a bounce-contact sweep");
+  std::string kind;
+  for (const std::string& k : {kImpactKind, kContactKind}) {
+    if (description.rfind(k + " ", 0) == 0) kind = k;
+  }
+  if (kind.empty()) throw refuse("not a bounce-impact or bounce-contact sweep");
   std::vector<std::string> args;  // CLI11 parses a vector from its back
   std::size_t p = kind.size() + 1;
   while (p < description.size()) {
@@ -188,7 +230,7 @@ sweep::CellModel model_from_description(const std::string& description) {
   } catch (const CLI::Error& e) {
     throw refuse(e.what());
   }
-  sweep::CellModel model = build_model(opts);
+  sweep::CellModel model = build_model(opts, kind);
   if (model.description != description) throw refuse("it does not read back to the same options");
   return model;
 }

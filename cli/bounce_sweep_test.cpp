@@ -69,17 +69,72 @@ TEST(BounceSweepCli, CellsEqualSimulateOneByOne) {
   const json j = run_json("bounce sweep --angle orientation --theta-deg 10:40:3 --omega 30:50:2 --speed 3 "
                           "--mu 0.3:0.6:2 --threads 2 --out " + dir + "/m.csv" + physics);
   EXPECT_EQ(j["cells_grid"].get<int>(), 12) << j.dump();
-  EXPECT_EQ(column_line(dir + "/m.csv"), "theta_deg,omega,vx,vy,omega_out,e,mu");
+  EXPECT_EQ(column_line(dir + "/m.csv"),
+            "theta_deg,omega,vx,vy,omega_out,e,contacts,contact_duration,vx_first,vy_first,omega_first,e_first,"
+            "duration_first,mu");
   const auto cells = rows(dir + "/m.csv");
   ASSERT_EQ(cells.size(), 12u);
   for (const auto& c : cells) {
-    ASSERT_EQ(c.size(), 7u);
+    ASSERT_EQ(c.size(), 14u);
     const json s = run_json("bounce simulate --vy -3 --theta-deg " + g17(c[0]) + " --omega " + g17(c[1]) +
-                            " --mu " + g17(c[6]) + physics);
-    EXPECT_EQ(c[2], s["vx"].get<double>()) << "theta " << c[0] << " omega " << c[1] << " mu " << c[6];
+                            " --mu " + g17(c[13]) + physics);
+    EXPECT_EQ(c[2], s["vx"].get<double>()) << "theta " << c[0] << " omega " << c[1] << " mu " << c[13];
     EXPECT_EQ(c[3], s["vy"].get<double>());
     EXPECT_EQ(c[4], s["omega"].get<double>());
     EXPECT_EQ(c[5], s["e"].get<double>());
+    EXPECT_EQ(c[6], s["contacts"].get<double>());
+    EXPECT_EQ(c[7], s["contact_duration"].get<double>());
+    const json& f = s["first_phase"];
+    EXPECT_EQ(c[8], f["vx"].get<double>());
+    EXPECT_EQ(c[9], f["vy"].get<double>());
+    EXPECT_EQ(c[10], f["omega"].get<double>());
+    EXPECT_EQ(c[11], f["e"].get<double>());
+    EXPECT_EQ(c[12], f["contact_duration"].get<double>());
+  }
+}
+
+// Cells of the seed's map (D = 6000) whose first contact phase ends with e <= 0: the ball
+// leaves the floor moving down and must touch again. `bounce simulate` reports the whole
+// impact, which must equal `bounce drop` released 2 ms before the same touch, after the
+// contact where simulate says the impact ends. Before the whole impact, simulate printed the
+// first phase (`first_phase` now), 0.4 m/s and more away from drop's outcome.
+TEST(BounceSweepCli, SimulateEqualsDropOverTheWholeImpact) {
+  const bounce::Ball ball;
+  const double g = 9.8, tau = 2e-3;
+  for (const auto& [chi, w] : {std::pair{167.0, 44.0}, std::pair{170.0, 48.0}, std::pair{169.0, 46.0}}) {
+    const double theta = bounce::theta_for_collision_angle(ball, chi, 1);
+    const json s = run_json("bounce simulate --vy -4 --D 6000 --theta-deg " + g17(theta * kDeg) + " --omega " + g17(w));
+    // Release tau before the touch on the same free flight (vy = -4 at the touch).
+    const double height = bounce::support_depth(ball, theta) + 4 * tau - 0.5 * g * tau * tau;
+    const json d = run_json("bounce drop --D 6000 --rest-height 0 --bounces 6 --height " + g17(height) +
+                            " --theta-deg " + g17((theta - w * tau) * kDeg) + " --omega " + g17(w) +
+                            " --vy " + g17(-4 + g * tau));
+    // Where the impact ends, from drop alone: the first contact after which the ball rises
+    // (vy_out > 0) and reaches its apex before the next touch.
+    const json& bs = d["bounces"];
+    std::size_t k = 0;
+    while (k + 1 < bs.size() && !(bs[k]["vy_out"].get<double>() > 0 &&
+                                  bs[k]["t_apex"].get<double>() < bs[k + 1]["t_touch"].get<double>())) {
+      ++k;
+    }
+    ASSERT_LT(k + 1, bs.size()) << d.dump();
+    EXPECT_GE(k, 1u) << "these cells leave the floor moving down: at least two contacts";
+    EXPECT_EQ(s.value("contacts", 1), static_cast<int>(k + 1)) << s.dump();
+    const json& b0 = bs[0];
+    const json& last = bs[k];
+    EXPECT_NEAR(b0["t_touch"].get<double>(), tau, 1e-12);
+    // Same contacts from touch states equal to ~1e-15 (decimal round trip), each accurate to
+    // ~1e-9 m/s at tolerance 1e-10: 1e-7 m/s is ample (docs/theory.md#bounce-contact).
+    EXPECT_NEAR(s["vx"].get<double>(), last["vx_out"].get<double>(), 1e-7) << chi << " " << w;
+    EXPECT_NEAR(s["vy"].get<double>(), last["vy_out"].get<double>(), 1e-7);
+    EXPECT_NEAR(s["omega"].get<double>(), last["omega_out"].get<double>(), 1e-6);
+    EXPECT_NEAR(s["e"].get<double>(), -last["vy_out"].get<double>() / b0["vy_in"].get<double>(), 1e-7);
+    EXPECT_NEAR(s["contact_duration"].get<double>(),
+                last["t_touch"].get<double>() + last["contact_duration"].get<double>() - b0["t_touch"].get<double>(), 1e-8);
+    if (s.contains("first_phase")) {
+      EXPECT_LE(s["first_phase"]["e"].get<double>(), 0);
+      EXPECT_GT(std::abs(s["first_phase"]["vy"].get<double>() - last["vy_out"].get<double>()), 0.1);
+    }
   }
 }
 
@@ -124,6 +179,48 @@ TEST(BounceSweepCli, MergedShardsEqualTheWholeSweep) {
   const json m = run_json("bounce merge " + dir + "/p1.csv " + dir + "/p0.csv --out " + dir + "/merged.csv");
   EXPECT_EQ(m["cells"].get<int>(), 40);
   EXPECT_EQ(slurp(dir + "/merged.csv"), slurp(dir + "/all.csv"));
+}
+
+// A version-1 file (written before whole impacts: the first contact phase only, outputs vx vy
+// omega_out e, model bounce-contact) is still read: merged, and reported with the physics
+// rebuilt from its header. It is made here from a v2 file's first-phase columns, which are
+// what the old cell computed.
+TEST(BounceSweepCli, ReadsVersionOneFiles) {
+  const std::string dir = temp_dir("bsweep_v1");
+  run_json(kMap + " --out " + dir + "/new.csv");
+  std::ifstream in(dir + "/new.csv");
+  std::string line, v1;
+  std::getline(in, line);
+  line.replace(line.find("v2"), 2, "v1");
+  line.replace(line.find("outputs vx vy omega_out e contacts contact_duration vx_first vy_first omega_first e_first "
+                         "duration_first"),
+               std::string("outputs vx vy omega_out e contacts contact_duration vx_first vy_first omega_first e_first "
+                           "duration_first").size(),
+               "outputs vx vy omega_out e");
+  line.replace(line.find("model bounce-impact"), 19, "model bounce-contact");
+  v1 = line + "\ntheta_deg,omega,vx,vy,omega_out,e\n";
+  std::getline(in, line);  // columns
+  while (std::getline(in, line)) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string x;
+    while (std::getline(ss, x, ',')) f.push_back(x);
+    ASSERT_EQ(f.size(), 13u);
+    v1 += f[0] + "," + f[1] + "," + f[8] + "," + f[9] + "," + f[10] + "," + f[11] + "\n";
+  }
+  {
+    std::ofstream out(dir + "/old.csv", std::ios::binary);
+    out << v1;
+  }
+  const json m = run_json("bounce merge " + dir + "/old.csv --out " + dir + "/merged.csv --report " + dir + "/r.html");
+  EXPECT_EQ(m["cells"].get<int>(), 40) << m.dump();
+  const std::string merged = slurp(dir + "/merged.csv");
+  EXPECT_EQ(merged.substr(merged.find('\n')), v1.substr(v1.find('\n')));  // same cells, relabelled v2
+  EXPECT_NE(slurp(dir + "/r.html").find("first contact phase only"), std::string::npos);
+  // A v2 file's report counts the impacts with several contacts and the first-phase e.
+  run_json("bounce merge " + dir + "/new.csv --out " + dir + "/m2.csv --report " + dir + "/r2.html");
+  EXPECT_NE(slurp(dir + "/r2.html").find("cells whose impact has several contacts"), std::string::npos);
+  EXPECT_NE(slurp(dir + "/r2.html").find("largest e of the first contact phase alone"), std::string::npos);
 }
 
 // A run killed mid-write leaves a checkpoint ending in a torn line; running the same command

@@ -10,6 +10,7 @@
 #include "bounce/drop.hpp"
 #include "bounce/flight.hpp"
 #include "bounce/geometry.hpp"
+#include "bounce/impact.hpp"
 #include "report/format.hpp"
 #include "sweep/contour.hpp"
 #include "sweep/grid.hpp"
@@ -66,9 +67,12 @@ sweep::CellModel contact_model(const Ball& ball, const NormalLawSpec& law, const
       return sweep::CellOutputs{nan, nan, nan, nan};  // the contact point moves away: no impact
     FrictionModel f;
     f.mu = in.mu;
-    const ContactResult r = simulate_contact(ball, law, f, s, contact_options_with_tolerance(1e-8));
-    if (r.status != ContactStatus::separated) return sweep::CellOutputs{nan, nan, nan, nan};
-    return sweep::CellOutputs{r.out.vx, r.out.vy, r.out.omega, r.restitution};
+    // The whole impact: every contact until the ball flies free to its apex (docs/theory.md#sweeps).
+    ImpactOptions io;
+    io.contact = contact_options_with_tolerance(1e-8);
+    const ImpactResult r = simulate_impact(ball, law, f, s, io);
+    if (r.status != ImpactStatus::free_flight) return sweep::CellOutputs{nan, nan, nan, nan};
+    return sweep::CellOutputs{r.whole.out.vx, r.whole.out.vy, r.whole.out.omega, r.whole.restitution};
   };
   m.description = name;
   m.mass = ball.mass;

@@ -134,11 +134,18 @@ report::Table ball_table(const bounce::Ball& ball) {
 
 report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::FrictionModel& friction,
                                       const bounce::ContactResult& r,
-                                      const std::vector<bounce::ContactSample>& history) {
+                                      const std::vector<bounce::ContactSample>& history,
+                                      std::size_t contacts) {
   report::Report rep;
   rep.title = "tribolab bounce simulate";
-  rep.subtitle = "One contact of a spinning ellipse with the floor (seed 001, experiment 4)";
+  rep.subtitle = "One impact of a spinning ellipse on the floor (seed 001, experiment 4)";
   auto& s = rep.add_section("Contact");
+  if (contacts > 1) {
+    s.add_paragraph("The ball touched the floor " + std::to_string(contacts) +
+                    " times before flying free to its apex: the values below are those of the whole impact, "
+                    "from the first touch to the last separation (docs/theory.md#bounce-contact); the time "
+                    "histories show the contacts, not the flights between them.");
+  }
   s.add_table(ball_table(ball));
   add_contact_equations(s, r.law);
   s.add_paragraph(std::string("Friction: ") + std::string(bounce::to_string(friction.kind)) +

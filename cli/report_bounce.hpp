@@ -38,10 +38,12 @@ void add_contact_equations(report::Section& s, const bounce::NormalLaw& law);
 /// Ball parameters as a table.
 report::Table ball_table(const bounce::Ball& ball);
 
-/// `bounce simulate --report`: in/out table, phases table and the histories.
+/// `bounce simulate --report`: in/out table, phases table and the histories. `r` is the
+/// whole impact of `contacts` contacts (bounce::ImpactResult::whole).
 report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::FrictionModel& friction,
                                       const bounce::ContactResult& r,
-                                      const std::vector<bounce::ContactSample>& history);
+                                      const std::vector<bounce::ContactSample>& history,
+                                      std::size_t contacts = 1);
 
 /// `bounce drop --report`: the centre's trajectory (needs DropResult::trajectory) and the apexes.
 report::Report bounce_drop_report(const bounce::Ball& ball, const bounce::FrictionModel& friction,

@@ -261,9 +261,15 @@ report::Report sweep_report(const SweepReportData& d) {
                std::to_string(n_slices) + (n_slices == 1 ? " slice" : " slices");
 
   auto& p = r.add_section("Parameters");
-  p.add_paragraph("Each cell is one contact from first touch with incoming v_y = −speed and the cell's spin; "
-                  "e = −v_y,out/v_y,in. Values as written in the sweep file (its header records the grid and "
-                  "every physical option).");
+  p.add_paragraph(index_of("contacts") >= 0
+                      ? "Each cell is one whole impact from first touch with incoming v_y = −speed and the cell's "
+                        "spin: every contact until the ball flies free to its apex (docs/theory.md#bounce-contact); "
+                        "e = −v_y,out/v_y,in with v_y,out after the last contact. Values as written in the sweep file "
+                        "(its header records the grid and every physical option)."
+                      : "Each cell is one contact from first touch (the first contact phase only: a sweep file "
+                        "written before whole impacts) with incoming v_y = −speed and the cell's spin; "
+                        "e = −v_y,out/v_y,in. Values as written in the sweep file (its header records the grid and "
+                        "every physical option).");
   p.add_equation("e = −v_{y,out} / v_{y,in}", "seed 001, figures 53–56; docs/theory.md#sweeps",
                  "e > 1: the ball rises above the height it fell from");
   p.add_equation("E_{rot}/E_y = I ω^2 / (m v_y^2)", "seed 001 (\"must exceed 2.56\"); docs/theory.md#sweeps",
@@ -302,6 +308,20 @@ report::Report sweep_report(const SweepReportData& d) {
       {"smallest energy ratio E_rot/E_y at a threshold (seed: 2.56)",
        er_at ? v4(er_min) + " at theta_deg = " + io::format_number_exact(er_at->theta_deg) : "—"},
   };
+  const int contacts = index_of("contacts"), e_first = index_of("e_first");
+  if (contacts >= 0 && e_first >= 0) {
+    // The whole impact against its first contact phase (docs/theory.md#sweeps).
+    std::int64_t several = 0, differ = 0;
+    const SliceStats first = stats(d, e_first, 0, grid.cell_count());
+    for (std::int64_t c = 0; c < grid.cell_count(); ++c) {
+      const double* v = &d.values[static_cast<std::size_t>(c) * n_out];
+      several += v[contacts] > 1 ? 1 : 0;
+      differ += std::isfinite(v[e]) && std::isfinite(v[e_first]) && (v[e] > 1) != (v[e_first] > 1) ? 1 : 0;
+    }
+    sum.rows.push_back({"cells whose impact has several contacts", std::to_string(several)});
+    sum.rows.push_back({"largest e of the first contact phase alone", v4(first.e_max)});
+    sum.rows.push_back({"cells where the first phase alone is on the other side of e = 1", std::to_string(differ)});
+  }
   s.add_table(std::move(sum));
   if (n_slices > 1) {
     report::Table per;

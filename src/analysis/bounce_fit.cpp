@@ -116,6 +116,7 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   fo.function_tolerance = 1e-10;
   fo.parameter_tolerance = 1e-8;
   fo.gradient_tolerance = 1e-12;
+  fo.covariance = o.covariance;  // docs/theory.md#bounce-fit: which estimator and why
   auto residuals = [&](const double* p, double* r) {
     const auto spec = spec_of(p);
     const auto fr = friction_of(p);

@@ -34,6 +34,10 @@ struct BounceFitOptions {
   numerics::RobustLoss loss = numerics::RobustLoss::huber;
   double loss_scale = 0.05;          ///< m/s: residual size where the robust loss bends
   double tolerance = 1e-9;           ///< simulate_contact integrator tolerance
+  /// Covariance estimator (docs/theory.md#bounce-fit): Huber's scalar-corrected form
+  /// (default: covers on small tables with outliers, measured), the sandwich (unequal noise;
+  /// under-covers on ~10-bounce tables) or Gauss-Newton (too wide with outliers).
+  numerics::Covariance covariance = numerics::Covariance::huber;
   std::string validate() const;
 };
 

@@ -125,6 +125,8 @@ std::string SynthTableOptions::validate() const {
   if (!(omega_max >= 0 && omega_max < 1000)) return "omega-max: must lie in [0, 1000) rad/s";
   if (!(noise_v >= 0 && noise_v < 10)) return "noise-v: must lie in [0, 10) m/s";
   if (!(noise_omega >= 0 && noise_omega < 100)) return "noise-omega: must lie in [0, 100) rad/s";
+  if (!(outlier_fraction >= 0 && outlier_fraction <= 1)) return "outlier-fraction: must lie in [0, 1]";
+  if (!(outlier_v >= 0 && outlier_v < 100)) return "outlier-v: must lie in [0, 100) m/s";
   return {};
 }
 
@@ -152,6 +154,17 @@ std::vector<BounceRow> synth_table(const SynthTableOptions& o) {
     r.vx_out = c.out.vx + o.noise_v * n(rng);
     r.vy_out = c.out.vy + o.noise_v * n(rng);
     r.omega_out = c.out.omega + o.noise_omega * n(rng);
+    if (o.outlier_fraction > 0 && u(rng) < o.outlier_fraction) {
+      const double size = o.outlier_v * (1 + u(rng)) * (u(rng) < 0.5 ? -1 : 1);
+      const double which = u(rng);
+      if (which < 1.0 / 3) {
+        r.vx_out += size;
+      } else if (which < 2.0 / 3) {
+        r.vy_out += size;
+      } else {
+        r.omega_out += size / o.ball.b;
+      }
+    }
     rows.push_back(r);
   }
   return rows;

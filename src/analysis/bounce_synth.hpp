@@ -63,6 +63,11 @@ struct SynthTableOptions {
   double omega_max = 50;            ///< incoming omega uniform in [-omega_max, omega_max], rad/s
   double noise_v = 0.02;            ///< noise sd on the outgoing vx, vy, m/s
   double noise_omega = 0.5;         ///< noise sd on the outgoing omega, rad/s
+  /// Fraction of rows with a gross error (a mis-tracked bounce): one of vx_out, vy_out,
+  /// b omega_out, chosen at random, is off by a size uniform in [outlier_v, 2 outlier_v]
+  /// of random sign. 0 (default) draws no extra random numbers: tables as before.
+  double outlier_fraction = 0;
+  double outlier_v = 0.3;           ///< m/s (omega_out: outlier_v / b rad/s)
   std::uint64_t seed = 1;
   std::string validate() const;
 };

@@ -12,6 +12,7 @@ std::string DropOptions::validate() const {
   if (!std::isfinite(rest_height) || !(rest_height >= 0)) return "rest_height must be >= 0";
   if (!std::isfinite(sample_dt) || !(sample_dt >= 0)) return "sample_dt must be >= 0";
   if (auto e = flight.validate(); !e.empty()) return e;
+  if (!(flight.g > 0)) return "g: a drop needs gravitational acceleration > 0";
   if (auto e = contact.validate(); !e.empty()) return e;
   return {};
 }

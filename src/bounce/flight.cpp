@@ -10,10 +10,11 @@
 namespace tribolab::bounce {
 
 std::string FlightOptions::validate() const {
-  if (!std::isfinite(g) || !(g > 0)) return "g: gravitational acceleration must be positive";
+  if (!std::isfinite(g) || !(g >= 0)) return "g: gravitational acceleration must be >= 0";
   if (!std::isfinite(gap_tol) || !(gap_tol > 0)) return "gap_tol must be positive";
   if (!std::isfinite(start_tol) || !(start_tol >= 0)) return "start_tol must be >= 0";
   if (max_iterations == 0) return "max_iterations must be positive";
+  if (std::isnan(t_end) || !(t_end >= 0)) return "t_end must be >= 0";
   return {};
 }
 
@@ -28,12 +29,14 @@ BodyState free_flight(const BodyState& s0, double g, double t) {
 
 namespace {
 
-/// Earliest t >= 0 with y0 + vy t - g t^2 / 2 = h, for h < y0 (the falling crossing).
+/// Earliest t >= 0 with y0 + vy t - g t^2 / 2 = h, for h < y0 (the falling crossing);
+/// infinite when the centre never comes down to h (g = 0 and vy >= 0).
 double time_to_height(double y0, double vy, double g, double h) {
   // g t^2/2 - vy t - (y0 - h) = 0, positive root, stable form.
   const double c = y0 - h;  // > 0
   const double disc = std::sqrt(vy * vy + 2 * g * c);
-  return vy >= 0 ? (vy + disc) / g : 2 * c / (disc - vy);
+  if (vy < 0) return 2 * c / (disc - vy);
+  return g > 0 ? (vy + disc) / g : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -55,7 +58,8 @@ FlightResult first_contact(const Ball& ball, const BodyState& s0, const FlightOp
   const double a = ball.a, b = ball.b;
   const double w = s0.omega;
   const double lip_spin = std::abs(w) * (a - b);
-  const double M2 = g + w * w * (a * a - b * b) / b;
+  // Any larger M2 is still a bound; the floor keeps the steps finite when g = 0 and omega = 0.
+  const double M2 = std::max(g + w * w * (a * a - b * b) / b, 1e-300);
 
   auto gap_at = [&](double t) {
     const BodyState s = free_flight(s0, g, t);
@@ -82,6 +86,20 @@ FlightResult first_contact(const Ball& ball, const BodyState& s0, const FlightOp
   // No contact while the centre is above a; contact at the latest when it reaches b.
   r.t_min = s0.y > a ? time_to_height(s0.y, s0.vy, g, a) : 0.0;
   r.t_max = time_to_height(s0.y, s0.vy, g, b);
+  // The search ends at t_hi. Up to t_max a contact is certain (the centre reaches b); a
+  // horizon before it, or a centre that never comes down (g = 0, vy >= 0: it rises past a
+  // at (a - y0)/vy, and without vy only the spin can close the gap), may leave none.
+  double t_hi = std::min(r.t_max, options.t_end);
+  if (g == 0 && s0.vy > 0) t_hi = std::min(t_hi, std::max(0.0, (a - s0.y) / s0.vy));
+  const bool certain = t_hi == r.t_max && std::isfinite(r.t_max);
+  auto none = [&]() {
+    r.status = FlightStatus::no_contact;
+    r.message = "no contact";  // short: no allocation (the sweep calls this per cell)
+    r.t_contact = std::numeric_limits<double>::quiet_NaN();
+    r.state = s0;
+    return r;
+  };
+  if (!certain && !(r.t_min <= t_hi)) return none();
 
   auto finish = [&](double t, bool grazing) {
     r.t_contact = t;
@@ -97,19 +115,20 @@ FlightResult first_contact(const Ball& ball, const BodyState& s0, const FlightOp
   };
 
   double t = r.t_min;
-  double gap = gap_at(t);
   if (leaving) {
     const double rate = gap_rate(0);
     t = (rate + std::sqrt(rate * rate + 2 * M2 * std::max(gap0, 0.0))) / M2;
-    gap = std::max(gap_at(t), 0.0);
+    if (!certain && !(t < t_hi)) return none();
   }
+  double gap = gap_at(t);
+  if (leaving) gap = std::max(gap, 0.0);
   for (std::size_t it = 0; it < options.max_iterations; ++it) {
     r.iterations = it + 1;
     if (gap <= options.gap_tol) return finish(t, gap > 0);
     const double rate = gap_rate(t);
     if (rate < 0) {
       // Monotone window: gap' <= rate + M2 s < 0 for s < -rate / M2.
-      const double window = std::min(-rate / M2, r.t_max - t + 1e-12);
+      const double window = std::min(-rate / M2, t_hi - t + (certain ? 1e-12 : 0.0));
       if (window > 0 && gap_at(t + window) <= 0) {
         const auto root = numerics::find_root(gap_at, t, t + window);
         TRIBOLAB_ASSERT(root.converged, "flight root bracket lost");
@@ -123,6 +142,7 @@ FlightResult first_contact(const Ball& ball, const BodyState& s0, const FlightOp
     const double h_tay = rate > 0 ? (rate + root) / M2 : 2 * gap / (root - rate);
     const double h = std::max(h_lip, h_tay);
     t += h;
+    if (!certain && !(t < t_hi)) return none();  // [t - h, t_hi] is root-free
     gap = gap_at(t);
     if (gap < 0) gap = 0;  // rounding at a touch: h is root-free, so this is the root
   }

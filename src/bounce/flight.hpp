@@ -7,6 +7,7 @@
 #include "bounce/geometry.hpp"
 
 #include <cstddef>
+#include <limits>
 #include <string>
 
 namespace tribolab::bounce {
@@ -25,7 +26,9 @@ struct BodyState {
 BodyState free_flight(const BodyState& s0, double g, double t);
 
 struct FlightOptions {
-  double g = 9.8;              ///< gravitational acceleration, m/s^2
+  /// Gravitational acceleration, m/s^2 (9.8). 0 is allowed: the centre then moves uniformly
+  /// and a ball moving up (or not at all, without spin) may never touch (status no_contact).
+  double g = 9.8;
   /// A gap below this counts as touching, m: ends the search at a grazing touch, where the
   /// gap has a double root. Default 1e-13 m (far below any measurable gap).
   double gap_tol = 1e-13;
@@ -33,6 +36,9 @@ struct FlightOptions {
   /// is a take-off, not an error, m. Default 1e-9 m covers the rounding of a contact's end.
   double start_tol = 1e-9;
   std::size_t max_iterations = 10'000'000;  ///< guaranteed steps before giving up
+  /// Search horizon, s (default infinite): a first contact later than t_end is not looked
+  /// for (status no_contact). E.g. the apex time vy/g: is there a contact before the apex?
+  double t_end = std::numeric_limits<double>::infinity();
 
   std::string validate() const;  ///< empty when valid
 };
@@ -41,6 +47,7 @@ enum class FlightStatus {
   contact,         ///< first contact found
   touching_start,  ///< the ball already touches or penetrates the floor at t = 0
   max_iterations,  ///< gave up (only at a near-grazing pass, never seen in practice)
+  no_contact,      ///< no contact in [0, t_end], or never (g = 0 and the gap cannot close)
 };
 
 struct FlightResult {
@@ -53,7 +60,7 @@ struct FlightResult {
   bool grazing = false;   ///< the gap touched zero without crossing (gap_tol reached)
   std::size_t iterations = 0;  ///< guaranteed steps taken
   double t_min = 0;       ///< earliest possible contact (centre at height a), s
-  double t_max = 0;       ///< latest possible contact (centre at height b), s
+  double t_max = 0;       ///< latest possible contact (centre at height b), s (inf when g = 0 and vy >= 0)
   std::string message;    ///< human-readable status
 };
 

@@ -146,6 +146,47 @@ TEST(Flight, SeedTable4) {
   EXPECT_GT(rows[2].predicted, std::sqrt(2 * (rows[2].H - ball.b) / g));
 }
 
+TEST(Flight, HorizonEndsTheSearchWithoutMissingAContact) {
+  // A contact at t* is found with any horizon >= t*, and none with a horizon before it.
+  const Ball ball;
+  BodyState s0;
+  s0.y = 0.5;
+  s0.omega = 37;
+  s0.theta = 0.3;
+  const FlightResult full = first_contact(ball, s0);
+  ASSERT_EQ(full.status, FlightStatus::contact);
+  FlightOptions o;
+  o.t_end = full.t_contact * (1 + 1e-9);
+  const FlightResult late = first_contact(ball, s0, o);
+  ASSERT_EQ(late.status, FlightStatus::contact);
+  EXPECT_EQ(late.t_contact, full.t_contact);
+  o.t_end = full.t_contact * (1 - 1e-6);
+  EXPECT_EQ(first_contact(ball, s0, o).status, FlightStatus::no_contact);
+}
+
+TEST(Flight, WithoutGravity) {
+  const Ball ball;
+  FlightOptions o;
+  o.g = 0;
+  BodyState s0;
+  s0.y = 0.5;
+  s0.vy = -2;  // no spin, axis horizontal: the gap closes uniformly, t = (y0 - b) / 2
+  const FlightResult down = first_contact(ball, s0, o);
+  ASSERT_EQ(down.status, FlightStatus::contact);
+  EXPECT_NEAR(down.t_contact, (0.5 - ball.b) / 2, 1e-15);
+  s0.vy = 0.1;  // moving up without gravity: it never comes down
+  s0.omega = 30;
+  s0.y = 0.2;  // above a: no orientation reaches the floor
+  EXPECT_EQ(first_contact(ball, s0, o).status, FlightStatus::no_contact);
+  s0.vy = 0;  // at rest between b and a, spinning: a tip comes down to the floor
+  s0.y = 0.12;
+  const FlightResult spin = first_contact(ball, s0, o);
+  ASSERT_EQ(spin.status, FlightStatus::contact);
+  EXPECT_NEAR(support_depth(ball, spin.state.theta), 0.12, 1e-12);
+  s0.omega = 0;  // and without spin it floats for ever
+  EXPECT_EQ(first_contact(ball, s0, o).status, FlightStatus::no_contact);
+}
+
 TEST(Flight, InvalidInputThrows) {
   Ball ball;
   ball.a = 0.05;  // a < b

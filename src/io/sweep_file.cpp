@@ -159,9 +159,10 @@ SweepHeader parse_header(std::string_view line, const std::string& where) {
   }
   const std::vector<std::string_view> f = split_view(line, kSep);
   const std::int64_t version = parse_int(f[0].substr(kMagic.size()), where, "format version");
-  if (version != kSweepFormatVersion) {
+  if (version < kOldestSweepFormatVersion || version > kSweepFormatVersion) {
     throw InputError(where, "sweep format version " + std::to_string(version) +
-                                " is not supported (this tribolab reads version " +
+                                " is not supported (this tribolab reads versions " +
+                                std::to_string(kOldestSweepFormatVersion) + " to " +
                                 std::to_string(kSweepFormatVersion) + ")");
   }
   if (f.size() < 6) throw InputError(where, "malformed sweep header: missing fields");
@@ -216,9 +217,10 @@ SweepHeader parse_header(std::string_view line, const std::string& where) {
     for (const std::string& item : split(trim(s), ' ')) {
       if (!item.empty()) h.outputs.push_back(item);
     }
-    if (h.outputs.empty() || h.outputs.size() > sweep::kMaxOutputs) {
-      throw InputError(where, "malformed sweep header: 1 to " +
-                                  std::to_string(sweep::kMaxOutputs) + " outputs expected");
+    const std::size_t max_outputs = version == 1 ? 8 : sweep::kMaxOutputs;
+    if (h.outputs.empty() || h.outputs.size() > max_outputs) {
+      throw InputError(where, "malformed sweep header: 1 to " + std::to_string(max_outputs) +
+                                  " outputs expected (format version " + std::to_string(version) + ")");
     }
   }
   // The model description is the rest of the line (it may itself contain " | ").
@@ -227,7 +229,10 @@ SweepHeader parse_header(std::string_view line, const std::string& where) {
     throw InputError(where, "malformed sweep header: no 'model' field");
   }
   h.model = std::string(line.substr(model_pos + kSep.size() + 6));
-  if (format_header(h) != std::string(line) + '\n') {
+  // Canonical form; an older version's header differs only in its version number.
+  const std::string canonical = format_header(h);
+  const auto after_version = [](std::string_view l) { return l.substr(std::min(l.size(), l.find(kSep))); };
+  if (after_version(canonical) != std::string(after_version(line)) + '\n') {
     throw InputError(where, "malformed sweep header (not in canonical form)");
   }
   return h;

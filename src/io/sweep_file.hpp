@@ -1,8 +1,8 @@
-// The sweep file format (version 1): the CSV written by `bounce sweep`, its shards and its
+// The sweep file format (version 2): the CSV written by `bounce sweep`, its shards and its
 // checkpoints. Line 1 is a header recording the format version, the shard, the grid, the
 // fixed quantities, the output names and the physics:
-//   # tribolab-sweep v1 | shard 0/1 | grid theta_deg=100:170:71 omega=30:50:21 |
-//     fixed speed=4 mu=0.5 | outputs vx vy omega_out e | model <description>
+//   # tribolab-sweep v2 | shard 0/1 | grid theta_deg=100:170:71 omega=30:50:21 |
+//     fixed speed=4 mu=0.5 | outputs vx vy omega_out e contacts ... | model <description>
 // (one line), line 2 the column names, then one line per cell of the shard in local order:
 //   theta_deg,omega,<outputs>,<swept extras: speed, mu, ratio - those on the grid>
 // Numbers are printed in the shortest form that reads back to the same double
@@ -20,7 +20,10 @@
 
 namespace tribolab::io {
 
-inline constexpr int kSweepFormatVersion = 1;
+/// Written by this version. v2 (whole-impact bounce cells) allows up to 16 outputs, v1 up to
+/// 8; the grammar is the same, so v1 files are read too (and rewritten as v2 by a merge).
+inline constexpr int kSweepFormatVersion = 2;
+inline constexpr int kOldestSweepFormatVersion = 1;
 
 struct SweepHeader {
   sweep::GridSpec grid;

@@ -49,7 +49,7 @@ TEST(SweepHeader, FormatsAndParsesBack) {
   const SweepHeader h = header_4d();
   const std::string line = format_header(h);
   EXPECT_EQ(line,
-            "# tribolab-sweep v1 | shard 1/3 | grid speed=4:8:2 theta_deg=100:170:15 "
+            "# tribolab-sweep v2 | shard 1/3 | grid speed=4:8:2 theta_deg=100:170:15 "
             "ratio=0.1:12.5:11 | fixed mu=0.45 | outputs vx vy omega_out e | model "
             "hunt-crossley K=1.01e5 n=1.51 | D=6.04e4\n");
   const SweepHeader back = parse_header(line.substr(0, line.size() - 1), "f.csv:1");
@@ -71,7 +71,8 @@ TEST(SweepHeader, RejectsOtherFilesAndVersionsWithTheLocation) {
     return std::string("no error");
   };
   EXPECT_NE(message("theta_deg,omega,vx").find("f.csv:1: not a tribolab sweep file"), std::string::npos);
-  EXPECT_NE(message("# tribolab-sweep v2 | shard 0/1").find("version 2 is not supported"), std::string::npos);
+  EXPECT_NE(message("# tribolab-sweep v3 | shard 0/1").find("version 3 is not supported"), std::string::npos);
+  EXPECT_NE(message("# tribolab-sweep v0 | shard 0/1").find("version 0 is not supported"), std::string::npos);
   std::string good = format_header(header_4d());
   good.pop_back();
   std::string bad = good;
@@ -86,6 +87,24 @@ TEST(SweepHeader, RejectsOtherFilesAndVersionsWithTheLocation) {
   bad = good;
   bad.replace(bad.find("speed=4"), 7, "speed=+4");
   EXPECT_NE(message(bad).find("canonical form"), std::string::npos);
+}
+
+TEST(SweepHeader, ReadsVersion1Files) {
+  // Files written before the whole-impact outputs (v1, at most 8 outputs) are still read;
+  // a header with more outputs than its version allows is not.
+  std::string v1 = format_header(header_4d());
+  v1.pop_back();
+  v1.replace(v1.find(" v2 "), 4, " v1 ");
+  const SweepHeader back = parse_header(v1, "old.csv:1");
+  EXPECT_EQ(back.outputs, header_4d().outputs);
+  EXPECT_EQ(back.model, header_4d().model);
+  SweepHeader wide = header_4d();
+  wide.outputs = {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k"};
+  std::string line = format_header(wide);
+  line.pop_back();
+  EXPECT_EQ(parse_header(line, "new.csv:1").outputs.size(), 11u);
+  line.replace(line.find(" v2 "), 4, " v1 ");
+  EXPECT_THROW(parse_header(line, "old.csv:1"), InputError);
 }
 
 TEST(SweepLines, CheckAcceptsItsOwnLinesAndRejectsOthers) {

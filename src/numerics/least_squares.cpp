@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace tribolab::numerics {
 
@@ -62,12 +63,124 @@ ceres::LossFunction* make_loss(const FitOptions& o) {
   return nullptr;
 }
 
+// The robust loss must act on every residual: Ceres applies a LossFunction to the squared
+// norm of a whole residual block, and the model's N residuals form one block here, so
+// rho(sum r_i^2) would be a monotone transform of least squares (same minimiser: no
+// robustness at all, and a covariance scaled by 1/rho'(sum r^2)). Instead each residual is
+// mapped to r~ = sign(r) sqrt(rho(r^2)), so that sum r~^2 = sum rho(r_i^2) is the robust
+// cost exactly, with d r~/d r = rho'(r^2) |r| / sqrt(rho(r^2)) (1 at r = 0).
+// docs/theory.md#fitting.
+class PerResidualLoss final : public ceres::CostFunction {
+ public:
+  PerResidualLoss(const ceres::CostFunction* inner, std::unique_ptr<ceres::LossFunction> loss)
+      : inner_(inner), loss_(std::move(loss)) {
+    set_num_residuals(inner->num_residuals());
+    *mutable_parameter_block_sizes() = inner->parameter_block_sizes();
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    if (!inner_->Evaluate(parameters, residuals, jacobians)) return false;
+    const std::vector<int32_t>& sizes = parameter_block_sizes();
+    for (int i = 0; i < num_residuals(); ++i) {
+      const double r = residuals[i];
+      double rho[3];
+      loss_->Evaluate(r * r, rho);
+      const double root = std::sqrt(std::max(rho[0], 0.0));
+      const double factor = root > 0 ? rho[1] * std::abs(r) / root : 1.0;
+      residuals[i] = r < 0 ? -root : root;
+      if (jacobians == nullptr) continue;
+      for (std::size_t b = 0; b < sizes.size(); ++b) {
+        if (jacobians[b] == nullptr) continue;
+        for (int k = 0; k < sizes[b]; ++k) jacobians[b][i * sizes[b] + k] *= factor;
+      }
+    }
+    return true;
+  }
+
+ private:
+  const ceres::CostFunction* inner_;
+  std::unique_ptr<ceres::LossFunction> loss_;
+};
+
 bool evaluate(const ceres::CostFunction& cost, const std::vector<double>& p,
               std::vector<double>& r) {
   const double* blocks[] = {p.data()};
   if (!cost.Evaluate(blocks, r.data(), nullptr)) return false;
   for (double v : r) {
     if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
+// Huber's sandwich (Huber 1967, Proc. 5th Berkeley Symp. 1; Huber & Ronchetti, Robust
+// Statistics, 2009, section 7.6) for the M-estimator minimising (1/2) sum rho(r_i^2):
+// the estimating equation is sum psi_i = 0 with psi_i = rho'(r_i^2) r_i J_i^T, its derivative
+// (Gauss-Newton, r'' dropped) H = sum (rho' + 2 rho'' r_i^2) J_i^T J_i, and
+// Cov = N/(N - F) H^-1 (sum psi_i psi_i^T) H^-1 (F free parameters; the factor is the HC1
+// small-sample correction). For Huber's loss H counts the inliers only and psi is the
+// residual clipped at the loss scale. When H is not positive definite (a redescending loss
+// such as Cauchy with many large residuals), the IRLS weights rho' alone make the bread,
+// H = sum rho' J_i^T J_i. J is the raw residuals' Jacobian (central differences or autodiff).
+bool sandwich_covariance(const ceres::CostFunction& cost, const std::vector<double>& p,
+                         const std::vector<FitParameter>& parameters, const FitOptions& options,
+                         FitResult& r) {
+  const int P = static_cast<int>(p.size());
+  const int N = static_cast<int>(r.residuals.size());
+  std::vector<int> free;
+  for (int i = 0; i < P; ++i) {
+    if (!parameters[i].fixed) free.push_back(i);
+  }
+  const int F = static_cast<int>(free.size());
+  if (N <= F) return false;
+  std::vector<double> res(N);
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(N, P);
+  const double* blocks[] = {p.data()};
+  double* jacobians[] = {J.data()};
+  if (!cost.Evaluate(blocks, res.data(), jacobians) || !J.allFinite()) return false;
+  std::unique_ptr<ceres::LossFunction> loss(make_loss(options));
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(F, F), Hw = H, B = H, JtJ = H;
+  Eigen::VectorXd j(F);
+  double sum_w = 0, sum_w2 = 0, sum_psi2 = 0;
+  for (int i = 0; i < N; ++i) {
+    for (int k = 0; k < F; ++k) j[k] = J(i, free[k]);
+    const double sq = res[i] * res[i];
+    double rho[3] = {sq, 1.0, 0.0};
+    if (loss) loss->Evaluate(sq, rho);
+    const double psi = rho[1] * res[i];
+    const double w = rho[1] + 2 * rho[2] * sq;  // d psi / d r
+    H += w * j * j.transpose();
+    Hw += rho[1] * j * j.transpose();
+    B += psi * psi * j * j.transpose();
+    JtJ += j * j.transpose();
+    sum_w += w;
+    sum_w2 += w * w;
+    sum_psi2 += psi * psi;
+  }
+  if (options.covariance == Covariance::huber) {
+    const double m = sum_w / N;
+    const double var_w = std::max(0.0, sum_w2 / N - m * m);
+    if (!(m > 0)) return false;
+    const double K = 1 + (static_cast<double>(F) / N) * var_w / (m * m);
+    Eigen::LDLT<Eigen::MatrixXd> ldlt(JtJ);
+    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0)) return false;
+    const Eigen::MatrixXd C = (K * K * sum_psi2 / (N - F) / (m * m)) * ldlt.solve(Eigen::MatrixXd::Identity(F, F));
+    if (!C.allFinite()) return false;
+    r.covariance = Eigen::MatrixXd::Zero(P, P);
+    for (int a = 0; a < F; ++a) {
+      for (int b = 0; b < F; ++b) r.covariance(free[a], free[b]) = C(a, b);
+    }
+    return true;
+  }
+  Eigen::LLT<Eigen::MatrixXd> llt(H);
+  if (llt.info() != Eigen::Success) {
+    llt.compute(Hw);
+    if (llt.info() != Eigen::Success) return false;
+  }
+  const Eigen::MatrixXd Hinv = llt.solve(Eigen::MatrixXd::Identity(F, F));
+  const Eigen::MatrixXd C = (static_cast<double>(N) / (N - F)) * Hinv * B * Hinv;
+  if (!C.allFinite()) return false;
+  r.covariance = Eigen::MatrixXd::Zero(P, P);
+  for (int a = 0; a < F; ++a) {
+    for (int b = 0; b < F; ++b) r.covariance(free[a], free[b]) = C(a, b);
   }
   return true;
 }
@@ -107,10 +220,13 @@ FitResult solve_with_cost(std::unique_ptr<ceres::CostFunction> cost, int num_res
     return r;
   }
 
+  std::unique_ptr<ceres::LossFunction> loss(make_loss(options));
+  std::unique_ptr<ceres::CostFunction> robust;  // outlives the problem that points to it
+  if (loss) robust = std::make_unique<PerResidualLoss>(cost.get(), std::move(loss));
   ceres::Problem::Options problem_options;
   problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
-  problem.AddResidualBlock(cost.get(), make_loss(options), p.data());
+  problem.AddResidualBlock(robust ? robust.get() : cost.get(), nullptr, p.data());
   if (free_count == 0) {
     problem.SetParameterBlockConstant(p.data());
   } else if (!fixed_indices.empty()) {
@@ -174,6 +290,14 @@ FitResult solve_with_cost(std::unique_ptr<ceres::CostFunction> cost, int num_res
     r.noise_scale = r.dof > 0 ? std::sqrt(ss / r.dof) : std::numeric_limits<double>::quiet_NaN();
   }
   r.covariance = c * (r.noise_scale * r.noise_scale);
+  if (options.covariance != Covariance::gauss_newton) {
+    if (!sandwich_covariance(*cost, p, parameters, options, r)) {
+      r.status = FitStatus::not_identifiable;
+      r.message = "the data cannot determine every free parameter (singular sandwich bread); fix one "
+                  "or add data";
+      return r;
+    }
+  }
   for (int i = 0; i < P; ++i) {
     r.sigma[i] = parameters[i].fixed ? 0.0 : std::sqrt(std::max(0.0, r.covariance(i, i)));
   }

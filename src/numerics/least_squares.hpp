@@ -4,7 +4,8 @@
 // (1/2) sum rho(r_i^2) (rho = identity or a robust loss), then estimates the covariance of p
 // from the Jacobian at the optimum: C = s^2 (J^T J)^-1, where s^2 = sum r_i^2 / (N - P_free)
 // when the residuals are unscaled (measurement noise unknown, estimated from the fit), or 1
-// when the caller has already divided each residual by its standard deviation.
+// when the caller has already divided each residual by its standard deviation; or, with
+// FitOptions::covariance = sandwich, Huber's sandwich estimator for robust losses.
 // Confidence intervals use Student's t with N - P_free degrees of freedom.
 // See docs/theory.md#fitting.
 #pragma once
@@ -24,6 +25,25 @@ namespace tribolab::numerics {
 
 enum class RobustLoss { none, huber, cauchy, soft_l1 };
 
+/// How the covariance of the parameters is estimated at the optimum (docs/theory.md#fitting).
+enum class Covariance {
+  /// s^2 (J~^T J~)^-1 with Ceres' robustified Jacobian J~ (rows scaled by sqrt(rho')) and
+  /// s^2 = sum r^2 / (N - P_free) from the raw residuals; exact for least squares (no loss)
+  /// with equal, independent noise.
+  gauss_newton,
+  /// Huber's sandwich H^-1 B H^-1 N/(N - P_free) for an M-estimator:
+  /// H = sum (rho' + 2 rho'' r^2) J_i^T J_i, B = sum (rho' r)^2 J_i^T J_i, with rho', rho''
+  /// the loss's derivatives at s = r^2 (Ceres convention). Needs no noise level, allows
+  /// unequal noise across residuals and down-weights outliers as the fit does.
+  sandwich,
+  /// Huber's scalar correction for an M-estimator (Huber 1981, Robust Statistics, eq. 7.6.x;
+  /// as R's MASS::rlm): K^2 [sum psi^2 / (N - F)] / m^2 (J^T J)^-1 with psi = rho' r,
+  /// m = mean(rho' + 2 rho'' r^2), K = 1 + (F/N) var(rho' + 2 rho'' r^2) / m^2. Equals
+  /// s^2 (J^T J)^-1 without a loss; assumes one noise level, but counts outliers only at
+  /// their clipped size and is far steadier than the sandwich in small samples.
+  huber,
+};
+
 struct FitOptions {
   int max_iterations = 200;
   double function_tolerance = 1e-14;
@@ -34,6 +54,7 @@ struct FitOptions {
   /// true: residuals are already divided by their standard deviations (covariance not
   /// rescaled); false: the noise level is estimated from the residuals.
   bool residuals_are_normalized = false;
+  Covariance covariance = Covariance::gauss_newton;  ///< see Covariance
 
   std::string validate() const;
 };
@@ -66,7 +87,7 @@ struct FitResult {
   double cost = 0.0;                  ///< (1/2) sum r_i^2 at the optimum (no robust loss)
   double rms = 0.0;                   ///< sqrt(sum r_i^2 / N)
   int dof = 0;                        ///< N - number of free parameters
-  double noise_scale = 1.0;           ///< s used to scale the covariance
+  double noise_scale = 1.0;           ///< s used to scale the covariance (gauss_newton; informative with sandwich)
 
   bool ok() const { return status == FitStatus::converged; }
   /// Half-width of the two-sided confidence interval at `level` (e.g. 0.95) for parameter i.

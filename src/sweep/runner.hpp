@@ -17,14 +17,15 @@
 namespace tribolab::sweep {
 
 /// Largest number of outputs of one cell.
-inline constexpr std::size_t kMaxOutputs = 8;
+inline constexpr std::size_t kMaxOutputs = 16;
 /// A cell's outputs; only the first output_names.size() entries are used.
 using CellOutputs = std::array<double, kMaxOutputs>;
 
 /// What is computed in every cell: the physics behind a sweep (e.g. one bounce contact).
 struct CellModel {
   /// Names of the outputs, in order, 1..kMaxOutputs of them; used as CSV column names.
-  /// The derived maps need one named "e" (restitution). Bounce: vx, vy, omega_out, e.
+  /// The derived maps need one named "e" (restitution). Bounce: vx, vy, omega_out, e,
+  /// contacts, contact_duration, then the first contact phase's vx_first ... duration_first.
   std::vector<std::string> output_names;
   /// The cell function. Must be a pure function of its input (same input, same bits out)
   /// and safe to call concurrently from many threads. May throw (e.g. InputError).
