@@ -17,6 +17,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace tribolab::cli {
 namespace {
@@ -51,9 +52,19 @@ double map_max(const std::string& law_options) {
   std::string line;
   double m = -std::numeric_limits<double>::infinity();
   int cells = 0;
+  int e_column = -1;  // found by name in the column line (whole-impact e, not e_first)
   while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 't') continue;  // header and column line
-    m = std::max(m, std::stod(line.substr(line.rfind(',') + 1)));   // e is the last column
+    if (line.empty() || line[0] == '#') continue;  // header
+    std::vector<std::string> fields;
+    std::istringstream row(line);
+    for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+    if (e_column < 0) {
+      const auto at = std::find(fields.begin(), fields.end(), "e");
+      EXPECT_NE(at, fields.end()) << line;
+      e_column = static_cast<int>(at - fields.begin());
+      continue;
+    }
+    m = std::max(m, std::stod(fields.at(static_cast<std::size_t>(e_column))));
     ++cells;
   }
   EXPECT_EQ(cells, 71 * 21);
