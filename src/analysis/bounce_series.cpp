@@ -3,8 +3,6 @@
 
 #include "numerics/error.hpp"
 
-#include <boost/math/special_functions/gamma.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -85,30 +83,19 @@ std::string BounceSeriesOptions::validate() const {
   return {};
 }
 
-WeightedMean weighted_mean(const std::vector<double>& x, const std::vector<double>& sigma) {
-  WeightedMean m;
-  double sw = 0, swx = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
+WeightedMean weighted_mean_of_finite(const std::vector<double>& x, const std::vector<double>& sigma) {
+  std::vector<double> xs, ss;
+  for (std::size_t i = 0; i < x.size() && i < sigma.size(); ++i) {
     if (!std::isfinite(x[i]) || !(sigma[i] > 0) || !std::isfinite(sigma[i])) continue;
-    const double w = 1 / (sigma[i] * sigma[i]);
-    sw += w;
-    swx += w * x[i];
-    ++m.n;
+    xs.push_back(x[i]);
+    ss.push_back(sigma[i]);
   }
-  if (m.n == 0) {
-    m.mean = m.sigma = m.sigma_scaled = m.p_value = NAN;
+  if (xs.empty()) {
+    WeightedMean m;
+    m.mean = m.sigma = m.sigma_scaled = m.p_value = m.birge_ratio = m.chi2 = NAN;
     return m;
   }
-  m.mean = swx / sw;
-  m.sigma = 1 / std::sqrt(sw);
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!std::isfinite(x[i]) || !(sigma[i] > 0) || !std::isfinite(sigma[i])) continue;
-    m.chi2 += std::pow((x[i] - m.mean) / sigma[i], 2);
-  }
-  m.dof = m.n - 1;
-  m.p_value = m.dof > 0 ? boost::math::gamma_q(0.5 * m.dof, 0.5 * m.chi2) : NAN;
-  m.sigma_scaled = m.dof > 0 && m.chi2 > m.dof ? m.sigma * std::sqrt(m.chi2 / m.dof) : m.sigma;
-  return m;
+  return weighted_mean(xs, ss);
 }
 
 BounceSeriesSummary summarize_bounce_series(const std::vector<BounceSeriesPoint>& points,
@@ -124,8 +111,8 @@ BounceSeriesSummary summarize_bounce_series(const std::vector<BounceSeriesPoint>
     eh.push_back(p.e_height);
     seh.push_back(p.sigma_e_height);
   }
-  s.e_velocity = weighted_mean(ev, sev);
-  s.e_height = weighted_mean(eh, seh);
+  s.e_velocity = weighted_mean_of_finite(ev, sev);
+  s.e_height = weighted_mean_of_finite(eh, seh);
   // e > 1: counted over runs with a value; significant when one-sided (e - 1)/sigma > z.
   auto above = [&](const std::vector<double>& e, const std::vector<double>& se) {
     AboveOne a;
@@ -168,7 +155,7 @@ BounceSeriesSummary summarize_bounce_series(const std::vector<BounceSeriesPoint>
       if (points[i].e_velocity > 1) ++b.n_above_one;
     }
     b.centre_deg = sum_a / b.n;
-    b.e_velocity = weighted_mean(x, sx);
+    b.e_velocity = weighted_mean_of_finite(x, sx);
     s.bins.push_back(b);
     // Outliers of the bin: modified z = 0.6745 |e - median| / MAD > outlier_z.
     if (b.n >= o.outlier_min_bin) {

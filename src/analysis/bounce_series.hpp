@@ -8,6 +8,7 @@
 
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_fit.hpp"
+#include "analysis/series_stats.hpp"
 #include "bounce/contact.hpp"
 #include "bounce/geometry.hpp"
 
@@ -52,19 +53,10 @@ struct BounceSeriesOptions {
   std::string validate() const;
 };
 
-/// Weighted mean of values with standard errors: mean = sum(w x)/sum(w), w = 1/sigma^2,
-/// sigma = 1/sqrt(sum w); chi2 = sum w (x - mean)^2 on n - 1 dof, p = P(chi2_dof >= chi2).
-struct WeightedMean {
-  int n = 0;                 ///< values used (finite value, finite positive sigma)
-  double mean = 0, sigma = 0;
-  double chi2 = 0;
-  int dof = 0;
-  double p_value = 1;        ///< NaN when dof = 0
-  /// sigma times sqrt(chi2/dof) when that exceeds 1 (Birge ratio; the scatter the sigmas do
-  /// not explain), else sigma.
-  double sigma_scaled = 0;
-};
-WeightedMean weighted_mean(const std::vector<double>& x, const std::vector<double>& sigma);
+/// The weighted mean (analysis/series_stats.hpp) of the values that have one: a NaN value or
+/// a sigma that is not finite and positive is left out; none left gives n = 0, NaN mean and
+/// sigma.
+WeightedMean weighted_mean_of_finite(const std::vector<double>& x, const std::vector<double>& sigma);
 
 /// One bin of collision angle [low, high) (the last bin includes 180).
 struct AngleBin {
