@@ -106,7 +106,8 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     std::vector<std::string> items;
     for (const auto& out : s.outliers) items.push_back(point_files[out.run] + ": " + out.reason);
     sum.add_paragraph("Outliers (modified z-score of Iglewicz & Hoaglin > " + v4(o.outlier_z) +
-                      " within the run's angle bin): look at these runs' own reports before trusting them.");
+                      " within the run's angle bin). e also depends on the spin and speed of the throw, so such a run "
+                      "may be a different kind of throw rather than a bad measurement: look at its own report.");
     sum.add_list(std::move(items));
   }
 
