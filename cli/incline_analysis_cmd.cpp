@@ -200,7 +200,8 @@ struct SlideText {
 };
 
 json slide_json(const analysis::SlideResult& r, const track::Track& t);
-void slide_series(const SlideText& s, const std::vector<analysis::SlideOptions>& per);
+void slide_series(const SlideText& s, const std::vector<analysis::SlideOptions>& per,
+                  const std::vector<std::string>& phi_text);
 
 void add_mu_from_slide(CLI::App* area) {
   auto* cmd = area->add_subcommand(
@@ -232,7 +233,7 @@ void add_mu_from_slide(CLI::App* area) {
       }
       o.g = parse_g(s->g);
     }
-    if (s->files.size() > 1) return slide_series(*s, per);
+    if (s->files.size() > 1) return slide_series(*s, per, phi_text);
     const analysis::SlideOptions& o = per.front();
     const track::Track t = read_one_track(s->files.front(), s->in);
     const analysis::SlideResult r = analysis::mu_from_slide(t, o);
@@ -258,7 +259,8 @@ json slide_json(const analysis::SlideResult& r, const track::Track& t) {
     return j;
 }
 
-void slide_series(const SlideText& s, const std::vector<analysis::SlideOptions>& per) {
+void slide_series(const SlideText& s, const std::vector<analysis::SlideOptions>& per,
+                  const std::vector<std::string>& phi_text) {
   struct Run {
     analysis::SlideResult r;
     json j;
@@ -267,7 +269,7 @@ void slide_series(const SlideText& s, const std::vector<analysis::SlideOptions>&
     const track::Track t = read_one_track(file, s.in);
     Run run{analysis::mu_from_slide(t, per[i]), {}};
     run.j = slide_json(run.r, t);
-    run.j["phi_deg"] = per[i].phi ? json(incline::rad_to_deg(*per[i].phi)) : json(nullptr);
+    run.j["phi_deg"] = per[i].phi ? json(number(phi_text[i], "--phi-deg")) : json(nullptr);  // as given
     return run;
   });
   std::vector<std::optional<double>> mu, sigma_mu;
@@ -377,7 +379,8 @@ json analysis_json(const analysis::InclineAnalysis& a) {
 
 /// `incline analyze` over several files: every run as the single-file command, the series
 /// summary (analysis/incline_series.hpp), and with --report the series report.
-void analyze_series(const AnalyzeText& s, const std::vector<analysis::InclineFitOptions>& per) {
+void analyze_series(const AnalyzeText& s, const std::vector<analysis::InclineFitOptions>& per,
+                    const std::vector<double>& phi_deg) {
   struct Run {
     analysis::InclineAnalysis a;
     json j;
@@ -387,7 +390,7 @@ void analyze_series(const AnalyzeText& s, const std::vector<analysis::InclineFit
     Run run{analysis::analyze_incline_run(t, per[i]), {}};
     run.j = analysis_json(run.a);
     run.j["track"] = t.name;
-    run.j["phi_deg"] = incline::rad_to_deg(per[i].phi);
+    run.j["phi_deg"] = phi_deg[i];  // as given (deg -> rad -> deg need not round-trip)
     return run;
   });
   std::vector<analysis::InclineRunPoint> points;
@@ -402,6 +405,7 @@ void analyze_series(const AnalyzeText& s, const std::vector<analysis::InclineFit
   const analysis::InclineSeriesSummary sum = analysis::summarize_incline_series(points, so);
   json summary = series_counts(runs);
   summary.update(incline_series_json(sum, runs.size(), run_of_point));
+  if (sum.common_phi) summary["phi_deg"] = phi_deg.front();
   const json rows = series_rows(runs, [](const Run& r) { return r.j; });
   write_report_if_requested(s.report, [&] {
     std::vector<InclineSeriesRun> report_runs;
@@ -436,9 +440,11 @@ void add_analyze(CLI::App* area) {
   cmd->callback([s] {
     const auto phi_text = per_file_values(s->phi_deg, s->files.size(), "--phi-deg");
     std::vector<analysis::InclineFitOptions> per(s->files.size());
+    std::vector<double> phi_deg(s->files.size());
     for (std::size_t i = 0; i < per.size(); ++i) {
       analysis::InclineFitOptions& o = per[i];
-      o.phi = incline::deg_to_rad(parse_angle_deg(phi_text[i], "--phi-deg", true));
+      phi_deg[i] = parse_angle_deg(phi_text[i], "--phi-deg", true);
+      o.phi = incline::deg_to_rad(phi_deg[i]);
       o.g = parse_g(s->g);
       const double block = number(s->block, "--block");
       if (!(block == 0 || (block >= 5 && block <= 1000 && block == std::floor(block))))
@@ -446,7 +452,7 @@ void add_analyze(CLI::App* area) {
       o.diagnostic_block = static_cast<int>(block);
       o.fit_model_a = !s->no_model_a;
     }
-    if (s->files.size() > 1) return analyze_series(*s, per);
+    if (s->files.size() > 1) return analyze_series(*s, per, phi_deg);
     const analysis::InclineFitOptions& o = per.front();
     const track::Track t = read_one_track(s->files.front(), s->in);
     const analysis::InclineAnalysis a = analysis::analyze_incline_run(t, o);

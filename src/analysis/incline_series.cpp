@@ -16,10 +16,32 @@ namespace {
 /// 1e-9 rad is far below any measured angle's precision).
 constexpr double kSameAngle = 1e-9;
 
-void name_outliers(const WeightedMean& m, const std::vector<int>& index, const std::vector<std::string>& sources,
-                   double limit, std::vector<std::string>& out) {
-  for (std::size_t j = 0; j < m.pulls.size(); ++j)
-    if (std::isfinite(m.pulls[j]) && std::abs(m.pulls[j]) > limit) out.push_back(sources[static_cast<std::size_t>(index[j])]);
+/// Names outliers by iterative rejection: the value with the largest |pull| beyond `limit`
+/// is named and left out, the weighted mean recomputed without it, until no value is beyond.
+/// (One wild run pulls the mean of a few runs so far that every pull about the full mean
+/// exceeds the limit; removing it first names only the culprit.) The reported mean keeps
+/// every run: this only names them.
+void name_outliers(const std::vector<double>& x, const std::vector<double>& s, const std::vector<int>& index,
+                   const std::vector<std::string>& sources, double limit, std::vector<std::string>& out) {
+  std::vector<bool> kept(x.size(), true);
+  while (true) {
+    std::vector<double> xk, sk;
+    std::vector<std::size_t> pos;
+    for (std::size_t j = 0; j < x.size(); ++j)
+      if (kept[j]) {
+        xk.push_back(x[j]);
+        sk.push_back(s[j]);
+        pos.push_back(j);
+      }
+    if (xk.size() < 3) return;  // with two values neither can be told to be the outlier
+    const WeightedMean m = weighted_mean(xk, sk);
+    std::size_t worst = 0;
+    for (std::size_t j = 1; j < m.pulls.size(); ++j)
+      if (std::abs(m.pulls[j]) > std::abs(m.pulls[worst])) worst = j;
+    if (!(std::abs(m.pulls[worst]) > limit)) return;
+    kept[pos[worst]] = false;
+    out.push_back(sources[static_cast<std::size_t>(index[pos[worst]])]);
+  }
 }
 
 }  // namespace
@@ -130,7 +152,7 @@ InclineSeriesSummary summarize_incline_series(const std::vector<InclineRunPoint>
   }
   if (!mu.empty()) {
     r.mu = weighted_mean(mu, smu);
-    name_outliers(*r.mu, r.mu_index, sources, o.outlier_pull, r.outliers);
+    name_outliers(mu, smu, r.mu_index, sources, o.outlier_pull, r.outliers);
   }
 
   // One angle or several?
@@ -249,7 +271,7 @@ SlideSeriesSummary summarize_slide_series(const std::vector<std::optional<double
     return r;
   }
   r.mu = weighted_mean(x, s);
-  name_outliers(*r.mu, r.mu_index, sources, outlier_pull, r.outliers);
+  name_outliers(x, s, r.mu_index, sources, outlier_pull, r.outliers);
   return r;
 }
 

@@ -75,7 +75,9 @@ struct PooledNormalFriction {
 struct InclineSeriesSummary {
   std::optional<WeightedMean> mu;  ///< weighted mean of the runs' mu (model B)
   std::vector<int> mu_index;       ///< run index of each value in mu (its pulls)
-  std::vector<std::string> outliers;  ///< runs with |pull| > outlier_pull
+  /// Runs named by iterative rejection: the largest |pull| beyond outlier_pull is named and
+  /// left out, the mean recomputed, until none is beyond (mu itself keeps every run).
+  std::vector<std::string> outliers;
   std::optional<double> common_phi;   ///< rad, when every run has the same angle
   std::vector<StopScaling> scaling;   ///< figure 八's four relations (when the angle is common)
   std::string scaling_note;           ///< why scaling is empty or shorter

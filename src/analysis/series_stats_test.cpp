@@ -87,6 +87,8 @@ TEST(WeightedMean, SigmaCoversAndTheChiSquareTestHasItsSize) {
     rejected += m.p_value < 0.05;
     chi2_sum += m.chi2;
   }
+  std::printf("weighted mean over %d series of %d: +-sigma covers %.4f, p < 0.05 in %.4f, mean chi2 %.3f\n", series, n,
+              covered / double(series), rejected / double(series), chi2_sum / series);
   // Binomial 3-sigma tolerances over 4000 series: 0.683 +- 0.022, 0.05 +- 0.010; the mean chi2
   // has sd sqrt(2 dof / series) = 0.055: +-0.17 is 3 sd.
   EXPECT_NEAR(covered / double(series), 0.6827, 3 * std::sqrt(0.683 * 0.317 / series));

@@ -51,7 +51,7 @@ struct Table {
   /// Optional: one link per row (empty string: none), made on the row's first cell, e.g.
   /// to a run's own report beside this one. Must be a relative path of letters, digits and
   /// `. _ - / %` (no scheme, no leading '/'), so a report never points off the disc.
-  std::vector<std::string> links;
+  std::vector<std::string> links = {};
 };
 
 /// True when `href` is a link Table::links accepts (a non-empty relative path of letters,
