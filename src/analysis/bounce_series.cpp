@@ -31,7 +31,10 @@ BounceSeriesPoint point_of(const BounceAnalysis& r, const bounce::Ball& ball) {
   BounceSeriesPoint p;
   // Today's single-run analysis evaluates the angle, the orientation and both velocities at
   // impact_time (the impulse centroid, docs/theory.md#bounce-analysis); when analyze reports
-  // them at first touch / separation, these lines read those fields instead.
+  // them at first touch / separation, these lines read those fields instead: theta_deg from
+  // the orientation at touch, vy_in / vy_out from the centre's vy at touch / separation, and
+  // the contact_point_* below from the analysis's own values at touch (vx and omega are
+  // constant in flight and stay pre/post.vx, .omega).
   p.collision_angle_deg = r.collision_angle_deg;
   p.theta_deg = r.theta_impact_deg;
   p.e_velocity = r.e_velocity;
