@@ -48,6 +48,10 @@ void add_incline_case_study(report::Report& r, std::ostream& log);
 /// as `incline analyze`, `normal-friction-test` and `mu-from-slide` do (cli/demo_incline_runs.cpp).
 void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std::string& data_dir);
 
+/// Seed 000's shipped series of discs (data/demo/incline_series/), written to `data_dir` and
+/// analysed as `incline analyze` over several files does (cli/demo_incline_series.cpp).
+void add_incline_series_case_study(report::Report& r, std::ostream& log, const std::string& data_dir);
+
 /// Seed 001: geometry, table 4, figures 45-48, a drop, heat maps 53-56 (cli/demo_bounce.cpp).
 void add_bounce_case_study(report::Report& r, std::ostream& log);
 
@@ -55,6 +59,11 @@ void add_bounce_case_study(report::Report& r, std::ostream& log);
 /// table fitted as `bounce fit` does, against the truth (cli/demo_bounce_runs.cpp); writes the
 /// files to <context.out>/data/bounce/.
 void add_bounce_runs_case_study(report::Report& r, std::ostream& log, const DemoContext& context);
+
+/// Seed 001 experiment 2 on shipped data: twelve filmed throws analysed as a series, as
+/// `bounce analyze FILE...` does, beside the truth (cli/demo_bounce_series.cpp); writes the
+/// files to <context.out>/data/bounce_series/.
+void add_bounce_series_case_study(report::Report& r, std::ostream& log, const DemoContext& context);
 
 /// The errata of both seeds (cli/demo_errata.cpp).
 void add_errata_section(report::Report& r, std::ostream& log);

@@ -63,8 +63,13 @@ std::vector<CaseStudy> demo_case_studies(const DemoContext& context) {
        [context](report::Report& r, std::ostream& log) {
          add_incline_runs_case_study(r, log, (std::filesystem::path(context.out) / "data").string());
        }},
+      {"incline-series",
+       [context](report::Report& r, std::ostream& log) {
+         add_incline_series_case_study(r, log, (std::filesystem::path(context.out) / "data").string());
+       }},
       {"bounce", add_bounce_case_study},
       {"bounce-runs", [context](report::Report& r, std::ostream& log) { add_bounce_runs_case_study(r, log, context); }},
+      {"bounce-series", [context](report::Report& r, std::ostream& log) { add_bounce_series_case_study(r, log, context); }},
       {"errata", add_errata_section},
   };
 }

@@ -18,6 +18,9 @@
 #include "numerics/physical_range.hpp"
 #include "report_incline_analysis.hpp"
 #include "report_option.hpp"
+#include "incline_series.hpp"
+#include "report_incline_series.hpp"
+#include "series_cmd.hpp"
 
 #include <cmath>
 #include <memory>
@@ -190,35 +193,57 @@ void add_synth(CLI::App* area) {
 // ---- mu-from-slide -------------------------------------------------------------------
 
 struct SlideText {
-  std::string file, phi_deg, sigma_phi_deg, g = "9.8", report;
+  std::vector<std::string> files;
+  std::string phi_deg, sigma_phi_deg, g = "9.8", report;
   TrackInput in;
   bool json = false;
 };
+
+json slide_json(const analysis::SlideResult& r, const track::Track& t);
+void slide_series(const SlideText& s, const std::vector<analysis::SlideOptions>& per,
+                  const std::vector<std::string>& phi_text);
 
 void add_mu_from_slide(CLI::App* area) {
   auto* cmd = area->add_subcommand(
       "mu-from-slide", "Friction coefficient from a straight slide down the incline (seed 000, eq a)");
   auto s = std::make_shared<SlideText>();
-  cmd->add_option("FILE", s->file, "Tracker .trk/.trz, Export Data text, or CSV")->required();
-  cmd->add_option("--phi-deg", s->phi_deg, "Incline angle, degrees, in (0, 90); without it only a is reported");
-  cmd->add_option("--sigma-phi-deg", s->sigma_phi_deg, "Uncertainty of the angle, degrees (default 0)");
+  cmd->add_option("FILE", s->files,
+                  "Tracker .trk/.trz, Export Data text, or CSV; several files: a series with a summary")
+      ->required();
+  cmd->add_option("--phi-deg", s->phi_deg,
+                  "Incline angle, degrees, in (0, 90): one, or one per file (comma separated); without it only a is reported");
+  cmd->add_option("--sigma-phi-deg", s->sigma_phi_deg, "Uncertainty of the angle, degrees (default 0): one, or one per file");
   cmd->add_option("--g", s->g, "Gravitational acceleration, m/s^2 (default 9.8)");
   add_track_input(cmd, s->in);
   add_json_flag(*cmd, s->json);
   set_types(cmd);
   add_report_option(*cmd, s->report);
   cmd->callback([s] {
-    analysis::SlideOptions o;
-    if (!s->phi_deg.empty()) o.phi = incline::deg_to_rad(parse_angle_deg(s->phi_deg, "--phi-deg", false));
-    if (!s->sigma_phi_deg.empty()) {
-      if (!o.phi) throw InputError("--sigma-phi-deg", "needs --phi-deg");
-      const double v = check_range(number(s->sigma_phi_deg, "--sigma-phi-deg"), ranges::angle_sigma_deg,
-                                   "--sigma-phi-deg");
-      o.sigma_phi = incline::deg_to_rad(v);
+    const auto phi_text = per_file_values(s->phi_deg, s->files.size(), "--phi-deg");
+    const auto sigma_text = per_file_values(s->sigma_phi_deg, s->files.size(), "--sigma-phi-deg");
+    std::vector<analysis::SlideOptions> per(s->files.size());
+    for (std::size_t i = 0; i < per.size(); ++i) {
+      analysis::SlideOptions& o = per[i];
+      if (!phi_text[i].empty()) o.phi = incline::deg_to_rad(parse_angle_deg(phi_text[i], "--phi-deg", false));
+      if (!sigma_text[i].empty()) {
+        if (!o.phi) throw InputError("--sigma-phi-deg", "needs --phi-deg");
+        const double v = check_range(number(sigma_text[i], "--sigma-phi-deg"), ranges::angle_sigma_deg,
+                                     "--sigma-phi-deg");
+        o.sigma_phi = incline::deg_to_rad(v);
+      }
+      o.g = parse_g(s->g);
     }
-    o.g = parse_g(s->g);
-    const track::Track t = read_one_track(s->file, s->in);
+    if (s->files.size() > 1) return slide_series(*s, per, phi_text);
+    const analysis::SlideOptions& o = per.front();
+    const track::Track t = read_one_track(s->files.front(), s->in);
     const analysis::SlideResult r = analysis::mu_from_slide(t, o);
+    const json j = slide_json(r, t);
+    write_report_if_requested(s->report, [&] { return incline_slide_report(s->files.front(), r, o); });
+    print_result(j, s->json);
+  });
+}
+
+json slide_json(const analysis::SlideResult& r, const track::Track& t) {
     json j;
     j["a"] = r.a;
     j["sigma_a"] = r.sigma_a;
@@ -231,15 +256,52 @@ void add_mu_from_slide(CLI::App* area) {
     j["direction_deg"] = r.direction_deg;
     j["straightness_rms"] = r.straightness_rms;
     j["track"] = t.name;
-    write_report_if_requested(s->report, [&] { return incline_slide_report(s->file, r, o); });
-    print_result(j, s->json);
+    return j;
+}
+
+void slide_series(const SlideText& s, const std::vector<analysis::SlideOptions>& per,
+                  const std::vector<std::string>& phi_text) {
+  struct Run {
+    analysis::SlideResult r;
+    json j;
+  };
+  const auto runs = run_files<Run>(s.files, [&](std::size_t i, const std::string& file) {
+    const track::Track t = read_one_track(file, s.in);
+    Run run{analysis::mu_from_slide(t, per[i]), {}};
+    run.j = slide_json(run.r, t);
+    run.j["phi_deg"] = per[i].phi ? json(number(phi_text[i], "--phi-deg")) : json(nullptr);  // as given
+    return run;
   });
+  std::vector<std::optional<double>> mu, sigma_mu;
+  std::vector<std::string> sources;
+  std::vector<std::size_t> run_of_point;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (!runs[i].ok()) continue;
+    mu.push_back(runs[i].result->r.mu);
+    sigma_mu.push_back(runs[i].result->r.sigma_mu);
+    sources.push_back(runs[i].source);
+    run_of_point.push_back(i);
+  }
+  const analysis::SlideSeriesSummary sum = analysis::summarize_slide_series(mu, sigma_mu, sources);
+  json summary = series_counts(runs);
+  summary.update(slide_series_json(sum, runs.size(), run_of_point));
+  write_report_if_requested(s.report, [&] {
+    std::vector<SlideSeriesRun> rows;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      rows.push_back({runs[i].source, runs[i].ok() ? &runs[i].result->r : nullptr, per[i],
+                      runs[i].ok() ? std::string() : runs[i].located_error()});
+    return incline_slide_series_report(rows, sum, s.report);
+  });
+  print_series(series_rows(runs, [](const Run& r) { return r.j; }), summary, s.json,
+               {"phi_deg", "a", "sigma_a", "mu", "sigma_mu", "r_squared"});
+  finish_series(runs);
 }
 
 // ---- analyze -------------------------------------------------------------------------
 
 struct AnalyzeText {
-  std::string file, phi_deg, g = "9.8", block = "0", report, frame_rotation = "fit";
+  std::vector<std::string> files;
+  std::string phi_deg, g = "9.8", block = "0", report, frame_rotation = "fit";
   TrackInput in;
   bool no_model_a = false, json = false;
 };
@@ -325,12 +387,58 @@ json analysis_json(const analysis::InclineAnalysis& a) {
   return j;
 }
 
+/// `incline analyze` over several files: every run as the single-file command, the series
+/// summary (analysis/incline_series.hpp), and with --report the series report.
+void analyze_series(const AnalyzeText& s, const std::vector<analysis::InclineFitOptions>& per,
+                    const std::vector<double>& phi_deg) {
+  struct Run {
+    analysis::InclineAnalysis a;
+    json j;
+  };
+  const auto runs = run_files<Run>(s.files, [&](std::size_t i, const std::string& file) {
+    const track::Track t = read_one_track(file, s.in);
+    Run run{analysis::analyze_incline_run(t, per[i]), {}};
+    run.j = analysis_json(run.a);
+    run.j["track"] = t.name;
+    run.j["phi_deg"] = phi_deg[i];  // as given (deg -> rad -> deg need not round-trip)
+    return run;
+  });
+  std::vector<analysis::InclineRunPoint> points;
+  std::vector<std::size_t> run_of_point;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (!runs[i].ok()) continue;
+    points.push_back(analysis::incline_run_point(runs[i].result->a, runs[i].source));
+    run_of_point.push_back(i);
+  }
+  analysis::InclineSeriesOptions so;
+  so.g = per.front().g;
+  const analysis::InclineSeriesSummary sum = analysis::summarize_incline_series(points, so);
+  json summary = series_counts(runs);
+  summary.update(incline_series_json(sum, runs.size(), run_of_point));
+  if (sum.common_phi) summary["phi_deg"] = phi_deg.front();
+  const json rows = series_rows(runs, [](const Run& r) { return r.j; });
+  write_report_if_requested(s.report, [&] {
+    std::vector<InclineSeriesRun> report_runs;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      report_runs.push_back({runs[i].source, runs[i].ok() ? &runs[i].result->a : nullptr, per[i].phi,
+                             runs[i].ok() ? std::string() : runs[i].located_error()});
+    return incline_analyze_series_report(report_runs, sum, s.report);
+  });
+  print_series(rows, summary, s.json,
+               {"phi_deg", "mu", "sigma_mu", "v0", "rms_residual", "/normal_friction/verdict"});
+  finish_series(runs);
+}
+
 void add_analyze(CLI::App* area) {
   auto* cmd = area->add_subcommand(
       "analyze", "Fit models B and A to a tracked 2D run; test for a normal friction component");
   auto s = std::make_shared<AnalyzeText>();
-  cmd->add_option("FILE", s->file, "Tracker .trk/.trz, Export Data text, or CSV")->required();
-  cmd->add_option("--phi-deg", s->phi_deg, "Incline angle, degrees, in [0, 90)")->required();
+  cmd->add_option("FILE", s->files,
+                  "Tracker .trk/.trz, Export Data text, or CSV; several files: a series with a summary")
+      ->required();
+  cmd->add_option("--phi-deg", s->phi_deg,
+                  "Incline angle, degrees, in [0, 90): one, or one per file (comma separated)")
+      ->required();
   cmd->add_option("--g", s->g, "Gravitational acceleration, m/s^2 (default 9.8)");
   cmd->add_option("--block", s->block,
                   "Points per local fit of the a_N diagnostic (>= 5; default 0 = about 8 blocks)");
@@ -343,22 +451,30 @@ void add_analyze(CLI::App* area) {
   cmd->get_option("--frame-rotation")->type_name("fit|none");
   add_report_option(*cmd, s->report);
   cmd->callback([s] {
-    analysis::InclineFitOptions o;
-    o.phi = incline::deg_to_rad(parse_angle_deg(s->phi_deg, "--phi-deg", true));
-    o.g = parse_g(s->g);
-    const double block = number(s->block, "--block");
-    if (!(block == 0 || (block >= 5 && block <= 1000 && block == std::floor(block))))
-      throw InputError("--block", "must be 0 or an integer in [5, 1000], got " + s->block);
-    o.diagnostic_block = static_cast<int>(block);
-    o.fit_model_a = !s->no_model_a;
     if (s->frame_rotation != "fit" && s->frame_rotation != "none")
       throw InputError("--frame-rotation", "must be fit or none, got '" + s->frame_rotation + "'");
-    o.fit_frame_rotation = s->frame_rotation == "fit";
-    const track::Track t = read_one_track(s->file, s->in);
+    const auto phi_text = per_file_values(s->phi_deg, s->files.size(), "--phi-deg");
+    std::vector<analysis::InclineFitOptions> per(s->files.size());
+    std::vector<double> phi_deg(s->files.size());
+    for (std::size_t i = 0; i < per.size(); ++i) {
+      analysis::InclineFitOptions& o = per[i];
+      phi_deg[i] = parse_angle_deg(phi_text[i], "--phi-deg", true);
+      o.phi = incline::deg_to_rad(phi_deg[i]);
+      o.g = parse_g(s->g);
+      const double block = number(s->block, "--block");
+      if (!(block == 0 || (block >= 5 && block <= 1000 && block == std::floor(block))))
+        throw InputError("--block", "must be 0 or an integer in [5, 1000], got " + s->block);
+      o.diagnostic_block = static_cast<int>(block);
+      o.fit_model_a = !s->no_model_a;
+      o.fit_frame_rotation = s->frame_rotation == "fit";
+    }
+    if (s->files.size() > 1) return analyze_series(*s, per, phi_deg);
+    const analysis::InclineFitOptions& o = per.front();
+    const track::Track t = read_one_track(s->files.front(), s->in);
     const analysis::InclineAnalysis a = analysis::analyze_incline_run(t, o);
     json j = analysis_json(a);
     j["track"] = t.name;
-    write_report_if_requested(s->report, [&] { return incline_analyze_report(s->file, a); });
+    write_report_if_requested(s->report, [&] { return incline_analyze_report(s->files.front(), a); });
     print_result(j, s->json);
   });
 }

@@ -201,11 +201,17 @@ class Writer {
     for (const auto& h : t.header) out_ += "<th>" + notation_html(h) + "</th>";
     out_ += "</tr></thead>\n<tbody>\n";
     const std::vector<bool> numeric = numeric_columns(t);
-    for (const auto& row : t.rows) {
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      const auto& row = t.rows[r];
+      const std::string href = r < t.links.size() ? t.links[r] : std::string();
       out_ += "<tr>";
       for (std::size_t c = 0; c < row.size(); ++c) {
         out_ += numeric[c] ? "<td class=\"num\">" : "<td>";
-        out_ += html_escape(row[c]) + "</td>";
+        if (c == 0 && !href.empty()) {
+          out_ += "<a href=\"" + html_escape(href) + "\">" + html_escape(row[c]) + "</a></td>";
+        } else {
+          out_ += html_escape(row[c]) + "</td>";
+        }
       }
       out_ += "</tr>\n";
     }

@@ -217,6 +217,29 @@ TEST(Html, TablesRightAlignNumericColumns) {
             std::string::npos);
 }
 
+TEST(Html, TableRowsLinkTheirFirstCellToRelativePathsOnly) {
+  Report r;
+  Table t{"runs", {"run", "μ"}, {{"a & b.csv", "0.6"}, {"c.csv", "0.7"}}};
+  t.links = {"series_runs/1_a%20b.html", ""};
+  r.add_section("T").add_table(t);
+  const std::string body = body_of(to_html(r));
+  EXPECT_NE(body.find("<td><a href=\"series_runs/1_a%20b.html\">a &amp; b.csv</a></td>"), std::string::npos) << body;
+  EXPECT_NE(body.find("<tr><td>c.csv</td>"), std::string::npos) << body;
+  // A link off the disc or into script is refused, as is a count that does not match the rows.
+  for (const std::string bad : {"javascript:alert(1)", "/etc/passwd", "http://x.org/a.html", "a\"b.html"}) {
+    Report q;
+    Table u = t;
+    u.links = {bad, ""};
+    q.add_section("T").add_table(u);
+    EXPECT_NE(q.validate().find("is not a relative path"), std::string::npos) << bad;
+  }
+  Report q;
+  Table u = t;
+  u.links = {"a.html"};
+  q.add_section("T").add_table(u);
+  EXPECT_NE(q.validate().find("1 links for 2 rows"), std::string::npos);
+}
+
 TEST(Report, SectionReferencesStayValidWhileAddingSections) {
   Report r;
   Section& first = r.add_section("first");

@@ -99,6 +99,16 @@ int Report::figure_count() const {
   return n;
 }
 
+bool is_relative_link(const std::string& href) {
+  if (href.empty() || href.front() == '/') return false;
+  for (char c : href) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+                    c == '_' || c == '-' || c == '/' || c == '%';
+    if (!ok) return false;
+  }
+  return true;
+}
+
 std::string Report::validate() const {
   for (const Section& s : sections) {
     const std::string where = "section '" + s.heading + "', ";
@@ -106,6 +116,14 @@ std::string Report::validate() const {
       if (const auto* f = std::get_if<Figure>(&b)) {
         if (auto e = f->validate(); !e.empty()) return where + "figure '" + f->title + "': " + e;
       } else if (const auto* t = std::get_if<Table>(&b)) {
+        if (!t->links.empty() && t->links.size() != t->rows.size()) {
+          return where + "table '" + t->caption + "': " + std::to_string(t->links.size()) + " links for " +
+                 std::to_string(t->rows.size()) + " rows";
+        }
+        for (const std::string& href : t->links) {
+          if (!href.empty() && !is_relative_link(href))
+            return where + "table '" + t->caption + "': link '" + href + "' is not a relative path";
+        }
         for (std::size_t r = 0; r < t->rows.size(); ++r) {
           if (t->rows[r].size() != t->header.size()) {
             return where + "table '" + t->caption + "': row " + std::to_string(r + 1) + " has " +

@@ -48,7 +48,15 @@ struct Table {
   std::string caption;
   std::vector<std::string> header;
   std::vector<std::vector<std::string>> rows;
+  /// Optional: one link per row (empty string: none), made on the row's first cell, e.g.
+  /// to a run's own report beside this one. Must be a relative path of letters, digits and
+  /// `. _ - / %` (no scheme, no leading '/'), so a report never points off the disc.
+  std::vector<std::string> links = {};
 };
+
+/// True when `href` is a link Table::links accepts (a non-empty relative path of letters,
+/// digits and . _ - / %, not starting with '/').
+bool is_relative_link(const std::string& href);
 
 /// How a series is drawn.
 enum class Mode { Markers, Lines, LinesMarkers };

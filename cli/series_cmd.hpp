@@ -1,0 +1,92 @@
+// Several files at once for the analysis commands (`incline analyze`, `incline mu-from-slide`,
+// `bounce analyze`; docs/cli.md#several-runs): the shared plumbing, so each command only says
+// how one file is analysed and what its summary is.
+//
+//   cmd->add_option("FILE", files, "...")->required();             // a std::vector<std::string>
+//   ...
+//   if (files.size() == 1) { ...the single-file command, unchanged... }
+//   const auto phi_text = per_file_values(phi_deg, files.size(), "--phi-deg");  // before any work
+//   auto runs = run_files<MyRun>(files, [&](std::size_t i, const std::string& f) { ... });
+//   json rows = series_rows(runs, [](const MyRun& r) { return r.json; });
+//   print_series(rows, summary_json, as_json, {"phi_deg", "mu", "sigma_mu"});
+//   finish_series(runs);                                   // non-zero exit if any run failed
+//
+// Runs are analysed in parallel (analysis::run_series); with a terminal on stderr a progress
+// line is shown there. The output (JSON or text) is in input order whatever the threads.
+#pragma once
+
+#include "analysis/series.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace tribolab::cli {
+
+/// `text` holds one value (used for every file) or a comma-separated list of exactly
+/// n_files values; returns n_files strings (trimmed). Empty text gives n_files empty strings.
+/// Throws InputError naming `option` when the count differs ("--phi-deg gives 2 values for 3 files").
+std::vector<std::string> per_file_values(const std::string& text, std::size_t n_files, const std::string& option);
+
+/// Series options for the CLI: all cores, and a progress line ("analysed 3/8 runs, 1
+/// failed") on stderr, overwritten in place, when stderr is a terminal.
+analysis::SeriesOptions cli_series_options(const std::string& what = "runs");
+
+/// analysis::run_series with cli_series_options().
+template <class Result, class Run>
+std::vector<analysis::RunOutcome<Result>> run_files(const std::vector<std::string>& files, Run&& run) {
+  return analysis::run_series<Result>(files, std::forward<Run>(run), cli_series_options());
+}
+
+/// The `runs` array of the JSON: per outcome, {"file": source} followed by the keys of
+/// `to_json(result)` (the single-file object), or {"file": source, "error": message}.
+template <class Result, class ToJson>
+nlohmann::json series_rows(const std::vector<analysis::RunOutcome<Result>>& runs, ToJson&& to_json) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : runs) {
+    nlohmann::json row;
+    row["file"] = r.source;
+    if (r.ok()) {
+      const nlohmann::json single = to_json(*r.result);  // a named object: items() refers to it
+      for (const auto& [k, v] : single.items()) row[k] = v;
+    } else {
+      row["error"] = r.located_error();
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+/// Prints a series: with `as_json` one line {"runs": rows, "summary": summary}; else a table
+/// of the runs (a column per entry of `columns`, each a key or a JSON pointer such as
+/// "/normal_friction/verdict", and the error of a failed run) followed by the summary's keys
+/// as print_result lists them.
+void print_series(const nlohmann::json& rows, const nlohmann::json& summary, bool as_json,
+                  const std::vector<std::string>& columns);
+
+/// The keys every series summary starts with: n_runs, n_ok, n_failed, failed (the files).
+template <class Result>
+nlohmann::json series_counts(const std::vector<analysis::RunOutcome<Result>>& runs) {
+  nlohmann::json failed = nlohmann::json::array();
+  for (const auto& r : runs)
+    if (!r.ok()) failed.push_back(r.source);
+  return {{"n_runs", runs.size()}, {"n_ok", runs.size() - failed.size()}, {"n_failed", failed.size()},
+          {"failed", failed}};
+}
+
+/// After the output: throws InputError ("2 of 8 runs failed: b.csv: ...; see their rows")
+/// when any run failed, so the command exits non-zero with one line on stderr.
+void finish_series(std::size_t n_runs, const std::vector<std::string>& errors);
+
+template <class Result>
+void finish_series(const std::vector<analysis::RunOutcome<Result>>& runs) {
+  std::vector<std::string> errors;
+  for (const auto& r : runs)
+    if (!r.ok()) errors.push_back(r.located_error());
+  finish_series(runs.size(), errors);
+}
+
+}  // namespace tribolab::cli
