@@ -5,11 +5,15 @@
 
 #include "app.hpp"
 #include "bounce_options.hpp"
+#include "bounce_series.hpp"
 #include "report_bounce_analysis.hpp"
+#include "report_bounce_series.hpp"
 #include "report_option.hpp"
+#include "series_cmd.hpp"
 
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_fit.hpp"
+#include "analysis/bounce_series.hpp"
 #include "analysis/bounce_synth.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bounce_table.hpp"
@@ -20,6 +24,7 @@
 #include "numerics/physical_range.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -88,108 +93,235 @@ json segment_json(const SegmentFit& s) {
                       {"rotational", s.energy.rotational}, {"total", s.energy.total()}}}};
 }
 
-void add_analyze(CLI::App* area) {
-  struct Opts {
-    std::string file, a, b;
-    double time_scale = 1;
-    std::string length_unit;
-    BounceAnalyzeOptions o;
-    std::optional<double> floor_y, contact_duration;
-    std::string report;
-    bool json = false;
+}  // namespace
+
+json bounce_analysis_json(const BounceAnalysis& r) {
+  json j = {{"impact_time", r.impact_time},
+            {"pre", segment_json(r.pre)},
+            {"post", segment_json(r.post)},
+            {"e_velocity", num(r.e_velocity)},
+            {"sigma_e_velocity", num(r.sigma_e_velocity)},
+            {"e_height", num(r.e_height)},
+            {"sigma_e_height", num(r.sigma_e_height)},
+            {"floor_y", r.floor_y},
+            {"floor_given", r.floor_given},
+            {"floor_half_width", r.floor_half_width},
+            {"floor_method", r.floor_method},
+            {"theta_impact_deg", r.theta_impact_deg},
+            {"collision_angle_deg", num(r.collision_angle_deg)},
+            {"sigma_collision_angle_deg", num(r.sigma_collision_angle_deg)},
+            {"collision_angle_impact_deg", num(r.collision_angle_impact_deg)},
+            {"t_touch", r.t_touch},
+            {"sigma_t_touch", num(r.sigma_t_touch)},
+            {"t_separation", r.t_separation},
+            {"sigma_t_separation", num(r.sigma_t_separation)},
+            {"contact_duration", r.contact_duration},
+            {"sigma_contact_duration", num(r.sigma_contact_duration)},
+            {"theta_touch_deg", r.theta_touch_deg},
+            {"sigma_theta_touch_deg", num(r.sigma_theta_touch_deg)},
+            {"vy_touch", r.vy_touch},
+            {"sigma_vy_touch", num(r.sigma_vy_touch)},
+            {"vy_separation", r.vy_separation},
+            {"sigma_vy_separation", num(r.sigma_vy_separation)},
+            {"e_velocity_common", num(r.e_velocity_common)},
+            {"sigma_e_velocity_common", num(r.sigma_e_velocity_common)},
+            {"contact_point_vx", num(r.contact_point_vx)},
+            {"contact_point_vy", num(r.contact_point_vy)},
+            {"contact_point_speed", num(r.contact_point_speed)},
+            {"sigma_contact_point_vx", num(r.sigma_contact_point_vx)},
+            {"sigma_contact_point_vy", num(r.sigma_contact_point_vy)},
+            {"sigma_contact_point_speed", num(r.sigma_contact_point_speed)},
+            {"energy_pre", r.pre.energy.total()},
+            {"energy_post", r.post.energy.total()},
+            {"n_impacts", r.impacts.impacts.size()},
+            {"noise", r.impacts.noise_y},
+            {"tip_distance_mean", r.body.length_mean},
+            {"tip_distance_sd", r.body.length_sd},
+            {"gravity", r.gravity},
+            {"sigma_gravity", num(r.sigma_gravity)},
+            {"gravity_tilt_deg", r.gravity_tilt_deg},
+            {"sigma_gravity_tilt_deg", num(r.sigma_gravity_tilt_deg)},
+            {"warnings", r.warnings}};
+  if (r.mean_normal_force) {
+    j["mean_normal_force"] = num(*r.mean_normal_force);
+    j["sigma_mean_normal_force"] = num(*r.sigma_mean_normal_force);
+    j["force_duration_method"] = r.force_duration_method;
+  }
+  return j;
+}
+
+namespace {
+
+struct AnalyzeOpts {
+  std::vector<std::string> files;
+  std::string a, b;
+  double time_scale = 1;
+  std::string length_unit;
+  BounceAnalyzeOptions o;
+  std::string floor_y, contact_duration;  ///< one value, or one per file (comma separated)
+  std::string report, bounces_out;
+  bool json = false;
+};
+
+/// Reads and analyses one file as the single-file command does.
+BounceAnalysis analyze_file(const AnalyzeOpts& opts, const std::string& file, const BounceAnalyzeOptions& o) {
+  io::ImportOptions io;
+  io.time_scale = opts.time_scale;
+  io.length_unit = opts.length_unit;
+  io.tracks = {opts.a, opts.b};
+  const auto set = io::read_tracks(file, io);
+  return analyze_bounce(set.find(opts.a), set.find(opts.b), o);
+}
+
+/// The command line that analyses `file` alone with options `o` (shown in its report).
+std::string analyze_command(const AnalyzeOpts& opts, const std::string& file, const BounceAnalyzeOptions& o) {
+  std::string c = "tribolab bounce analyze " + file + " --track-a " + opts.a + " --track-b " + opts.b +
+                  " --time-scale " + io::format_number(opts.time_scale);
+  if (o.floor_y) c += " --floor-y " + io::format_number(*o.floor_y);
+  if (o.sigma_floor_y > 0) c += " --sigma-floor-y " + io::format_number(o.sigma_floor_y);
+  if (o.contact_duration) c += " --contact-duration " + io::format_number(*o.contact_duration);
+  return c;
+}
+
+/// --bounces-out: the analysed runs as `bounce fit`'s table, one '#' line naming each row's file.
+void write_bounces_out(const std::string& path, const std::vector<BounceSeriesPoint>& points,
+                       const std::vector<std::string>& files) {
+  std::string head = "# bounces measured by tribolab bounce analyze (fit them with: tribolab bounce fit FILE)\n";
+  std::vector<BounceRow> rows;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::string name = files[i];
+    for (char& c : name)
+      if (c == '\n' || c == '\r') c = '?';
+    head += "# row " + std::to_string(i + 1) + ": " + name + "\n";
+    rows.push_back(bounce_row_of(points[i]));
+  }
+  io::AtomicFile file(path);
+  file.stream() << head << io::write_bounce_table(rows);
+  file.commit();
+}
+
+/// The summary for people: the bins and outliers as dotted keys, the per-run points left out
+/// (they are the table above it).
+json summary_for_text(json summary) {
+  json bins = json::object();
+  for (const auto& b : summary["bins"])
+    bins[io::format_number(b["low_deg"].get<double>()) + "-" + io::format_number(b["high_deg"].get<double>())] = b;
+  summary["bins"] = bins;
+  json outliers = json::object();
+  for (const auto& o : summary["outliers"]) outliers[o["file"].get<std::string>()] = o["reason"];
+  summary["outliers"] = outliers;
+  summary.erase("points");
+  return summary;
+}
+
+/// `bounce analyze` over several files (docs/cli.md#bounce-analyze).
+void analyze_series(const AnalyzeOpts& opts, const std::vector<BounceAnalyzeOptions>& per) {
+  const BounceAnalyzeOptions& o = per.front();  // the ball and what is shared
+  struct Run {
+    BounceAnalysis r;
+    json j;
   };
-  auto opts = std::make_shared<Opts>();
+  const auto runs = run_files<Run>(opts.files, [&](std::size_t i, const std::string& file) {
+    Run run{analyze_file(opts, file, per[i]), {}};
+    run.j = bounce_analysis_json(run.r);
+    return run;
+  });
+  std::vector<BounceSeriesPoint> points;
+  std::vector<std::string> files;
+  for (const auto& run : runs) {
+    if (!run.ok()) continue;
+    points.push_back(point_of(run.result->r));
+    files.push_back(run.source);
+  }
+  const BounceSeriesOptions so;
+  json summary = series_counts(runs);
+  std::optional<BounceSeriesSummary> sum;
+  if (!points.empty()) {
+    sum = summarize_bounce_series(points, so);
+    summary.update(bounce_series_json(*sum, points, files, so));
+    if (!opts.bounces_out.empty()) {
+      write_bounces_out(opts.bounces_out, points, files);
+      summary["bounces_out"] = opts.bounces_out;
+    }
+    write_report_if_requested(opts.report, [&] {
+      std::vector<BounceSeriesRun> report_runs;
+      for (const auto& run : runs)
+        report_runs.push_back({run.source, run.ok() ? &run.result->r : nullptr, run.ok() ? std::string() : run.located_error()});
+      std::string command = "tribolab bounce analyze";
+      for (const auto& f : opts.files) command += " " + f;
+      command += " --track-a " + opts.a + " --track-b " + opts.b + " --time-scale " + io::format_number(opts.time_scale);
+      if (!opts.floor_y.empty()) command += " --floor-y " + opts.floor_y;
+      if (o.sigma_floor_y > 0) command += " --sigma-floor-y " + io::format_number(o.sigma_floor_y);
+      if (!opts.contact_duration.empty()) command += " --contact-duration " + opts.contact_duration;
+      return bounce_analyze_series_report(command, o.ball, report_runs, points, *sum, so, opts.report,
+                                          [&](std::size_t i) { return analyze_command(opts, runs[i].source, per[i]); });
+    });
+  }
+  print_series(series_rows(runs, [](const Run& r) { return r.j; }), opts.json ? summary : summary_for_text(summary),
+               opts.json, {"collision_angle_deg", "e_velocity", "sigma_e_velocity", "e_height", "energy_pre", "energy_post",
+                           "mean_normal_force"});
+  finish_series(runs);
+}
+
+void add_analyze(CLI::App* area) {
+  auto opts = std::make_shared<AnalyzeOpts>();
   auto* cmd = area->add_subcommand("analyze", "seed 001 experiment 1: v, omega, e and energies before/after one bounce from the two tracked tips");
-  cmd->add_option("FILE", opts->file, "Tracker .trk/.trz, Export Data text or tidy CSV")->required();
+  cmd->add_option("FILE", opts->files, "Tracker .trk/.trz, Export Data text or tidy CSV; several files: a series with a summary (seed 001 experiment 2)")->required();
   cmd->add_option("--track-a", opts->a, "name of the track of tip A")->required();
   cmd->add_option("--track-b", opts->b, "name of the track of tip B")->required();
   cmd->add_option("--time-scale", opts->time_scale, "real seconds per file second (240 fps shown at 30: 0.125; default 1)");
   cmd->add_option("--length-unit", opts->length_unit, "unit of the file's lengths, overriding the file (m, cm, mm, ...)");
   add_ball_options(cmd, opts->o.ball);
-  cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m (default: from the flights and --contact-duration; needed for e_height without it)");
-  cmd->add_option("--sigma-floor-y", opts->o.sigma_floor_y, "standard uncertainty of --floor-y, m (default 0)");
-  cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s (to half a frame): enables mean_normal_force, and locates the floor when --floor-y is not given");
+  cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m (default: from the flights and --contact-duration; needed for e_height without it); one, or one per file (comma separated)");
+  cmd->add_option("--sigma-floor-y", opts->o.sigma_floor_y, "standard uncertainty of --floor-y, m (default 0; the same for every file)");
+  cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s (to half a frame): enables mean_normal_force, and locates the floor when --floor-y is not given; one, or one per file (comma separated)");
   cmd->add_option("--exclude", opts->o.exclude, "points always dropped on each side of the impact (default 0; contact frames are dropped automatically)");
   cmd->add_option("--impact", opts->o.impact, "which detected impact to analyse (default 1)");
+  cmd->add_option("--bounces-out", opts->bounces_out, "also write the analysed bounces as a `bounce fit` table (CSV)")->type_name("FILE.csv");
   add_report_option(*cmd, opts->report);
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     checked_ball(opts->o.ball);
     check_range(opts->time_scale, ranges::time_scale, "--time-scale");  // docs/cli.md#physical-ranges
-    if (opts->floor_y) check_range(*opts->floor_y, ranges::position, "--floor-y");
-    if (opts->contact_duration) check_range(*opts->contact_duration, PhysicalRange{0, 10, "s", true}, "--contact-duration");
     if (!std::isfinite(opts->time_scale) || !(opts->time_scale > 0)) throw InputError("--time-scale", "must be positive");
-    if (opts->floor_y) check_finite(*opts->floor_y, "--floor-y");
     if (!(std::isfinite(opts->o.sigma_floor_y) && opts->o.sigma_floor_y >= 0 && opts->o.sigma_floor_y < 1))
       throw InputError("--sigma-floor-y", "must lie in [0, 1) m");
-    if (opts->contact_duration && !(std::isfinite(*opts->contact_duration) && *opts->contact_duration > 0))
-      throw InputError("--contact-duration", "must be a positive number of seconds");
-    io::ImportOptions io;
-    io.time_scale = opts->time_scale;
-    io.length_unit = opts->length_unit;
-    io.tracks = {opts->a, opts->b};
     if (opts->a == opts->b) throw InputError("--track-b", "must name a different track than --track-a");
-    const auto set = io::read_tracks(opts->file, io);
-    BounceAnalyzeOptions o = opts->o;
-    o.floor_y = opts->floor_y;
-    o.contact_duration = opts->contact_duration;
-    const auto r = analyze_bounce(set.find(opts->a), set.find(opts->b), o);
-    json j = {{"impact_time", r.impact_time},
-              {"pre", segment_json(r.pre)},
-              {"post", segment_json(r.post)},
-              {"e_velocity", num(r.e_velocity)},
-              {"sigma_e_velocity", num(r.sigma_e_velocity)},
-              {"e_height", num(r.e_height)},
-              {"sigma_e_height", num(r.sigma_e_height)},
-              {"floor_y", r.floor_y},
-              {"floor_given", r.floor_given},
-              {"floor_half_width", r.floor_half_width},
-              {"floor_method", r.floor_method},
-              {"theta_impact_deg", r.theta_impact_deg},
-              {"collision_angle_deg", num(r.collision_angle_deg)},
-              {"sigma_collision_angle_deg", num(r.sigma_collision_angle_deg)},
-              {"collision_angle_impact_deg", num(r.collision_angle_impact_deg)},
-              {"t_touch", r.t_touch},
-              {"sigma_t_touch", num(r.sigma_t_touch)},
-              {"t_separation", r.t_separation},
-              {"sigma_t_separation", num(r.sigma_t_separation)},
-              {"contact_duration", r.contact_duration},
-              {"sigma_contact_duration", num(r.sigma_contact_duration)},
-              {"theta_touch_deg", r.theta_touch_deg},
-              {"sigma_theta_touch_deg", num(r.sigma_theta_touch_deg)},
-              {"vy_touch", r.vy_touch},
-              {"sigma_vy_touch", num(r.sigma_vy_touch)},
-              {"vy_separation", r.vy_separation},
-              {"sigma_vy_separation", num(r.sigma_vy_separation)},
-              {"e_velocity_common", num(r.e_velocity_common)},
-              {"sigma_e_velocity_common", num(r.sigma_e_velocity_common)},
-              {"contact_point_vx", num(r.contact_point_vx)},
-              {"contact_point_vy", num(r.contact_point_vy)},
-              {"contact_point_speed", num(r.contact_point_speed)},
-              {"sigma_contact_point_vx", num(r.sigma_contact_point_vx)},
-              {"sigma_contact_point_vy", num(r.sigma_contact_point_vy)},
-              {"sigma_contact_point_speed", num(r.sigma_contact_point_speed)},
-              {"energy_pre", r.pre.energy.total()},
-              {"energy_post", r.post.energy.total()},
-              {"n_impacts", r.impacts.impacts.size()},
-              {"noise", r.impacts.noise_y},
-              {"tip_distance_mean", r.body.length_mean},
-              {"tip_distance_sd", r.body.length_sd},
-              {"gravity", r.gravity},
-              {"sigma_gravity", num(r.sigma_gravity)},
-              {"gravity_tilt_deg", r.gravity_tilt_deg},
-              {"sigma_gravity_tilt_deg", num(r.sigma_gravity_tilt_deg)},
-              {"warnings", r.warnings}};
-    if (r.mean_normal_force) {
-      j["mean_normal_force"] = num(*r.mean_normal_force);
-      j["sigma_mean_normal_force"] = num(*r.sigma_mean_normal_force);
-      j["force_duration_method"] = r.force_duration_method;
+    if (!opts->bounces_out.empty()) {
+      namespace fs = std::filesystem;
+      const fs::path p(opts->bounces_out);
+      std::error_code ec;
+      if (fs::is_directory(p, ec)) throw InputError("--bounces-out", "'" + opts->bounces_out + "' is a directory");
+      const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+      if (!fs::is_directory(dir, ec)) throw InputError("--bounces-out", "folder '" + dir.string() + "' does not exist");
     }
-    write_report_if_requested(opts->report, [&] {
-      return bounce_analyze_report("tribolab bounce analyze " + opts->file + " --track-a " + opts->a + " --track-b " +
-                                       opts->b + " --time-scale " + io::format_number(opts->time_scale),
-                                   o.ball, r);
-    });
+    const std::size_t n = opts->files.size();
+    const auto floor_text = per_file_values(opts->floor_y, n, "--floor-y");
+    const auto duration_text = per_file_values(opts->contact_duration, n, "--contact-duration");
+    std::vector<BounceAnalyzeOptions> per(n, opts->o);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!floor_text[i].empty()) {
+        per[i].floor_y = io::parse_double(floor_text[i], "--floor-y");
+        check_range(*per[i].floor_y, ranges::position, "--floor-y");  // docs/cli.md#physical-ranges
+        check_finite(*per[i].floor_y, "--floor-y");
+      }
+      if (!duration_text[i].empty()) {
+        const double T = io::parse_double(duration_text[i], "--contact-duration");
+        check_range(T, PhysicalRange{0, 10, "s", true}, "--contact-duration");
+        if (!(std::isfinite(T) && T > 0)) throw InputError("--contact-duration", "must be a positive number of seconds");
+        per[i].contact_duration = T;
+      }
+    }
+    if (n > 1) return analyze_series(*opts, per);
+    const BounceAnalyzeOptions& o = per.front();
+    const std::string& file = opts->files.front();
+    const auto r = analyze_file(*opts, file, o);
+    json j = bounce_analysis_json(r);
+    if (!opts->bounces_out.empty()) {
+      write_bounces_out(opts->bounces_out, {point_of(r)}, {file});
+      j["bounces_out"] = opts->bounces_out;
+    }
+    write_report_if_requested(opts->report, [&] { return bounce_analyze_report(analyze_command(*opts, file, o), o.ball, r); });
     print_result(j, opts->json);
   });
 }

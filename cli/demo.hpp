@@ -60,6 +60,11 @@ void add_bounce_case_study(report::Report& r, std::ostream& log);
 /// files to <context.out>/data/bounce/.
 void add_bounce_runs_case_study(report::Report& r, std::ostream& log, const DemoContext& context);
 
+/// Seed 001 experiment 2 on shipped data: twelve filmed throws analysed as a series, as
+/// `bounce analyze FILE...` does, beside the truth (cli/demo_bounce_series.cpp); writes the
+/// files to <context.out>/data/bounce_series/.
+void add_bounce_series_case_study(report::Report& r, std::ostream& log, const DemoContext& context);
+
 /// The errata of both seeds (cli/demo_errata.cpp).
 void add_errata_section(report::Report& r, std::ostream& log);
 

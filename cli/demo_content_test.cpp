@@ -9,6 +9,7 @@
 #include "report/format.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -198,6 +199,44 @@ TEST(DemoContent, BounceRunsShowTheAnalysisOfTheShippedFilesAgainstTheTruth) {
   ASSERT_EQ(fit[0]->rows.size(), 5u);
   EXPECT_EQ(fit[0]->rows[3][3], "yes") << fit[0]->rows[3][1];  // mu
   EXPECT_EQ(fit[0]->rows[4][3], "yes") << fit[0]->rows[4][1];  // D/K
+}
+
+TEST(DemoContent, BounceSeriesIsTheCommandOnTheShippedThrows) {
+  report::Report r;
+  std::ostringstream log;
+  const std::string out = testing::temp_dir("demo_bounce_series");
+  add_bounce_series_case_study(r, log, DemoContext{out});
+  // Intro, summary, figure 32, figures 49/50, figure 52, runs.
+  ASSERT_EQ(r.sections.size(), 6u);
+  EXPECT_EQ(r.figure_count(), 1 + 4);
+  const auto truth = find_tables(r, "Every throw: analysed");
+  ASSERT_EQ(truth.size(), 1u);
+  ASSERT_EQ(truth[0]->rows.size(), 12u);
+  // The command the demo prints, run from the demo folder, gives the numbers it shows.
+  std::string command;
+  for (const auto& b : r.sections[0].blocks)
+    if (const auto* l = std::get_if<report::List>(&b)) command = l->items.at(0);
+  ASSERT_EQ(command.rfind("tribolab bounce analyze data/bounce_series/throw*.txt", 0), 0u) << command;
+  const std::string args = command.substr(std::string("tribolab ").size());
+  const std::string run = "cd '" + out + "' && '" + TRIBOLAB_BINARY + "' " + args + " --json >series.json 2>series.err";
+  ASSERT_EQ(std::system(run.c_str()), 0) << testing::slurp(out + "/series.err");
+  const auto j = nlohmann::json::parse(testing::slurp(out + "/series.json"));
+  ASSERT_EQ(j["runs"].size(), 12u);
+  for (std::size_t i = 0; i < 12; ++i) {
+    const auto& row = j["runs"][i];
+    EXPECT_EQ(truth[0]->rows[i][3], report::format_uncertain(row["collision_angle_deg"].get<double>(),
+                                                             row["sigma_collision_angle_deg"].get<double>()))
+        << i;
+    EXPECT_EQ(truth[0]->rows[i][5],
+              report::format_uncertain(row["e_velocity"].get<double>(), row["sigma_e_velocity"].get<double>()))
+        << i;
+    EXPECT_TRUE(row.contains("mean_normal_force")) << i;  // a contact duration per throw
+  }
+  const auto& m = j["summary"]["e_velocity"];
+  const auto glance = find_tables(r, "The series at a glance");
+  ASSERT_EQ(glance.size(), 1u);
+  EXPECT_EQ(glance[0]->rows[0][1], report::format_uncertain(m["mean"].get<double>(), m["sigma_scaled"].get<double>()));
+  EXPECT_TRUE(std::filesystem::exists(out + "/bounces.csv"));
 }
 
 }  // namespace

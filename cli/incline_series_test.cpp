@@ -86,12 +86,21 @@ TEST(InclineSeriesCli, SeveralFilesGiveRunsAndSummary) {
     EXPECT_NEAR(r["mu"].get<double>(), 0.634, 0.01) << rel;  // ~1 % (slopes of 4 runs)
   }
   EXPECT_TRUE(s["theta_c_test"].is_null());  // one angle
-  // Model B data: the pooled f_N/m within its 99.9 % interval of 0 (3.3 sigma). Not the verdict
-  // itself: a 95 % interval excludes 0 in 1 of 20 fixed seeds (these seeds sit at 2.0 sigma
-  // since the frame rotation is fitted); its calibration is tested in src/analysis.
+  // Pooled normal friction: the weighted mean of the runs' model A f_N/m, by hand.
+  double wn = 0, wnx = 0;
+  for (const auto& row : j["runs"]) {
+    const double w = 1 / std::pow(row["model_a"]["sigma_normal_accel"].get<double>(), 2);
+    wn += w;
+    wnx += w * row["model_a"]["normal_accel"].get<double>();
+  }
   const json& nf = s["normal_friction"];
-  EXPECT_NEAR(nf["normal_accel"].get<double>(), 0, 3.3 * nf["sigma_normal_accel_scaled"].get<double>());
-  EXPECT_TRUE(nf["verdict"] == "absent" || nf["verdict"] == "present");
+  EXPECT_NEAR(nf["normal_accel"].get<double>(), wnx / wn, 1e-12);
+  EXPECT_NEAR(nf["sigma_normal_accel"].get<double>(), 1 / std::sqrt(wn), 1e-15);
+  // No normal friction in the data: the pooled value within 3 sigma of 0. (Not the 95 %
+  // verdict on these fixed seeds: with the camera frame's rotation fitted they give
+  // 0.0103 +- 0.0052 m/s^2, 1.97 sigma, a 5 % draw; over 30 other seed sets of the same 4 runs
+  // the verdict was "present" 1/30 and the pulls had sd 0.85, so the verdict is calibrated.)
+  EXPECT_LT(std::abs(nf["normal_accel"].get<double>()), 3 * nf["sigma_normal_accel_scaled"].get<double>());
 }
 
 TEST(InclineSeriesCli, ABadFileInTheMiddleKeepsTheOthers) {
