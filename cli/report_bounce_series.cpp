@@ -25,13 +25,8 @@ using report::Table;
 
 std::string v4(double x) { return format_value(x, 4); }
 
-Figure figure(const std::string& title, const std::string& x_title, const std::string& y_title) {
-  Figure f;
-  f.title = title;
-  f.x_axis.title = x_title;
-  f.y_axis.title = y_title;
-  f.height_px = 420;
-  return f;
+Figure figure(std::string title, std::string x, std::string y, int height = 420) {
+  return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
 
 std::string mean_cell(const analysis::WeightedMean& m) {

@@ -25,12 +25,7 @@ std::string interval(double lo, double hi) {
 std::string yes_no(bool b) { return b ? "yes" : "no"; }
 
 Figure figure(std::string title, std::string x, std::string y, int height = 340) {
-  Figure f;
-  f.title = std::move(title);
-  f.x_axis.title = std::move(x);
-  f.y_axis.title = std::move(y);
-  f.height_px = height;
-  return f;
+  return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
 
 Series line(std::string name, std::vector<double> x, std::vector<double> y,

@@ -26,12 +26,7 @@ std::string interval(double lo, double hi) { return "[" + format_value(lo, 5) + 
 std::string opt_value(const std::optional<double>& v, int digits = 5) { return v ? format_value(*v, digits) : "—"; }
 
 Figure figure(std::string title, std::string x, std::string y, int height = 360) {
-  Figure f;
-  f.title = std::move(title);
-  f.x_axis.title = std::move(x);
-  f.y_axis.title = std::move(y);
-  f.height_px = height;
-  return f;
+  return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
 
 Series line(std::string name, std::vector<double> x, std::vector<double> y, report::Dash dash, std::string color) {

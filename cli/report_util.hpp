@@ -16,4 +16,14 @@ inline report::Series named(std::string name, report::Mode mode = report::Mode::
   return s;
 }
 
+/// An empty figure with its title, axis titles and height (px).
+inline report::Figure make_figure(std::string title, std::string x_title, std::string y_title, int height_px) {
+  report::Figure f;
+  f.title = std::move(title);
+  f.x_axis.title = std::move(x_title);
+  f.y_axis.title = std::move(y_title);
+  f.height_px = height_px;
+  return f;
+}
+
 }  // namespace tribolab::cli
