@@ -28,15 +28,6 @@ Figure figure(std::string title, std::string x, std::string y, int height = 340)
   return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
 
-Series line(std::string name, std::vector<double> x, std::vector<double> y,
-            report::Dash dash = report::Dash::Solid, std::string color = {}) {
-  Series s = named(std::move(name), report::Mode::Lines);
-  s.x = std::move(x);
-  s.y = std::move(y);
-  s.dash = dash;
-  s.color = std::move(color);
-  return s;
-}
 
 /// The tracked points with their Savitzky–Golay derivatives, as states for the kinematics figures.
 std::vector<incline::State> data_states(const analysis::InclineAnalysis& a) {
@@ -106,10 +97,10 @@ Figure a_n_figure(const std::string& title, const analysis::NormalAccelDiagnosti
     down.push_back(d.line(x) - h);
     expected.push_back(d.slope_expected * x);
   }
-  f.series = {std::move(pts), line("fitted line", xs, fit, report::Dash::Solid, "#d62728"),
-              line("95 % band", xs, up, report::Dash::Dot, "#d62728"),
-              line("95 % band (lower)", xs, down, report::Dash::Dot, "#d62728"),
-              line("g sin φ sin θ (model B)", xs, expected, report::Dash::Dash, "black")};
+  f.series = {std::move(pts), make_line("fitted line", xs, fit, report::Dash::Solid, "#d62728"),
+              make_line("95 % band", xs, up, report::Dash::Dot, "#d62728"),
+              make_line("95 % band (lower)", xs, down, report::Dash::Dot, "#d62728"),
+              make_line("g sin φ sin θ (model B)", xs, expected, report::Dash::Dash, "black")};
   return f;
 }
 
@@ -133,7 +124,7 @@ Figure theta_c_figure(const std::string& title, const analysis::InclineAnalysis&
     ts.push_back(t);
     vy.push_back(d);
   }
-  Series model = line("model B fit", {}, {}, report::Dash::Dash, "black");
+  Series model = make_line("model B fit", {}, {}, report::Dash::Dash, "black");
   for (const auto& st : a.model_b_fine)
     if (st.t >= c.window_low && st.t <= c.window_high) {
       model.x.push_back(st.t);
@@ -143,7 +134,7 @@ Figure theta_c_figure(const std::string& title, const analysis::InclineAnalysis&
   mark.x = {c.t_c};
   mark.y = {c.vy};
   mark.x_error = {c.sigma_t_c};
-  f.series = {std::move(data), line("local fit dy/dt", ts, vy, report::Dash::Solid, "#d62728"), std::move(model),
+  f.series = {std::move(data), make_line("local fit dy/dt", ts, vy, report::Dash::Solid, "#d62728"), std::move(model),
               std::move(mark)};
   return f;
 }
@@ -300,8 +291,8 @@ int add_normal_friction_fit(report::Section& s, const std::string& title, const 
     pts.y_error.push_back(p.sigma_cos_theta_c > 0 ? p.sigma_cos_theta_c : NAN);
   }
   const double hi = *std::max_element(pts.x.begin(), pts.x.end()) * 1.1;
-  f.series = {std::move(pts), line("fitted line", {0, hi}, {r.line(0), r.line(hi)}, report::Dash::Solid, "#d62728"),
-              line("tan φ / μ", {0, hi}, {0, hi / r.mu}, report::Dash::Dash, "black")};
+  f.series = {std::move(pts), make_line("fitted line", {0, hi}, {r.line(0), r.line(hi)}, report::Dash::Solid, "#d62728"),
+              make_line("tan φ / μ", {0, hi}, {0, hi / r.mu}, report::Dash::Dash, "black")};
   s.add_figure(std::move(f));
   return 1;
 }
@@ -339,7 +330,7 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
       fs.push_back(r.parabola(tt));
     }
   }
-  st.series = {pts, line("parabola", ft, fs, report::Dash::Solid, "#d62728")};
+  st.series = {pts, make_line("parabola", ft, fs, report::Dash::Solid, "#d62728")};
   s.add_figure(std::move(st));
   Figure rf = figure(title + ": residuals of the parabola", "t (s)", "data − parabola (m)", 300);
   rf.caption = "rms " + format_value(r.parabola.rms, 3) + " m.";
@@ -354,7 +345,7 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
   vs.y = r.v;
   std::vector<double> lv;
   for (double tt : r.v_t) lv.push_back(r.velocity_line(tt));
-  vf.series = {std::move(vs), line("v–t line", r.v_t, lv, report::Dash::Solid, "#d62728")};
+  vf.series = {std::move(vs), make_line("v–t line", r.v_t, lv, report::Dash::Solid, "#d62728")};
   s.add_figure(std::move(vf));
   return 3;
 }
@@ -447,7 +438,7 @@ report::Report incline_stop_report(const incline::StopMeasurement& m, const incl
     stop.x_error = {m.sigma_pos};
     stop.y_error = {m.sigma_pos};
   }
-  f.series = {line("model B, μ = " + format_value(res.mu, 4), x, y, report::Dash::Solid, "#d62728"), std::move(stop)};
+  f.series = {make_line("model B, μ = " + format_value(res.mu, 4), x, y, report::Dash::Solid, "#d62728"), std::move(stop)};
   s.add_figure(std::move(f));
   return r;
 }

@@ -29,14 +29,6 @@ Figure figure(std::string title, std::string x, std::string y, int height = 360)
   return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
 
-Series line(std::string name, std::vector<double> x, std::vector<double> y, report::Dash dash, std::string color) {
-  Series s = named(std::move(name), report::Mode::Lines);
-  s.x = std::move(x);
-  s.y = std::move(y);
-  s.dash = dash;
-  s.color = std::move(color);
-  return s;
-}
 
 /// Percent-encodes every byte a Table link does not accept.
 std::string encode_link(const std::string& path) {
@@ -89,8 +81,8 @@ Figure per_run_figure(const std::string& title, const std::string& y_title, cons
     s.y_error.push_back(sy[i]);
   }
   const double x0 = 0.5, x1 = static_cast<double>(y.size()) + 0.5;
-  f.series = {std::move(pts), line("weighted mean", {x0, x1}, {m.mean, m.mean}, report::Dash::Solid, "black"),
-              line(band_name, {x0, x1, kNaN, x0, x1}, {band_lo, band_lo, kNaN, band_hi, band_hi}, report::Dash::Dash,
+  f.series = {std::move(pts), make_line("weighted mean", {x0, x1}, {m.mean, m.mean}, report::Dash::Solid, "black"),
+              make_line(band_name, {x0, x1, kNaN, x0, x1}, {band_lo, band_lo, kNaN, band_hi, band_hi}, report::Dash::Dash,
                    "gray")};
   if (!out.x.empty()) f.series.push_back(std::move(out));
   f.caption = "Error bars: one standard uncertainty of each run. Runs without a value leave a gap.";
@@ -149,9 +141,9 @@ int add_scaling(report::Section& s, const std::string& title, const analysis::In
     pts.y = sc.y;
     const double hi = *std::max_element(sc.x.begin(), sc.x.end()) * 1.1;
     f.series = {std::move(pts),
-                line("fitted through the origin", {0, hi}, {0, sc.fit.slope * hi}, report::Dash::Solid, "#d62728")};
+                make_line("fitted through the origin", {0, hi}, {0, sc.fit.slope * hi}, report::Dash::Solid, "#d62728")};
     if (sc.slope_model)
-      f.series.push_back(line("model B at the weighted μ", {0, hi}, {0, *sc.slope_model * hi}, report::Dash::Dash, "black"));
+      f.series.push_back(make_line("model B at the weighted μ", {0, hi}, {0, *sc.slope_model * hi}, report::Dash::Dash, "black"));
     f.caption = "Slope " + format_uncertain(sc.fit.slope, sc.fit.sigma) + " over " + std::to_string(sc.fit.n) + " runs.";
     s.add_figure(std::move(f));
     ++n;

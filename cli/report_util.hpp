@@ -5,6 +5,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace tribolab::cli {
 
@@ -24,6 +25,17 @@ inline report::Figure make_figure(std::string title, std::string x_title, std::s
   f.y_axis.title = std::move(y_title);
   f.height_px = height_px;
   return f;
+}
+
+/// A line series with a legend name, its points, dash and colour (empty: Plotly's default).
+inline report::Series make_line(std::string name, std::vector<double> x, std::vector<double> y,
+                                report::Dash dash = report::Dash::Solid, std::string color = {}) {
+  report::Series s = named(std::move(name), report::Mode::Lines);
+  s.x = std::move(x);
+  s.y = std::move(y);
+  s.dash = dash;
+  s.color = std::move(color);
+  return s;
 }
 
 }  // namespace tribolab::cli
