@@ -16,7 +16,7 @@ SUDO       := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
   libgtest-dev libgmock-dev libbenchmark-dev \
   libboost-dev libeigen3-dev libceres-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
-  libpugixml-dev libzip-dev clang libclang-rt-14-dev \
+  libpugixml-dev libzip-dev libopencv-dev clang libclang-rt-14-dev \
   libopenmpi-dev openmpi-bin \
   chromium fonts-liberation fonts-wqy-microhei
 

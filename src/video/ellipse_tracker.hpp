@@ -1,0 +1,47 @@
+// Following a ball or disc that contrasts with its background as an ellipse
+// (docs/theory.md#video-tracking): the object is segmented near its predicted position,
+// edge points are located to sub-pixel along rays from the predicted centre, an ellipse is
+// fitted to them robustly, and the two ends of the major axis are labelled A and B
+// continuously in time (the label that moved least, given the spin predicted from the past
+// frames), so `bounce analyze --track-a NAME.A --track-b NAME.B` reads them directly.
+#pragma once
+
+#include "video/frame.hpp"
+#include "video/point_tracker.hpp"
+
+#include <memory>
+#include <string>
+
+namespace tribolab::video {
+
+struct EllipseTrackerOptions {
+  double min_score = 0.6;      ///< below this edge-fit quality the object is lost
+  int max_gap_frames = 8;      ///< frames the motion model may bridge before giving up
+  std::string validate() const;
+};
+
+/// One frame of an ellipse: centre and both ends of the major axis.
+struct EllipseObservation {
+  Observation centre;          ///< centre, orientation (angle_rad: direction centre->A), axes
+  double ax_px = 0, ay_px = 0; ///< end A of the major axis, px
+  double bx_px = 0, by_px = 0; ///< end B, px
+};
+
+class EllipseTracker {
+ public:
+  explicit EllipseTracker(const EllipseTrackerOptions& options = {});
+  ~EllipseTracker();
+  EllipseTracker(EllipseTracker&&) noexcept;
+  EllipseTracker& operator=(EllipseTracker&&) noexcept;
+  /// Segments the object containing (x_px, y_px) in `first`. Throws InputError when the
+  /// point is outside the image or no contrasting object surrounds it (`name` in the message).
+  /// Returns the ellipse fitted in `first`.
+  EllipseObservation start(const Frame& first, double x_px, double y_px, const std::string& name);
+  EllipseObservation update(const Frame& frame);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tribolab::video

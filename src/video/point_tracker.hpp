@@ -1,0 +1,57 @@
+// Following a textured point from frame to frame, better than a template autotracker
+// (docs/theory.md#video-tracking): a motion model predicts where to search (constant
+// acceleration for a thrown object, a turning pattern for a mark on a wheel), the template
+// is matched over a range of rotations around the predicted one and at a blurred scale as
+// well as sharp, the correlation peak is refined to sub-pixel, and every point gets a score
+// (normalised correlation, 1 = perfect). Below the score threshold the point is lost: the
+// search widens along the motion model for a few frames (a hand passing) and the frames it
+// could not bridge are reported, never silently replaced by another object.
+#pragma once
+
+#include "video/frame.hpp"
+
+#include <memory>
+#include <string>
+
+namespace tribolab::video {
+
+struct PointTrackerOptions {
+  int patch_px = 21;          ///< template side, px (odd, >= 7)
+  int search_px = 0;          ///< search half-width around the prediction, px (0 = automatic)
+  double min_score = 0.6;     ///< below this normalised correlation a point is lost
+  double max_turn_deg = 40;   ///< largest pattern rotation searched per frame, degrees
+  int max_gap_frames = 8;     ///< frames the motion model may bridge before giving up
+  std::string validate() const;
+};
+
+/// The tracker's answer for one frame.
+struct Observation {
+  int frame = 0;
+  double x_px = 0, y_px = 0;  ///< position, px (image x right, y down)
+  double score = 0;           ///< match quality in [0, 1]
+  bool lost = false;          ///< true: no reliable position this frame (x_px, y_px = prediction)
+  double angle_rad = 0;       ///< pattern rotation since the first frame (point) or major-axis
+                              ///< direction (ellipse), image frame, counter-clockwise on screen, unwrapped
+  double major_px = 0;        ///< ellipse semi-major axis, px (0 for a point)
+  double minor_px = 0;        ///< ellipse semi-minor axis, px (0 for a point)
+};
+
+class PointTracker {
+ public:
+  explicit PointTracker(const PointTrackerOptions& options = {});
+  ~PointTracker();
+  PointTracker(PointTracker&&) noexcept;
+  PointTracker& operator=(PointTracker&&) noexcept;
+  /// Takes the template around (x_px, y_px) in `first`. Throws InputError when the point is
+  /// outside the image or the patch has too little texture to follow (`name` in the message).
+  /// Returns the observation for `first` (the start point refined to sub-pixel, score 1).
+  Observation start(const Frame& first, double x_px, double y_px, const std::string& name);
+  /// Finds the point in the next frame.
+  Observation update(const Frame& frame);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tribolab::video

@@ -1,0 +1,56 @@
+// Filming a scene that tribolab knows exactly: the truth for every tracking test, the bench
+// and `bounce render` (docs/theory.md#video-rendering). A scene is a background plus shapes
+// whose pose is a function of time; each frame integrates the shapes over the exposure
+// (motion blur: `blur_samples` sub-frames across the shutter time), renders anti-aliased by
+// supersampling, adds sensor noise, and is written with OpenCV's VideoWriter.
+#pragma once
+
+#include "video/frame.hpp"
+
+#include <opencv2/core.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace tribolab::video {
+
+/// A filled ellipse (a rugby ball, a disc, a small ball when a = b), optionally carrying a
+/// textured mark (a sticker) at a fixed place in its body frame so its turning is visible.
+struct ShapePose {
+  enum class Kind { ellipse, rectangle } kind = Kind::ellipse;  ///< rectangle: an occluder (a hand)
+  double cx_px = 0, cy_px = 0;  ///< centre, px (image x right, y down)
+  double a_px = 10, b_px = 10;  ///< semi-axes (ellipse) or half-sides (rectangle), px
+  double angle_rad = 0;         ///< body x-axis from image x-axis, counter-clockwise on screen
+  cv::Scalar colour{40, 40, 200};  ///< BGR fill
+  bool mark = false;            ///< draw a textured sticker in the body frame
+  double mark_u_px = 0, mark_v_px = 0;  ///< sticker centre in the body frame, px
+  double mark_size_px = 0;      ///< sticker side, px (a checker pattern of 3x3 cells)
+};
+
+/// Everything in view at time t (seconds of the video's own time base), back to front.
+using Scene = std::function<std::vector<ShapePose>(double t)>;
+
+struct RenderOptions {
+  int width = 640;               ///< px
+  int height = 480;              ///< px
+  double fps = 240;              ///< frames per second of the video's time base
+  double shutter_fraction = 0.5; ///< exposure as a fraction of the frame period (0 = no blur)
+  int blur_samples = 8;          ///< sub-frames integrated across the exposure (>= 1)
+  int supersample = 4;           ///< anti-aliasing factor per axis (>= 1)
+  enum class Background { plain, gradient, texture } background = Background::gradient;
+  cv::Scalar background_colour{200, 200, 200};  ///< BGR
+  double noise_sigma = 2;        ///< Gaussian sensor noise, grey levels (0 = none)
+  std::uint64_t seed = 1;        ///< random seed of the texture and the noise
+  std::string validate() const;
+};
+
+/// The image of `scene` for the frame that opens at t (exposure [t, t + shutter/fps]).
+cv::Mat render_frame(const Scene& scene, double t, const RenderOptions& options, int frame_index);
+
+/// Writes frames 0..frames-1 to `path` (.avi: MJPG at high quality, .mp4: mp4v); throws
+/// InputError when the file cannot be written. The video's frame rate is options.fps.
+void write_video(const std::string& path, const Scene& scene, int frames, const RenderOptions& options);
+
+}  // namespace tribolab::video

@@ -1,0 +1,88 @@
+// The `track video` workflow (docs/cli.md#track-video): open the input, start every target
+// in its first frame, stream the clip through the point and ellipse trackers, convert to
+// world coordinates, and summarise (lost frames, median score, agreement with any human
+// marks of a Tracker project). Front ends (CLI, Python) call track_video() and print.
+#pragma once
+
+#include "track/track.hpp"
+#include "video/ellipse_tracker.hpp"
+#include "video/point_tracker.hpp"
+#include "video/source.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribolab::video {
+
+/// One object to follow.
+struct Target {
+  enum class Kind { point, ellipse } kind = Kind::point;
+  std::string name;        ///< output track name ("ball"; an ellipse also gives ball.A, ball.B)
+  double x_px = 0, y_px = 0;  ///< start position in image pixels
+  int frame = -1;          ///< start frame (-1: the clip's first frame)
+  std::string from_track;  ///< non-empty: start from this project track's first mark
+};
+
+struct TrackVideoOptions {
+  SourceOptions source;
+  std::vector<Target> targets;
+  PointTrackerOptions point;
+  EllipseTrackerOptions ellipse;
+  int thumbnails = 6;      ///< frames kept (downscaled, tracks drawn) for the report
+  /// Called after each frame with (frames done, frames expected); may be empty.
+  std::function<void(int, int)> progress;
+  std::string validate() const;
+};
+
+/// One row of the output: a tracked point in one frame.
+struct TrackedRow {
+  int frame = 0;
+  double t = 0;            ///< s
+  double x = 0, y = 0;     ///< world position, m (px when uncalibrated), y up
+  double x_px = 0, y_px = 0;  ///< image position, px
+  double score = 0;        ///< [0, 1]
+  bool lost = false;       ///< no reliable position (x, y, x_px, y_px are NaN)
+};
+
+/// Distance between tribolab's track and the project's human marks on the same frames.
+struct HumanComparison {
+  int frames = 0;              ///< frames with both (the start mark excluded)
+  double median_px = 0;        ///< median distance, px
+  double max_px = 0;           ///< largest distance, px
+};
+
+struct TrackedSeries {
+  std::string name;
+  Target::Kind kind = Target::Kind::point;
+  std::vector<TrackedRow> rows;        ///< one per clip step from the start frame
+  std::vector<double> angle_rad;       ///< per row: pattern rotation / ellipse orientation
+  int tracked = 0;                     ///< rows with a position
+  std::vector<std::pair<int, int>> lost_ranges;  ///< [first, last] frames lost, inclusive
+  double median_score = 0;
+  std::optional<HumanComparison> vs_human;
+};
+
+/// A small image of one frame with every track drawn, for the report.
+struct Thumbnail {
+  int frame = 0;
+  double t = 0;
+  std::vector<unsigned char> jpeg;     ///< JPEG bytes (cv::imencode)
+};
+
+struct TrackVideoResult {
+  VideoInput input;                    ///< what was decoded (info, clip, time base, calibration)
+  std::vector<TrackedSeries> series;   ///< per output track (ellipse: NAME, NAME.A, NAME.B)
+  std::vector<Thumbnail> thumbnails;
+  int frames = 0;                      ///< clip frames decoded
+  std::vector<std::string> warnings;
+};
+
+/// Runs the whole workflow. Throws InputError for bad input (see source.hpp, the trackers).
+TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options);
+
+/// The tracked positions as a TrackSet (lost rows left out), for the analyses and --write-trk.
+track::TrackSet to_track_set(const TrackVideoResult& result);
+
+}  // namespace tribolab::video
