@@ -1,7 +1,7 @@
 // Filming a scene that tribolab knows exactly: the truth for every tracking test, the bench
 // and `bounce render` (docs/theory.md#video-rendering). A scene is a background plus shapes
 // whose pose is a function of time; each frame integrates the shapes over the exposure
-// (motion blur: `blur_samples` sub-frames across the shutter time), renders anti-aliased by
+// (motion blur: `blur_samples` sub-frames across the shutter time, centred on the frame's time), renders anti-aliased by
 // supersampling, adds sensor noise, and is written with OpenCV's VideoWriter.
 #pragma once
 
@@ -46,7 +46,9 @@ struct RenderOptions {
   std::string validate() const;
 };
 
-/// The image of `scene` for the frame that opens at t (exposure [t, t + shutter/fps]).
+/// The image of `scene` for the frame at time t. The exposure is centred on t
+/// ([t - shutter/(2 fps), t + shutter/(2 fps)]), so a blurred object's mean position is its
+/// position at t: the frame's time stamp is the middle of its exposure.
 cv::Mat render_frame(const Scene& scene, double t, const RenderOptions& options, int frame_index);
 
 /// Writes frames 0..frames-1 to `path` (.avi: MJPG at high quality, .mp4: mp4v); throws
