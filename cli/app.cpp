@@ -1,5 +1,8 @@
 #include "app.hpp"
 
+#include "command_line_check.hpp"
+#include "help_placeholders.hpp"
+
 #include "numerics/error.hpp"
 
 #include <fmt/format.h>
@@ -39,25 +42,6 @@ std::string one_line(std::string s) {
   return s;
 }
 
-/// CLI11 reports "a subcommand is required" for `tribolab frobnicate`; name the culprit.
-void check_command_names(CLI::App& app, int argc, char** argv) {
-  CLI::App* level = &app;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg.empty() || arg[0] == '-') return;
-    if (level->get_subcommands({}).empty()) return;
-    CLI::App* sub = nullptr;
-    for (CLI::App* s : level->get_subcommands({})) {
-      if (s->check_name(arg)) sub = s;
-    }
-    if (sub == nullptr) {
-      throw InputError("unknown command '" + arg + "' for '" + level->get_display_name(true) +
-                       "' (see --help)");
-    }
-    level = sub;
-  }
-}
-
 }  // namespace
 
 void print_result(const nlohmann::json& result, bool as_json) {
@@ -87,8 +71,14 @@ int run(int argc, char** argv) {
   register_bounce(app);
   register_track(app);
   register_demo(app);
+  tidy_placeholders(app);
   try {
-    check_command_names(app, argc, argv);
+    // A command that needs a subcommand and got nothing else: its help is the answer.
+    if (CLI::App* bare = check_command_line(app, argc, argv)) {
+      const CLI::App* parent = bare->get_parent();
+      std::cout << bare->help(parent != nullptr ? full_name(*parent) : "");
+      return 0;
+    }
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
@@ -96,6 +86,9 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const UsageError& e) {
+    std::cerr << "tribolab: error: " << one_line(e.what()) << '\n';
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "tribolab: error: " << one_line(e.what()) << " (see --help)\n";
     return 2;

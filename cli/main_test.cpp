@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 namespace tribolab::cli::testing {
 namespace {
 
@@ -22,10 +24,83 @@ TEST(Cli, UnknownCommandIsOneErrorLine) {
   EXPECT_TRUE(r.out.empty());
 }
 
-TEST(Cli, NoArgumentsIsAnError) {
-  const auto r = run_tribolab("");
-  EXPECT_NE(r.exit_code, 0);
+TEST(Cli, NoArgumentsPrintsTheHelp) {
+  // A newcomer typing `tribolab` or `tribolab incline` wants to see what exists.
+  for (const char* args : {"", "incline", "bounce", "track"}) {
+    const auto r = run_tribolab(args);
+    EXPECT_EQ(r.exit_code, 0) << args;
+    EXPECT_NE(r.out.find("Subcommands:"), std::string::npos) << args << ":\n" << r.out;
+    EXPECT_NE(r.out.find("Usage: tribolab"), std::string::npos) << args << ":\n" << r.out;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+  }
+}
+
+TEST(Cli, UnknownCommandIsAMalformedCommandLineWithASuggestion) {
+  const auto r = run_tribolab("incline simulat --mu 0.3");
+  EXPECT_EQ(r.exit_code, 2);  // docs/cli.md#errors: 2 = malformed command line
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("unknown command 'simulat' for 'tribolab incline'; did you mean 'simulate'?"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(run_tribolab("frobnicate").exit_code, 2);
+}
+
+TEST(Cli, UnknownOptionNamesTheNearestOneBeforeAnyRequirement) {
+  // `--vo` used to answer "--v0 is required"; `--mu-statc` listed the arguments backwards.
+  const auto vo = run_tribolab("incline simulate --mu 0.3 --phi-deg 20 --vo 2.62 --out x.csv");
+  EXPECT_EQ(vo.exit_code, 2);
+  EXPECT_EQ(count_lines(vo.err), 1) << vo.err;
+  EXPECT_NE(vo.err.find("unknown option '--vo' for 'tribolab incline simulate'; did you mean '--v0'?"),
+            std::string::npos)
+      << vo.err;
+  const auto statc = run_tribolab("incline simulate --mu-statc=0.4");
+  EXPECT_NE(statc.err.find("did you mean '--mu-static'?"), std::string::npos) << statc.err;
+  // Far from every option: no guess, still one line.
+  const auto far = run_tribolab("bounce simulate --zzzzzzzz 1");
+  EXPECT_EQ(far.exit_code, 2);
+  EXPECT_NE(far.err.find("unknown option '--zzzzzzzz'"), std::string::npos) << far.err;
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
+TEST(Cli, OptionValuesThatLookLikeWordsAreNotMistakenForCommands) {
+  // The pre-check must skip option values (negative numbers, words) as CLI11 does.
+  const auto r = run_tribolab("bounce drop --height 1 --omega -20 --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(Cli, EveryHelpUsesOnePlaceholderVocabulary) {
+  const auto root = run_tribolab("--help");
+  std::string all;
+  for (const char* area : {"incline", "bounce", "track"}) {
+    const auto a = run_tribolab(std::string(area) + " --help");
+    const std::string& out = a.out;
+    const auto start = out.find("Subcommands:");
+    ASSERT_NE(start, std::string::npos) << out;
+    std::istringstream lines(out.substr(start));
+    std::string line;
+    std::getline(lines, line);
+    while (std::getline(lines, line)) {
+      std::istringstream words(line);
+      std::string name;
+      if (!(words >> name)) continue;
+      all += run_tribolab(std::string(area) + " " + name + " --help").out;
+    }
+  }
+  ASSERT_GT(all.size(), 5000u);  // every command's help was collected
+  for (const char* bad : {" FLOAT", " UINT", " TEXT TEXT", "FILE.html:FILE.html", "FILE FILE",
+                          "FILE TEXT"}) {
+    EXPECT_EQ(all.find(bad), std::string::npos) << "'" << bad << "' in:\n" << all;
+  }
+}
+
+TEST(Cli, AMissingOutputFolderIsTheSameClassForEveryOutput) {
+  const std::string base = "incline simulate --mu 0.3 --phi-deg 20 --v0 2 ";
+  const auto out = run_tribolab(base + "--out /nonexistent-folder/x.csv");
+  const auto rep = run_tribolab(base + "--out x.csv --report /nonexistent-folder/x.html");
+  EXPECT_EQ(out.exit_code, 1) << out.err;
+  EXPECT_EQ(rep.exit_code, 1) << rep.err;
+  // A wrong extension is a malformed command line.
+  EXPECT_EQ(run_tribolab(base + "--out x.csv --report x.txt").exit_code, 2);
 }
 
 }  // namespace

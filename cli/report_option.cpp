@@ -1,5 +1,6 @@
 #include "report_option.hpp"
 
+#include "numerics/error.hpp"
 #include "report/html.hpp"
 
 #include <cctype>
@@ -26,8 +27,16 @@ CLI::Option* add_report_option(CLI::App& cmd, std::string& path) {
                   "Also write an interactive, offline HTML report to this file (.html)")
       ->type_name("FILE.html")
       ->check(CLI::Validator(
-          [](std::string& value) { return check_report_path(value); }, "FILE.html",
-          "report path"));
+          [](std::string& value) {
+            std::string problem = check_report_path(value);
+            // A wrong extension is a malformed command line (exit 2); a folder that does not
+            // exist is a file-system problem like a missing --out folder (exit 1).
+            if (problem.find("folder") != std::string::npos || problem.find("directory") != std::string::npos) {
+              throw InputError("--report", problem);
+            }
+            return problem;
+          },
+          "", "report path"));
 }
 
 bool write_report_if_requested(const std::string& path,

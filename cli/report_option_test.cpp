@@ -20,7 +20,9 @@ std::string parse(const std::vector<std::string>& args, std::string& path) {
   try {
     app.parse(reversed);
   } catch (const CLI::ParseError& e) {
-    return e.what();
+    return e.what();  // malformed command line (exit 2)
+  } catch (const InputError& e) {
+    return e.what();  // a file-system problem (exit 1), as for every output
   }
   return {};
 }

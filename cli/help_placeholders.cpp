@@ -1,0 +1,64 @@
+#include "help_placeholders.hpp"
+
+#include <cctype>
+#include <regex>
+#include <string>
+
+namespace tribolab::cli {
+namespace {
+
+bool names_a_file(const CLI::Option& opt) {
+  const std::string d = opt.get_description();
+  const std::string n = opt.get_name(false, true);
+  for (const char* word : {"file", "CSV", "Tracker", ".trk"}) {
+    if (d.find(word) != std::string::npos) return true;
+  }
+  return n.find("out") != std::string::npos;
+}
+
+/// "hooke|hertz|hunt-crossley" from a description such as "normal law: hooke|hertz|... (default x)".
+std::string listed_choices(const std::string& description) {
+  static const std::regex choices(R"(([a-z][a-z0-9_-]*(?:\|[a-z][a-z0-9_-]*)+))");
+  std::smatch m;
+  if (!std::regex_search(description, m, choices)) return {};
+  return m.str(1).size() <= 48 ? m.str(1) : "NAME";  // too many to list: see the help text
+}
+
+void tidy(CLI::Option& opt) {
+  const std::string type = opt.get_type_name();
+  if (opt.get_positional() && !opt.nonpositional()) {
+    // "FILE FILE ..." or "files TEXT ...": the name says it; keep only the repetition.
+    opt.type_name("");
+    return;
+  }
+  if (type == "FLOAT") {
+    opt.type_name("NUM");
+  } else if (type == "UINT") {
+    opt.type_name("INT");
+  } else if (type == "TEXT") {
+    const std::string d = opt.get_description();
+    if (d.find("NAME=VALUE") != std::string::npos) {
+      opt.type_name("NAME=VALUE");
+    } else if (d.find("i of N") != std::string::npos) {
+      opt.type_name("I/N");
+    } else if (d.find("lo:hi:count") != std::string::npos) {
+      opt.type_name("LO:HI:N");
+    } else if (std::string c = listed_choices(d); !c.empty()) {
+      opt.type_name(c);
+    } else if (names_a_file(opt)) {
+      opt.type_name("FILE");
+    } else if (d.find("name") != std::string::npos || d.find("Track") != std::string::npos ||
+               d.find(" track") != std::string::npos) {
+      opt.type_name("NAME");
+    }
+  }
+}
+
+}  // namespace
+
+void tidy_placeholders(CLI::App& app) {
+  for (CLI::Option* opt : app.get_options()) tidy(*opt);
+  for (CLI::App* sub : app.get_subcommands({})) tidy_placeholders(*sub);
+}
+
+}  // namespace tribolab::cli
