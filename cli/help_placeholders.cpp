@@ -7,13 +7,17 @@
 namespace tribolab::cli {
 namespace {
 
+/// An option whose value is a file to write or read: its help says so in its first words
+/// ("Write ... to this CSV", "Output CSV", "CSV with columns ...") or its name is an output.
 bool names_a_file(const CLI::Option& opt) {
-  const std::string d = opt.get_description();
-  const std::string n = opt.get_name(false, true);
-  for (const char* word : {"file", "CSV", "Tracker", ".trk"}) {
-    if (d.find(word) != std::string::npos) return true;
+  std::string d = opt.get_description();
+  for (char& c : d) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* start : {"write", "also write", "output", "csv", "merged output"}) {
+    if (d.rfind(start, 0) == 0) return true;
   }
-  return n.find("out") != std::string::npos;
+  if (d.find("to this csv") != std::string::npos || d.find("to this file") != std::string::npos) return true;
+  const std::string n = opt.get_name(false, true);
+  return n == "--out" || n.size() > 4 && n.compare(n.size() - 4, 4, "-out") == 0;
 }
 
 /// "hooke|hertz|hunt-crossley" from a description such as "normal law: hooke|hertz|... (default x)".
@@ -47,9 +51,13 @@ void tidy(CLI::Option& opt) {
       opt.type_name(c);
     } else if (names_a_file(opt)) {
       opt.type_name("FILE");
-    } else if (d.find("name") != std::string::npos || d.find("Track") != std::string::npos ||
-               d.find(" track") != std::string::npos) {
+    } else if (d.find("name") != std::string::npos || d.rfind("Track", 0) == 0 ||
+               d.find("this track") != std::string::npos || d.find(".trk inside") != std::string::npos) {
       opt.type_name("NAME");
+    } else if (d.find("comma separated") != std::string::npos) {
+      opt.type_name("NUM[,NUM...]");
+    } else if (d.find("Unit of") != std::string::npos || d.find("unit of") != std::string::npos) {
+      opt.type_name("UNIT");
     }
   }
 }

@@ -87,6 +87,28 @@ TEST(Cli, EveryHelpUsesOnePlaceholderVocabulary) {
     }
   }
   ASSERT_GT(all.size(), 5000u);  // every command's help was collected
+  // Each option's placeholder says what the value is.
+  const auto placeholder = [&](const std::string& help, const std::string& option) {
+    std::istringstream lines(help);
+    std::string line;
+    while (std::getline(lines, line)) {
+      std::istringstream words(line);
+      std::string name, value;
+      if (words >> name >> value && name == option) return value;
+    }
+    return std::string("(absent)");
+  };
+  const std::string analyze = run_tribolab("bounce analyze --help").out;
+  EXPECT_EQ(placeholder(analyze, "--length-unit"), "UNIT");
+  EXPECT_EQ(placeholder(analyze, "--floor-y"), "NUM[,NUM...]");
+  EXPECT_EQ(placeholder(analyze, "--track-a"), "NAME");
+  EXPECT_EQ(placeholder(analyze, "--report"), "FILE.html");
+  const std::string sim = run_tribolab("bounce simulate --help").out;
+  EXPECT_EQ(placeholder(sim, "--history"), "FILE");
+  EXPECT_EQ(placeholder(sim, "--vy"), "NUM");
+  EXPECT_EQ(placeholder(sim, "--friction"), "coulomb|regularized|spring");
+  EXPECT_EQ(placeholder(run_tribolab("track import --help").out, "--entry"), "NAME");
+  EXPECT_NE(placeholder(run_tribolab("track kinematics --help").out, "--impacts"), "NAME");
   for (const char* bad : {" FLOAT", " UINT", " TEXT TEXT", "FILE.html:FILE.html", "FILE FILE",
                           "FILE TEXT"}) {
     EXPECT_EQ(all.find(bad), std::string::npos) << "'" << bad << "' in:\n" << all;
