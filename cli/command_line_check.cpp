@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdlib>
+#include <filesystem>
 
 namespace tribolab::cli {
 namespace {
@@ -50,6 +51,33 @@ std::string suggestion(const std::string& word, const std::vector<std::string>& 
   return near.empty() ? std::string() : "; did you mean '" + near + "'?";
 }
 
+struct NamedFile {
+  std::string option;  ///< "--out", or "input" for a positional argument
+  std::string path;
+};
+
+/// Two outputs into one file (or an output over an input) would leave one of them holding
+/// the other's tail after an error, against "no partial output": refuse them up front.
+void check_distinct_files(const std::vector<NamedFile>& files) {
+  namespace fs = std::filesystem;
+  const auto same = [](const std::string& a, const std::string& b) {
+    std::error_code ea, eb;
+    const fs::path pa = fs::weakly_canonical(a, ea), pb = fs::weakly_canonical(b, eb);
+    return ea || eb ? a == b : pa == pb;
+  };
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    for (std::size_t j = i + 1; j < files.size(); ++j) {
+      if (files[i].option == "input" && files[j].option == "input") continue;  // a series may repeat
+      if (!same(files[i].path, files[j].path)) continue;
+      const bool over_input = files[i].option == "input" || files[j].option == "input";
+      const std::string& out = files[i].option == "input" ? files[j].option : files[i].option;
+      throw UsageError(over_input ? out + ": '" + files[j].path + "' is also the input file; choose another name"
+                                  : files[i].option + " and " + files[j].option + " name the same file '" +
+                                        files[j].path + "'; choose two names");
+    }
+  }
+}
+
 }  // namespace
 
 std::string full_name(const CLI::App& app) {
@@ -87,6 +115,7 @@ std::string nearest_name(const std::string& word, const std::vector<std::string>
 CLI::App* check_command_line(CLI::App& root, int argc, char** argv) {
   CLI::App* level = &root;
   bool option_given = false;  // at the current level
+  std::vector<NamedFile> files;  // file-valued options and positional inputs
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--") break;
@@ -100,7 +129,15 @@ CLI::App* check_command_line(CLI::App& root, int argc, char** argv) {
                          full_name(*level) + " --help)");
       }
       // Skip the option's value when it is the next argument.
-      if (arg.find('=') == std::string::npos && opt->get_items_expected_max() > 0 && i + 1 < argc) ++i;
+      std::string value;
+      if (const auto eq = arg.find('='); eq != std::string::npos) {
+        value = arg.substr(eq + 1);
+      } else if (opt->get_items_expected_max() > 0 && i + 1 < argc) {
+        value = argv[++i];
+      }
+      if (opt->get_type_name().rfind("FILE", 0) == 0 && !value.empty()) {
+        files.push_back({name, value});
+      }
       continue;
     }
     if (arg.size() > 1 && arg[0] == '-' && !is_number(arg)) {
@@ -108,7 +145,10 @@ CLI::App* check_command_line(CLI::App& root, int argc, char** argv) {
       continue;
     }
     // A positional argument: a subcommand name where the level has subcommands.
-    if (level->get_subcommands({}).empty()) continue;
+    if (level->get_subcommands({}).empty()) {
+      files.push_back({"input", arg});
+      continue;
+    }
     CLI::App* sub = nullptr;
     for (CLI::App* s : level->get_subcommands({})) {
       if (s->check_name(arg)) sub = s;
@@ -121,6 +161,7 @@ CLI::App* check_command_line(CLI::App& root, int argc, char** argv) {
     level = sub;
     option_given = false;
   }
+  check_distinct_files(files);
   if (!option_given && !level->get_subcommands({}).empty()) return level;
   return nullptr;
 }

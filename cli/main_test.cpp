@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace tribolab::cli::testing {
@@ -123,6 +125,27 @@ TEST(Cli, AMissingOutputFolderIsTheSameClassForEveryOutput) {
   EXPECT_EQ(rep.exit_code, 1) << rep.err;
   // A wrong extension is a malformed command line.
   EXPECT_EQ(run_tribolab(base + "--out x.csv --report x.txt").exit_code, 2);
+}
+
+TEST(Cli, TwoOutputsIntoOneFileAreRefusedBeforeAnythingIsWritten) {
+  // Used to leave CSV rows followed by the tail of the HTML report in same.html.
+  const std::string dir = (std::filesystem::temp_directory_path() / "tribolab_same_output").string();
+  std::filesystem::create_directories(dir);
+  const std::string same = dir + "/same.html";
+  std::filesystem::remove(same);
+  const auto r = run_tribolab("incline simulate --mu 0.3 --phi-deg 20 --v0 2 --out '" + same +
+                              "' --report '" + dir + "/./same.html'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("--out and --report name the same file"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(same));
+  // An output over the input file is refused too; the input is left untouched.
+  const std::string input = dir + "/run.csv";
+  { std::ofstream(input) << "track,frame,t,x,y\nA,0,0,0,0\nA,1,0.1,1,1\n"; }
+  const auto over = run_tribolab("track import '" + input + "' --out '" + input + "'");
+  EXPECT_EQ(over.exit_code, 2);
+  EXPECT_NE(over.err.find("is also the input file"), std::string::npos) << over.err;
+  EXPECT_EQ(slurp(input), "track,frame,t,x,y\nA,0,0,0,0\nA,1,0.1,1,1\n");
 }
 
 }  // namespace
