@@ -45,6 +45,12 @@ std::string one_line(std::string s) {
 }  // namespace
 
 void print_result(const nlohmann::json& result, bool as_json) {
+  // Data that contradict the physics are said on stderr too, whatever the output format.
+  if (result.is_object() && result.contains("warnings") && result["warnings"].is_array()) {
+    for (const auto& w : result["warnings"]) {
+      if (w.is_string()) std::cerr << "tribolab: warning: " << one_line(w.get<std::string>()) << '\n';
+    }
+  }
   if (as_json) {
     std::cout << result.dump() << '\n';
     return;

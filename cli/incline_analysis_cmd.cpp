@@ -384,6 +384,18 @@ json analysis_json(const analysis::InclineAnalysis& a) {
     j["theta_c"] = nullptr;
   }
   j["notes"] = a.notes;
+  if (a.gravity) {
+    const auto& g = *a.gravity;
+    j["gravity"] = {{"g", g.g.value},
+                    {"sigma_g", g.g.sigma},
+                    {"g_ci95", estimate_ci(g.g)},
+                    {"ratio", g.ratio},
+                    {"time_factor", g.time_factor},
+                    {"implausible", g.implausible}};
+  } else {
+    j["gravity"] = nullptr;
+  }
+  j["warnings"] = a.warnings;
   return j;
 }
 

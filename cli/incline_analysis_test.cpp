@@ -171,3 +171,30 @@ TEST(InclineAnalysisCli, BadInput) {
 
 }  // namespace
 }  // namespace tribolab::cli::testing
+
+namespace tribolab::cli::testing {
+namespace {
+
+TEST(InclineAnalysisCli, AWrongTimeScaleIsCalledOutNotAnalysedWithConfidence) {
+  // Real-time data analysed as slow motion's opposite: --time-scale 8 makes every time 8x too
+  // long, so the data show g/64. The analysis must say so (JSON, stderr), with the factor.
+  const std::string dir = temp_dir("incline_time_scale");
+  const std::string f = dir + "/run.txt";
+  run_json("incline synth" + kSeedRun + "--fps 120 --seed 11 --out " + f);
+  const json ok = run_json("incline analyze " + f + " --phi-deg 20.96 --no-model-a");
+  EXPECT_TRUE(ok["warnings"].empty()) << ok["warnings"];
+  EXPECT_LE(ok["gravity"]["g_ci95"][0].get<double>(), 9.8);
+  EXPECT_GE(ok["gravity"]["g_ci95"][1].get<double>(), 9.8);
+
+  const auto r = run_tribolab("incline analyze " + f + " --phi-deg 20.96 --no-model-a --time-scale 8 --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_EQ(j["warnings"].size(), 1u) << j["warnings"];
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("multiplied by 0.125"), std::string::npos) << j["warnings"];
+  EXPECT_TRUE(j["gravity"]["implausible"].get<bool>());
+  EXPECT_NEAR(j["gravity"]["g"].get<double>(), 9.8 / 64, 0.01);  // sigma ~0.001 m/s^2 here
+  EXPECT_NE(r.err.find("tribolab: warning: the data show gravity g = 0.15"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace tribolab::cli::testing

@@ -232,6 +232,11 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
   }
   if (!diag.rows.empty()) s.add_table(std::move(diag));
   if (!a.notes.empty()) s.add_list(a.notes);
+  if (!a.warnings.empty()) {
+    std::vector<std::string> w;
+    for (const auto& x : a.warnings) w.push_back("Warning: " + x);
+    s.add_list(w);
+  }
 
   std::vector<InclineCurve> curves;
   curves.push_back({"data (Savitzky–Golay derivatives)", data_states(a), report::Mode::Markers, report::Dash::Solid, "#1f77b4"});

@@ -14,9 +14,9 @@
 namespace tribolab::analysis {
 namespace {
 
-std::string fmt(double v) {
+std::string fmt(double v, int digits = 4) {
   std::ostringstream o;
-  o.precision(4);
+  o.precision(digits);
   o << v;
   return o.str();
 }
@@ -319,6 +319,59 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
   return r;
 }
 
+std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& o,
+                                          const ModelBFit& b) {
+  constexpr double kMinPhi = 3.0 * M_PI / 180.0;  // below, g sin(phi) is too small to separate g from mu
+  if (o.phi < kMinPhi) return std::nullopt;
+  const auto& pts = track.points;
+  const int n = static_cast<int>(pts.size());
+  const std::vector<double> t = times_of(track);
+  const track::Kinematics kin = track::differentiate(track);
+  const double noise = std::max({kin.noise_x, kin.noise_y, 1e-6});
+  auto residuals = [&](const double* q, double* r) {
+    if (!(q[0] > 0 && q[1] > 0 && q[6] > 0) || !std::isfinite(q[4]) || !std::isfinite(q[5])) return false;
+    try {
+      const auto s = model_b_states(launch(q[0], o.phi, q[1], q[6]), q[4], q[2], q[3], t, q[5]);
+      for (int i = 0; i < n; ++i) {
+        r[i] = pts[i].x - s[i].x;
+        r[n + i] = pts[i].y - s[i].y;
+      }
+    } catch (const std::exception&) {
+      return false;
+    }
+    return true;
+  };
+  numerics::FitResult best;
+  bool have = false;
+  // Time wrong by a factor c scales every acceleration by 1/c^2: start at the g given and at
+  // the usual slow-motion factors both ways, and keep the best converged fit.
+  for (double c : {1.0, 8.0, 0.125, 4.0, 0.25, 16.0, 0.0625, 2.0, 0.5}) {
+    const double g0 = o.g / (c * c);
+    std::vector<numerics::FitParameter> params{
+        {"mu", b.mu.value, 1e-6, 1e3, false},
+        {"v0", b.v0.value, 1e-9, 1e4, false},
+        {"x0", b.x0.value, std::nullopt, std::nullopt, false},
+        {"y0", b.y0.value, std::nullopt, std::nullopt, false},
+        {"t0", b.t0.value, t.front() - 5.0, t.back(), false},
+        {"frame_rotation", b.frame_rotation.value, -kMaxFrameRotation, kMaxFrameRotation, !o.fit_frame_rotation},
+        {"g", g0, 1e-6 * o.g, 1e6 * o.g, false},
+    };
+    numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params);
+    if (f.ok() && (!have || f.cost < best.cost)) {
+      best = std::move(f);
+      have = true;
+    }
+    if (have && best.rms < 2.0 * noise) break;  // at the noise level: the global minimum in practice
+  }
+  if (!have) return std::nullopt;
+  GravityCheck c;
+  c.g = estimate(best, 6, o.level);
+  c.ratio = c.g.value / o.g;
+  c.time_factor = std::sqrt(c.ratio);
+  c.implausible = std::abs(c.ratio - 1) > 0.25 && std::abs(c.g.value - o.g) > 3 * c.g.sigma;
+  return c;
+}
+
 InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitOptions& o) {
   InclineAnalysis a;
   a.phi = o.phi;
@@ -406,6 +459,20 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     if (!a.theta_c) a.notes.push_back("theta_c diagnostic skipped: too few points around the v_y extremum");
   } else {
     a.notes.push_back("theta_c diagnostic skipped: the fitted motion does not stop (k >= 1), so v_y has no extremum");
+  }
+
+  a.gravity = check_gravity(track, o, b);
+  if (a.gravity && a.gravity->implausible) {
+    const GravityCheck& c = *a.gravity;
+    a.warnings.push_back("the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) +
+                         " m/s^2, not " + fmt(o.g) + ": the times, the lengths or the incline angle are wrong. "
+                         "If lengths and angle are right, the file's times must be multiplied by " +
+                         fmt(c.time_factor, 3) + " (e.g. --time-scale " + fmt(c.time_factor, 3) +
+                         " times the one used; slow motion analysed as real time gives 1/8 at 240 fps played at 30)");
+  }
+  if (b.mu.value > 2) {
+    a.warnings.push_back("the fitted friction coefficient mu = " + fmt(b.mu.value) +
+                         " is far above any sliding contact (mu < 2): check the time scale, the length unit and the incline angle");
   }
 
   if (a.test) {

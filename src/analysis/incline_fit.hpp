@@ -81,6 +81,19 @@ struct ModelAFit {
   numerics::FitResult fit;
 };
 
+/// Gravity as the data show it: model B refitted with g free (docs/theory.md#incline-gravity).
+/// A slide fixes g sin(phi) (the pull down the slope) and mu g cos(phi) (the friction) apart,
+/// so g is identifiable for phi >= 3 deg. Far from the g given means the times (slow motion
+/// analysed as real time), the lengths or the incline angle are wrong.
+struct GravityCheck {
+  Estimate g;                  ///< fitted g, m/s^2
+  double ratio = 1;            ///< g fitted / g given
+  /// Factor the file's times would need to be multiplied by for the data to show the g
+  /// given, sqrt(ratio): 0.125 for 240 fps slow motion played at 30 fps analysed as real time.
+  double time_factor = 1;
+  bool implausible = false;    ///< |ratio - 1| > 0.25 and more than 3 sigma from the g given
+};
+
 /// Test of model A against B (nested: A with normal_accel = 0 is B).
 struct ModelTest {
   double f_statistic = 0;   ///< (RSS_B - RSS_A) / (RSS_A / dof_A), 1 and dof_A degrees of freedom
@@ -110,6 +123,10 @@ struct InclineAnalysis {
   std::vector<incline::State> model_a_at_data, model_a_fine;
   std::vector<double> residual_x_b, residual_y_b, residual_x_a, residual_y_a;
   std::vector<std::string> notes;  ///< what was skipped and why
+  std::optional<GravityCheck> gravity;  ///< absent for phi < 3 deg or when the refit fails
+  /// Plain-language warnings: data that contradict what the physics knows (gravity far from
+  /// g, an impossible friction coefficient). Empty when none.
+  std::vector<std::string> warnings;
 };
 
 /// Model B states at file times t for launch time t0 and point (x0, y0) (rest before t0),
@@ -130,6 +147,11 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& option
 /// Fits model A starting from a model B fit. Throws InputError like fit_model_b.
 ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& options,
                       const ModelBFit& start);
+
+/// Refits model B with g free, starting from `b` and from g scaled by the usual slow-motion
+/// factors (4, 8, 16 in time). Empty when phi < 3 deg or no fit converges.
+std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& options,
+                                          const ModelBFit& b);
 
 /// The whole analysis of `incline analyze`.
 InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitOptions& options);
