@@ -289,3 +289,17 @@ TEST(BounceTouch, TurnedCameraWarns) {
 
 }  // namespace
 }  // namespace tribolab::analysis
+
+namespace tribolab::analysis {
+namespace {
+
+// The commonest Tracker slip: 240 fps slow motion played at 30 fps analysed as real time
+// (no --time-scale 0.125). The flights then fall at g/64; the warning names the factor.
+TEST(BounceTouch, SlowMotionAnalysedAsRealTimeNamesTheTimeFactor) {
+  const auto x = imperfect(kCases[0], 0, 0.125);  // file times left 8x the real ones
+  EXPECT_NEAR(x.r.gravity, 9.8 / 64, 5 * x.r.sigma_gravity + 0.03 / 64);
+  EXPECT_TRUE(has_warning(x.r, "times must be multiplied by 0.125")) << x.r.warnings.front();
+}
+
+}  // namespace
+}  // namespace tribolab::analysis
