@@ -487,7 +487,19 @@ void add_synth_table(CLI::App* area) {
     io::AtomicFile file(opts->out);
     file.stream() << io::write_bounce_table(rows);
     file.commit();
-    print_result({{"out", opts->out}, {"rows", rows.size()}}, opts->json);
+    // The truth `bounce fit` should recover, with the keys it prints (K, n, D, mu).
+    json truth = {{"model", std::string(bounce::to_string(o.law.model))},
+                  {"K", o.law.K},
+                  {"n", o.law.n},
+                  {"D", o.law.restitution ? json(nullptr) : json(o.law.D)},
+                  {"restitution", o.law.restitution ? json(*o.law.restitution) : json(nullptr)},
+                  {"friction", std::string(bounce::to_string(o.friction.kind))},
+                  {"mu", o.friction.mu},
+                  {"a", o.ball.a}, {"b", o.ball.b}, {"mass", o.ball.mass}, {"inertia", o.ball.inertia},
+                  {"noise_v", o.noise_v}, {"noise_omega", o.noise_omega},
+                  {"outlier_fraction", o.outlier_fraction}};
+    if (o.friction.kind == bounce::FrictionKind::regularized) truth["slip_scale"] = o.friction.slip_scale;
+    print_result({{"out", opts->out}, {"rows", rows.size()}, {"truth", truth}}, opts->json);
   });
 }
 

@@ -104,15 +104,21 @@ TEST(BounceAnalysisCli, SynthIsDeterministicBySeed) {
 TEST(BounceAnalysisCli, FitReportsParametersAndResiduals) {
   const auto dir = temp_dir("bounce_fit");
   const std::string table = dir + "/t.csv";
-  run_json("bounce synth-table --rows 15 --seed 9 --out '" + table + "'");
+  const json truth = run_json("bounce synth-table --rows 15 --seed 9 --mu 0.45 --out '" + table + "'")["truth"];
+  // "with known truth": the table's command prints it, under the keys `bounce fit` prints.
+  EXPECT_EQ(truth["model"], "hunt-crossley");
+  EXPECT_EQ(truth["K"].get<double>(), 101054);
+  EXPECT_EQ(truth["D"].get<double>(), 60423);
+  EXPECT_EQ(truth["mu"].get<double>(), 0.45);
+  EXPECT_EQ(truth["friction"], "coulomb");
   const json r = run_json("bounce fit '" + table + "' --fix K=101054 --fix n=1.51");
   for (const char* key : {"K", "n", "D", "mu", "sigma_K", "sigma_n", "sigma_D", "sigma_mu", "rms", "residuals"})
     EXPECT_TRUE(r.contains(key)) << key;
   EXPECT_EQ(r["residuals"].size(), 15u);
   EXPECT_EQ(r["sigma_K"].get<double>(), 0.0);  // fixed
   // 4 standard errors of the fit (deterministic seed).
-  EXPECT_NEAR(r["mu"].get<double>(), 0.5, 4 * r["sigma_mu"].get<double>());
-  EXPECT_NEAR(r["D"].get<double>(), 60423, 4 * r["sigma_D"].get<double>());
+  EXPECT_NEAR(r["mu"].get<double>(), truth["mu"].get<double>(), 4 * r["sigma_mu"].get<double>());
+  EXPECT_NEAR(r["D"].get<double>(), truth["D"].get<double>(), 4 * r["sigma_D"].get<double>());
 }
 
 TEST(BounceAnalysisCli, BadInputGivesOneLine) {
