@@ -23,6 +23,7 @@
 #include "series_cmd.hpp"
 
 #include <cmath>
+#include <fmt/format.h>
 #include <memory>
 #include <optional>
 #include <string>
@@ -353,6 +354,22 @@ json analysis_json(const analysis::InclineAnalysis& a) {
   }
   nf["verdict"] = a.verdict;
   nf["verdict_source"] = a.verdict_source;
+  // What the verdict is: a test with a size, so a reader knows how often it errs.
+  if (a.test) {
+    const int in = static_cast<int>(std::lround(1 / a.test->size));
+    nf["p_value"] = a.test->p_value;
+    nf["test_size"] = a.test->size;
+    nf["meaning"] = fmt::format(
+        "present when model A's f_N/m interval excludes 0 and the F-test of A against B gives p < {:g} "
+        "(here p = {:.2g}): at this {:g} % size, about one run in {} without normal friction is called present",
+        a.test->size, a.test->p_value, 100 * a.test->size, in);
+  } else {
+    nf["p_value"] = nullptr;
+    nf["test_size"] = a.a_n ? json(0.05) : json(nullptr);
+    nf["meaning"] = a.a_n ? "present when the 95 % interval of the a_N intercept (eq b) excludes 0: about one "
+                            "run in twenty without normal friction is called present"
+                          : "no test could decide; absent by default";
+  }
   j["normal_friction"] = nf;
   if (a.model_a && a.test) {
     const auto& m = *a.model_a;
@@ -605,6 +622,9 @@ void add_normal_friction_test(CLI::App* area) {
     j["intercept_ci95"] = interval(r.intercept_ci_low, r.intercept_ci_high);
     j["r_squared"] = r.line.r_squared;
     j["verdict"] = r.verdict;
+    j["test_size"] = 0.05;
+    j["meaning"] = "present when the 95 % interval of the intercept of cos(theta_c) against tan(phi) excludes 0 "
+                   "(eq c): about one series in twenty without normal friction is called present";
     j["n_runs"] = r.points.size();
     j["runs"] = runs;
     write_report_if_requested(s->report, [&] { return incline_normal_test_report(r); });

@@ -51,6 +51,12 @@ TEST(InclineAnalysisCli, AnalyzeDetectsModelA) {
   run_json("incline synth" + kSeedRun + "--normal-accel 0.3 --format csv --seed 5 --out " + f);
   const json j = run_json("incline analyze " + f + " --phi-deg 20.96 --track disc");
   EXPECT_EQ(j["normal_friction"]["verdict"], "present");
+  // The verdict says what it is: a test with a p-value and a size.
+  EXPECT_LT(j["normal_friction"]["p_value"].get<double>(), 0.05);
+  EXPECT_EQ(j["normal_friction"]["test_size"].get<double>(), 0.05);
+  EXPECT_NE(j["normal_friction"]["meaning"].get<std::string>().find("one run in 20 without normal friction is called present"),
+            std::string::npos)
+      << j["normal_friction"]["meaning"];
   EXPECT_EQ(j["normal_friction"]["verdict_source"], "model_a_test");
   const json& ci = j["model_a"]["normal_accel_ci95"];
   EXPECT_LE(ci[0].get<double>(), 0.3);

@@ -413,6 +413,7 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
       test.p_value = boost::math::cdf(boost::math::complement(dist, test.f_statistic));
       test.ci_excludes_zero = fa.normal_accel.ci_low > 0 || fa.normal_accel.ci_high < 0;
       test.significant = test.p_value < o.significance;
+      test.size = o.significance;
       test.present = test.ci_excludes_zero && test.significant;
       a.model_a = std::move(fa);
       a.test = test;

@@ -101,6 +101,7 @@ struct ModelTest {
   bool ci_excludes_zero = false;  ///< the level-CI of normal_accel excludes 0
   bool significant = false;       ///< p_value < significance
   bool present = false;           ///< both: a normal friction component is present
+  double size = 0.05;             ///< the test's size: how often a model-B run is called present
 };
 
 struct InclineAnalysis {
