@@ -317,7 +317,7 @@ void add_families(CLI::App* area) {
   cmd->add_option("--values", s->values,
                   "Comma-separated values (m/s for v0, degrees for phi)")->required();
   cmd->add_option("--samples", s->samples, "Samples per curve (default 500)");
-  cmd->add_option("--t-end", s->t_end, "Duration, s (default: the longest member's default)");
+  cmd->add_option("--t-end", s->t_end, "Duration of every curve, s (default: each member its own, 1.25 t_stop or 2 v0/alpha)");
   cmd->add_option("--out", s->out, "Output CSV file")->required();
   add_json_flag(*cmd, s->json);
   name_option_types(cmd);
@@ -378,6 +378,7 @@ void add_families(CLI::App* area) {
       e["x_stop"] = opt(pr.x_stop);
       e["y_stop"] = opt(pr.y_stop);
       e["x_limit"] = opt(pr.x_limit);
+      e["t_end"] = m.t_end;
       const double v0 = m.parameters.v0;
       const bool stops = pr.t_stop && v0 > 0;
       e["t_stop_over_v0"] = stops ? json(*pr.t_stop / v0) : json(nullptr);
@@ -392,6 +393,7 @@ void add_families(CLI::App* area) {
     j["t_end"] = f.t_end;
     j["rows"] = f.members.size() * f.members.front().trajectory.size();
     j["members"] = members;
+    j["warnings"] = f.warnings;
     j["out"] = s->out;
     print_result(j, s->json);
   });

@@ -99,6 +99,14 @@ TEST(InclineCli, FamiliesWriteAllMembers) {
   EXPECT_EQ(count_lines(csv), 1 + 3 * 11);
   run_json("incline families --vary phi --values 10,20,40 --mu 0.634 --v0 2.62 --out " + out);
   EXPECT_EQ(slurp(out).substr(0, 8), "phi_deg,");
+  // A member near k = 1 is warned on stderr and in the JSON; each member has its own t_end.
+  const auto near = run_tribolab("incline families --vary phi --values 10,32.37 --mu 0.634 --v0 2.62 --json --out " + out);
+  EXPECT_EQ(near.exit_code, 0) << near.err;
+  const json nj = json::parse(near.out);
+  EXPECT_EQ(nj["warnings"].size(), 1u);
+  EXPECT_LT(nj["members"][0]["t_end"].get<double>(), 1.0);
+  EXPECT_GT(nj["members"][1]["t_end"].get<double>(), 100.0);
+  EXPECT_NE(near.err.find("tribolab: warning: phi = 32.37 gives k"), std::string::npos) << near.err;
   std::filesystem::remove_all(dir);
 }
 

@@ -196,6 +196,11 @@ report::Report incline_families_report(const incline::FamilyOptions& options,
                           optional_number(m.prediction.y_stop, "")});
   }
   s.add_table(std::move(stops));
+  if (!family.warnings.empty()) {
+    std::vector<std::string> w;
+    for (const auto& x : family.warnings) w.push_back("Warning: " + x);
+    s.add_list(w);
+  }
   add_incline_kinematics(s, "Family over " + name, curves);
   return r;
 }

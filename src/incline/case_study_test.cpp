@@ -140,10 +140,37 @@ TEST(Families, StopRelationsOverLaunchSpeed) {
     EXPECT_NEAR(*m.prediction.x_stop / (v * v), *p1.x_stop, 1e-14);
     EXPECT_NEAR(*m.prediction.y_stop / *m.prediction.x_stop, *p1.y_stop / *p1.x_stop, 1e-14);
     EXPECT_EQ(m.trajectory.size(), 50u);
-    EXPECT_DOUBLE_EQ(m.trajectory.back().t, f.t_end);
+    // Each member on its own time scale: 1.25 t_stop.
+    EXPECT_NEAR(m.t_end, 1.25 * *m.prediction.t_stop, 1e-12);
+    EXPECT_DOUBLE_EQ(m.trajectory.back().t, m.t_end);
   }
-  // t_end covers the slowest member: 1.25 t_stop(v0 = 3).
+  // The family's t_end is the slowest member's: 1.25 t_stop(v0 = 3).
   EXPECT_NEAR(f.t_end, 1.25 * *f.members[2].prediction.t_stop, 1e-12);
+  EXPECT_TRUE(f.warnings.empty());
+  // A common duration when asked.
+  o.t_end = 2.0;
+  for (const auto& m : make_family(o).members) EXPECT_DOUBLE_EQ(m.trajectory.back().t, 2.0);
+}
+
+TEST(Families, AMemberNearKOneIsSampledOnItsOwnScaleAndWarned) {
+  // docs/cli.md's example once put k = 0.9998 (phi = 32.37 deg, mu = 0.634) in the family:
+  // t_stop ~ 1400 s, so on a common time axis the 10-degree member (t_stop 0.4 s) was drawn
+  // in one sample step.
+  FamilyOptions o;
+  o.base.mu = 0.634;
+  o.base.v0 = 2.62;
+  o.vary = FamilyParameter::phi;
+  o.values = {deg_to_rad(10), deg_to_rad(20), deg_to_rad(32.37), deg_to_rad(40)};
+  const Family f = make_family(o);
+  const auto& ten = f.members[0];
+  ASSERT_TRUE(ten.prediction.t_stop);
+  EXPECT_NEAR(ten.t_end, 1.25 * *ten.prediction.t_stop, 1e-12);
+  EXPECT_LT(ten.t_end, 1.0);
+  // 500 samples over its own motion: the stop is resolved to 1/400 of the member's duration.
+  EXPECT_LT(ten.trajectory[1].t - ten.trajectory[0].t, *ten.prediction.t_stop / 300);
+  EXPECT_GT(f.members[2].t_end, 100.0);  // the near-critical member really is slow
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_NE(f.warnings[0].find("phi = 32.37 gives k = tan(phi)/mu = 0.9998, near 1"), std::string::npos) << f.warnings[0];
 }
 
 TEST(Families, RegimesOverTheAngle) {

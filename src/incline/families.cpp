@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace tribolab::incline {
 
@@ -51,18 +52,26 @@ Family make_family(const FamilyOptions& o) {
     if (!e.empty()) throw InputError(std::string("family value of ") + to_string(o.vary), e);
     f.members.push_back(std::move(m));
   }
-  f.t_end = o.t_end;
-  if (f.t_end == 0) {
-    for (const auto& m : f.members) f.t_end = std::max(f.t_end, default_duration(m.parameters));
-  }
-  if (!std::isfinite(f.t_end))
-    throw InputError("t_end", "the default duration is not finite for these parameters; give t_end");
-  std::vector<double> times(o.samples);
-  for (int i = 0; i < o.samples; ++i) times[i] = f.t_end * i / (o.samples - 1);
   for (auto& m : f.members) {
+    m.t_end = o.t_end > 0 ? o.t_end : default_duration(m.parameters);
+    if (!std::isfinite(m.t_end))
+      throw InputError("t_end", "the default duration is not finite for these parameters; give t_end");
+    f.t_end = std::max(f.t_end, m.t_end);
+    std::vector<double> times(o.samples);
+    for (int i = 0; i < o.samples; ++i) times[i] = m.t_end * i / (o.samples - 1);
     const ClosedForm cf(m.parameters);
     m.prediction = cf.predict();
     m.trajectory = cf.trajectory(times);
+    const double k = m.prediction.k;
+    if (std::isfinite(k) && std::abs(k - 1) < 0.02) {
+      char buf[240];
+      std::snprintf(buf, sizeof buf,
+                    "%s = %.6g gives k = tan(phi)/mu = %.4f, near 1: the disc %s (k < 1 stops, k >= 1 never does); "
+                    "its curve spans %.4g s",
+                    to_string(o.vary), o.vary == FamilyParameter::phi ? m.value * 180 / M_PI : m.value, k,
+                    m.prediction.t_stop ? "takes very long to stop" : "never stops", m.t_end);
+      f.warnings.push_back(buf);
+    }
   }
   return f;
 }

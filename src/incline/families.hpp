@@ -18,7 +18,9 @@ struct FamilyOptions {
   Parameters base;                 ///< the fixed parameters
   FamilyParameter vary = FamilyParameter::v0;
   std::vector<double> values;      ///< values of the varied parameter (SI: m/s, rad, 1)
-  double t_end = 0;                ///< s; 0 = the largest default_duration() of the members
+  /// s; 0 = each member on its own time scale, [0, default_duration()] (a member near k = 1
+  /// takes thousands of times longer to stop than its neighbours)
+  double t_end = 0;
   int samples = 500;               ///< samples per curve, evenly spaced in [0, t_end]
 
   std::string validate() const;
@@ -28,12 +30,16 @@ struct FamilyMember {
   double value = 0;                ///< of the varied parameter (SI)
   Parameters parameters;
   Prediction prediction;
-  std::vector<State> trajectory;   ///< closed form at the common sample times
+  double t_end = 0;                ///< s, the end of this member's samples
+  std::vector<State> trajectory;   ///< closed form at `samples` times evenly over [0, t_end]
 };
 
 struct Family {
-  double t_end = 0;                ///< s
+  double t_end = 0;                ///< s, the longest member's
   std::vector<FamilyMember> members;
+  /// Members near k = 1 (|k - 1| < 0.02), where the slide changes character (k < 1 stops,
+  /// k >= 1 never does) and the stop time grows without bound.
+  std::vector<std::string> warnings;
 };
 
 /// Default simulated duration, s: 1.25 t_stop when the disc stops (t_stop > 0); else
