@@ -225,7 +225,7 @@ void add_simulate(CLI::App* area) {
     const ImpactResult r = simulate_impact(ball, spec, fr, s, io, o->history.empty() && o->report.empty() ? nullptr : &hist);
     if (r.status == ImpactStatus::failed || r.status == ImpactStatus::max_contacts)
       throw InputError(std::string("contact simulation failed: ") + std::string(r.message));
-    write_report_if_requested(o->report, [&] { return bounce_simulate_report(ball, fr, r.whole, hist, r.contacts); });
+    write_report_if_requested(o->report, [&] { return bounce_simulate_report(ball, fr, copt.g, r.whole, hist, r.contacts); });
     if (!o->history.empty()) write_history(o->history, hist);
     print_result(impact_json(ball, r, spec.model), o->json);
   });

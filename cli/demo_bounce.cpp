@@ -168,10 +168,11 @@ void add_one_contact(report::Section& s, std::ostream& log) {
   ContactCurve b{"low damping (D = 6000)", h_low, report::Dash::Dash, "#d62728"};
   ContactPanels panels;
   panels.tangential_force = panels.penetration = panels.energy = false;
-  add_contact_figures(s, "Figures 45–48", ball, {a, b}, panels);
+  const double g = ContactOptions{}.g;  // simulate_contact's default, as used above
+  add_contact_figures(s, "Figures 45–48", ball, g, {a, b}, panels);
   ContactPanels energy;
   energy = {false, false, false, false, false, false, true};
-  add_contact_figures(s, "Seed's law", ball, {a}, energy);
+  add_contact_figures(s, "Seed's law", ball, g, {a}, energy);
   log << "  one contact at 135 deg, 40 rad/s, 4 m/s: e = " << v4(seed.restitution) << " (seed's law), "
       << v4(low.restitution) << " (D = 6000)\n";
 }

@@ -46,7 +46,7 @@ Figure history_figure(const std::string& title, const std::string& y_title) {
 
 }  // namespace
 
-int add_contact_figures(report::Section& s, const std::string& title, const bounce::Ball& ball,
+int add_contact_figures(report::Section& s, const std::string& title, const bounce::Ball& ball, double g,
                         const std::vector<ContactCurve>& curves, const ContactPanels& panels) {
   int added = 0;
   auto one = [&](bool on, const std::string& suffix, const std::string& y_title,
@@ -90,7 +90,7 @@ int add_contact_figures(report::Section& s, const std::string& title, const boun
       trans.y.push_back(ke.translational_x + ke.translational_y);
       rot.y.push_back(ke.rotational);
       wn.y.push_back(ke0 + work_normal + work_f);
-      mech.y.push_back(ke.total() + ball.mass * 9.8 * (h.state.y - y0));
+      mech.y.push_back(ke.total() + ball.mass * g * (h.state.y - y0));
     }
     for (Series* se : {&trans, &rot, &wn, &mech}) {
       se->mode = report::Mode::Lines;
@@ -133,7 +133,7 @@ report::Table ball_table(const bounce::Ball& ball) {
 }
 
 report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::FrictionModel& friction,
-                                      const bounce::ContactResult& r,
+                                      double g, const bounce::ContactResult& r,
                                       const std::vector<bounce::ContactSample>& history,
                                       std::size_t contacts) {
   report::Report rep;
@@ -180,7 +180,7 @@ report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::Fr
   }
   if (r.n_phases > n) phases.caption += " (first " + std::to_string(n) + " of " + std::to_string(r.n_phases) + ")";
   s.add_table(std::move(phases));
-  add_contact_figures(s, "Contact", ball, {{"simulation", history, report::Dash::Solid, ""}});
+  add_contact_figures(s, "Contact", ball, g, {{"simulation", history, report::Dash::Solid, ""}});
   return rep;
 }
 

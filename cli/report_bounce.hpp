@@ -29,7 +29,8 @@ struct ContactPanels {
 /// Adds the contact-history figures of `curves` to `s`, titled "<title>: v_y" etc.; returns
 /// the number of figures added. Energy: kinetic (translational, rotational), elastic
 /// K d^(n+1)/(n+1), and mechanical (kinetic + elastic + m g (y - y_touch)) of the first curve.
-int add_contact_figures(report::Section& s, const std::string& title, const bounce::Ball& ball,
+/// `g` (m/s^2) is the gravity the histories were simulated with (the potential energy's).
+int add_contact_figures(report::Section& s, const std::string& title, const bounce::Ball& ball, double g,
                         const std::vector<ContactCurve>& curves, const ContactPanels& panels = {});
 
 /// The contact equations (rigid body with N(d, d_dot) and friction at the support point).
@@ -41,7 +42,7 @@ report::Table ball_table(const bounce::Ball& ball);
 /// `bounce simulate --report`: in/out table, phases table and the histories. `r` is the
 /// whole impact of `contacts` contacts (bounce::ImpactResult::whole).
 report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::FrictionModel& friction,
-                                      const bounce::ContactResult& r,
+                                      double g, const bounce::ContactResult& r,
                                       const std::vector<bounce::ContactSample>& history,
                                       std::size_t contacts = 1);
 
