@@ -184,6 +184,25 @@ void BM_MapOursEngine(benchmark::State& state) {
 }
 BENCHMARK(BM_MapOursEngine)->ArgsProduct({{0, 1}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Cost against map size (range(0) cells, 2 threads, Coulomb, through the sweep engine):
+// angle 100..170 deg x spin 30..50 rad/s at finer and finer steps, as `bounce sweep` runs it.
+void BM_MapSize(benchmark::State& state) {
+  const std::int64_t cells = state.range(0);
+  sweep::GridSpec g = seed_grid();
+  const auto n_omega = static_cast<std::int64_t>(std::llround(std::sqrt(static_cast<double>(cells) / 4)));
+  g.axes[1].count = n_omega;
+  g.axes[0].count = cells / n_omega;
+  sweep::RunOptions ro;
+  ro.threads = 2;
+  std::vector<double> map;
+  for (auto _ : state) {
+    map = sweep::evaluate_grid(g, our_model(false, kOurTol), ro);
+    benchmark::DoNotOptimize(map.data());
+  }
+  state.SetItemsProcessed(state.iterations() * g.cell_count());
+}
+BENCHMARK(BM_MapSize)->Arg(1000)->Arg(10000)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 /// Keeps the CPU time per iteration of each run, s (the median aggregate when repeated),
 /// keyed "function/args": CPU time, because the machine is shared (real time follows the
 /// load; both the seed's loop and BM_MapOurs run on the calling thread).
