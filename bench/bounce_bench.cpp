@@ -3,6 +3,7 @@
 // 1 microsecond (seed 001, 實驗四 (二)) — as the baseline at equal accuracy.
 #include "bounce/contact.hpp"
 #include "bounce/flight.hpp"
+#include "bounce/seed_method.hpp"
 #include "sweep/runner.hpp"
 
 #include <benchmark/benchmark.h>
@@ -44,31 +45,26 @@ NormalLaw law_for(NormalModel m) {
 }
 
 /// The seed's method: explicit steps of dt with f = -mu N sign(v_t), velocities first then
-/// positions (symplectic Euler), until the penetration returns to zero.
+/// positions (symplectic Euler), until the penetration returns to zero
+/// (src/bounce/seed_method.cpp, the tight loop of issue 15; Hunt–Crossley law only).
 ContactResult seed_euler(const Ball& ball, const NormalLaw& law, double mu, const BodyState& in, double dt,
                          double g = 9.8) {
-  double y = support(ball, in.theta).Y, th = in.theta, vx = in.vx, vy = in.vy, w = in.omega;
-  double t = 0;
-  for (;;) {
-    const Support sp = support(ball, th);
-    const double d = sp.Y - y;
-    if (t > 0 && d <= 0) break;
-    const double d_dot = -(vy + w * sp.X);
-    const double N = law.eval(d, d_dot).N;
-    const double v_t = vx + w * sp.Y;
-    const double f = v_t > 0 ? -mu * N : (v_t < 0 ? mu * N : 0.0);
-    vx += f / ball.mass * dt;
-    vy += (N / ball.mass - g) * dt;
-    w += (sp.X * N + sp.Y * f) / ball.inertia * dt;
-    y += vy * dt;
-    th += w * dt;
-    t += dt;
-  }
+  seed::SeedParams p;
+  p.a = ball.a;
+  p.b = ball.b;
+  p.mass = ball.mass;
+  p.inertia = ball.inertia;
+  p.K = law.K;
+  p.n = law.n;
+  p.chi = law.D / law.K;
+  p.mu = mu;
+  p.g = g;
+  const seed::SeedOut o = seed::seed_contact(p, in.theta, in.vx, in.vy, in.omega, dt);
   ContactResult r;
-  r.out.vx = vx;
-  r.out.vy = vy;
-  r.out.omega = w;
-  r.contact_duration = t;
+  r.out.vx = o.vx;
+  r.out.vy = o.vy;
+  r.out.omega = o.omega;
+  r.contact_duration = o.duration;
   return r;
 }
 

@@ -60,7 +60,7 @@ enum class Mode { free, coulomb_slip, coulomb_stick, regularized, spring_elastic
 struct Eval {
   Support sp;
   double d = 0, d_dot = 0, v_t = 0;
-  NormalLaw::Force nf;
+  double N = 0, elastic = 0;  // normal force and its elastic part K d^n, N
   double f = 0;       // tangential force, N
   double f_req = 0;   // Coulomb: force that keeps v_t = 0, N
   double ax = 0, ay = 0, alpha = 0;
@@ -72,16 +72,33 @@ struct Model {
   const FrictionModel& fr;
   double g;
   double inv_m, inv_I;
+  double a2 = ball.a * ball.a, b2 = ball.b * ball.b, a2_b2 = a2 * b2;
+
+  // geometry.cpp's support() with one division: this runs on every right-hand-side call.
+  Support support_point(double theta) const {
+    const double sn = std::sin(theta), cs = std::cos(theta);
+    Support sp;
+    sp.Y = std::sqrt(a2 * sn * sn + b2 * cs * cs);
+    const double inv_Y = 1 / sp.Y;
+    sp.dY = (a2 - b2) * sn * cs * inv_Y;
+    sp.X = -sp.dY;
+    sp.d2Y = a2_b2 * (inv_Y * inv_Y * inv_Y) - sp.Y;
+    return sp;
+  }
 
   Eval eval(const State& x, Mode mode, double s) const {
     Eval e;
-    e.sp = support(ball, x[iTh]);
+    e.sp = support_point(x[iTh]);
     const double w = x[iW];
     e.d = e.sp.Y - x[iY];
     e.d_dot = -(x[iVy] + w * e.sp.X);
     e.v_t = x[iVx] + w * e.sp.Y;
-    e.nf = law.eval(e.d, e.d_dot);
-    const double N = e.nf.N;
+    // The partial derivatives of N are left out (only force_rate needs them): with eval
+    // inlined (normal_law.hpp) their division is not computed.
+    const NormalLaw::Force nf = law.eval(e.d, e.d_dot);
+    e.N = nf.N;
+    e.elastic = nf.elastic;
+    const double N = e.N;
     const double mu = fr.mu;
     switch (mode) {
       case Mode::free: e.f = 0; break;
@@ -91,8 +108,7 @@ struct Model {
       case Mode::regularized: e.f = -mu * N * std::tanh(e.v_t / fr.slip_scale); break;
       case Mode::spring_elastic: e.f = -(fr.k_t * x[iU] + fr.c_t * e.v_t); break;
     }
-    if (mode == Mode::coulomb_stick || mode == Mode::coulomb_slip)
-      e.f_req = required_force(e.sp, w, N);
+    if (mode == Mode::coulomb_stick) e.f_req = required_force(e.sp, w, N);
     e.ax = e.f * inv_m;
     e.ay = N * inv_m - g;
     e.alpha = (e.sp.X * N + e.sp.Y * e.f) * inv_I;
@@ -108,7 +124,8 @@ struct Model {
   // Rate of change of N along the motion (clamped parts give 0).
   double force_rate(const Eval& e, double w) const {
     const double d_ddot = -(e.ay + e.alpha * e.sp.X - w * w * e.sp.d2Y);
-    return e.nf.dN_dd * e.d_dot + e.nf.dN_ddot * d_ddot;
+    const NormalLaw::Force nf = law.eval(e.d, e.d_dot);
+    return nf.dN_dd * e.d_dot + nf.dN_ddot * d_ddot;
   }
 
   // Acceleration of the slip velocity.
@@ -202,7 +219,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   auto choose_after_stop = [&](const State& st) {
     // Coulomb, v_t = 0: stick if the required force fits in the cone, else slip against it.
     const Eval e = model.eval(st, Mode::coulomb_stick, 0);
-    if (std::abs(e.f_req) <= friction.mu * e.nf.N) {
+    if (std::abs(e.f_req) <= friction.mu * e.N) {
       mode = Mode::coulomb_stick;
     } else {
       mode = Mode::coulomb_slip;
@@ -231,13 +248,22 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     } else {
       mode = Mode::spring_slip;
       s = trial != 0 ? sign_of(trial) : sign_of(e.v_t);
-      x[iU] = (s * friction.mu * e.nf.N - friction.c_t * e.v_t) / friction.k_t;
+      x[iU] = (s * friction.mu * e.N - friction.c_t * e.v_t) / friction.k_t;
     }
   }
 
   PeakTracker peak;
   double t = 0;
+  // First step from the contact's time scale tau = (m / (K v_in^(n-1)))^(1/(n+1)) (the
+  // time in which the law's force stops the ball: ~1/3 of the contact duration) times
+  // tol^(1/5), the 5th-order step of that tolerance: e.g. 3.5e-4 s for the seed's law at
+  // 4 m/s and tol 1e-6, instead of ramping up from initial_step (docs/theory.md#bounce-integrator).
   double h = options.integrator.initial_step;
+  {
+    const double tau = std::pow(ball.mass / (law.K * std::pow(r.v_in_normal, law.n - 1)), 1 / (law.n + 1));
+    const double h_scale = tau * std::pow(options.integrator.abs_tol, 0.2);
+    if (std::isfinite(h_scale) && h_scale > 0) h = h_scale;
+  }
   Mode cur_mode = mode;
   double cur_s = s;
 
@@ -272,7 +298,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     dx[iVy] = e.ay;
     dx[iW] = e.alpha;
     dx[iU] = cur_mode == Mode::spring_elastic ? e.v_t : 0.0;
-    dx[iWn] = (e.nf.N - e.nf.elastic) * e.d_dot;
+    dx[iWn] = (e.N - e.elastic) * e.d_dot;
     dx[iWf] = -e.f * e.v_t;
   };
   // Guards and their rates (NaN = not supplied): the rates of the separation guard d and
@@ -283,7 +309,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     gv[0] = e.d;  // separation
     rate[0] = e.d_dot;
     rate[1] = kNoRate;
-    const double muN = friction.mu * e.nf.N;
+    const double muN = friction.mu * e.N;
     switch (cur_mode) {
       case Mode::coulomb_slip:
         gv[1] = cur_s * e.v_t;
@@ -303,7 +329,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   PeakTracker peak_d;
   auto observer = [&](double tt, const State& st) {
     const Eval& e = eval_at(st);
-    peak.add(tt, e.nf.N);
+    peak.add(tt, e.N);
     peak_d.add(tt, std::max(e.d, 0.0));
     if (history) {
       ContactSample smp;
@@ -311,7 +337,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
       smp.state = {st[iX], st[iY], st[iTh], st[iVx], st[iVy], st[iW]};
       smp.d = e.d;
       smp.d_dot = e.d_dot;
-      smp.N = e.nf.N;
+      smp.N = e.N;
       smp.f = e.f;
       smp.v_t = e.v_t;
       smp.phase = kind_of(cur_mode, cur_s);
@@ -399,7 +425,7 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
       }
       case Mode::spring_slip:
         mode = Mode::spring_elastic;
-        x[iU] = (cur_s * friction.mu * e.nf.N - friction.c_t * e.v_t) / friction.k_t;
+        x[iU] = (cur_s * friction.mu * e.N - friction.c_t * e.v_t) / friction.k_t;
         break;
       default: break;
     }

@@ -50,30 +50,6 @@ std::string NormalLawSpec::validate() const {
   return {};
 }
 
-NormalLaw::Force NormalLaw::eval(double d, double d_dot) const {
-  Force f;
-  if (!(d > 0)) return f;
-  if (linear) {
-    f.elastic = K * d;
-    const double N = f.elastic + D * d_dot;
-    if (N > 0) {
-      f.N = N;
-      f.dN_dd = K;
-      f.dN_ddot = D;
-    }
-    return f;
-  }
-  const double dn = std::pow(d, n);
-  f.elastic = K * dn;
-  const double factor = 1 + (D / K) * d_dot;
-  if (factor > 0) {
-    f.N = f.elastic * factor;
-    f.dN_dd = n * f.N / d;
-    f.dN_ddot = D * dn;
-  }
-  return f;
-}
-
 double NormalLaw::potential(double d) const {
   if (!(d > 0)) return 0;
   return linear ? 0.5 * K * d * d : K * std::pow(d, n + 1) / (n + 1);

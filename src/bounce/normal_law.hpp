@@ -3,6 +3,7 @@
 // docs/theory.md#bounce-normal-laws.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -52,11 +53,36 @@ struct NormalLaw {
     double dN_dd = 0;    ///< partial dN/dd at fixed d_dot (0 where clamped), N/m
     double dN_ddot = 0;  ///< partial dN/d(d_dot) at fixed d (0 where clamped), N s/m
   };
-  /// Force at penetration d >= 0 (m) and rate d_dot (m/s).
+  /// Force at penetration d >= 0 (m) and rate d_dot (m/s). Inline (below): the contact
+  /// solver calls it on every right-hand-side evaluation.
   Force eval(double d, double d_dot) const;
   /// Elastic potential energy K d^(n+1) / (n+1), J.
   double potential(double d) const;
 };
+
+inline NormalLaw::Force NormalLaw::eval(double d, double d_dot) const {
+  Force f;
+  if (!(d > 0)) return f;
+  if (linear) {
+    f.elastic = K * d;
+    const double N = f.elastic + D * d_dot;
+    if (N > 0) {
+      f.N = N;
+      f.dN_dd = K;
+      f.dN_ddot = D;
+    }
+    return f;
+  }
+  const double dn = std::pow(d, n);
+  f.elastic = K * dn;
+  const double factor = 1 + (D / K) * d_dot;
+  if (factor > 0) {
+    f.N = f.elastic * factor;
+    f.dN_dd = n * f.N / d;
+    f.dN_ddot = D * dn;
+  }
+  return f;
+}
 
 /// Concrete law for an impact whose contact point approaches the floor at v_in > 0 (m/s).
 /// `mass` is the mass of the central impact (kg), needed only by Hooke with a restitution.

@@ -1,0 +1,5 @@
+// The seed's method (src/bounce/seed_method.cpp) built a second time with -O3 -march=native
+// (bench/CMakeLists.txt), as seed_contact_native: the baseline as a careful engineer would
+// compile it for this machine.
+#define TRIBOLAB_SEED_CONTACT_FN seed_contact_native
+#include "bounce/seed_method.cpp"
