@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <sstream>
 
 namespace tribolab::io {
@@ -121,6 +122,10 @@ std::string write_trk(const std::vector<track::Track>& tracks, const TrkWriteSpe
     for (const auto& p : t.points) {
       // key frame in force at this frame
       const auto [px, py] = world_to_image(coord_at(spec.coords, p.frame), p.x, p.y);
+      if (!std::isfinite(px) || !std::isfinite(py)) {
+        throw InputError("write_trk", "track '" + t.name + "' frame " + std::to_string(p.frame) +
+                                          ": the position maps to no finite pixel");
+      }
       o << "                <property name=\"[" << p.frame << "]\" type=\"object\">\n"
         << "                <object class=\"org.opensourcephysics.cabrillo.tracker.PointMass$FrameData\">\n"
         << "                    <property name=\"x\" type=\"double\">" << num(px) << "</property>\n"
