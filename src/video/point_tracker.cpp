@@ -1,0 +1,352 @@
+// Point tracking by rotating-template correlation with a motion model
+// (docs/theory.md#point-tracking).
+#include "video/point_tracker.hpp"
+
+#include "numerics/error.hpp"
+#include "video/motion_model.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numbers>
+#include <vector>
+
+namespace tribolab::video {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+// Smallest eigenvalue of the mean structure tensor of `patch` (CV_32F), (grey level/px)^2:
+// the squared rms intensity gradient in the patch's weakest direction. Near zero for a flat
+// patch (no texture) and for a straight edge or stripes (the autocorrelation is flat along
+// them): such a patch cannot fix a position in two dimensions.
+double weakest_gradient_energy(const cv::Mat& patch) {
+  cv::Mat gx, gy;
+  cv::Sobel(patch, gx, CV_32F, 1, 0, 3, 1.0 / 8);  // 1/8: grey levels per px
+  cv::Sobel(patch, gy, CV_32F, 0, 1, 3, 1.0 / 8);
+  // Interior only: the Sobel border is extrapolated.
+  const cv::Rect in(1, 1, patch.cols - 2, patch.rows - 2);
+  const double sxx = gx(in).dot(gx(in)), syy = gy(in).dot(gy(in)), sxy = gx(in).dot(gy(in));
+  const double n = in.area();
+  const double tr = (sxx + syy) / n, det = (sxx * syy - sxy * sxy) / (n * n);
+  return tr / 2 - std::sqrt(std::max(0.0, tr * tr / 4 - det));
+}
+
+// Sub-pixel offset of the maximum of `r` near integer peak p: least-squares quadratic
+// f = a + b x + c y + d x^2 + e x y + g y^2 over the 3x3 neighbourhood, stationary point.
+// Falls back to 0 (per axis) on the border of r or when the surface is not a maximum.
+cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p) {
+  if (p.x < 1 || p.y < 1 || p.x > r.cols - 2 || p.y > r.rows - 2) return {0, 0};
+  double b = 0, c = 0, d = 0, e = 0, g = 0;
+  for (int j = -1; j <= 1; ++j) {
+    for (int i = -1; i <= 1; ++i) {
+      const double f = r.at<float>(p.y + j, p.x + i);
+      b += i * f / 6;
+      c += j * f / 6;
+      e += i * j * f / 4;
+      d += (i * i - 2.0 / 3) * f / 2;  // x^2 - 2/3 is orthogonal to 1 and to y^2 - 2/3
+      g += (j * j - 2.0 / 3) * f / 2;
+    }
+  }
+  // Gradient zero: [2d e; e 2g] [x y]^T = -[b c]^T; a maximum needs a negative-definite Hessian.
+  const double det = 4 * d * g - e * e;
+  if (d >= 0 || g >= 0 || det <= 0) return {0, 0};
+  const double x = (-b * 2 * g + c * e) / det, y = (-c * 2 * d + b * e) / det;
+  if (std::abs(x) > 1 || std::abs(y) > 1) return {0, 0};
+  return {x, y};
+}
+
+// Vertex of the parabola through (-1, fm), (0, f0), (1, fp), clamped to [-1, 1].
+double parabola_vertex(double fm, double f0, double fp) {
+  const double curv = fm - 2 * f0 + fp;
+  if (curv >= 0) return 0;
+  return std::clamp(0.5 * (fm - fp) / curv, -1.0, 1.0);
+}
+
+}  // namespace
+
+std::string PointTrackerOptions::validate() const {
+  if (patch_px < 7 || patch_px % 2 == 0) {
+    return "patch_px must be odd and >= 7, got " + std::to_string(patch_px);
+  }
+  if (search_px < 0) return "search_px must be >= 0, got " + std::to_string(search_px);
+  if (!(min_score > 0 && min_score < 1)) {
+    return "min_score must lie in (0, 1), got " + std::to_string(min_score);
+  }
+  if (!(max_turn_deg >= 0 && max_turn_deg <= 90)) {
+    return "max_turn_deg must lie in [0, 90], got " + std::to_string(max_turn_deg);
+  }
+  if (max_gap_frames < 0) {
+    return "max_gap_frames must be >= 0, got " + std::to_string(max_gap_frames);
+  }
+  return {};
+}
+
+struct PointTracker::Impl {
+  PointTrackerOptions opt;
+  std::string name;
+  cv::Size image_size;
+  cv::Mat big;        // CV_32F reference patch around the start, side sqrt(2) * patch + margin
+  MotionModel model{4, 3};
+  int last_frame = 0;
+  int gap = 0;        // consecutive lost frames
+  bool gave_up = false;
+  std::deque<double> innovation_px;   // |measured - predicted| of the last accepted frames
+  std::deque<double> innovation_rad;  // same for the angle
+  // Buffers reused from frame to frame.
+  cv::Mat window, templ;
+  std::vector<cv::Mat> results;
+  cv::Mat best_map, small_result;
+
+  int half() const { return opt.patch_px / 2; }
+
+  // Template for a pattern turned by `angle` (counter-clockwise on screen) since the start.
+  const cv::Mat& make_template(double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    const double cb = (big.cols - 1) / 2.0, h = half();
+    // dst(x, y) = big(M (x, y, 1)): body offset = R(-angle) * image offset (y down).
+    const cv::Matx23d m(c, -s, cb - c * h + s * h,  //
+                        s, c, cb - s * h - c * h);
+    cv::warpAffine(big, templ, m, cv::Size(opt.patch_px, opt.patch_px),
+                   cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_REPLICATE);
+    return templ;
+  }
+
+  Observation lost_observation(int frame, const MotionState& pred, double score) {
+    Observation o;
+    o.frame = frame;
+    o.x_px = pred.x_px;
+    o.y_px = pred.y_px;
+    o.angle_rad = pred.angle_rad;
+    o.score = std::clamp(score, 0.0, 1.0);
+    o.lost = true;
+    ++gap;
+    if (gap > opt.max_gap_frames) gave_up = true;
+    return o;
+  }
+
+  Observation update(const Frame& frame);
+};
+
+PointTracker::PointTracker(const PointTrackerOptions& options) : impl_(std::make_unique<Impl>()) {
+  if (const std::string e = options.validate(); !e.empty()) throw InputError("point tracker: " + e);
+  impl_->opt = options;
+}
+PointTracker::~PointTracker() = default;
+PointTracker::PointTracker(PointTracker&&) noexcept = default;
+PointTracker& PointTracker::operator=(PointTracker&&) noexcept = default;
+
+Observation PointTracker::start(const Frame& first, double x_px, double y_px,
+                                const std::string& name) {
+  Impl& m = *impl_;
+  const cv::Mat& gray = first.gray;
+  if (gray.empty() || gray.type() != CV_8UC1) {
+    throw InputError(name, "no grey image in frame " + std::to_string(first.index));
+  }
+  require_finite(x_px, name + " start x");
+  require_finite(y_px, name + " start y");
+  const double h = m.half();
+  if (x_px < 0 || y_px < 0 || x_px > gray.cols - 1 || y_px > gray.rows - 1) {
+    throw InputError(name, "start point (" + std::to_string(x_px) + ", " + std::to_string(y_px) +
+                               ") px lies outside the " + std::to_string(gray.cols) + "x" +
+                               std::to_string(gray.rows) + " image");
+  }
+  if (x_px < h || y_px < h || x_px > gray.cols - 1 - h || y_px > gray.rows - 1 - h) {
+    throw InputError(name, "start point (" + std::to_string(x_px) + ", " + std::to_string(y_px) +
+                               ") px is closer than " + std::to_string(m.half()) +
+                               " px to the image border: the pattern around it is cut");
+  }
+  // The reference patch is wide enough that every rotation of the central patch_px square
+  // stays inside it (sqrt(2) * patch_px plus a pixel for the interpolation).
+  const int side = 2 * static_cast<int>(std::ceil(std::sqrt(2.0) * h)) + 3;
+  cv::Mat g32;
+  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), m.big, CV_32F);
+  cv::getRectSubPix(gray, cv::Size(m.opt.patch_px, m.opt.patch_px), cv::Point2f(x_px, y_px), g32,
+                    CV_32F);
+  // Threshold: rms gradient of 2 grey levels per px in the weakest direction; sensor noise of
+  // sigma 2 grey levels on a flat patch gives about 0.9 (Sobel/8 of white noise: 0.43 sigma).
+  const double energy = weakest_gradient_energy(g32);
+  if (energy < 4.0) {
+    throw InputError(name, "the " + std::to_string(m.opt.patch_px) + " px patch around (" +
+                               std::to_string(x_px) + ", " + std::to_string(y_px) +
+                               ") px has too little texture to follow (weakest rms gradient " +
+                               std::to_string(std::sqrt(energy)) +
+                               " grey levels/px, needs 2): start on a mark or corner");
+  }
+  m.name = name;
+  m.image_size = gray.size();
+  m.model.reset();
+  m.model.add(first.index, x_px, y_px, 0);
+  m.last_frame = first.index;
+  m.gap = 0;
+  m.gave_up = false;
+  m.innovation_px.clear();
+  m.innovation_rad.clear();
+  Observation o;
+  o.frame = first.index;
+  o.x_px = x_px;
+  o.y_px = y_px;
+  o.score = 1;
+  return o;
+}
+
+Observation PointTracker::update(const Frame& frame) {
+  if (!impl_ || impl_->big.empty()) throw InputError("point tracker: update() before start()");
+  return impl_->update(frame);
+}
+
+Observation PointTracker::Impl::update(const Frame& frame) {
+  const cv::Mat& gray = frame.gray;
+  if (gray.size() != image_size || gray.type() != CV_8UC1) {
+    throw InputError(name, "frame " + std::to_string(frame.index) + " has no grey image of the " +
+                               "start frame's size");
+  }
+  if (frame.index <= last_frame) {
+    throw InputError(name, "frame " + std::to_string(frame.index) + " does not follow frame " +
+                               std::to_string(last_frame));
+  }
+  last_frame = frame.index;
+  const MotionState pred = model.predict(frame.index);
+  if (gave_up) return lost_observation(frame.index, pred, 0);
+
+  // Search half-width (also the gate a match must fall in): three times the largest of the
+  // last prediction errors plus a margin; wide on the first step (no velocity known yet).
+  // While lost, the extrapolation error grows with the horizon like the squared number of
+  // frames bridged times the one-frame error (a polynomial model's error grows at least
+  // that fast), so the gate widens from the recent prediction quality, not from the speed:
+  // a ballistic object predicted to 0.1 px keeps a tight gate that a look-alike resting a
+  // few radii away cannot enter (docs/theory.md#point-tracking).
+  const int p = opt.patch_px, h = half();
+  const int first_search = std::max(2 * p, 48);
+  double worst = 0;
+  for (double e : innovation_px) worst = std::max(worst, e);
+  double s;
+  if (opt.search_px > 0) {
+    s = opt.search_px;
+  } else if (model.size() < 2) {
+    s = first_search;
+  } else if (model.size() < 3) {
+    s = std::max<double>(h, 4 + 0.5 * std::hypot(pred.vx_px, pred.vy_px));  // no acceleration yet
+  } else {
+    s = std::max<double>(h, 4 + 3 * worst);
+  }
+  if (gap > 0) s = std::min<double>(s + 2 + 3 * worst * (gap + 1) * (gap + 1), 2.0 * first_search + s);
+  const int si = static_cast<int>(std::ceil(s));
+
+  // Angles: around the predicted one, within the recent angle error (all of max_turn_deg at
+  // the start or after a loss), in steps that move the patch's corner by at most ~1.5 px.
+  std::vector<double> angles;
+  if (opt.max_turn_deg > 0) {
+    double range = opt.max_turn_deg * kDeg;
+    if (model.size() >= 3 && gap == 0) {
+      double worst = 0;
+      for (double e : innovation_rad) worst = std::max(worst, e);
+      range = std::min(range, std::max(6 * kDeg, 3 * worst));
+    }
+    const double step = std::min(8 * kDeg, 1.5 / (std::sqrt(2.0) * h));
+    const int k = std::max(1, static_cast<int>(std::ceil(range / step)));
+    for (int i = -k; i <= k; ++i) angles.push_back(pred.angle_rad + range * i / k);
+  } else {
+    angles.push_back(0);
+  }
+
+  // Window in the image around the prediction (clipped); too small: the point left the view.
+  const int cx = static_cast<int>(std::lround(pred.x_px)), cy = static_cast<int>(std::lround(pred.y_px));
+  const cv::Rect want(cx - si - h, cy - si - h, 2 * (si + h) + 1, 2 * (si + h) + 1);
+  const cv::Rect win = want & cv::Rect(0, 0, gray.cols, gray.rows);
+  if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0);
+  gray(win).convertTo(window, CV_32F);
+
+  // Correlation maps for every angle and their upper envelope.
+  results.resize(angles.size());
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    cv::matchTemplate(window, make_template(angles[i]), results[i], cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(results[i], -1);
+    if (i == 0) {
+      results[0].copyTo(best_map);
+    } else {
+      cv::max(best_map, results[i], best_map);
+    }
+  }
+
+  // Candidate peaks above min_score (non-maximum suppression over a patch radius). The one
+  // nearest the prediction is taken only if any other lies at least twice as far: two
+  // similar objects near the prediction leave the point lost rather than guessed.
+  const cv::Point2d pred_in_map(pred.x_px - win.x - h, pred.y_px - win.y - h);
+  struct Peak {
+    cv::Point at;
+    double score, dist;
+  };
+  std::vector<Peak> peaks;
+  double top_score = -1;
+  {
+    cv::Mat scratch = best_map.clone();
+    for (int n = 0; n < 4; ++n) {
+      double v;
+      cv::Point at;
+      cv::minMaxLoc(scratch, nullptr, &v, nullptr, &at);
+      if (n == 0) top_score = v;
+      if (v < opt.min_score) break;
+      peaks.push_back({at, v, std::hypot(at.x - pred_in_map.x, at.y - pred_in_map.y)});
+      cv::circle(scratch, at, h, cv::Scalar(-1), cv::FILLED);
+    }
+  }
+  if (peaks.empty()) return lost_observation(frame.index, pred, top_score);
+  std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.dist < b.dist; });
+  if (peaks.size() > 1 && peaks[1].dist < 2 * peaks[0].dist + 2) {
+    return lost_observation(frame.index, pred, peaks[0].score);
+  }
+  const cv::Point at = peaks[0].at;
+
+  // Best angle sample at the peak, then a parabola through it and half-step neighbours
+  // matched in a 5x5 neighbourhood of the peak; the position from the quadratic peak fit at
+  // the refined angle.
+  std::size_t kb = 0;
+  for (std::size_t i = 1; i < angles.size(); ++i) {
+    if (results[i].at<float>(at) > results[kb].at<float>(at)) kb = i;
+  }
+  const cv::Rect near_peak(at.x - 2, at.y - 2, p + 4, p + 4);
+  const cv::Rect nb = near_peak & cv::Rect(0, 0, window.cols, window.rows);
+  auto score_at = [&](double angle, cv::Point* where) {
+    cv::matchTemplate(window(nb), make_template(angle), small_result, cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(small_result, -1);
+    double v;
+    cv::minMaxLoc(small_result, nullptr, &v, nullptr, where);
+    return v;
+  };
+  double angle = angles[kb];
+  if (angles.size() > 1) {
+    const double hstep = 0.5 * std::abs(angles[1] - angles[0]);
+    cv::Point dummy;
+    const double f0 = results[kb].at<float>(at);
+    const double fm = score_at(angle - hstep, &dummy), fp = score_at(angle + hstep, &dummy);
+    angle += hstep * parabola_vertex(fm, f0, fp);
+  }
+  cv::Point loc;
+  const double score = score_at(angle, &loc);
+  const cv::Point2d sub = subpixel_peak(small_result, loc);
+  Observation o;
+  o.frame = frame.index;
+  o.x_px = win.x + nb.x + loc.x + sub.x + h;
+  o.y_px = win.y + nb.y + loc.y + sub.y + h;
+  o.angle_rad = angle;
+  o.score = std::clamp(score, 0.0, 1.0);
+  if (score < opt.min_score) return lost_observation(frame.index, pred, score);
+
+  if (model.size() >= 2) {  // the first prediction (no velocity yet) says nothing of the model
+    // Across a gap of g frames the error is scaled back to one frame's by (g + 1)^2, the
+    // growth assumed for the gate above.
+    const double k = 1.0 / ((gap + 1) * (gap + 1));
+    innovation_px.push_back(k * std::hypot(o.x_px - pred.x_px, o.y_px - pred.y_px));
+    innovation_rad.push_back(k * std::abs(o.angle_rad - pred.angle_rad));
+  }
+  while (innovation_px.size() > 3) innovation_px.pop_front();
+  while (innovation_rad.size() > 3) innovation_rad.pop_front();
+  gap = 0;
+  model.add(frame.index, o.x_px, o.y_px, o.angle_rad);
+  return o;
+}
+
+}  // namespace tribolab::video
