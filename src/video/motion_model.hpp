@@ -1,9 +1,11 @@
-// Where a tracked point should be in the next frame (docs/theory.md#point-tracking): a
-// polynomial in the frame index fitted by least squares to the last few positions
-// (constant acceleration from three positions on: a thrown object's parabola is predicted
-// exactly) and a constant rate of turn fitted to the last few pattern angles (a mark on a
-// wheel). Only accepted observations enter the model; lost frames are bridged by
-// extrapolation from the last accepted ones.
+// Where a tracked point should be in the next frame (docs/theory.md#point-tracking). The
+// pattern angle follows a constant rate of turn fitted to the last few angles. The position
+// follows the better (least squares) of two models over the last few positions: a parabola in
+// the frame index (a thrown object's flight is predicted exactly), and, once the pattern has
+// turned by 15 degrees or more over them, a point on a turning body whose centre moves
+// uniformly (p = c0 + c1 t + R(theta) r, with the measured angles: a mark on a wheel, which a
+// parabola predicts poorly when it turns 20+ degrees per frame). Only accepted observations
+// enter the model; lost frames are bridged by extrapolation from the last accepted ones.
 #pragma once
 
 #include <deque>
@@ -19,8 +21,9 @@ struct MotionState {
 
 class MotionModel {
  public:
-  /// Positions kept for the position fit (>= 3 fits a parabola) and angles for the rate.
-  explicit MotionModel(int position_history = 4, int angle_history = 3);
+  /// Positions kept for the position fits (>= 3 fits a parabola, >= 4 the turning body) and
+  /// angles for the rate of turn.
+  explicit MotionModel(int position_history = 5, int angle_history = 3);
   void reset();
   /// Records the accepted observation of `frame` (frames must increase).
   void add(int frame, double x_px, double y_px, double angle_rad);

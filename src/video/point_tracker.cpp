@@ -34,9 +34,17 @@ double weakest_gradient_energy(const cv::Mat& patch) {
   return tr / 2 - std::sqrt(std::max(0.0, tr * tr / 4 - det));
 }
 
+// Vertex of the parabola through (-1, fm), (0, f0), (1, fp), clamped to [-1, 1].
+double parabola_vertex(double fm, double f0, double fp) {
+  const double curv = fm - 2 * f0 + fp;
+  if (curv >= 0) return 0;
+  return std::clamp(0.5 * (fm - fp) / curv, -1.0, 1.0);
+}
+
 // Sub-pixel offset of the maximum of `r` near integer peak p: least-squares quadratic
 // f = a + b x + c y + d x^2 + e x y + g y^2 over the 3x3 neighbourhood, stationary point.
-// Falls back to 0 (per axis) on the border of r or when the surface is not a maximum.
+// Falls back to a parabola per axis when that surface has no maximum within a pixel, and
+// to 0 on the border of r.
 cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p) {
   if (p.x < 1 || p.y < 1 || p.x > r.cols - 2 || p.y > r.rows - 2) return {0, 0};
   double b = 0, c = 0, d = 0, e = 0, g = 0;
@@ -52,17 +60,13 @@ cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p) {
   }
   // Gradient zero: [2d e; e 2g] [x y]^T = -[b c]^T; a maximum needs a negative-definite Hessian.
   const double det = 4 * d * g - e * e;
-  if (d >= 0 || g >= 0 || det <= 0) return {0, 0};
-  const double x = (-b * 2 * g + c * e) / det, y = (-c * 2 * d + b * e) / det;
-  if (std::abs(x) > 1 || std::abs(y) > 1) return {0, 0};
-  return {x, y};
-}
-
-// Vertex of the parabola through (-1, fm), (0, f0), (1, fp), clamped to [-1, 1].
-double parabola_vertex(double fm, double f0, double fp) {
-  const double curv = fm - 2 * f0 + fp;
-  if (curv >= 0) return 0;
-  return std::clamp(0.5 * (fm - fp) / curv, -1.0, 1.0);
+  if (d < 0 && g < 0 && det > 0) {
+    const double x = (-b * 2 * g + c * e) / det, y = (-c * 2 * d + b * e) / det;
+    if (std::abs(x) <= 1 && std::abs(y) <= 1) return {x, y};
+  }
+  // Otherwise one parabola per axis through the peak row and column.
+  const auto at = [&](int dx, int dy) { return static_cast<double>(r.at<float>(p.y + dy, p.x + dx)); };
+  return {parabola_vertex(at(-1, 0), at(0, 0), at(1, 0)), parabola_vertex(at(0, -1), at(0, 0), at(0, 1))};
 }
 
 }  // namespace
@@ -89,7 +93,7 @@ struct PointTracker::Impl {
   std::string name;
   cv::Size image_size;
   cv::Mat big;        // CV_32F reference patch around the start, side sqrt(2) * patch + margin
-  MotionModel model{4, 3};
+  MotionModel model{5, 3};
   int last_frame = 0;
   int gap = 0;        // consecutive lost frames
   bool gave_up = false;
@@ -98,9 +102,12 @@ struct PointTracker::Impl {
   // Buffers reused from frame to frame.
   cv::Mat window, templ;
   std::vector<cv::Mat> results;
-  cv::Mat best_map, small_result;
+  cv::Mat best_map, scratch, small_result;
 
+  bool turns = true;   // false: the pattern looks the same turned (a plain ball), no angle search
   int half() const { return opt.patch_px / 2; }
+  // Angle step: turns the patch's corner by at most ~1.5 px (8 degrees for a 21 px patch).
+  double angle_step() const { return std::min(8 * kDeg, 1.5 / (std::sqrt(2.0) * half())); }
 
   // Template for a pattern turned by `angle` (counter-clockwise on screen) since the start.
   const cv::Mat& make_template(double angle) {
@@ -161,8 +168,8 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
   // The reference patch is wide enough that every rotation of the central patch_px square
   // stays inside it (sqrt(2) * patch_px plus a pixel for the interpolation).
   const int side = 2 * static_cast<int>(std::ceil(std::sqrt(2.0) * h)) + 3;
-  cv::Mat g32;
-  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), m.big, CV_32F);
+  cv::Mat g32, big;
+  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), big, CV_32F);
   cv::getRectSubPix(gray, cv::Size(m.opt.patch_px, m.opt.patch_px), cv::Point2f(x_px, y_px), g32,
                     CV_32F);
   // Threshold: rms gradient of 2 grey levels per px in the weakest direction; sensor noise of
@@ -174,6 +181,19 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
                                ") px has too little texture to follow (weakest rms gradient " +
                                std::to_string(std::sqrt(energy)) +
                                " grey levels/px, needs 2): start on a mark or corner");
+  }
+  // A pattern that correlates >= 0.97 with itself turned by one and by three angle steps
+  // (a plain ball or disc) has no measurable orientation: only the position is searched and
+  // its angle stays 0, instead of wandering along a flat correlation.
+  m.big = big;  // only now: a refused start leaves the tracker as it was
+  m.turns = false;
+  if (m.opt.max_turn_deg > 0) {
+    const cv::Mat t0 = m.make_template(0).clone();
+    for (double a : {m.angle_step(), 3 * m.angle_step()}) {
+      cv::Mat c;
+      cv::matchTemplate(t0, m.make_template(a), c, cv::TM_CCOEFF_NORMED);
+      if (!(c.at<float>(0, 0) >= 0.97f)) m.turns = true;
+    }
   }
   m.name = name;
   m.image_size = gray.size();
@@ -238,14 +258,14 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   // Angles: around the predicted one, within the recent angle error (all of max_turn_deg at
   // the start or after a loss), in steps that move the patch's corner by at most ~1.5 px.
   std::vector<double> angles;
-  if (opt.max_turn_deg > 0) {
+  if (opt.max_turn_deg > 0 && turns) {
     double range = opt.max_turn_deg * kDeg;
     if (model.size() >= 3 && gap == 0) {
       double worst = 0;
       for (double e : innovation_rad) worst = std::max(worst, e);
       range = std::min(range, std::max(6 * kDeg, 3 * worst));
     }
-    const double step = std::min(8 * kDeg, 1.5 / (std::sqrt(2.0) * h));
+    const double step = angle_step();
     const int k = std::max(1, static_cast<int>(std::ceil(range / step)));
     for (int i = -k; i <= k; ++i) angles.push_back(pred.angle_rad + range * i / k);
   } else {
@@ -271,9 +291,12 @@ Observation PointTracker::Impl::update(const Frame& frame) {
     }
   }
 
-  // Candidate peaks above min_score (non-maximum suppression over a patch radius). The one
-  // nearest the prediction is taken only if any other lies at least twice as far: two
-  // similar objects near the prediction leave the point lost rather than guessed.
+  // Candidate peaks above min_score (non-maximum suppression over a patch radius). Peaks
+  // within kRival of the best score are rivals: an object that looks the same. Of several
+  // rivals the one nearest the prediction is taken only if every other lies more than twice
+  // as far (+2 px): two look-alikes near the prediction leave the point lost, not guessed.
+  // Weaker peaks (part of the pattern matching part of the template) never compete.
+  constexpr double kRival = 0.1;  // NCC scatter between frames of one object is ~0.02
   const cv::Point2d pred_in_map(pred.x_px - win.x - h, pred.y_px - win.y - h);
   struct Peak {
     cv::Point at;
@@ -281,17 +304,15 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   };
   std::vector<Peak> peaks;
   double top_score = -1;
-  {
-    cv::Mat scratch = best_map.clone();
-    for (int n = 0; n < 4; ++n) {
-      double v;
-      cv::Point at;
-      cv::minMaxLoc(scratch, nullptr, &v, nullptr, &at);
-      if (n == 0) top_score = v;
-      if (v < opt.min_score) break;
-      peaks.push_back({at, v, std::hypot(at.x - pred_in_map.x, at.y - pred_in_map.y)});
-      cv::circle(scratch, at, h, cv::Scalar(-1), cv::FILLED);
-    }
+  best_map.copyTo(scratch);
+  for (int n = 0; n < 4; ++n) {
+    double v;
+    cv::Point at;
+    cv::minMaxLoc(scratch, nullptr, &v, nullptr, &at);
+    if (n == 0) top_score = v;
+    if (v < opt.min_score || v < top_score - kRival) break;
+    peaks.push_back({at, v, std::hypot(at.x - pred_in_map.x, at.y - pred_in_map.y)});
+    cv::circle(scratch, at, h, cv::Scalar(-1), cv::FILLED);
   }
   if (peaks.empty()) return lost_observation(frame.index, pred, top_score);
   std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.dist < b.dist; });
@@ -301,13 +322,13 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   const cv::Point at = peaks[0].at;
 
   // Best angle sample at the peak, then a parabola through it and half-step neighbours
-  // matched in a 5x5 neighbourhood of the peak; the position from the quadratic peak fit at
+  // matched in a 7x7 neighbourhood of the peak; the position from the quadratic peak fit at
   // the refined angle.
   std::size_t kb = 0;
   for (std::size_t i = 1; i < angles.size(); ++i) {
     if (results[i].at<float>(at) > results[kb].at<float>(at)) kb = i;
   }
-  const cv::Rect near_peak(at.x - 2, at.y - 2, p + 4, p + 4);
+  const cv::Rect near_peak(at.x - 3, at.y - 3, p + 6, p + 6);
   const cv::Rect nb = near_peak & cv::Rect(0, 0, window.cols, window.rows);
   auto score_at = [&](double angle, cv::Point* where) {
     cv::matchTemplate(window(nb), make_template(angle), small_result, cv::TM_CCOEFF_NORMED);

@@ -325,5 +325,26 @@ TEST(MotionModel, PredictsAParabolaExactly) {
   EXPECT_NEAR(s.vx_px, 2 + 6, 1e-9);
 }
 
+TEST(MotionModel, PredictsAMarkOnATurningWheelExactly) {
+  // A mark 40 px from the hub of a wheel rolling right at 3 px/frame and turning 25 deg/frame:
+  // the turning-body model reproduces it to rounding; a parabola through the same five
+  // positions misses by several px (third derivative of the circle).
+  const double w = 25 * kDeg;
+  auto at = [&](int i) {
+    const double a = 0.2 + w * i;
+    return cv::Point2d(100 + 3 * i + 40 * std::cos(a), 80 - 40 * std::sin(a));
+  };
+  MotionModel m;
+  for (int i = 0; i < 5; ++i) m.add(i, at(i).x, at(i).y, w * i);
+  const MotionState s = m.predict(7);
+  EXPECT_NEAR(s.x_px, at(7).x, 1e-9);
+  EXPECT_NEAR(s.y_px, at(7).y, 1e-9);
+  EXPECT_NEAR(s.angle_rad, 7 * w, 1e-12);
+  MotionModel no_turn;  // the same positions with the angles unknown (all 0): parabola
+  for (int i = 0; i < 5; ++i) no_turn.add(i, at(i).x, at(i).y, 0);
+  const MotionState p = no_turn.predict(7);
+  EXPECT_GT(std::hypot(p.x_px - at(7).x, p.y_px - at(7).y), 5.0);
+}
+
 }  // namespace
 }  // namespace tribolab::video
