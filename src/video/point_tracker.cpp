@@ -42,15 +42,17 @@ double parabola_vertex(double fm, double f0, double fp) {
 }
 
 // Sub-pixel offset of the maximum of `r` near integer peak p: least-squares quadratic
-// f = a + b x + c y + d x^2 + e x y + g y^2 over the 3x3 neighbourhood, stationary point.
-// Falls back to a parabola per axis when that surface has no maximum within a pixel, and
-// to 0 on the border of r.
-cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p) {
+// f = a + b x + c y + d x^2 + e x y + g y^2 over the 3x3 neighbourhood, stationary point;
+// `value` (if given) receives the fitted maximum. Falls back to a parabola per axis when
+// that surface has no maximum within a pixel, and to 0 on the border of r.
+cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p, double* value = nullptr) {
+  if (value) *value = r.at<float>(p);
   if (p.x < 1 || p.y < 1 || p.x > r.cols - 2 || p.y > r.rows - 2) return {0, 0};
-  double b = 0, c = 0, d = 0, e = 0, g = 0;
+  double a = 0, b = 0, c = 0, d = 0, e = 0, g = 0;
   for (int j = -1; j <= 1; ++j) {
     for (int i = -1; i <= 1; ++i) {
       const double f = r.at<float>(p.y + j, p.x + i);
+      a += f / 9;
       b += i * f / 6;
       c += j * f / 6;
       e += i * j * f / 4;
@@ -62,11 +64,56 @@ cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p) {
   const double det = 4 * d * g - e * e;
   if (d < 0 && g < 0 && det > 0) {
     const double x = (-b * 2 * g + c * e) / det, y = (-c * 2 * d + b * e) / det;
-    if (std::abs(x) <= 1 && std::abs(y) <= 1) return {x, y};
+    if (std::abs(x) <= 1 && std::abs(y) <= 1) {
+      if (value) {
+        *value = a + b * x + c * y + d * (x * x - 2.0 / 3) + e * x * y + g * (y * y - 2.0 / 3);
+      }
+      return {x, y};
+    }
   }
   // Otherwise one parabola per axis through the peak row and column.
   const auto at = [&](int dx, int dy) { return static_cast<double>(r.at<float>(p.y + dy, p.x + dx)); };
   return {parabola_vertex(at(-1, 0), at(0, 0), at(1, 0)), parabola_vertex(at(0, -1), at(0, 0), at(0, 1))};
+}
+
+// Normalised cross-correlation of template t over every placement in img (both CV_32F), as
+// cv::matchTemplate's TM_CCOEFF_NORMED, by direct sums: for the few placements of the
+// refinement this is several times cheaper than OpenCV's transform-based path.
+void ncc_direct(const cv::Mat& img, const cv::Mat& t, cv::Mat& r) {
+  const int tw = t.cols, th = t.rows, n = tw * th;
+  r.create(img.rows - th + 1, img.cols - tw + 1, CV_32F);
+  const double tmean = cv::mean(t)[0];
+  double tnorm2 = 0;
+  thread_local std::vector<float> tz;
+  tz.resize(n);
+  for (int y = 0; y < th; ++y) {
+    for (int x = 0; x < tw; ++x) {
+      const double v = t.at<float>(y, x) - tmean;
+      tz[y * tw + x] = static_cast<float>(v);
+      tnorm2 += v * v;
+    }
+  }
+  for (int v = 0; v < r.rows; ++v) {
+    for (int u = 0; u < r.cols; ++u) {
+      double sum = 0, sum2 = 0, cross = 0;
+      for (int y = 0; y < th; ++y) {
+        const float* row = img.ptr<float>(v + y) + u;
+        const float* tr = tz.data() + y * tw;
+        float s1 = 0, s2 = 0, sc = 0;
+        for (int x = 0; x < tw; ++x) {
+          s1 += row[x];
+          s2 += row[x] * row[x];
+          sc += row[x] * tr[x];
+        }
+        sum += s1;
+        sum2 += s2;
+        cross += sc;
+      }
+      const double var = sum2 - sum * sum / n;
+      const double den = std::sqrt(std::max(0.0, var) * tnorm2);
+      r.at<float>(v, u) = den > 1e-9 ? static_cast<float>(cross / den) : 0.0f;
+    }
+  }
 }
 
 }  // namespace
@@ -102,7 +149,7 @@ struct PointTracker::Impl {
   // Buffers reused from frame to frame.
   cv::Mat window, templ;
   std::vector<cv::Mat> results;
-  cv::Mat best_map, scratch, small_result;
+  cv::Mat best_map, scratch, local, small_result;
 
   bool turns = true;   // false: the pattern looks the same turned (a plain ball), no angle search
   int half() const { return opt.patch_px / 2; }
@@ -255,19 +302,23 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   if (gap > 0) s = std::min<double>(s + 2 + 3 * worst * (gap + 1) * (gap + 1), 2.0 * first_search + s);
   const int si = static_cast<int>(std::ceil(s));
 
-  // Angles: around the predicted one, within the recent angle error (all of max_turn_deg at
-  // the start or after a loss), in steps that move the patch's corner by at most ~1.5 px.
+  // Angles: around the predicted one, within three times the recent angle error (all of
+  // max_turn_deg at the start or after a loss), in steps that move the patch's corner by at
+  // most ~1.5 px. When that range is within half a step, the predicted angle alone is
+  // correlated and the refinement below (which reaches 0.75 step) finds the angle.
+  const bool search_angle = opt.max_turn_deg > 0 && turns;
   std::vector<double> angles;
-  if (opt.max_turn_deg > 0 && turns) {
+  double angle_spacing = angle_step();  // between coarse samples
+  if (search_angle) {
     double range = opt.max_turn_deg * kDeg;
     if (model.size() >= 3 && gap == 0) {
       double worst = 0;
       for (double e : innovation_rad) worst = std::max(worst, e);
-      range = std::min(range, std::max(6 * kDeg, 3 * worst));
+      range = std::min(range, 3 * worst);
     }
-    const double step = angle_step();
-    const int k = std::max(1, static_cast<int>(std::ceil(range / step)));
-    for (int i = -k; i <= k; ++i) angles.push_back(pred.angle_rad + range * i / k);
+    const int k = range <= angle_spacing / 2 ? 0 : static_cast<int>(std::ceil(range / angle_spacing));
+    if (k > 0) angle_spacing = range / k;
+    for (int i = -k; i <= k; ++i) angles.push_back(pred.angle_rad + i * angle_spacing);
   } else {
     angles.push_back(0);
   }
@@ -321,37 +372,47 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   }
   const cv::Point at = peaks[0].at;
 
-  // Best angle sample at the peak, then a parabola through it and half-step neighbours
-  // matched in a 7x7 neighbourhood of the peak; the position from the quadratic peak fit at
-  // the refined angle.
+  // Refinement (docs/theory.md#point-tracking): the image is resampled (bilinear) on a
+  // (patch + 4) px square centred on the current estimate, so the peak sits at the centre
+  // of a 5x5 correlation map and every angle is compared at the same, sub-pixel, position
+  // (comparing integer-pixel peaks couples the angle to the pixel grid). The angle is the
+  // vertex of a parabola through the fitted peak values at the current angle and half a
+  // step either side; the position moves to the quadratic peak at that angle. Twice, the
+  // second time with half the angle step.
   std::size_t kb = 0;
   for (std::size_t i = 1; i < angles.size(); ++i) {
     if (results[i].at<float>(at) > results[kb].at<float>(at)) kb = i;
   }
-  const cv::Rect near_peak(at.x - 3, at.y - 3, p + 6, p + 6);
-  const cv::Rect nb = near_peak & cv::Rect(0, 0, window.cols, window.rows);
-  auto score_at = [&](double angle, cv::Point* where) {
-    cv::matchTemplate(window(nb), make_template(angle), small_result, cv::TM_CCOEFF_NORMED);
-    cv::patchNaNs(small_result, -1);
+  double angle = angles[kb];
+  const cv::Point2d off = subpixel_peak(results[kb], at);
+  cv::Point2d centre(win.x + at.x + off.x + h, win.y + at.y + off.y + h);
+  const cv::Point mid(2, 2);
+  auto peak_value = [&](double a, cv::Point2d* shift) {
+    ncc_direct(local, make_template(a), small_result);
+    cv::Point loc;
+    cv::minMaxLoc(small_result, nullptr, nullptr, nullptr, &loc);
     double v;
-    cv::minMaxLoc(small_result, nullptr, &v, nullptr, where);
+    const cv::Point2d sub = subpixel_peak(small_result, loc, &v);
+    if (shift) *shift = cv::Point2d(loc - mid) + sub;
     return v;
   };
-  double angle = angles[kb];
-  if (angles.size() > 1) {
-    const double hstep = 0.5 * std::abs(angles[1] - angles[0]);
-    cv::Point dummy;
-    const double f0 = results[kb].at<float>(at);
-    const double fm = score_at(angle - hstep, &dummy), fp = score_at(angle + hstep, &dummy);
-    angle += hstep * parabola_vertex(fm, f0, fp);
+  double score = 0;
+  double hstep = search_angle ? 0.5 * angle_spacing : 0;
+  for (int pass = 0; pass < 2; ++pass, hstep /= 2) {
+    cv::getRectSubPix(gray, cv::Size(p + 4, p + 4), cv::Point2f(centre), local, CV_32F);
+    if (hstep > 0) {
+      const double f0 = peak_value(angle, nullptr);
+      const double fm = peak_value(angle - hstep, nullptr), fp = peak_value(angle + hstep, nullptr);
+      angle += hstep * parabola_vertex(fm, f0, fp);
+    }
+    cv::Point2d shift;
+    score = peak_value(angle, &shift);
+    centre += shift;
   }
-  cv::Point loc;
-  const double score = score_at(angle, &loc);
-  const cv::Point2d sub = subpixel_peak(small_result, loc);
   Observation o;
   o.frame = frame.index;
-  o.x_px = win.x + nb.x + loc.x + sub.x + h;
-  o.y_px = win.y + nb.y + loc.y + sub.y + h;
+  o.x_px = centre.x;
+  o.y_px = centre.y;
   o.angle_rad = angle;
   o.score = std::clamp(score, 0.0, 1.0);
   if (score < opt.min_score) return lost_observation(frame.index, pred, score);

@@ -72,6 +72,7 @@ struct Wheel {
 struct Errors {
   std::vector<double> position_px, angle_deg;
   int lost = 0;
+  std::vector<int> lost_frames;
   double median(std::vector<double> v) const {
     if (v.empty()) return 0;
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -103,6 +104,7 @@ Errors track(const Scene& scene, const RenderOptions& o, int frames, Truth truth
     EXPECT_EQ(ob.frame, i);
     if (ob.lost) {
       ++e.lost;
+      e.lost_frames.push_back(i);
       continue;
     }
     const cv::Point2d p = truth(f.t);
@@ -201,24 +203,38 @@ TEST(PointTracker, ReportsAnOcclusionAndNeverGivesAWrongPosition) {
   // about five frames in every turn of 16 frames.
   const Wheel w;
   const RenderOptions o = small_video();
+  const cv::Rect2d hand_box(-20, 90, 160, 60);
   const Scene scene = [&](double t) {
-    std::vector<ShapePose> s{w.pose(t)};
     ShapePose hand;
     hand.kind = ShapePose::Kind::rectangle;
-    hand.cx_px = 60;
-    hand.cy_px = 120;
-    hand.a_px = 80;
-    hand.b_px = 30;
+    hand.cx_px = hand_box.x + hand_box.width / 2;
+    hand.cy_px = hand_box.y + hand_box.height / 2;
+    hand.a_px = hand_box.width / 2;
+    hand.b_px = hand_box.height / 2;
     hand.colour = cv::Scalar(150, 170, 190);
-    s.push_back(hand);
-    return s;
+    return std::vector<ShapePose>{w.pose(t), hand};
   };
-  const Errors e = track(scene, o, 50, [&](double t) { return w.mark(t); },
+  const int frames = 50;
+  const Errors e = track(scene, o, frames, [&](double t) { return w.mark(t); },
                          [&](double t) { return w.angle(t) - w.angle(0); });
   e.print("wheel with occluder");
-  EXPECT_GT(e.lost, 0);
-  EXPECT_LT(e.max(e.position_px), 1.5);
-  EXPECT_GT(e.position_px.size(), 30u);
+  // Frames whose 21 px patch the hand touches (the hand within 15 px, the patch's
+  // half-diagonal, of the mark's centre) may be lost; all others must be tracked.
+  std::vector<int> touched;
+  for (int i = 1; i < frames; ++i) {
+    const cv::Point2d m = w.mark(i / o.fps);
+    const double dx = std::max({hand_box.x - m.x, 0.0, m.x - hand_box.br().x});
+    const double dy = std::max({hand_box.y - m.y, 0.0, m.y - hand_box.br().y});
+    if (std::hypot(dx, dy) < 15) touched.push_back(i);
+  }
+  for (int i : e.lost_frames) {
+    EXPECT_TRUE(std::find(touched.begin(), touched.end(), i) != touched.end()) << "frame " << i << " lost in the clear";
+  }
+  std::printf("[ measured ] %zu frames touched by the hand, %d lost\n", touched.size(), e.lost);
+  EXPECT_GT(e.lost, 6);  // the mark is fully hidden for about 4 frames in each of 3 passes
+  // Tracked frames, hand near or not: as accurate as the mark in the clear (max 0.069 px
+  // there; 0.3 px allows for the hand's edge inside the patch).
+  EXPECT_LT(e.max(e.position_px), 0.3);
 }
 
 TEST(PointTracker, IsNotCapturedByADistractor) {
