@@ -11,6 +11,22 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+/// An ellipse with its trigonometry done once, for distances to many points.
+struct Prepared {
+  double cx, cy, c, s, ia2, ib2, b;
+  explicit Prepared(const Ellipse& e)
+      : cx(e.cx), cy(e.cy), c(std::cos(e.psi)), s(std::sin(e.psi)), ia2(1 / (e.a * e.a)), ib2(1 / (e.b * e.b)), b(e.b) {}
+  /// Sampson distance F / |grad F| of F = u^2/a^2 + v^2/b^2 - 1 in the ellipse frame (u, v).
+  double distance(double x, double y) const {
+    const double dx = x - cx, dy = y - cy;
+    const double u = c * dx + s * dy, v = -s * dx + c * dy;
+    const double f = u * u * ia2 + v * v * ib2 - 1;
+    const double gu = 2 * u * ia2, gv = 2 * v * ib2;
+    const double g = std::sqrt(gu * gu + gv * gv);
+    return g > 0 ? f / g : -b;
+  }
+};
+
 /// Bilinear interpolation of a CV_32F image at (x, y); false outside its pixel centres.
 bool sample(const cv::Mat& img, double x, double y, double& value) {
   if (!(x >= 0 && y >= 0 && x <= img.cols - 1 && y <= img.rows - 1)) return false;
@@ -61,7 +77,8 @@ bool robust_fit(std::vector<cv::Point2d> pts, EdgeFit& fit) {
   for (int round = 0; round < 2; ++round) {
     std::vector<double> absd;
     absd.reserve(pts.size());
-    for (const auto& p : pts) absd.push_back(std::abs(ellipse_distance(e, p.x, p.y)));
+    const Prepared q(e);
+    for (const auto& p : pts) absd.push_back(std::abs(q.distance(p.x, p.y)));
     const double sd = 1.4826 * median(absd);
     const double cut = std::max(3 * sd, 0.25);
     std::vector<cv::Point2d> kept;
@@ -93,21 +110,22 @@ std::vector<cv::Point2d> pose_inliers(const std::vector<cv::Point2d>& pts, Ellip
   const std::size_t n = pts.size();
   std::vector<double> d(n), absd(n);
   const auto residuals = [&] {
-    for (std::size_t i = 0; i < n; ++i) absd[i] = std::abs(d[i] = ellipse_distance(e, pts[i].x, pts[i].y));
+    const Prepared q(e);
+    for (std::size_t i = 0; i < n; ++i) absd[i] = std::abs(d[i] = q.distance(pts[i].x, pts[i].y));
   };
   // Gauss-Newton steps with Tukey weights of width c; false when the system is singular.
   const auto step = [&](double c) {
     cv::Matx33d H = cv::Matx33d::zeros();
     cv::Vec3d g(0, 0, 0);
     constexpr double h = 1e-5;
+    Ellipse ex = e, ey = e, ep = e;
+    ex.cx += h, ey.cy += h, ep.psi += h;
+    const Prepared qx(ex), qy(ey), qp(ep);
     for (std::size_t i = 0; i < n; ++i) {
       if (absd[i] >= c) continue;
       const double w = (1 - (d[i] / c) * (d[i] / c)) * (1 - (d[i] / c) * (d[i] / c));
-      Ellipse ex = e, ey = e, ep = e;
-      ex.cx += h, ey.cy += h, ep.psi += h;
-      const cv::Vec3d J((ellipse_distance(ex, pts[i].x, pts[i].y) - d[i]) / h,
-                        (ellipse_distance(ey, pts[i].x, pts[i].y) - d[i]) / h,
-                        (ellipse_distance(ep, pts[i].x, pts[i].y) - d[i]) / h);
+      const cv::Vec3d J((qx.distance(pts[i].x, pts[i].y) - d[i]) / h, (qy.distance(pts[i].x, pts[i].y) - d[i]) / h,
+                        (qp.distance(pts[i].x, pts[i].y) - d[i]) / h);
       H += w * J * J.t();
       g += w * d[i] * J;
     }
@@ -171,16 +189,7 @@ Ellipse ellipse_from_moments(const cv::Mat& mask, cv::Point2d offset) {
   return e;
 }
 
-double ellipse_distance(const Ellipse& e, double x, double y) {
-  const double c = std::cos(e.psi), s = std::sin(e.psi);
-  const double dx = x - e.cx, dy = y - e.cy;
-  const double u = c * dx + s * dy, v = -s * dx + c * dy;  // ellipse frame
-  const double a2 = e.a * e.a, b2 = e.b * e.b;
-  const double f = u * u / a2 + v * v / b2 - 1;
-  const double gu = 2 * u / a2, gv = 2 * v / b2;
-  const double g = std::sqrt(gu * gu + gv * gv);
-  return g > 0 ? f / g : -e.b;
-}
+double ellipse_distance(const Ellipse& e, double x, double y) { return Prepared(e).distance(x, y); }
 
 EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellipse& init,
                           const EdgeFitOptions& options) {

@@ -20,6 +20,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr std::size_t kMotionPoints = 8;  ///< centres in the parabola fit
 constexpr std::size_t kSpinPoints = 6;    ///< orientations in the spin fit
 constexpr double kRoundRatio = 0.05;      ///< (a - b) / a below this: no orientation
+constexpr double kConfidentScore = 0.9;   ///< a fit from the prediction this good needs no search
 
 /// Distance of every pixel of `roi` to `colour` (per channel, grey levels): low inside the
 /// object, |background - object| outside, linear in the mixing fraction across an edge.
@@ -27,16 +28,17 @@ cv::Mat colour_distance(const Frame& frame, const cv::Rect& roi, const cv::Vec3d
   const cv::Mat& img = frame.bgr.empty() ? frame.gray : frame.bgr;
   cv::Mat out(roi.height, roi.width, CV_32F);
   const int ch = img.channels();
+  const float c0 = static_cast<float>(colour[0]), c1 = static_cast<float>(colour[1]), c2 = static_cast<float>(colour[2]);
   for (int r = 0; r < roi.height; ++r) {
     const unsigned char* p = img.ptr<unsigned char>(roi.y + r) + static_cast<std::ptrdiff_t>(roi.x) * ch;
     float* o = out.ptr<float>(r);
-    for (int c = 0; c < roi.width; ++c, p += ch) {
-      double ss = 0;
-      for (int k = 0; k < ch; ++k) {
-        const double d = p[k] - colour[k];
-        ss += d * d;
+    if (ch == 3) {
+      for (int c = 0; c < roi.width; ++c) {
+        const float d0 = p[3 * c] - c0, d1 = p[3 * c + 1] - c1, d2 = p[3 * c + 2] - c2;
+        o[c] = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
       }
-      o[c] = static_cast<float>(std::sqrt(ss));
+    } else {
+      for (int c = 0; c < roi.width; ++c) o[c] = std::abs(p[c * ch] - c0);
     }
   }
   return out;
@@ -315,13 +317,31 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   // within a frame (error up to 2 |v| dt); lost frames widen the search.
   const double gate = 4 + 0.5 * s.b_ref + 2.2 * std::max(speed, 0.5 * s.speed_hint) + 3.0 * s.lost_run;
   const EdgeFitOptions eo = s.edge_options(speed, omega);
-  const double pad = s.a_ref + gate + eo.reach_px + 3;
   const cv::Rect image_rect(0, 0, img.cols, img.rows);
-  const cv::Rect roi = cv::Rect(static_cast<int>(std::floor(pred.x - pad)), static_cast<int>(std::floor(pred.y - pad)),
-                                static_cast<int>(2 * pad + 2), static_cast<int>(2 * pad + 2)) & image_rect;
+  const auto window = [&](double pad) {
+    return cv::Rect(static_cast<int>(std::floor(pred.x - pad)), static_cast<int>(std::floor(pred.y - pad)),
+                    static_cast<int>(2 * pad + 2), static_cast<int>(2 * pad + 2)) & image_rect;
+  };
   double score = 0, rms = 0;
   Ellipse found;
-  if (roi.width >= 3 && roi.height >= 3) {
+  const auto try_fit = [&](const cv::Mat& dist, cv::Point origin, const Ellipse& init) {
+    const EdgeFit fit = fit_ellipse_edges(dist, origin, init, eo);
+    if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) return;
+    // Score: fraction of normals giving a kept edge point, times agreement of the axes
+    // with the running ones (a merged or partly hidden object changes shape).
+    const double shape = std::max(std::abs(fit.ellipse.a / s.a_ref - 1), std::abs(fit.ellipse.b / s.b_ref - 1));
+    const double sc = static_cast<double>(fit.inliers) / fit.profiles * std::clamp(1 - 3 * shape, 0.0, 1.0);
+    if (sc > score) score = sc, found = fit.ellipse, rms = fit.rms_px;
+  };
+  // 1. From the prediction (right in flight, also with part of the object hidden), in a window
+  //    just holding the predicted outline and its profiles.
+  if (const cv::Rect roi = window(s.a_ref + eo.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
+    try_fit(colour_distance(frame, roi, s.colour), roi.tl(), pred_e);
+  }
+  // 2. Unless that fit is clearly good: segment the whole gate and start from the region of
+  //    the object's colour nearest the prediction (right after a bounce); the better score wins.
+  if (const cv::Rect roi = window(s.a_ref + gate + eo.reach_px + 3);
+      score < kConfidentScore && roi.width >= 3 && roi.height >= 3) {
     const cv::Mat dist = colour_distance(frame, roi, s.colour);
     cv::Mat mask = dist < 0.5 * s.contrast, labels, stats, cents;
     const int n = cv::connectedComponentsWithStats(mask, labels, stats, cents, 8, CV_32S);
@@ -334,21 +354,9 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
       const double d = std::hypot(cents.at<double>(k, 0) + roi.x - pred.x, cents.at<double>(k, 1) + roi.y - pred.y);
       if (d < best_d) best_d = d, best = k;
     }
-    // Two starts for the edge fit: the prediction (right in flight, also with part of the
-    // object hidden) and the segmented region (right after a bounce); the better score wins.
-    std::vector<Ellipse> inits{pred_e};
     if (best > 0) {
       const Ellipse seg = ellipse_from_moments(labels == best, cv::Point2d(roi.x, roi.y));
-      if (seg.a > 1 && seg.b > 1) inits.push_back(seg);
-    }
-    for (const Ellipse& init : inits) {
-      const EdgeFit fit = fit_ellipse_edges(dist, roi.tl(), init, eo);
-      if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) continue;
-      // Score: fraction of normals giving a kept edge point, times agreement of the axes
-      // with the running ones (a merged or partly hidden object changes shape).
-      const double shape = std::max(std::abs(fit.ellipse.a / s.a_ref - 1), std::abs(fit.ellipse.b / s.b_ref - 1));
-      const double sc = static_cast<double>(fit.inliers) / fit.profiles * std::clamp(1 - 3 * shape, 0.0, 1.0);
-      if (sc > score) score = sc, found = fit.ellipse, rms = fit.rms_px;
+      if (seg.a > 1 && seg.b > 1) try_fit(dist, roi.tl(), seg);
     }
   }
   if (score < s.options.min_score) {
