@@ -58,6 +58,18 @@ cv::Mat make_background(const RenderOptions& o) {
     cv::GaussianBlur(up, up, cv::Size(0, 0), 2.0);
     bg = bg.mul(up);
   }
+  if (o.floor_y_px >= 0) {
+    // Rows below the edge y = floor_y_px take the floor colour; the row holding the edge (pixel
+    // i spans [i - 1/2, i + 1/2]) mixes the two by the fraction of it below the edge.
+    const cv::Vec3f fc(static_cast<float>(o.floor_colour[0]), static_cast<float>(o.floor_colour[1]),
+                       static_cast<float>(o.floor_colour[2]));
+    for (int i = 0; i < o.height; ++i) {
+      const double below = std::clamp(i + 0.5 - o.floor_y_px, 0.0, 1.0);
+      if (below <= 0) continue;
+      auto* row = bg.ptr<cv::Vec3f>(i);
+      for (int j = 0; j < o.width; ++j) row[j] = row[j] * static_cast<float>(1 - below) + fc * static_cast<float>(below);
+    }
+  }
   cv::min(bg, 255.0, bg);
   cv::max(bg, 0.0, bg);
   return bg;
@@ -65,11 +77,12 @@ cv::Mat make_background(const RenderOptions& o) {
 
 // The background depends only on the options, so it is made once per thread and options.
 const cv::Mat& background(const RenderOptions& o) {
-  using Key = std::tuple<int, int, int, double, double, double, std::uint64_t>;
+  using Key = std::tuple<int, int, int, double, double, double, std::uint64_t, double, double, double, double>;
   thread_local std::map<Key, cv::Mat> cache;
   const Key key{o.width, o.height, static_cast<int>(o.background), o.background_colour[0],
                 o.background_colour[1], o.background_colour[2],
-                o.background == RenderOptions::Background::texture ? o.seed : 0};
+                o.background == RenderOptions::Background::texture ? o.seed : 0, o.floor_y_px,
+                o.floor_colour[0], o.floor_colour[1], o.floor_colour[2]};
   auto it = cache.find(key);
   if (it == cache.end()) {
     if (cache.size() > 8) cache.clear();
@@ -149,24 +162,28 @@ struct Placed {
 }  // namespace
 
 std::string RenderOptions::validate() const {
-  if (width < 8 || width > 16384) return "width must be in [8, 16384] px, got " + std::to_string(width);
-  if (height < 8 || height > 16384) return "height must be in [8, 16384] px, got " + std::to_string(height);
-  if (!std::isfinite(fps) || fps <= 0 || fps > 1e6) return "fps must be in (0, 1e6], got " + std::to_string(fps);
+  if (width < 8 || width > 16384) return "width: must lie in [8, 16384] px, got " + std::to_string(width);
+  if (height < 8 || height > 16384) return "height: must lie in [8, 16384] px, got " + std::to_string(height);
+  if (!std::isfinite(fps) || fps <= 0 || fps > 1e6) return "fps: must lie in (0, 1e6], got " + std::to_string(fps);
   if (!std::isfinite(shutter_fraction) || shutter_fraction < 0 || shutter_fraction > 1) {
-    return "shutter fraction must be in [0, 1], got " + std::to_string(shutter_fraction);
+    return "shutter: must lie in [0, 1] (a fraction of the frame period), got " + std::to_string(shutter_fraction);
   }
   if (blur_samples < 1 || blur_samples > 256) {
-    return "blur samples must be in [1, 256], got " + std::to_string(blur_samples);
+    return "blur-samples: must lie in [1, 256], got " + std::to_string(blur_samples);
   }
-  if (supersample < 1 || supersample > 16) return "supersample must be in [1, 16], got " + std::to_string(supersample);
+  if (supersample < 1 || supersample > 16) return "supersample: must lie in [1, 16], got " + std::to_string(supersample);
   if (!std::isfinite(noise_sigma) || noise_sigma < 0 || noise_sigma > 100) {
-    return "noise sigma must be in [0, 100] grey levels, got " + std::to_string(noise_sigma);
+    return "noise: must lie in [0, 100] grey levels, got " + std::to_string(noise_sigma);
   }
   for (int k = 0; k < 3; ++k) {
     if (!std::isfinite(background_colour[k]) || background_colour[k] < 0 || background_colour[k] > 255) {
-      return "background colour components must be in [0, 255]";
+      return "background-colour: components must lie in [0, 255]";
+    }
+    if (!std::isfinite(floor_colour[k]) || floor_colour[k] < 0 || floor_colour[k] > 255) {
+      return "floor-colour: components must lie in [0, 255]";
     }
   }
+  if (!std::isfinite(floor_y_px)) return "floor-y: must be finite";
   return {};
 }
 

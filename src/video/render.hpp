@@ -42,6 +42,8 @@ struct RenderOptions {
   int supersample = 4;           ///< anti-aliasing factor per axis (>= 1)
   enum class Background { plain, gradient, texture } background = Background::gradient;
   cv::Scalar background_colour{200, 200, 200};  ///< BGR
+  double floor_y_px = -1;        ///< a floor band below this image y (anti-aliased edge), px; < 0: none
+  cv::Scalar floor_colour{60, 60, 60};  ///< BGR of the floor band
   double noise_sigma = 2;        ///< Gaussian sensor noise, grey levels (0 = none)
   std::uint64_t seed = 1;        ///< random seed of the texture and the noise
   std::string validate() const;

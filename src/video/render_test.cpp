@@ -170,7 +170,7 @@ TEST(Render, InvalidOptionsAreNamed) {
   RenderOptions o;
   EXPECT_EQ(o.validate(), "");
   o.blur_samples = 0;
-  EXPECT_NE(o.validate().find("blur samples"), std::string::npos);
+  EXPECT_NE(o.validate().find("blur-samples"), std::string::npos);
   o = RenderOptions{};
   o.shutter_fraction = 1.5;
   EXPECT_NE(o.validate().find("shutter"), std::string::npos);
