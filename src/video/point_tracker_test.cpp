@@ -114,6 +114,25 @@ Errors track(const Scene& scene, const RenderOptions& o, int frames, Truth truth
   return e;
 }
 
+TEST(PointTracker, FollowsAMarkOnAWheelTurning20To25DegreesPerFrame) {
+  for (double rate : {20.0, 25.0}) {
+    Wheel w;
+    w.deg_per_frame = rate;
+    const RenderOptions o = small_video();
+    const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
+    const Errors e = track(scene, o, 32, [&](double t) { return w.mark(t); },
+                           [&](double t) { return w.angle(t) - w.angle(0); });
+    e.print(rate == 20 ? "wheel 20 deg/frame" : "wheel 25 deg/frame");
+    EXPECT_EQ(e.lost, 0);
+    // Measured 0.04 / 0.06 px and 0.08 / 0.16 deg at 22.5 deg/frame; about 3x margin for
+    // the rate and noise seed.
+    EXPECT_LT(e.median(e.position_px), 0.15);
+    EXPECT_LT(e.max(e.position_px), 0.3);
+    EXPECT_LT(e.median(e.angle_deg), 0.3);
+    EXPECT_LT(e.max(e.angle_deg), 0.6);
+  }
+}
+
 TEST(PointTracker, FollowsAMarkOnAWheelTurning22DegreesPerFrame) {
   const Wheel w;
   const RenderOptions o = small_video();
@@ -122,9 +141,12 @@ TEST(PointTracker, FollowsAMarkOnAWheelTurning22DegreesPerFrame) {
                          [&](double t) { return w.angle(t) - w.angle(0); });
   e.print("wheel 22.5 deg/frame");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.3);
-  EXPECT_LT(e.max(e.position_px), 1.0);
-  EXPECT_LT(e.median(e.angle_deg), 1.0);
+  // Tolerances: about 2.5x the measured values (median 0.043, max 0.059 px; angle 0.080,
+  // max 0.162 deg), room for another OpenCV build, never for a wrong match (>= 1 px).
+  EXPECT_LT(e.median(e.position_px), 0.1);
+  EXPECT_LT(e.max(e.position_px), 0.15);
+  EXPECT_LT(e.median(e.angle_deg), 0.2);
+  EXPECT_LT(e.max(e.angle_deg), 0.4);
 }
 
 TEST(PointTracker, TemplateMatchingWithoutRotationLosesTheWheelMark) {
@@ -135,10 +157,10 @@ TEST(PointTracker, TemplateMatchingWithoutRotationLosesTheWheelMark) {
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
   PointTrackerOptions plain;
   plain.max_turn_deg = 0;
-  const Errors e = track(scene, o, 40, [&](double t) { return w.mark(t); },
+  const Errors e = track(scene, o, 16, [&](double t) { return w.mark(t); },
                          [&](double) { return 0.0; }, plain);
   e.print("wheel without rotation search");
-  EXPECT_GT(e.lost, 20);
+  EXPECT_GT(e.lost, 12);  // measured 14 of 15: lost as soon as the mark has turned
 }
 
 // A ball of radius 6 px thrown across the frame: 42 px per frame, parabola.
@@ -166,8 +188,9 @@ TEST(PointTracker, FollowsAFastBallOnAParabola) {
   const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("ball 42 px/frame");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.3);
-  EXPECT_LT(e.max(e.position_px), 1.0);
+  // Measured median 0.006, max 0.007 px: a sharp disc on a plain background.
+  EXPECT_LT(e.median(e.position_px), 0.03);
+  EXPECT_LT(e.max(e.position_px), 0.05);
 }
 
 TEST(PointTracker, FollowsABlurredNoisyBall) {
@@ -179,8 +202,9 @@ TEST(PointTracker, FollowsABlurredNoisyBall) {
   const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("blurred ball 42 px/frame");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.5);
-  EXPECT_LT(e.max(e.position_px), 1.5);
+  // Measured median 0.072, max 0.109 px (a 21 px streak in noise 4).
+  EXPECT_LT(e.median(e.position_px), 0.15);
+  EXPECT_LT(e.max(e.position_px), 0.25);
 }
 
 TEST(PointTracker, KeepsABallSetInMotionFromRestSharpAndBlurredApart) {
@@ -230,9 +254,12 @@ TEST(PointTracker, FollowsABlurredNoisyWheelMark) {
                          [&](double t) { return w.angle(t) - w.angle(0); });
   e.print("blurred wheel 22.5 deg/frame");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.5);
-  EXPECT_LT(e.max(e.position_px), 1.5);
-  EXPECT_LT(e.median(e.angle_deg), 1.5);
+  // Measured median 0.021, max 0.052 px; angle median 0.048, max 0.182 deg (before the
+  // refinement on a resampled window the angle was biased by -0.86 deg here).
+  EXPECT_LT(e.median(e.position_px), 0.06);
+  EXPECT_LT(e.max(e.position_px), 0.12);
+  EXPECT_LT(e.median(e.angle_deg), 0.12);
+  EXPECT_LT(e.max(e.angle_deg), 0.4);
 }
 
 TEST(PointTracker, ReportsAnOcclusionAndNeverGivesAWrongPosition) {
@@ -269,8 +296,8 @@ TEST(PointTracker, ReportsAnOcclusionAndNeverGivesAWrongPosition) {
   }
   std::printf("[ measured ] %zu frames touched by the hand, %d lost\n", touched.size(), e.lost);
   EXPECT_GT(e.lost, 6);  // the mark is fully hidden for about 4 frames in each of 3 passes
-  // Tracked frames, hand near or not: as accurate as the mark in the clear (max 0.069 px
-  // there; 0.3 px allows for the hand's edge inside the patch).
+  // Tracked frames, hand near or not, stay accurate: measured max 0.122 px (0.059 px in the
+  // clear; the hand's edge inside the patch costs a little); 0.3 px, never a wrong match.
   EXPECT_LT(e.max(e.position_px), 0.3);
 }
 
@@ -296,7 +323,7 @@ TEST(PointTracker, IsNotCapturedByADistractor) {
   const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("ball with distractor");
   EXPECT_GT(e.lost, 0);
-  EXPECT_LT(e.max(e.position_px), 1.5);
+  EXPECT_LT(e.max(e.position_px), 0.1);  // measured 0.030 px; the distractor is 28 px away
 }
 
 TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
@@ -336,8 +363,10 @@ TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
   std::filesystem::remove(path);
   e.print("blurred wheel through MJPG");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.5);
-  EXPECT_LT(e.max(e.position_px), 1.5);
+  // Measured median 0.017, max 0.046 px (MJPG at quality 95 adds little to blur and noise).
+  EXPECT_LT(e.median(e.position_px), 0.05);
+  EXPECT_LT(e.max(e.position_px), 0.12);
+  EXPECT_LT(e.median(e.angle_deg), 0.12);  // measured 0.049 deg
 }
 
 TEST(PointTracker, RejectsAFeaturelessStart) {
@@ -354,6 +383,46 @@ TEST(PointTracker, RejectsAFeaturelessStart) {
     EXPECT_NE(std::string(err.what()).find("texture"), std::string::npos) << err.what();
   }
   EXPECT_NO_THROW(tracker.start(f0, w.mark(0).x, w.mark(0).y, "mark"));
+}
+
+TEST(PointTracker, RejectsAStartOnAStraightEdge) {
+  // The wheel's rim, far from the mark: strong gradient across it, none along it, so the
+  // correlation is flat along the edge (aperture problem) and the start is refused.
+  const Wheel w;
+  const RenderOptions o = small_video();
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
+  PointTracker tracker;
+  const Frame f0 = film(scene, 0, o);
+  EXPECT_THROW(tracker.start(f0, w.cx, w.cy + w.radius, "rim"), InputError);
+}
+
+TEST(PointTracker, ReportsABallLeavingTheViewAsLost) {
+  // The thrown ball leaves the 320 px frame after frame 8: the following frames are lost
+  // (the prediction runs on outside the image), never placed on something else, and the
+  // tracker gives up after max_gap_frames.
+  const Throw b;
+  const RenderOptions o = small_video();
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{b.pose(t)}; };
+  PointTrackerOptions options;
+  options.max_gap_frames = 2;
+  const Errors e = track(scene, o, 14, [&](double t) { return b.at(t); }, [](double) { return 0.0; }, options);
+  e.print("ball leaving the view");
+  ASSERT_EQ(e.lost_frames.size(), 5u);
+  EXPECT_EQ(e.lost_frames.front(), 9);  // x = 20 + 36 * 9 = 344 px: outside
+  EXPECT_LT(e.max(e.position_px), 0.1);  // measured 0.007 px while in view
+}
+
+TEST(PointTracker, ValidatesItsOptions) {
+  PointTrackerOptions o;
+  EXPECT_EQ(o.validate(), "");
+  o.patch_px = 20;
+  EXPECT_NE(o.validate().find("patch_px"), std::string::npos);
+  o = {};
+  o.min_score = 1.5;
+  EXPECT_NE(o.validate().find("min_score"), std::string::npos);
+  o = {};
+  o.max_turn_deg = -1;
+  EXPECT_THROW(PointTracker{o}, InputError);
 }
 
 TEST(PointTracker, RejectsAStartOutsideTheImage) {
