@@ -17,6 +17,9 @@ namespace tribolab::video {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
+// Largest drop of the score below the median of the last five accepted ones (a junk match
+// of a 21 px patch on a real video scored 0.69 where the ball scored 0.99).
+constexpr double kMaxScoreDrop = 0.3;
 
 // Smallest eigenvalue of the mean structure tensor of `patch` (CV_32F), (grey level/px)^2:
 // the squared rms intensity gradient in the patch's weakest direction. Near zero for a flat
@@ -147,6 +150,7 @@ struct PointTracker::Impl {
   bool gave_up = false;
   std::deque<double> innovation_px;   // |measured - predicted| of the last accepted frames
   std::deque<double> innovation_rad;  // same for the angle
+  std::deque<double> recent_scores;   // scores of the last accepted frames
   // Buffers reused from frame to frame.
   cv::Mat window, templ;
   std::vector<cv::Mat> results;
@@ -297,6 +301,7 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
   m.gave_up = false;
   m.innovation_px.clear();
   m.innovation_rad.clear();
+  m.recent_scores.clear();
   Observation o;
   o.frame = first.index;
   o.x_px = x_px;
@@ -335,14 +340,15 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   set_blur(shutter * dv);
 
   // Search half-width (also the gate a match must fall in): three times the largest of the
-  // last prediction errors plus a margin; wide on the first step (no velocity known yet).
+  // last prediction errors plus a margin; wide on the first step (no velocity known yet: a
+  // quarter of the image's smaller side, since a toss filmed at 15 fps moves 70 px a frame).
   // While lost, the extrapolation error grows with the horizon like the squared number of
   // frames bridged times the one-frame error (a polynomial model's error grows at least
   // that fast), so the gate widens from the recent prediction quality, not from the speed:
   // a ballistic object predicted to 0.1 px keeps a tight gate that a look-alike resting a
   // few radii away cannot enter (docs/theory.md#point-tracking).
   const int p = opt.patch_px, h = half();
-  const int first_search = std::max(2 * p, 48);
+  const int first_search = std::max({2 * p, 48, std::min(image_size.width, image_size.height) / 4});
   double worst = 0;
   for (double e : innovation_px) worst = std::max(worst, e);
   double s;
@@ -485,6 +491,15 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   o.angle_rad = angle;
   o.score = std::clamp(score, 0.0, 1.0);
   if (score < opt.min_score) return lost_observation(frame.index, pred, score);
+  // A sudden drop of the score below what this object scored lately means the view changed
+  // (a hand partly over it, another object in the gate): lost rather than a biased position.
+  if (recent_scores.size() >= 3) {
+    std::vector<double> sorted(recent_scores.begin(), recent_scores.end());
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    if (score < sorted[sorted.size() / 2] - kMaxScoreDrop) return lost_observation(frame.index, pred, score);
+  }
+  recent_scores.push_back(score);
+  if (recent_scores.size() > 5) recent_scores.pop_front();
 
   if (model.size() >= 2) {  // the first prediction (no velocity yet) says nothing of the model
     // Across a gap of g frames the error is scaled back to one frame's by (g + 1)^2, the
