@@ -20,6 +20,9 @@ constexpr double kDeg = std::numbers::pi / 180;
 // Largest drop of the score below the median of the last five accepted ones (a junk match
 // of a 21 px patch on a real video scored 0.69 where the ball scored 0.99).
 constexpr double kMaxScoreDrop = 0.3;
+// Least score of the first match after the start (measured 0.97-0.99 on rendered scenes,
+// 0.994 on Tracker's BallToss).
+constexpr double kFirstMatchScore = 0.9;
 
 // Smallest eigenvalue of the mean structure tensor of `patch` (CV_32F), (grey level/px)^2:
 // the squared rms intensity gradient in the patch's weakest direction. Near zero for a flat
@@ -491,6 +494,10 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   o.angle_rad = angle;
   o.score = std::clamp(score, 0.0, 1.0);
   if (score < opt.min_score) return lost_observation(frame.index, pred, score);
+  // The first match has nothing to be compared with and the widest window: it must look
+  // like the start (a small ball on a textured background scored 0.84 on the background it
+  // left, which then held the track).
+  if (model.size() == 1 && score < kFirstMatchScore) return lost_observation(frame.index, pred, score);
   // A sudden drop of the score below what this object scored lately means the view changed
   // (a hand partly over it, another object in the gate): lost rather than a biased position.
   if (recent_scores.size() >= 3) {

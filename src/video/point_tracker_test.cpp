@@ -303,6 +303,20 @@ TEST(PointTracker, ReportsAnOcclusionAndNeverGivesAWrongPosition) {
   EXPECT_LT(e.max(e.position_px), 0.3);
 }
 
+TEST(PointTracker, DoesNotHoldOnToTheTexturedBackgroundABallLeaves) {
+  // A 6 px ball in a 21 px patch on a textured background: two thirds of the template are
+  // background, which stays where the ball was. Before the first match had to score 0.9, the
+  // background left behind (score 0.84) was accepted and held the track, 36-254 px from the
+  // ball. Lost frames are acceptable here; a wrong position is not.
+  const Throw b;
+  RenderOptions o = small_video();
+  o.background = RenderOptions::Background::texture;
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{b.pose(t)}; };
+  const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
+  e.print("ball on a textured background");
+  EXPECT_LT(e.max(e.position_px), 0.3);  // any frame reported found must be on the ball
+}
+
 TEST(PointTracker, IsNotCapturedByADistractor) {
   // Two identical balls: ours flies on a parabola and hides behind a hand; the other rests
   // near where ours disappears. The track must report the hidden frames, not jump.
