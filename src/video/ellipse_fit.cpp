@@ -157,6 +157,40 @@ std::vector<cv::Point2d> pose_inliers(const std::vector<cv::Point2d>& pts, Ellip
   return kept;
 }
 
+/// Edge position along a profile (prof[i] at r = -inner + i ds), or NaN. The crossing of the
+/// mid-level between the far plateaus `lo` (inside) and `hi` (outside) nearest r = 0 places a
+/// window of half-width w = 1.5 px + ramp/2 (the blur's half-length) around the edge; inside
+/// it, the first moment of the object's occupancy (hi' - D)/(hi' - lo'), with lo', hi' the means
+/// of the 1.5 px just beyond each end of the window, is the mean edge position over the
+/// exposure. Local levels keep a textured or graded background from biasing the edge.
+double edge_position(const std::vector<double>& prof, int m, double lo, double hi, double inner, double ds,
+                     double ramp_px) {
+  const double mid = 0.5 * (lo + hi);
+  const auto at = [&](int i) { return prof[static_cast<std::size_t>(i)]; };
+  int cross = -1;  // the edge lies between samples cross and cross + 1
+  double best = 1e300;
+  for (int i = 0; i + 1 < m; ++i) {
+    if ((at(i) < mid) != (at(i + 1) < mid)) {
+      const double r = -inner + (i + 0.5) * ds;
+      if (std::abs(r) < best) best = std::abs(r), cross = i;
+    }
+  }
+  if (cross < 0) return std::nan("");
+  const int w = static_cast<int>(std::ceil((1.5 + 0.5 * ramp_px) / ds));
+  const int k = static_cast<int>(std::ceil(1.5 / ds));  // samples per local level
+  const int first = std::max(k, cross - w + 1), last = std::min(m - 1 - k, cross + w);  // window
+  if (last - first < 2) return std::nan("");
+  double lo_l = 0, hi_l = 0;
+  for (int j = 1; j <= k; ++j) lo_l += at(first - j), hi_l += at(last + j);
+  lo_l /= k, hi_l /= k;
+  if (hi_l - lo_l < 0.5 * (hi - lo)) return std::nan("");  // no clear step at this place
+  double occupancy = 0;
+  for (int i = first; i <= last; ++i) occupancy += (hi_l - at(i)) / (hi_l - lo_l);
+  const double r_edge = -inner + (first - 0.5) * ds + occupancy * ds;
+  if (r_edge < -inner + first * ds || r_edge > -inner + last * ds) return std::nan("");
+  return r_edge;
+}
+
 }  // namespace
 
 Ellipse ellipse_from_box(const cv::RotatedRect& box) {
@@ -231,13 +265,11 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
       }
       lo /= plateau, hi /= plateau;
       if (hi - lo < options.min_contrast || lo > options.max_inside) continue;
-      // First moment of the edge: the object's occupancy (hi - D)/(hi - lo) summed along the
-      // profile is the distance from the profile's start to the edge, i.e. the mean edge
-      // position over the exposure for a blurred edge (docs/theory.md#ellipse-tracking).
-      double occupancy = 0;
-      for (int i = 0; i < m; ++i) occupancy += (hi - prof[static_cast<std::size_t>(i)]) / (hi - lo);
-      const double r_edge = -inner - 0.5 * ds + occupancy * ds;
-      if (r_edge < -inner + ds || r_edge > -inner + (m - 2) * ds) continue;
+      // Blur along this normal: travel of this boundary point along n in one frame.
+      const double rx = c * u - s * v, ry = s * u + c * v;  // from the centre, image axes
+      const double vn = (options.vx_px - options.dpsi_rad * ry) * nx + (options.vy_px + options.dpsi_rad * rx) * ny;
+      const double r_edge = edge_position(prof, m, lo, hi, inner, ds, std::abs(vn) + options.blur_px);
+      if (!std::isfinite(r_edge)) continue;
       pts.emplace_back(px + r_edge * nx + offset.x, py + r_edge * ny + offset.y);
     }
     fit.profiles = n;
