@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -103,47 +104,58 @@ bool robust_fit(std::vector<cv::Point2d> pts, EdgeFit& fit) {
   return true;
 }
 
-/// Robust pose fit with the shape held: Gauss-Newton on the Sampson distances with Tukey
-/// biweights (c = 4.685 robust sds, the sd at least 0.1 px), starting from `e`. Returns the
-/// points within 3 robust sds (at least 0.3 px) of the fitted outline.
-std::vector<cv::Point2d> pose_inliers(const std::vector<cv::Point2d>& pts, Ellipse& e) {
+/// Robust geometric fit from `e`: Gauss-Newton on the Sampson distances with Tukey biweights,
+/// the semi-axes tied to (a0, b0) by a prior of sd `shape_sd_px` (one point's residual of 1 px
+/// weighs as much as an axis off by one sd). First the pose alone (axes held) with the weights'
+/// width from the residuals' robust sd, 4.685 sd (the start may be a few px off), then pose and
+/// axes with the width narrowed to 1.2 px so that points on an occluder or a touching object
+/// drop out completely. Returns the points within 3 robust sds (at least 0.3 px) of the result.
+std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, Ellipse& e, double a0, double b0,
+                                           double shape_sd_px) {
   const std::size_t n = pts.size();
   std::vector<double> d(n), absd(n);
   const auto residuals = [&] {
     const Prepared q(e);
     for (std::size_t i = 0; i < n; ++i) absd[i] = std::abs(d[i] = q.distance(pts[i].x, pts[i].y));
   };
-  // Gauss-Newton steps with Tukey weights of width c; false when the system is singular.
-  const auto step = [&](double c) {
-    cv::Matx33d H = cv::Matx33d::zeros();
-    cv::Vec3d g(0, 0, 0);
+  using Vec5 = cv::Vec<double, 5>;
+  // One Gauss-Newton step with Tukey weights of width c; false when converged or singular.
+  const auto step = [&](double c, double sd) {
+    cv::Matx<double, 5, 5> H = cv::Matx<double, 5, 5>::zeros();
+    Vec5 g = Vec5::all(0);
     constexpr double h = 1e-5;
-    Ellipse ex = e, ey = e, ep = e;
-    ex.cx += h, ey.cy += h, ep.psi += h;
-    const Prepared qx(ex), qy(ey), qp(ep);
+    std::array<Ellipse, 5> shifted;
+    shifted.fill(e);
+    shifted[0].cx += h, shifted[1].cy += h, shifted[2].psi += h, shifted[3].a += h, shifted[4].b += h;
+    const std::array<Prepared, 5> q{Prepared(shifted[0]), Prepared(shifted[1]), Prepared(shifted[2]),
+                                    Prepared(shifted[3]), Prepared(shifted[4])};
     for (std::size_t i = 0; i < n; ++i) {
       if (absd[i] >= c) continue;
-      const double w = (1 - (d[i] / c) * (d[i] / c)) * (1 - (d[i] / c) * (d[i] / c));
-      const cv::Vec3d J((qx.distance(pts[i].x, pts[i].y) - d[i]) / h, (qy.distance(pts[i].x, pts[i].y) - d[i]) / h,
-                        (qp.distance(pts[i].x, pts[i].y) - d[i]) / h);
+      const double u = d[i] / c, w = (1 - u * u) * (1 - u * u);
+      Vec5 J;
+      for (int k = 0; k < 5; ++k) J[k] = (q[static_cast<std::size_t>(k)].distance(pts[i].x, pts[i].y) - d[i]) / h;
       H += w * J * J.t();
       g += w * d[i] * J;
     }
-    cv::Vec3d dx;
+    H(3, 3) += 1 / (sd * sd), H(4, 4) += 1 / (sd * sd);  // prior on the axes
+    g[3] += (e.a - a0) / (sd * sd), g[4] += (e.b - b0) / (sd * sd);
+    Vec5 dx;
     if (!cv::solve(H, -g, dx, cv::DECOMP_CHOLESKY)) return false;
-    e.cx += dx[0], e.cy += dx[1], e.psi += dx[2];
-    return std::abs(dx[0]) + std::abs(dx[1]) + e.a * std::abs(dx[2]) > 1e-4;
+    e.cx += dx[0], e.cy += dx[1], e.psi += dx[2], e.a += dx[3], e.b += dx[4];
+    if (!(e.b > 0.5 && e.a > 0.5)) return false;
+    return std::abs(dx[0]) + std::abs(dx[1]) + e.a * std::abs(dx[2]) + std::abs(dx[3]) + std::abs(dx[4]) > 1e-3;  // px
   };
-  // Width from the residuals' robust sd (the start may be a few px off), then narrowed to
-  // 1.2 px so that points of an occluder or a touching object drop out completely.
+  e.a = a0, e.b = b0;
   for (int it = 0; it < 12; ++it) {
     residuals();
-    if (!step(4.685 * std::max(1.4826 * median(absd), 0.1))) break;
+    if (!step(4.685 * std::max(1.4826 * median(absd), 0.1), 1e-4)) break;
   }
   for (int it = 0; it < 8; ++it) {
     residuals();
-    if (!step(std::min(1.2, 4.685 * std::max(1.4826 * median(absd), 0.1)))) break;
+    if (!step(std::min(1.2, 4.685 * std::max(1.4826 * median(absd), 0.1)), shape_sd_px)) break;
   }
+  if (e.a < e.b) std::swap(e.a, e.b), e.psi += kPi / 2;
+  e.psi = std::remainder(e.psi, kPi);
   residuals();
   std::vector<double> near;
   for (double a : absd) {
@@ -274,24 +286,22 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
     }
     fit.profiles = n;
     if (options.known_a > 0 && options.known_b > 0 && pts.size() >= 6) {
-      Ellipse pose = e;
-      pose.a = options.known_a, pose.b = options.known_b;
-      std::vector<cv::Point2d> kept = pose_inliers(pts, pose);
+      // Known shape: robust geometric fit, the axes free within a prior of 5 % (a blurred or
+      // turning object changes its outline; a hidden part must not bend it).
+      Ellipse g = e;
+      std::vector<cv::Point2d> kept =
+          geometric_inliers(pts, g, options.known_a, options.known_b, std::max(0.05 * options.known_a, 0.3));
       if (static_cast<int>(kept.size()) < std::max(8, n / 4)) return fit;
-      if (kept.size() < 0.9 * static_cast<double>(pts.size())) {
-        // Part of the outline is hidden or touches something: a free fit on the rest would
-        // bend; the pose with the known shape is the answer.
-        double ss = 0;
-        for (const auto& p : kept) ss += ellipse_distance(pose, p.x, p.y) * ellipse_distance(pose, p.x, p.y);
-        fit.ellipse = pose;
-        fit.inliers = static_cast<int>(kept.size());
-        fit.rms_px = std::sqrt(ss / static_cast<double>(kept.size()));
-        fit.points = std::move(kept);
-        e = pose;
-        fit.ok = true;
-        continue;
-      }
-      pts = std::move(kept);
+      double ss = 0;
+      const Prepared q(g);
+      for (const auto& p : kept) ss += q.distance(p.x, p.y) * q.distance(p.x, p.y);
+      fit.ellipse = g;
+      fit.inliers = static_cast<int>(kept.size());
+      fit.rms_px = std::sqrt(ss / static_cast<double>(kept.size()));
+      fit.points = std::move(kept);
+      e = g;
+      fit.ok = true;
+      continue;
     }
     if (static_cast<int>(pts.size()) < std::max(8, n / 4)) {
       fit.ok = false;
