@@ -240,9 +240,12 @@ TEST(EllipseTracker, FastParabolicFlight) {
   const TrackRun run = track(scene, 13, o);  // frame 13 would be partly out of view
   EXPECT_EQ(run.lost, 0);
   const double centre = median(run.centre_err_px);
-  std::printf("flight 22 px/frame: median centre error %.4f px, max %.4f px\n", centre,
-              *std::max_element(run.centre_err_px.begin(), run.centre_err_px.end()));
-  EXPECT_LE(centre, 0.2);
+  const double worst = *std::max_element(run.centre_err_px.begin(), run.centre_err_px.end());
+  std::printf("flight 22 px/frame: median centre error %.4f px, max %.4f px\n", centre, worst);
+  // Measured 0.051 px median, 0.107 px worst: the blurred outline is not quite an ellipse and
+  // changes with the direction of flight; a fit holding the previous shape was 0.67 px off.
+  EXPECT_LE(centre, 0.15);
+  EXPECT_LE(worst, 0.3);
 }
 
 TEST(EllipseTracker, BounceNearADarkFloor) {
