@@ -220,9 +220,14 @@ TEST(EllipseTracker, LabelsStayOnTheSameTipsOverFiveTurns) {
   const TrackRun run = track(scene, 60, o);
   EXPECT_EQ(run.lost, 0);
   ASSERT_EQ(run.angle_err_rad.size(), 60u);
+  std::vector<double> abs_angle;
+  for (double a : run.angle_err_rad) abs_angle.push_back(std::abs(a));
+  std::printf("spin 0.5 rad/frame: median centre error %.4f px, orientation %.4f deg, worst %.4f deg\n",
+              median(run.centre_err_px), median(abs_angle) * 180 / kPi,
+              *std::max_element(abs_angle.begin(), abs_angle.end()) * 180 / kPi);
   for (std::size_t i = 0; i < run.angle_err_rad.size(); ++i) {
-    // A wrong label is an error of pi; blur of 15 degrees at the tips still leaves the
-    // orientation within a degree (measured 0.1), so 0.05 rad separates the two cases.
+    // A wrong label is an error of pi; with 15 degrees of blur per frame the orientation is
+    // still within 0.15 degree (measured worst; median 0.022), so 0.05 rad separates the two.
     EXPECT_LT(std::abs(run.angle_err_rad[i]), 0.05) << "frame " << i;
   }
   // A's screen angle unwraps with the spin: 29.5 rad after 59 frames.
@@ -273,7 +278,10 @@ TEST(EllipseTracker, BounceNearADarkFloor) {
   std::printf("bounce by the floor: median centre error %.4f px, max %.4f px\n", centre, worst);
   EXPECT_LE(centre, 0.1);  // measured 0.01 px, as in open air
   EXPECT_LE(worst, 0.3);   // the floor's edge must not pull the fit (measured below 0.05 px)
-  for (double a : run.angle_err_rad) EXPECT_LT(std::abs(a), 0.02);
+  double worst_angle = 0;
+  for (double a : run.angle_err_rad) worst_angle = std::max(worst_angle, std::abs(a));
+  std::printf("bounce by the floor: worst orientation error %.4f deg\n", worst_angle * 180 / kPi);
+  EXPECT_LT(worst_angle, 0.01);  // measured 0.24 degree = 0.004 rad
 }
 
 TEST(EllipseTracker, BriefOcclusionIsReportedThenBridged) {
