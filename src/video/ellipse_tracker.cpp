@@ -307,8 +307,10 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   TRIBOLAB_ASSERT(!s.centres.empty(), std::string("EllipseTracker::update before start"));
   const cv::Mat& img = frame.bgr.empty() ? frame.gray : frame.bgr;
   const int index = frame.index;
-  const cv::Point2d pred = s.predict_centre(index);
-  const double omega = s.spin_per_frame();  // rad per frame
+  cv::Point2d pred = s.predict_centre(index);
+  if (!std::isfinite(pred.x) || !std::isfinite(pred.y)) pred = {s.centres.back().x, s.centres.back().y};
+  double omega = s.spin_per_frame();  // rad per frame
+  if (!std::isfinite(omega)) omega = 0;
   const double phi_pred = s.phi_last + omega * (index - s.index_last);
   Ellipse pred_e{pred.x, pred.y, s.a_ref, s.b_ref, -phi_pred};
   if (s.gave_up || img.empty()) {
@@ -325,8 +327,10 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   const EdgeFitOptions eo = s.edge_options(velocity, omega, moving ? 0 : s.speed_hint);
   const cv::Rect image_rect(0, 0, img.cols, img.rows);
   const auto window = [&](double pad) {
-    return cv::Rect(static_cast<int>(std::floor(pred.x - pad)), static_cast<int>(std::floor(pred.y - pad)),
-                    static_cast<int>(2 * pad + 2), static_cast<int>(2 * pad + 2)) & image_rect;
+    // Clamped before the conversion to int: a prediction far outside the image stays defined.
+    const auto clamp_px = [](double v) { return static_cast<int>(std::clamp(v, -1e6, 1e6)); };
+    const int size = clamp_px(2 * pad + 2);
+    return cv::Rect(clamp_px(std::floor(pred.x - pad)), clamp_px(std::floor(pred.y - pad)), size, size) & image_rect;
   };
   double score = 0, rms = 0;
   Ellipse found;

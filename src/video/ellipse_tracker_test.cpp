@@ -349,6 +349,24 @@ TEST(EllipseTracker, RoundBallHasNoOrientation) {
   EXPECT_LE(median(run.centre_err_px), 0.1);
 }
 
+TEST(EllipseTracker, EmptyRepeatedAndBlankFramesAreLostNotFatal) {
+  const RenderOptions o = small_video();
+  const Scene scene = [](double t) { return std::vector<ShapePose>{ball(100 + 2400 * t, 120, 20, 14, 0)}; };
+  const Scene nothing = [](double) { return std::vector<ShapePose>{}; };
+  EllipseTracker tracker;
+  tracker.start(frame_at(scene, 0, o), 100, 120, "ball");
+  EXPECT_FALSE(tracker.update(frame_at(scene, 1, o)).centre.lost);
+  EXPECT_FALSE(tracker.update(frame_at(scene, 1, o)).centre.lost);  // the same frame again
+  Frame empty;
+  empty.index = 2;
+  EXPECT_TRUE(tracker.update(empty).centre.lost);
+  for (int i = 3; i < 20; ++i) {  // the ball gone: lost, then given up, the prediction far away
+    const EllipseObservation e = tracker.update(frame_at(nothing, i, o));
+    EXPECT_TRUE(e.centre.lost);
+    EXPECT_TRUE(std::isfinite(e.centre.x_px) && std::isfinite(e.ax_px));
+  }
+}
+
 TEST(EllipseTracker, BadStartsNameTheTarget) {
   const RenderOptions o = small_video();
   const Scene scene = [](double) {
