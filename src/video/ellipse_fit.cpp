@@ -280,7 +280,7 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
       // Blur along this normal: travel of this boundary point along n in one frame.
       const double rx = c * u - s * v, ry = s * u + c * v;  // from the centre, image axes
       const double vn = (options.vx_px - options.dpsi_rad * ry) * nx + (options.vy_px + options.dpsi_rad * rx) * ny;
-      const double r_edge = edge_position(prof, m, lo, hi, inner, ds, std::abs(vn) + options.blur_px);
+      const double r_edge = edge_position(prof, m, lo, hi, inner, ds, std::min(std::abs(vn) + options.blur_px, options.max_blur_px));
       if (!std::isfinite(r_edge)) continue;
       pts.emplace_back(px + r_edge * nx + offset.x, py + r_edge * ny + offset.y);
     }
