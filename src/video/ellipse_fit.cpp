@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -103,47 +104,58 @@ bool robust_fit(std::vector<cv::Point2d> pts, EdgeFit& fit) {
   return true;
 }
 
-/// Robust pose fit with the shape held: Gauss-Newton on the Sampson distances with Tukey
-/// biweights (c = 4.685 robust sds, the sd at least 0.1 px), starting from `e`. Returns the
-/// points within 3 robust sds (at least 0.3 px) of the fitted outline.
-std::vector<cv::Point2d> pose_inliers(const std::vector<cv::Point2d>& pts, Ellipse& e) {
+/// Robust geometric fit from `e`: Gauss-Newton on the Sampson distances with Tukey biweights,
+/// the semi-axes tied to (a0, b0) by a prior of sd `shape_sd_px` (one point's residual of 1 px
+/// weighs as much as an axis off by one sd). First the pose alone (axes held) with the weights'
+/// width from the residuals' robust sd, 4.685 sd (the start may be a few px off), then pose and
+/// axes with the width narrowed to 1.2 px so that points on an occluder or a touching object
+/// drop out completely. Returns the points within 3 robust sds (at least 0.3 px) of the result.
+std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, Ellipse& e, double a0, double b0,
+                                           double shape_sd_px) {
   const std::size_t n = pts.size();
   std::vector<double> d(n), absd(n);
   const auto residuals = [&] {
     const Prepared q(e);
     for (std::size_t i = 0; i < n; ++i) absd[i] = std::abs(d[i] = q.distance(pts[i].x, pts[i].y));
   };
-  // Gauss-Newton steps with Tukey weights of width c; false when the system is singular.
-  const auto step = [&](double c) {
-    cv::Matx33d H = cv::Matx33d::zeros();
-    cv::Vec3d g(0, 0, 0);
+  using Vec5 = cv::Vec<double, 5>;
+  // One Gauss-Newton step with Tukey weights of width c; false when converged or singular.
+  const auto step = [&](double c, double sd) {
+    cv::Matx<double, 5, 5> H = cv::Matx<double, 5, 5>::zeros();
+    Vec5 g = Vec5::all(0);
     constexpr double h = 1e-5;
-    Ellipse ex = e, ey = e, ep = e;
-    ex.cx += h, ey.cy += h, ep.psi += h;
-    const Prepared qx(ex), qy(ey), qp(ep);
+    std::array<Ellipse, 5> shifted;
+    shifted.fill(e);
+    shifted[0].cx += h, shifted[1].cy += h, shifted[2].psi += h, shifted[3].a += h, shifted[4].b += h;
+    const std::array<Prepared, 5> q{Prepared(shifted[0]), Prepared(shifted[1]), Prepared(shifted[2]),
+                                    Prepared(shifted[3]), Prepared(shifted[4])};
     for (std::size_t i = 0; i < n; ++i) {
       if (absd[i] >= c) continue;
-      const double w = (1 - (d[i] / c) * (d[i] / c)) * (1 - (d[i] / c) * (d[i] / c));
-      const cv::Vec3d J((qx.distance(pts[i].x, pts[i].y) - d[i]) / h, (qy.distance(pts[i].x, pts[i].y) - d[i]) / h,
-                        (qp.distance(pts[i].x, pts[i].y) - d[i]) / h);
+      const double u = d[i] / c, w = (1 - u * u) * (1 - u * u);
+      Vec5 J;
+      for (int k = 0; k < 5; ++k) J[k] = (q[static_cast<std::size_t>(k)].distance(pts[i].x, pts[i].y) - d[i]) / h;
       H += w * J * J.t();
       g += w * d[i] * J;
     }
-    cv::Vec3d dx;
+    H(3, 3) += 1 / (sd * sd), H(4, 4) += 1 / (sd * sd);  // prior on the axes
+    g[3] += (e.a - a0) / (sd * sd), g[4] += (e.b - b0) / (sd * sd);
+    Vec5 dx;
     if (!cv::solve(H, -g, dx, cv::DECOMP_CHOLESKY)) return false;
-    e.cx += dx[0], e.cy += dx[1], e.psi += dx[2];
-    return std::abs(dx[0]) + std::abs(dx[1]) + e.a * std::abs(dx[2]) > 1e-4;
+    e.cx += dx[0], e.cy += dx[1], e.psi += dx[2], e.a += dx[3], e.b += dx[4];
+    if (!(e.b > 0.5 && e.a > 0.5)) return false;
+    return std::abs(dx[0]) + std::abs(dx[1]) + e.a * std::abs(dx[2]) + std::abs(dx[3]) + std::abs(dx[4]) > 1e-3;  // px
   };
-  // Width from the residuals' robust sd (the start may be a few px off), then narrowed to
-  // 1.2 px so that points of an occluder or a touching object drop out completely.
+  e.a = a0, e.b = b0;
   for (int it = 0; it < 12; ++it) {
     residuals();
-    if (!step(4.685 * std::max(1.4826 * median(absd), 0.1))) break;
+    if (!step(4.685 * std::max(1.4826 * median(absd), 0.1), 1e-4)) break;
   }
   for (int it = 0; it < 8; ++it) {
     residuals();
-    if (!step(std::min(1.2, 4.685 * std::max(1.4826 * median(absd), 0.1)))) break;
+    if (!step(std::min(1.2, 4.685 * std::max(1.4826 * median(absd), 0.1)), shape_sd_px)) break;
   }
+  if (e.a < e.b) std::swap(e.a, e.b), e.psi += kPi / 2;
+  e.psi = std::remainder(e.psi, kPi);
   residuals();
   std::vector<double> near;
   for (double a : absd) {
@@ -155,6 +167,40 @@ std::vector<cv::Point2d> pose_inliers(const std::vector<cv::Point2d>& pts, Ellip
     if (absd[i] <= cut) kept.push_back(pts[i]);
   }
   return kept;
+}
+
+/// Edge position along a profile (prof[i] at r = -inner + i ds), or NaN. The crossing of the
+/// mid-level between the far plateaus `lo` (inside) and `hi` (outside) nearest r = 0 places a
+/// window of half-width w = 1.5 px + ramp/2 (the blur's half-length) around the edge; inside
+/// it, the first moment of the object's occupancy (hi' - D)/(hi' - lo'), with lo', hi' the means
+/// of the 1.5 px just beyond each end of the window, is the mean edge position over the
+/// exposure. Local levels keep a textured or graded background from biasing the edge.
+double edge_position(const std::vector<double>& prof, int m, double lo, double hi, double inner, double ds,
+                     double ramp_px) {
+  const double mid = 0.5 * (lo + hi);
+  const auto at = [&](int i) { return prof[static_cast<std::size_t>(i)]; };
+  int cross = -1;  // the edge lies between samples cross and cross + 1
+  double best = 1e300;
+  for (int i = 0; i + 1 < m; ++i) {
+    if ((at(i) < mid) != (at(i + 1) < mid)) {
+      const double r = -inner + (i + 0.5) * ds;
+      if (std::abs(r) < best) best = std::abs(r), cross = i;
+    }
+  }
+  if (cross < 0) return std::nan("");
+  const int w = static_cast<int>(std::ceil((1.5 + 0.5 * ramp_px) / ds));
+  const int k = static_cast<int>(std::ceil(1.5 / ds));  // samples per local level
+  const int first = std::max(k, cross - w + 1), last = std::min(m - 1 - k, cross + w);  // window
+  if (last - first < 2) return std::nan("");
+  double lo_l = 0, hi_l = 0;
+  for (int j = 1; j <= k; ++j) lo_l += at(first - j), hi_l += at(last + j);
+  lo_l /= k, hi_l /= k;
+  if (hi_l - lo_l < 0.5 * (hi - lo)) return std::nan("");  // no clear step at this place
+  double occupancy = 0;
+  for (int i = first; i <= last; ++i) occupancy += (hi_l - at(i)) / (hi_l - lo_l);
+  const double r_edge = -inner + (first - 0.5) * ds + occupancy * ds;
+  if (r_edge < -inner + first * ds || r_edge > -inner + last * ds) return std::nan("");
+  return r_edge;
 }
 
 }  // namespace
@@ -231,35 +277,31 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
       }
       lo /= plateau, hi /= plateau;
       if (hi - lo < options.min_contrast || lo > options.max_inside) continue;
-      // First moment of the edge: the object's occupancy (hi - D)/(hi - lo) summed along the
-      // profile is the distance from the profile's start to the edge, i.e. the mean edge
-      // position over the exposure for a blurred edge (docs/theory.md#ellipse-tracking).
-      double occupancy = 0;
-      for (int i = 0; i < m; ++i) occupancy += (hi - prof[static_cast<std::size_t>(i)]) / (hi - lo);
-      const double r_edge = -inner - 0.5 * ds + occupancy * ds;
-      if (r_edge < -inner + ds || r_edge > -inner + (m - 2) * ds) continue;
+      // Blur along this normal: travel of this boundary point along n in one frame.
+      const double rx = c * u - s * v, ry = s * u + c * v;  // from the centre, image axes
+      const double vn = (options.vx_px - options.dpsi_rad * ry) * nx + (options.vy_px + options.dpsi_rad * rx) * ny;
+      const double r_edge = edge_position(prof, m, lo, hi, inner, ds, std::abs(vn) + options.blur_px);
+      if (!std::isfinite(r_edge)) continue;
       pts.emplace_back(px + r_edge * nx + offset.x, py + r_edge * ny + offset.y);
     }
     fit.profiles = n;
     if (options.known_a > 0 && options.known_b > 0 && pts.size() >= 6) {
-      Ellipse pose = e;
-      pose.a = options.known_a, pose.b = options.known_b;
-      std::vector<cv::Point2d> kept = pose_inliers(pts, pose);
+      // Known shape: robust geometric fit, the axes free within a prior of 5 % (a blurred or
+      // turning object changes its outline; a hidden part must not bend it).
+      Ellipse g = e;
+      std::vector<cv::Point2d> kept =
+          geometric_inliers(pts, g, options.known_a, options.known_b, std::max(0.05 * options.known_a, 0.3));
       if (static_cast<int>(kept.size()) < std::max(8, n / 4)) return fit;
-      if (kept.size() < 0.9 * static_cast<double>(pts.size())) {
-        // Part of the outline is hidden or touches something: a free fit on the rest would
-        // bend; the pose with the known shape is the answer.
-        double ss = 0;
-        for (const auto& p : kept) ss += ellipse_distance(pose, p.x, p.y) * ellipse_distance(pose, p.x, p.y);
-        fit.ellipse = pose;
-        fit.inliers = static_cast<int>(kept.size());
-        fit.rms_px = std::sqrt(ss / static_cast<double>(kept.size()));
-        fit.points = std::move(kept);
-        e = pose;
-        fit.ok = true;
-        continue;
-      }
-      pts = std::move(kept);
+      double ss = 0;
+      const Prepared q(g);
+      for (const auto& p : kept) ss += q.distance(p.x, p.y) * q.distance(p.x, p.y);
+      fit.ellipse = g;
+      fit.inliers = static_cast<int>(kept.size());
+      fit.rms_px = std::sqrt(ss / static_cast<double>(kept.size()));
+      fit.points = std::move(kept);
+      e = g;
+      fit.ok = true;
+      continue;
     }
     if (static_cast<int>(pts.size()) < std::max(8, n / 4)) {
       fit.ok = false;

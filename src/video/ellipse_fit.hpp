@@ -28,6 +28,11 @@ double ellipse_distance(const Ellipse& e, double x, double y);
 
 struct EdgeFitOptions {
   double reach_px = 6;        ///< profile half-length outside the edge, px (covers the blur)
+  /// The object's motion per frame, to size each profile's edge window to its blur (the
+  /// edge's travel along the normal in one frame: the most an exposure can smear it).
+  double vx_px = 0, vy_px = 0;  ///< centre velocity, px per frame (image axes)
+  double dpsi_rad = 0;          ///< turn per frame in image axes (y down), rad
+  double blur_px = 0;           ///< blur allowed along every normal besides, px (unknown motion)
   double step_px = 0.5;       ///< sampling step along the profile, px
   double min_contrast = 20;   ///< smallest outside - inside level of a usable profile
   double max_inside = 1e9;    ///< largest inside level of a usable profile (object-like)

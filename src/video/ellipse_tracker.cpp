@@ -169,12 +169,17 @@ struct EllipseTracker::Impl {
     return o;
   }
 
-  EdgeFitOptions edge_options(double speed_px, double spin_per_frame) const {
+  /// Edge-fit settings for an object moving by `velocity` (px per frame) and turning by
+  /// `spin_per_frame` (screen, rad); `blur_px`: motion of unknown direction (no velocity
+  /// measured yet), px per frame. The edge ramp of a blurred object is as wide as its travel
+  /// during the exposure (at most one frame's travel): profiles reach past half of it.
+  EdgeFitOptions edge_options(cv::Point2d velocity, double spin_per_frame, double blur_px = 0) const {
     EdgeFitOptions eo;
     eo.known_a = a_ref, eo.known_b = b_ref;
-    // The edge ramp of a blurred object is as wide as its travel during the exposure (at most
-    // one frame's travel): reach past half of it, plus the plateau samples.
-    eo.reach_px = 4 + 0.6 * (speed_px + a_ref * std::abs(spin_per_frame));
+    eo.vx_px = velocity.x, eo.vy_px = velocity.y;
+    eo.dpsi_rad = -spin_per_frame;  // screen counter-clockwise is clockwise in image axes
+    eo.blur_px = blur_px;
+    eo.reach_px = 4 + 0.6 * (std::hypot(velocity.x, velocity.y) + a_ref * std::abs(spin_per_frame) + blur_px);
     eo.min_contrast = 0.4 * contrast;
     eo.max_inside = 0.35 * contrast;
     eo.iterations = 2;
@@ -273,7 +278,7 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
   const cv::Rect fit_roi =
       cv::Rect(static_cast<int>(init.cx - init.a - 10), static_cast<int>(init.cy - init.a - 10),
                static_cast<int>(2 * init.a + 21), static_cast<int>(2 * init.a + 21)) & image_rect;
-  EdgeFitOptions eo = s.edge_options(0, 0);
+  EdgeFitOptions eo = s.edge_options({0, 0}, 0);
   eo.known_a = eo.known_b = 0;  // the shape is what the first frame measures
   const EdgeFit fit = fit_ellipse_edges(colour_distance(first, fit_roi, s.colour), fit_roi.tl(), init, eo);
   const double score = fit.ok ? static_cast<double>(fit.inliers) / fit.profiles : 0;
@@ -310,13 +315,14 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
     return s.observe(index, pred_e, phi_pred, 0, true, false, 0);
   }
   const int steps = std::max(1, index - s.centres.back().index);
-  const double speed = s.centres.size() >= 2
-                           ? std::hypot(pred.x - s.centres.back().x, pred.y - s.centres.back().y) / steps
-                           : s.speed_hint;
+  const bool moving = s.centres.size() >= 2;  // a velocity is known
+  const cv::Point2d velocity = moving ? (pred - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps
+                                      : cv::Point2d(0, 0);
+  const double speed = moving ? std::hypot(velocity.x, velocity.y) : s.speed_hint;
   // Gate: how far the object may lie from the prediction. A bounce reverses the velocity
   // within a frame (error up to 2 |v| dt); lost frames widen the search.
   const double gate = 4 + 0.5 * s.b_ref + 2.2 * std::max(speed, 0.5 * s.speed_hint) + 3.0 * s.lost_run;
-  const EdgeFitOptions eo = s.edge_options(speed, omega);
+  const EdgeFitOptions eo = s.edge_options(velocity, omega, moving ? 0 : s.speed_hint);
   const cv::Rect image_rect(0, 0, img.cols, img.rows);
   const auto window = [&](double pad) {
     return cv::Rect(static_cast<int>(std::floor(pred.x - pad)), static_cast<int>(std::floor(pred.y - pad)),
@@ -357,6 +363,19 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
     if (best > 0) {
       const Ellipse seg = ellipse_from_moments(labels == best, cv::Point2d(roi.x, roi.y));
       if (seg.a > 1 && seg.b > 1) try_fit(dist, roi.tl(), seg);
+    }
+  }
+  if (!moving && score >= s.options.min_score) {
+    // No velocity was known, so every edge window allowed for a fast throw's blur: refit with
+    // the motion just measured (sharper windows, less sensitive to the background).
+    const cv::Point2d v = (cv::Point2d(found.cx, found.cy) - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps;
+    EdgeFitOptions eo2 = s.edge_options(v, omega);
+    if (const cv::Rect roi = window(s.a_ref + std::hypot(found.cx - pred.x, found.cy - pred.y) + eo2.reach_px + 3);
+        roi.width >= 3 && roi.height >= 3) {
+      const EdgeFit fit = fit_ellipse_edges(colour_distance(frame, roi, s.colour), roi.tl(), found, eo2);
+      if (fit.ok && static_cast<double>(fit.inliers) / fit.profiles >= score) {
+        score = static_cast<double>(fit.inliers) / fit.profiles, found = fit.ellipse, rms = fit.rms_px;
+      }
     }
   }
   if (score < s.options.min_score) {

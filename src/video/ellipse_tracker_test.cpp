@@ -7,8 +7,11 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+#include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -116,27 +119,98 @@ TEST(EllipseFit, SharpEllipseIsFittedToAHundredthOfAPixel) {
   }
 }
 
-TEST(EllipseTracker, SpinningBallAt40RadPerSecondWithBlurAndNoise) {
-  // Seed 001's rugby ball: 40 rad/s at 240 fps (0.167 rad per frame), shutter half the frame
-  // period (blur of 4.8 degrees, 3.3 px at the tips), noise sd 2 grey levels.
-  const RenderOptions o = small_video();
+/// Seed 001's rugby ball: 40 rad/s at 240 fps (0.167 rad per frame), shutter half the frame
+/// period (blur of 4.8 degrees, 3.3 px at the tips), noise sd 2 grey levels, drifting on a
+/// parabola; frames from `o`'s background.
+struct SpinResult {
+  double centre_px, angle_deg, worst_angle_rad;
+  int lost;
+};
+SpinResult spinning_ball(const RenderOptions& o, int frames = 48) {
   const Scene scene = [](double t) {
     return std::vector<ShapePose>{ball(100 + 300 * t, 80 + 200 * t - 0.5 * 1000 * t * t, 40, 25, 0.3 + 40 * t)};
   };
-  const TrackRun run = track(scene, 48, o);
-  EXPECT_EQ(run.lost, 0);
-  const double centre = median(run.centre_err_px);
+  const TrackRun run = track(scene, frames, o);
   std::vector<double> abs_angle;
   for (double a : run.angle_err_rad) abs_angle.push_back(std::abs(a));
-  const double angle_deg = median(abs_angle) * 180 / kPi;
-  RecordProperty("median_centre_error_px", std::to_string(centre));
-  RecordProperty("median_angle_error_deg", std::to_string(angle_deg));
-  std::printf("spin 40 rad/s: median centre error %.4f px, orientation %.4f deg, max angle %.4f deg\n", centre,
-              angle_deg, *std::max_element(abs_angle.begin(), abs_angle.end()) * 180 / kPi);
-  EXPECT_LE(centre, 0.5);     // the requirement
-  EXPECT_LE(angle_deg, 0.5);  // the requirement
-  // Labels: every frame's A is the body's +x tip (error modulo 2 pi, not pi).
-  EXPECT_LT(*std::max_element(abs_angle.begin(), abs_angle.end()), 0.1);
+  return {median(run.centre_err_px), median(abs_angle) * 180 / kPi,
+          abs_angle.empty() ? 0 : *std::max_element(abs_angle.begin(), abs_angle.end()), run.lost};
+}
+
+TEST(EllipseTracker, SpinningBallAt40RadPerSecondWithBlurAndNoise) {
+  RenderOptions o = small_video();
+  o.background = RenderOptions::Background::gradient;  // the renderer's default
+  const SpinResult r = spinning_ball(o);
+  RecordProperty("median_centre_error_px", std::to_string(r.centre_px));
+  RecordProperty("median_angle_error_deg", std::to_string(r.angle_deg));
+  std::printf("spin 40 rad/s: median centre error %.4f px, orientation %.4f deg, worst %.4f deg\n", r.centre_px,
+              r.angle_deg, r.worst_angle_rad * 180 / kPi);
+  EXPECT_EQ(r.lost, 0);
+  // The requirement is 0.5 px and 0.5 degree; measured 0.012 px and 0.014 degree, so
+  // 0.05 px and 0.07 degree catch a regression by a factor of 4-5.
+  EXPECT_LE(r.centre_px, 0.05);
+  EXPECT_LE(r.angle_deg, 0.07);
+  // Labels: every frame's A is the body's +x tip (error modulo 2 pi, not pi); worst frame
+  // measured 0.046 degree = 0.0008 rad.
+  EXPECT_LT(r.worst_angle_rad, 0.005);
+}
+
+TEST(EllipseTracker, SpinningBallOnATexturedBackground) {
+  // A smooth random texture (+-25 % at a 12 px scale) behind the ball: the background next to
+  // the edge differs from the one a few px farther out.
+  RenderOptions o = small_video();
+  o.background = RenderOptions::Background::texture;
+  const SpinResult r = spinning_ball(o);
+  std::printf("spin 40 rad/s, texture: median centre error %.4f px, orientation %.4f deg, worst %.4f deg\n",
+              r.centre_px, r.angle_deg, r.worst_angle_rad * 180 / kPi);
+  EXPECT_EQ(r.lost, 0);
+  // Measured 0.054 px and 0.084 degree (worst frame 0.34 degree = 0.006 rad): the issue's
+  // 0.5 px and 0.5 degree hold; a margin of about 3 for another texture seed.
+  EXPECT_LE(r.centre_px, 0.15);
+  EXPECT_LE(r.angle_deg, 0.25);
+  EXPECT_LT(r.worst_angle_rad, 0.02);
+}
+
+TEST(EllipseTracker, SpinningBallDecodedFromCompressedVideo) {
+  // The same throw written by write_video (MJPG q95 .avi, mp4v .mp4: 4:2:0 chroma, blocks) and
+  // decoded by OpenCV, as `track video` sees it.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() /
+                       ("ellipse_tracker_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                        "_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  RenderOptions o = small_video();
+  o.background = RenderOptions::Background::gradient;
+  const Scene scene = [](double t) {
+    return std::vector<ShapePose>{ball(100 + 300 * t, 80 + 200 * t - 0.5 * 1000 * t * t, 40, 25, 0.3 + 40 * t)};
+  };
+  for (const char* name : {"throw.avi", "throw.mp4"}) {
+    const std::string path = (dir / name).string();
+    write_video(path, scene, 24, o);
+    cv::VideoCapture cap(path);
+    ASSERT_TRUE(cap.isOpened()) << path;
+    EllipseTracker tracker;
+    std::vector<double> centre, angle;
+    Frame f;
+    for (int i = 0; cap.read(f.bgr); ++i) {
+      f.index = i;
+      f.t = i / o.fps;
+      make_gray(f);
+      const ShapePose truth = scene(f.t).front();
+      const EllipseObservation e = i == 0 ? tracker.start(f, truth.cx_px, truth.cy_px, "ball") : tracker.update(f);
+      EXPECT_FALSE(e.centre.lost) << name << " frame " << i;
+      centre.push_back(std::hypot(e.centre.x_px - truth.cx_px, e.centre.y_px - truth.cy_px));
+      angle.push_back(std::abs(std::remainder(e.centre.angle_rad - truth.angle_rad, 2 * kPi)));
+    }
+    EXPECT_EQ(centre.size(), 24u) << name;
+    std::printf("%s: median centre error %.4f px, orientation %.4f deg\n", name, median(centre),
+                median(angle) * 180 / kPi);
+    // Measured (avi, mp4) 0.022, 0.030 px and 0.021, 0.042 degree; 0.1 px and 0.15 degree
+    // leave a margin of 3 (codec versions differ) within the 0.5 px and 0.5 degree.
+    EXPECT_LE(median(centre), 0.1) << name;
+    EXPECT_LE(median(angle) * 180 / kPi, 0.15) << name;
+  }
+  fs::remove_all(dir);
 }
 
 TEST(EllipseTracker, LabelsStayOnTheSameTipsOverFiveTurns) {
@@ -146,9 +220,14 @@ TEST(EllipseTracker, LabelsStayOnTheSameTipsOverFiveTurns) {
   const TrackRun run = track(scene, 60, o);
   EXPECT_EQ(run.lost, 0);
   ASSERT_EQ(run.angle_err_rad.size(), 60u);
+  std::vector<double> abs_angle;
+  for (double a : run.angle_err_rad) abs_angle.push_back(std::abs(a));
+  std::printf("spin 0.5 rad/frame: median centre error %.4f px, orientation %.4f deg, worst %.4f deg\n",
+              median(run.centre_err_px), median(abs_angle) * 180 / kPi,
+              *std::max_element(abs_angle.begin(), abs_angle.end()) * 180 / kPi);
   for (std::size_t i = 0; i < run.angle_err_rad.size(); ++i) {
-    // A wrong label is an error of pi; blur of 15 degrees at the tips still leaves the
-    // orientation within a degree (measured 0.1), so 0.05 rad separates the two cases.
+    // A wrong label is an error of pi; with 15 degrees of blur per frame the orientation is
+    // still within 0.15 degree (measured worst; median 0.022), so 0.05 rad separates the two.
     EXPECT_LT(std::abs(run.angle_err_rad[i]), 0.05) << "frame " << i;
   }
   // A's screen angle unwraps with the spin: 29.5 rad after 59 frames.
@@ -166,9 +245,12 @@ TEST(EllipseTracker, FastParabolicFlight) {
   const TrackRun run = track(scene, 13, o);  // frame 13 would be partly out of view
   EXPECT_EQ(run.lost, 0);
   const double centre = median(run.centre_err_px);
-  std::printf("flight 22 px/frame: median centre error %.4f px, max %.4f px\n", centre,
-              *std::max_element(run.centre_err_px.begin(), run.centre_err_px.end()));
-  EXPECT_LE(centre, 0.2);
+  const double worst = *std::max_element(run.centre_err_px.begin(), run.centre_err_px.end());
+  std::printf("flight 22 px/frame: median centre error %.4f px, max %.4f px\n", centre, worst);
+  // Measured 0.051 px median, 0.107 px worst: the blurred outline is not quite an ellipse and
+  // changes with the direction of flight; a fit holding the previous shape was 0.67 px off.
+  EXPECT_LE(centre, 0.15);
+  EXPECT_LE(worst, 0.3);
 }
 
 TEST(EllipseTracker, BounceNearADarkFloor) {
@@ -196,7 +278,10 @@ TEST(EllipseTracker, BounceNearADarkFloor) {
   std::printf("bounce by the floor: median centre error %.4f px, max %.4f px\n", centre, worst);
   EXPECT_LE(centre, 0.1);  // measured 0.01 px, as in open air
   EXPECT_LE(worst, 0.3);   // the floor's edge must not pull the fit (measured below 0.05 px)
-  for (double a : run.angle_err_rad) EXPECT_LT(std::abs(a), 0.02);
+  double worst_angle = 0;
+  for (double a : run.angle_err_rad) worst_angle = std::max(worst_angle, std::abs(a));
+  std::printf("bounce by the floor: worst orientation error %.4f deg\n", worst_angle * 180 / kPi);
+  EXPECT_LT(worst_angle, 0.01);  // measured 0.24 degree = 0.004 rad
 }
 
 TEST(EllipseTracker, BriefOcclusionIsReportedThenBridged) {
