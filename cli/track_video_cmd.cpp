@@ -4,6 +4,8 @@
 #include "track_video_cmd.hpp"
 
 #include "app.hpp"
+#include "report_option.hpp"
+#include "report_track_video.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/text.hpp"
@@ -156,6 +158,7 @@ nlohmann::json summary(const video::TrackVideoResult& r, const Args& a) {
   j["warnings"] = r.warnings;
   j["out"] = a.out;
   j["write_trk"] = a.write_trk.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.write_trk);
+  j["report"] = a.report.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.report);
   return j;
 }
 
@@ -198,6 +201,7 @@ void run(Args& a) {
     const io::TrkWriteSpec spec = video::trk_spec(r, a.write_trk, r.warnings);
     trk->stream() << io::write_trk(video::to_track_set(r).tracks, spec);
   }
+  write_report_if_requested(a.report, [&] { return track_video_report(r); });
   csv.commit();
   if (trk) trk->commit();
   print_result(summary(r, a), a.as_json);
@@ -247,6 +251,7 @@ void register_track_video(CLI::App& track_area) {
   cmd->add_option("--write-trk", a->write_trk,
                   "Also write the tracks as a Tracker project (opens in Tracker with its video)");
   add_json_flag(*cmd, a->as_json);
+  add_report_option(*cmd, a->report);
   cmd->callback([a, cmd] {
     if (cmd->count("--max-gap") > 0) a->options.ellipse.max_gap_frames = a->options.point.max_gap_frames;
     run(*a);

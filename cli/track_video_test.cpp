@@ -129,11 +129,25 @@ TEST(TrackVideoCli, WrittenTrackerProjectImportsToTheCsvNumbers) {
   EXPECT_LT(again["tracks"]["mark"]["vs_human"]["median_px"].get<double>(), 0.2);
 }
 
+TEST(TrackVideoCli, ReportShowsThumbnailsAndTracks) {
+  const std::string dir = temp_dir("tv_report");
+  const std::string video = film(dir), out = dir + "/tracks.csv", html = dir + "/tracks.html";
+  const auto j = run_json("track video " + q(video) + " --start mark=30,60 --ellipse ball=60,170 --out " +
+                          q(out) + " --report " + q(html));
+  EXPECT_EQ(j["report"], html);
+  const std::string page = slurp(html);
+  EXPECT_NE(page.find("<html"), std::string::npos);
+  EXPECT_NE(page.find("data:image/jpeg;base64,"), std::string::npos);  // thumbnails embedded
+  EXPECT_NE(page.find("ball.A"), std::string::npos);
+  testing::expect_bad_report_paths("track video " + q(video) + " --start mark=30,60 --out " + q(dir + "/x.csv"),
+                                   dir + "/x.csv");
+}
+
 TEST(TrackVideoCli, HelpListsEveryOption) {
   const auto r = run_tribolab("track video --help");
   EXPECT_EQ(r.exit_code, 0);
   for (const char* opt : {"--out", "--start", "--ellipse", "--from-track", "--scale", "--calibrate",
-                          "--origin", "--axes-deg", "--fps", "--time-scale", "--write-trk", "--json"}) {
+                          "--origin", "--axes-deg", "--fps", "--time-scale", "--write-trk", "--report", "--json"}) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
   }
 }
@@ -147,7 +161,7 @@ TEST(TrackVideoCli, BadInputIsOneErrorLineAndNoOutputFile) {
   std::ofstream(dir + "/cut.avi", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   {
     io::TrkWriteSpec spec;
-    spec.video_path = "videos/film.avi";
+    spec.video_path = "videos/gone.avi";  // neither inside the archive nor beside it
     track::Track t{"hand", {{3, 0, 0.1, 0.2}}};
     std::ofstream(dir + "/novideo.trz", std::ios::binary) << io::write_trz(io::write_trk({t}, spec), "p.trk");
     spec.video_path = "film.avi";
@@ -159,7 +173,7 @@ TEST(TrackVideoCli, BadInputIsOneErrorLineAndNoOutputFile) {
       {q(dir + "/cut.avi") + " --start mark=30,60", "truncated"},
       {q(video) + " --start mark=400,60", "outside the 320x240 image"},
       {q(video) + " --start mark=300,20", "mark"},  // a featureless patch of plain background
-      {q(video) + " --start mark=30;60", "--start mark=30;60"},
+      {q(video) + " --start 'mark=30;60'", "--start mark=30;60"},
       {q(video) + " --start =30,60", "NAME=X,Y"},
       {q(video) + " --start mark=30,60@-2", "frame"},
       {q(video), "nothing to track"},
