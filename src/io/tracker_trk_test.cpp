@@ -127,6 +127,12 @@ TEST(TrackerTrk, ProjectKeepsItsVideoClipAndMarksInPixels) {
   EXPECT_DOUBLE_EQ(m.t, p.clip.t(m.frame));
   // without a video the project says so with an empty path
   EXPECT_TRUE(parse_trk_project(write_trk(tracks, spec()), "n.trk").video_path.empty());
+  // the frame count is kept without a video path too (found by fuzz_trk_roundtrip)
+  TrkWriteSpec counted = spec();
+  counted.video_frame_count = 50;
+  const TrkProject c = parse_trk_project(write_trk(tracks, counted), "c.trk");
+  EXPECT_TRUE(c.video_path.empty());
+  EXPECT_EQ(c.video_frame_count, 50);
 }
 
 TEST(TrackerTrk, TrzOnDiskIsReadAndItsEntriesExtracted) {

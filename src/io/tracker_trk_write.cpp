@@ -65,10 +65,10 @@ std::string write_trk(const std::vector<track::Track>& tracks, const TrkWriteSpe
             "        <object class=\"org.opensourcephysics.media.xuggle.XuggleVideo\">\n"
             "            <property name=\"path\" type=\"string\">" + xml_escape(spec.video_path) +
             "</property>\n        </object>\n        </property>\n";
-    if (spec.video_frame_count > 0) {
-      video += "        <property name=\"video_framecount\" type=\"int\">" +
-               std::to_string(spec.video_frame_count) + "</property>\n";
-    }
+  }
+  if (spec.video_frame_count > 0) {
+    video += "        <property name=\"video_framecount\" type=\"int\">" +
+             std::to_string(spec.video_frame_count) + "</property>\n";
   }
   std::ostringstream o;
   const bool fixed = spec.coords.size() == 1;
