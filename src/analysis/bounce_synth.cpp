@@ -6,6 +6,7 @@
 #include "bounce/flight.hpp"
 #include "numerics/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 #include <numbers>
@@ -47,10 +48,11 @@ double SynthVideoTruth::vy_flight(bool pre, double t) const {
   return pre ? touch.vy - g * (t - t_touch) : separation.vy - g * (t - t_separation);
 }
 
-SynthVideo synth_video(const SynthVideoOptions& o) {
+ThrowMotion simulate_throw(const SynthVideoOptions& o) {
   if (auto e = o.validate(); !e.empty()) throw_invalid(e);
   const double g = 9.8;
-  bounce::BodyState s0;
+  ThrowMotion m;
+  bounce::BodyState& s0 = m.release;
   s0.y = o.height;
   s0.theta = o.theta_deg / kDeg;
   s0.omega = o.omega;
@@ -62,11 +64,9 @@ SynthVideo synth_video(const SynthVideoOptions& o) {
   if (first.status != bounce::FlightStatus::contact) throw InputError("the release touches the floor");
   bounce::ContactOptions co;
   co.g = g;
-  std::vector<bounce::ContactSample> history;
-  const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, first.state, co, &history);
+  const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, first.state, co, &m.contact);
   if (c.status != bounce::ContactStatus::separated) throw InputError("the contact did not end: " + std::string(c.message));
-  SynthVideo v;
-  SynthVideoTruth& tr = v.truth;
+  SynthVideoTruth& tr = m.truth;
   tr.g = g;
   tr.t_touch = first.t_contact;
   tr.touch = first.state;
@@ -77,12 +77,45 @@ SynthVideo synth_video(const SynthVideoOptions& o) {
   tr.floor_y = 0;
   tr.release_apex = o.vy > 0 ? o.height + o.vy * o.vy / (2 * g) : o.height;
   tr.post_apex = tr.separation.y + std::max(0.0, tr.separation.vy) * std::max(0.0, tr.separation.vy) / (2 * g);
-  // Video ends `after` s after separation or at the next touch.
-  double t_end = tr.t_separation + o.after;
-  {
-    const auto next = bounce::first_contact(o.ball, tr.separation, fo);
-    if (next.status == bounce::FlightStatus::contact) t_end = std::min(t_end, tr.t_separation + next.t_contact);
-  }
+  // The motion ends `after` s after separation or at the next touch.
+  m.t_end = tr.t_separation + o.after;
+  const auto next = bounce::first_contact(o.ball, tr.separation, fo);
+  if (next.status == bounce::FlightStatus::contact) m.t_end = std::min(m.t_end, tr.t_separation + next.t_contact);
+  return m;
+}
+
+bounce::BodyState ThrowMotion::state(double t) const {
+  if (t < truth.t_touch || contact.empty()) return bounce::free_flight(release, truth.g, t);
+  if (t >= truth.t_separation) return bounce::free_flight(truth.separation, truth.g, t - truth.t_separation);
+  const double tc = t - truth.t_touch;
+  // The history sample at or before tc and the next one (steps are far below a frame).
+  auto it = std::upper_bound(contact.begin(), contact.end(), tc,
+                             [](double v, const bounce::ContactSample& c) { return v < c.t; });
+  if (it == contact.begin()) return contact.front().state;
+  if (it == contact.end()) return contact.back().state;
+  const bounce::BodyState& p = std::prev(it)->state;
+  const bounce::BodyState& q = it->state;
+  const double h = it->t - std::prev(it)->t;
+  if (!(h > 0)) return q;
+  // Cubic Hermite on [t_i, t_i+1] from positions and their rates; rates interpolated linearly.
+  const double u = (tc - std::prev(it)->t) / h;
+  const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
+  const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
+  auto hermite = [&](double a, double da, double b, double db) { return h00 * a + h10 * h * da + h01 * b + h11 * h * db; };
+  bounce::BodyState s;
+  s.x = hermite(p.x, p.vx, q.x, q.vx);
+  s.y = hermite(p.y, p.vy, q.y, q.vy);
+  s.theta = hermite(p.theta, p.omega, q.theta, q.omega);
+  s.vx = p.vx + u * (q.vx - p.vx);
+  s.vy = p.vy + u * (q.vy - p.vy);
+  s.omega = p.omega + u * (q.omega - p.omega);
+  return s;
+}
+
+SynthVideo synth_video(const SynthVideoOptions& o) {
+  const ThrowMotion m = simulate_throw(o);
+  SynthVideo v;
+  v.truth = m.truth;
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> phase(0, 1);
   std::normal_distribution<double> noise(0, 1);
@@ -90,21 +123,10 @@ SynthVideo synth_video(const SynthVideoOptions& o) {
   const double t0 = phase(rng) * dt;  // the first frame falls anywhere within a frame period
   v.tip_a.name = "A";
   v.tip_b.name = "B";
-  std::size_t h = 0;
   for (int k = 0;; ++k) {
     const double t = t0 + k * dt;
-    if (t > t_end) break;
-    bounce::BodyState s;
-    if (t < tr.t_touch) {
-      s = bounce::free_flight(s0, g, t);
-    } else if (t >= tr.t_separation) {
-      s = bounce::free_flight(tr.separation, g, t - tr.t_separation);
-    } else {
-      // Inside the contact: the history sample at or before t (steps are far below a frame).
-      const double tc = t - tr.t_touch;
-      while (h + 1 < history.size() && history[h + 1].t <= tc) ++h;
-      s = history[h].state;
-    }
+    if (t > m.t_end) break;
+    const bounce::BodyState s = m.state(t);
     const double ca = o.ball.a * std::cos(s.theta), sa = o.ball.a * std::sin(s.theta);
     // A is the tip at -a along the major axis, B at +a, so theta = atan2(B - A).
     const track::TrackPoint pa{k, t * o.time_factor, s.x - ca + o.noise * noise(rng), s.y - sa + o.noise * noise(rng)};

@@ -50,6 +50,23 @@ struct SynthVideo {
   SynthVideoTruth truth;
 };
 
+/// The simulated throw as a continuous motion in real time (flight, one contact, flight):
+/// what synth_video samples at its frames and what a renderer samples within an exposure.
+struct ThrowMotion {
+  bounce::BodyState release;                 ///< state at t = 0 (x = 0, y = height)
+  SynthVideoTruth truth;
+  std::vector<bounce::ContactSample> contact;  ///< the contact's history, t from first touch
+  double t_end = 0;  ///< s: `after` s past the separation, or the next touch if earlier
+  /// The ball's state at any time t >= 0, s: free flight before the touch and after the
+  /// separation; during the contact a cubic Hermite interpolation of the history's positions
+  /// and velocities (x, y, theta with vx, vy, omega), so the pose is smooth at any sub-frame time.
+  bounce::BodyState state(double t) const;
+};
+
+/// Simulates the throw of `options` (ball, law, friction, release). Throws InputError for
+/// invalid options, a release touching the floor, or a contact that does not end.
+ThrowMotion simulate_throw(const SynthVideoOptions& options);
+
 /// Throws InputError for invalid options or when the contact does not end.
 SynthVideo synth_video(const SynthVideoOptions& options);
 

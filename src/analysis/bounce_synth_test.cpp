@@ -32,5 +32,36 @@ TEST(SynthVideo, CentreMovesContinuouslyThroughTheContact) {
   }
 }
 
+TEST(ThrowMotion, PoseIsContinuousAtTouchAndSeparationAndFollowsTheContactHistory) {
+  SynthVideoOptions o;
+  const ThrowMotion m = simulate_throw(o);
+  const auto& tr = m.truth;
+  ASSERT_GT(m.contact.size(), 2u);
+  // At the history's own times the interpolation returns the history (to rounding).
+  for (std::size_t i = 0; i < m.contact.size(); i += std::max<std::size_t>(1, m.contact.size() / 7)) {
+    const auto s = m.state(tr.t_touch + m.contact[i].t);
+    EXPECT_NEAR(s.x, m.contact[i].state.x, 1e-12);
+    EXPECT_NEAR(s.y, m.contact[i].state.y, 1e-12);
+    EXPECT_NEAR(s.theta, m.contact[i].state.theta, 1e-12);
+  }
+  // Across the touch and the separation the pose moves by no more than the speed allows in
+  // 1 us (|v| + |omega| a < 5 m/s: 5 um), so it is continuous where the formulas change.
+  const double eps = 1e-6;
+  for (double t : {tr.t_touch, tr.t_separation}) {
+    const auto a = m.state(t - eps), b = m.state(t + eps);
+    EXPECT_LT(std::hypot(b.x - a.x, b.y - a.y), 5 * 2 * eps) << t;
+    EXPECT_LT(std::abs(b.theta - a.theta), 50 * 2 * eps) << t;  // |omega| < 50 rad/s
+  }
+  // Between two history samples, the Hermite pose lies within the samples' bracket of y
+  // extended by the motion's curvature; checked coarsely: within 10 um of linear interpolation.
+  for (std::size_t i = 0; i + 1 < m.contact.size(); i += std::max<std::size_t>(1, m.contact.size() / 11)) {
+    const auto& p = m.contact[i];
+    const auto& q = m.contact[i + 1];
+    const auto s = m.state(tr.t_touch + 0.5 * (p.t + q.t));
+    EXPECT_NEAR(s.y, 0.5 * (p.state.y + q.state.y), 1e-5) << i;
+  }
+  EXPECT_GT(m.t_end, tr.t_separation);
+}
+
 }  // namespace
 }  // namespace tribolab::analysis

@@ -26,7 +26,8 @@ struct ShapePose {
   cv::Scalar colour{40, 40, 200};  ///< BGR fill
   bool mark = false;            ///< draw a textured sticker in the body frame
   double mark_u_px = 0, mark_v_px = 0;  ///< sticker centre in the body frame, px
-  double mark_size_px = 0;      ///< sticker side, px (a checker pattern of 3x3 cells)
+  double mark_size_px = 0;      ///< sticker side, px (3x3 cells, dark (30,30,30) at the centre
+                                ///< and corners, light (235,235,235) between; clipped to the body)
 };
 
 /// Everything in view at time t (seconds of the video's own time base), back to front.
@@ -41,6 +42,8 @@ struct RenderOptions {
   int supersample = 4;           ///< anti-aliasing factor per axis (>= 1)
   enum class Background { plain, gradient, texture } background = Background::gradient;
   cv::Scalar background_colour{200, 200, 200};  ///< BGR
+  double floor_y_px = -1;        ///< a floor band below this image y (anti-aliased edge), px; < 0: none
+  cv::Scalar floor_colour{60, 60, 60};  ///< BGR of the floor band
   double noise_sigma = 2;        ///< Gaussian sensor noise, grey levels (0 = none)
   std::uint64_t seed = 1;        ///< random seed of the texture and the noise
   std::string validate() const;
@@ -52,7 +55,8 @@ struct RenderOptions {
 cv::Mat render_frame(const Scene& scene, double t, const RenderOptions& options, int frame_index);
 
 /// Writes frames 0..frames-1 to `path` (.avi: MJPG at high quality, .mp4: mp4v); throws
-/// InputError when the file cannot be written. The video's frame rate is options.fps.
+/// InputError when the file cannot be written. The video's frame rate is options.fps and
+/// frame i is rendered at t = i / fps. The file appears whole or not at all.
 void write_video(const std::string& path, const Scene& scene, int frames, const RenderOptions& options);
 
 }  // namespace tribolab::video
