@@ -171,6 +171,18 @@ FilmCase run_film_case(const std::string& out_dir, const video::ThrowFilmOptions
   return c;
 }
 
+std::vector<std::string> film_commands(const FilmCase& c) {
+  const auto& view = c.film.view;
+  const auto& start = c.tracking.targets.front();
+  return {"tribolab track video data/film/throw.avi --ellipse ball=" + io::format_number(start.x_px) + "," +
+              io::format_number(start.y_px) + " --scale " + io::format_number(view.scale_m_per_px) + " --origin " +
+              io::format_number(view.origin_x_px) + "," + io::format_number(view.origin_y_px) +
+              " --out data/film/tracks.csv --report film_tracking.html",
+          "tribolab bounce analyze data/film/tracks.csv --track-a ball.A --track-b ball.B --floor-y 0 --sigma-floor-y " +
+              io::format_number(c.analyze.sigma_floor_y) + " --contact-duration " +
+              io::format_number(*c.analyze.contact_duration) + " --report film_bounce.html"};
+}
+
 void add_film_case_study(report::Report& rep, std::ostream& log, const DemoContext& context) {
   add_film_sections(rep, run_film_case(context.out), log);
 }
@@ -180,8 +192,6 @@ void add_film_sections(report::Report& rep, const FilmCase& c, std::ostream& log
   const auto& e = c.error;
   const auto& view = c.film.view;
   const auto& ro = c.film.render;
-  const std::string origin = format_value(view.origin_x_px, 6) + "," + format_value(view.origin_y_px, 6);
-  const auto& start = c.tracking.targets.front();
 
   auto& s = rep.add_section("From film to numbers: a rendered throw tracked and analysed");
   s.add_paragraph(
@@ -194,11 +204,7 @@ void add_film_sections(report::Report& rep, const FilmCase& c, std::ostream& log
       v4(1e3 * view.scale_m_per_px) + " mm per px, the ball " + v4(c.options.motion.ball.a / view.scale_m_per_px) +
       " × " + v4(c.options.motion.ball.b / view.scale_m_per_px) + " px (semi-axes). It is rendered when the demo "
       "runs (no video is shipped). Reproduce the tracking and the analysis from the demo folder with:");
-  s.add_list({"tribolab track video data/film/throw.avi --ellipse ball=" + v4(start.x_px) + "," + v4(start.y_px) +
-                  " --scale " + io::format_number(view.scale_m_per_px) + " --origin " + origin +
-                  " --out data/film/tracks.csv --report film_tracking.html",
-              "tribolab bounce analyze data/film/tracks.csv --track-a ball.A --track-b ball.B --floor-y 0 "
-              "--contact-duration " + io::format_number(*c.analyze.contact_duration) + " --report film_bounce.html"});
+  s.add_list(film_commands(c));
   {
     report::Table files;
     files.caption = "Files written beside this report";

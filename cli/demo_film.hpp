@@ -12,6 +12,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace tribolab::cli {
 
@@ -49,6 +50,10 @@ video::ThrowFilmOptions film_case_options();
 /// Renders the film into <out_dir>/data/film/, tracks it, writes the tracks' CSV and the
 /// tracking report (<out_dir>/film_tracking.html), and analyses the bounce.
 FilmCase run_film_case(const std::string& out_dir, const video::ThrowFilmOptions& options = film_case_options());
+
+/// The commands that repeat the tracking and the analysis from the demo folder: `track video`
+/// (writes data/film/tracks.csv and film_tracking.html) and `bounce analyze`.
+std::vector<std::string> film_commands(const FilmCase& c);
 
 /// The case study's section of the demo report (the tracking report is already written).
 void add_film_sections(report::Report& r, const FilmCase& c, std::ostream& log);

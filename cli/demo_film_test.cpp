@@ -108,5 +108,30 @@ TEST(DemoFilm, CaseStudyLinksTheTrackingReport) {
   EXPECT_EQ(plots, 4u);  // x, y, orientation, score
 }
 
+/// A command the report shows, run from the demo folder `dir`: its relative paths made absolute.
+std::string from_folder(std::string command, const std::string& dir) {
+  command = command.substr(std::string("tribolab ").size());
+  for (const std::string rel : {"data/film/", "film_tracking.html", "film_bounce.html"}) {
+    for (auto p = command.find(" " + rel); p != std::string::npos; p = command.find(" " + rel, p + dir.size() + 2))
+      command.insert(p + 1, dir + "/");
+  }
+  return command;
+}
+
+TEST(DemoFilm, BounceAnalyzeCommandShownGivesTheSameNumbers) {
+  const FilmCase& c = film_case();
+  const std::string dir = fs::path(c.tracking_report).parent_path().string();
+  const auto commands = film_commands(c);
+  ASSERT_EQ(commands.size(), 2u);
+  const auto j = testing::run_json(from_folder(commands[1], dir));
+  // The CSV holds every number in shortest round-trip form: the command reads back exactly the
+  // tracks analysed in-process, so its numbers are the same to the last bit.
+  EXPECT_EQ(j["e_velocity"].get<double>(), c.analysis.e_velocity);
+  EXPECT_EQ(j["sigma_e_velocity"].get<double>(), c.analysis.sigma_e_velocity);
+  EXPECT_EQ(j["collision_angle_deg"].get<double>(), c.analysis.collision_angle_deg);
+  EXPECT_EQ(j["t_touch"].get<double>(), c.analysis.t_touch);
+  EXPECT_TRUE(fs::exists(dir + "/film_bounce.html"));
+}
+
 }  // namespace
 }  // namespace tribolab::cli
