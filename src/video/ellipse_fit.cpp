@@ -62,7 +62,7 @@ bool fit_points(const std::vector<cv::Point2d>& pts, Ellipse& out) {
   const cv::RotatedRect box = cv::fitEllipseAMS(centred);
   Ellipse e = ellipse_from_box(box);
   if (!std::isfinite(e.cx) || !std::isfinite(e.cy) || !std::isfinite(e.a) || !std::isfinite(e.b) ||
-      !std::isfinite(e.psi) || e.b <= 0.5) {
+      !std::isfinite(e.psi) || e.b <= 0.5 || e.a > 1e5) {
     return false;
   }
   e.cx += mx;
@@ -188,7 +188,7 @@ double edge_position(const std::vector<double>& prof, int m, double lo, double h
     }
   }
   if (cross < 0) return std::nan("");
-  const int w = static_cast<int>(std::ceil((1.5 + 0.5 * ramp_px) / ds));
+  const int w = static_cast<int>(std::ceil((1.5 + 0.5 * std::min(ramp_px, 1e4)) / ds));
   const int k = static_cast<int>(std::ceil(1.5 / ds));  // samples per local level
   const int first = std::max(k, cross - w + 1), last = std::min(m - 1 - k, cross + w);  // window
   if (last - first < 2) return std::nan("");
@@ -243,15 +243,15 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
   EdgeFit fit;
   Ellipse e = init;
   for (int iter = 0; iter < options.iterations; ++iter) {
-    if (!(e.a > 0 && e.b > 0)) return fit;
+    if (!(e.a > 0 && e.b > 0 && e.a < 1e5 && std::isfinite(e.cx) && std::isfinite(e.cy))) return fit;
     // Normals evenly spaced in the parametric angle (denser at the tips, which carry the
     // orientation), about one per 3 px of perimeter.
     const double perimeter = kPi * (3 * (e.a + e.b) - std::sqrt((3 * e.a + e.b) * (e.a + 3 * e.b)));
-    const int n = std::clamp(static_cast<int>(perimeter / 3), 24, 120);
+    const int n = static_cast<int>(std::clamp(perimeter / 3, 24.0, 120.0));
     const double inner = std::min(options.reach_px, 0.7 * e.b);  // stay clear of the far side
     const double outer = options.reach_px;
     const double ds = options.step_px;
-    const int m = static_cast<int>(std::floor((inner + outer) / ds)) + 1;
+    const int m = static_cast<int>(std::floor(std::min(inner + outer, 1e4) / ds)) + 1;
     const double c = std::cos(e.psi), s = std::sin(e.psi);
     std::vector<cv::Point2d> pts;
     std::vector<double> prof(static_cast<std::size_t>(m));
@@ -280,7 +280,7 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
       // Blur along this normal: travel of this boundary point along n in one frame.
       const double rx = c * u - s * v, ry = s * u + c * v;  // from the centre, image axes
       const double vn = (options.vx_px - options.dpsi_rad * ry) * nx + (options.vy_px + options.dpsi_rad * rx) * ny;
-      const double r_edge = edge_position(prof, m, lo, hi, inner, ds, std::abs(vn) + options.blur_px);
+      const double r_edge = edge_position(prof, m, lo, hi, inner, ds, std::min(std::abs(vn) + options.blur_px, options.max_blur_px));
       if (!std::isfinite(r_edge)) continue;
       pts.emplace_back(px + r_edge * nx + offset.x, py + r_edge * ny + offset.y);
     }
@@ -291,7 +291,10 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
       Ellipse g = e;
       std::vector<cv::Point2d> kept =
           geometric_inliers(pts, g, options.known_a, options.known_b, std::max(0.05 * options.known_a, 0.3));
-      if (static_cast<int>(kept.size()) < std::max(8, n / 4)) return fit;
+      if (static_cast<int>(kept.size()) < std::max(8, n / 4) || !std::isfinite(g.cx) || !std::isfinite(g.cy) ||
+          !std::isfinite(g.psi) || !(g.a < 1e5)) {
+        return fit;
+      }
       double ss = 0;
       const Prepared q(g);
       for (const auto& p : kept) ss += q.distance(p.x, p.y) * q.distance(p.x, p.y);

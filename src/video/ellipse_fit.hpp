@@ -33,6 +33,7 @@ struct EdgeFitOptions {
   double vx_px = 0, vy_px = 0;  ///< centre velocity, px per frame (image axes)
   double dpsi_rad = 0;          ///< turn per frame in image axes (y down), rad
   double blur_px = 0;           ///< blur allowed along every normal besides, px (unknown motion)
+  double max_blur_px = 1e4;     ///< cap on the blur allowed along a normal, px
   double step_px = 0.5;       ///< sampling step along the profile, px
   double min_contrast = 20;   ///< smallest outside - inside level of a usable profile
   double max_inside = 1e9;    ///< largest inside level of a usable profile (object-like)

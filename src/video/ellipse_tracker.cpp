@@ -20,6 +20,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr std::size_t kMotionPoints = 8;  ///< centres in the parabola fit
 constexpr std::size_t kSpinPoints = 6;    ///< orientations in the spin fit
 constexpr double kRoundRatio = 0.05;      ///< (a - b) / a below this: no orientation
+constexpr double kRoundPx = 0.5;          ///< nor with the axes closer than this, px
 constexpr double kConfidentScore = 0.9;   ///< a fit from the prediction this good needs no search
 
 /// Distance of every pixel of `roi` to `colour` (per channel, grey levels): low inside the
@@ -179,7 +180,11 @@ struct EllipseTracker::Impl {
     eo.vx_px = velocity.x, eo.vy_px = velocity.y;
     eo.dpsi_rad = -spin_per_frame;  // screen counter-clockwise is clockwise in image axes
     eo.blur_px = blur_px;
-    eo.reach_px = 4 + 0.6 * (std::hypot(velocity.x, velocity.y) + a_ref * std::abs(spin_per_frame) + blur_px);
+    // Blur beyond about the minor axis leaves no ellipse to fit (docs/theory.md#ellipse-tracking),
+    // and a short exposure leaves a fast object sharp: the reach stops at 2 b of travel.
+    const double travel = std::hypot(velocity.x, velocity.y) + a_ref * std::abs(spin_per_frame) + blur_px;
+    eo.reach_px = 4 + 0.6 * std::min(travel, 2 * b_ref);
+    eo.max_blur_px = b_ref;
     eo.min_contrast = 0.4 * contrast;
     eo.max_inside = 0.35 * contrast;
     eo.iterations = 2;
@@ -289,7 +294,7 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
   }
   const Ellipse& e = fit.ellipse;
   s.a_ref = e.a, s.b_ref = e.b;
-  const bool round = e.a - e.b < kRoundRatio * e.a;
+  const bool round = e.a - e.b < std::max(kRoundRatio * e.a, kRoundPx);
   // End A: the end of the major axis pointing right (screen angle in (-90, 90] degrees).
   double phi = round ? 0 : -e.psi;
   phi = std::remainder(phi, kPi);
@@ -298,7 +303,9 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
   s.index_last = first.index;
   s.centres.push_back({first.index, e.cx, e.cy});
   if (!round) s.turns.push_back({first.index, phi});
-  s.speed_hint = 15 + 0.5 * e.a;  // first step: allow a fast throw before any velocity is known
+  // First step: no velocity is known yet, so allow a fast throw: a tenth of the image diagonal
+  // per frame (a 15 fps video of a toss moves the ball 70 px per frame at 640x480).
+  s.speed_hint = std::max(15 + 0.5 * e.a, 0.1 * std::hypot(img.cols, img.rows));
   return s.observe(first.index, e, phi, score, false, round, fit.rms_px);
 }
 
@@ -307,8 +314,10 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   TRIBOLAB_ASSERT(!s.centres.empty(), std::string("EllipseTracker::update before start"));
   const cv::Mat& img = frame.bgr.empty() ? frame.gray : frame.bgr;
   const int index = frame.index;
-  const cv::Point2d pred = s.predict_centre(index);
-  const double omega = s.spin_per_frame();  // rad per frame
+  cv::Point2d pred = s.predict_centre(index);
+  if (!std::isfinite(pred.x) || !std::isfinite(pred.y)) pred = {s.centres.back().x, s.centres.back().y};
+  double omega = s.spin_per_frame();  // rad per frame
+  if (!std::isfinite(omega)) omega = 0;
   const double phi_pred = s.phi_last + omega * (index - s.index_last);
   Ellipse pred_e{pred.x, pred.y, s.a_ref, s.b_ref, -phi_pred};
   if (s.gave_up || img.empty()) {
@@ -321,12 +330,16 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   const double speed = moving ? std::hypot(velocity.x, velocity.y) : s.speed_hint;
   // Gate: how far the object may lie from the prediction. A bounce reverses the velocity
   // within a frame (error up to 2 |v| dt); lost frames widen the search.
-  const double gate = 4 + 0.5 * s.b_ref + 2.2 * std::max(speed, 0.5 * s.speed_hint) + 3.0 * s.lost_run;
-  const EdgeFitOptions eo = s.edge_options(velocity, omega, moving ? 0 : s.speed_hint);
+  const double gate = 4 + 0.5 * s.b_ref + 2.2 * speed + 3.0 * s.lost_run;
+  // Without a velocity, allow for blur up to the minor semi-axis (a longer smear is no ellipse
+  // any more); the fit is redone below with the motion measured.
+  const EdgeFitOptions eo = s.edge_options(velocity, omega, moving ? 0 : std::min(s.speed_hint, s.b_ref));
   const cv::Rect image_rect(0, 0, img.cols, img.rows);
   const auto window = [&](double pad) {
-    return cv::Rect(static_cast<int>(std::floor(pred.x - pad)), static_cast<int>(std::floor(pred.y - pad)),
-                    static_cast<int>(2 * pad + 2), static_cast<int>(2 * pad + 2)) & image_rect;
+    // Clamped before the conversion to int: a prediction far outside the image stays defined.
+    const auto clamp_px = [](double v) { return static_cast<int>(std::clamp(v, -1e6, 1e6)); };
+    const int size = clamp_px(2 * pad + 2);
+    return cv::Rect(clamp_px(std::floor(pred.x - pad)), clamp_px(std::floor(pred.y - pad)), size, size) & image_rect;
   };
   double score = 0, rms = 0;
   Ellipse found;
@@ -384,7 +397,7 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
     return s.observe(index, pred_e, phi_pred, score, true, false, 0);
   }
   // Accepted. Orientation: the end of the major axis nearest the predicted A direction.
-  const bool round = found.a - found.b < kRoundRatio * found.a;
+  const bool round = found.a - found.b < std::max(kRoundRatio * found.a, kRoundPx);
   const double phi = round ? phi_pred : phi_pred + std::remainder(-found.psi - phi_pred, kPi);
   // Motion model: a centre far off the prediction (a bounce) restarts the parabola.
   const double innovation = std::hypot(found.cx - pred.x, found.cy - pred.y);

@@ -5,6 +5,8 @@
 #include "video/render.hpp"
 
 #include <gtest/gtest.h>
+#include <pugixml.hpp>
+#include <zip.h>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
@@ -114,6 +116,25 @@ Errors track(const Scene& scene, const RenderOptions& o, int frames, Truth truth
   return e;
 }
 
+TEST(PointTracker, FollowsAMarkOnAWheelTurning20To25DegreesPerFrame) {
+  for (double rate : {20.0, 25.0}) {
+    Wheel w;
+    w.deg_per_frame = rate;
+    const RenderOptions o = small_video();
+    const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
+    const Errors e = track(scene, o, 32, [&](double t) { return w.mark(t); },
+                           [&](double t) { return w.angle(t) - w.angle(0); });
+    e.print(rate == 20 ? "wheel 20 deg/frame" : "wheel 25 deg/frame");
+    EXPECT_EQ(e.lost, 0);
+    // Measured 0.04 / 0.06 px and 0.08 / 0.16 deg at 22.5 deg/frame; about 3x margin for
+    // the rate and noise seed.
+    EXPECT_LT(e.median(e.position_px), 0.15);
+    EXPECT_LT(e.max(e.position_px), 0.3);
+    EXPECT_LT(e.median(e.angle_deg), 0.3);
+    EXPECT_LT(e.max(e.angle_deg), 0.6);
+  }
+}
+
 TEST(PointTracker, FollowsAMarkOnAWheelTurning22DegreesPerFrame) {
   const Wheel w;
   const RenderOptions o = small_video();
@@ -122,9 +143,12 @@ TEST(PointTracker, FollowsAMarkOnAWheelTurning22DegreesPerFrame) {
                          [&](double t) { return w.angle(t) - w.angle(0); });
   e.print("wheel 22.5 deg/frame");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.3);
-  EXPECT_LT(e.max(e.position_px), 1.0);
-  EXPECT_LT(e.median(e.angle_deg), 1.0);
+  // Tolerances: about 2.5x the measured values (median 0.043, max 0.059 px; angle 0.080,
+  // max 0.162 deg), room for another OpenCV build, never for a wrong match (>= 1 px).
+  EXPECT_LT(e.median(e.position_px), 0.1);
+  EXPECT_LT(e.max(e.position_px), 0.15);
+  EXPECT_LT(e.median(e.angle_deg), 0.2);
+  EXPECT_LT(e.max(e.angle_deg), 0.4);
 }
 
 TEST(PointTracker, TemplateMatchingWithoutRotationLosesTheWheelMark) {
@@ -135,10 +159,10 @@ TEST(PointTracker, TemplateMatchingWithoutRotationLosesTheWheelMark) {
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
   PointTrackerOptions plain;
   plain.max_turn_deg = 0;
-  const Errors e = track(scene, o, 40, [&](double t) { return w.mark(t); },
+  const Errors e = track(scene, o, 16, [&](double t) { return w.mark(t); },
                          [&](double) { return 0.0; }, plain);
   e.print("wheel without rotation search");
-  EXPECT_GT(e.lost, 20);
+  EXPECT_GT(e.lost, 12);  // measured 14 of 15: lost as soon as the mark has turned
 }
 
 // A ball of radius 6 px thrown across the frame: 42 px per frame, parabola.
@@ -166,8 +190,9 @@ TEST(PointTracker, FollowsAFastBallOnAParabola) {
   const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("ball 42 px/frame");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.3);
-  EXPECT_LT(e.max(e.position_px), 1.0);
+  // Measured median 0.006, max 0.007 px: a sharp disc on a plain background.
+  EXPECT_LT(e.median(e.position_px), 0.03);
+  EXPECT_LT(e.max(e.position_px), 0.05);
 }
 
 TEST(PointTracker, FollowsABlurredNoisyBall) {
@@ -179,8 +204,46 @@ TEST(PointTracker, FollowsABlurredNoisyBall) {
   const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("blurred ball 42 px/frame");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.5);
-  EXPECT_LT(e.max(e.position_px), 1.5);
+  // Measured median 0.072, max 0.109 px (a 21 px streak in noise 4).
+  EXPECT_LT(e.median(e.position_px), 0.15);
+  EXPECT_LT(e.max(e.position_px), 0.25);
+}
+
+TEST(PointTracker, KeepsABallSetInMotionFromRestSharpAndBlurredApart) {
+  // A ball starting at rest and accelerating to 54 px/frame, shutter 0.5: its image goes
+  // from sharp (the template) to a 27 px streak. Matching the sharp template alone (measured
+  // with the smear disabled) drops the score to 0.64 and puts the ball 5.5 px off along its
+  // streak; smearing it along the predicted change of velocity keeps 0.965 and 0.04 px.
+  RenderOptions o = small_video();
+  o.shutter_fraction = 0.5;
+  auto at = [&](double t) {
+    const double n = t * o.fps;
+    return cv::Point2d(20 + 0.5 * 4.4 * n * n, 40 + 0.5 * 2.2 * n * n);
+  };
+  const Scene scene = [&](double t) {
+    ShapePose s;
+    s.cx_px = at(t).x;
+    s.cy_px = at(t).y;
+    s.a_px = s.b_px = 6;
+    s.colour = cv::Scalar(30, 30, 200);
+    return std::vector<ShapePose>{s};
+  };
+  PointTracker tracker;
+  tracker.start(film(scene, 0, o), at(0).x, at(0).y, "ball");
+  Errors e;
+  double lowest = 1;
+  for (int i = 1; i <= 11; ++i) {
+    const Frame f = film(scene, i, o);
+    const Observation ob = tracker.update(f);
+    ASSERT_FALSE(ob.lost) << "frame " << i;
+    lowest = std::min(lowest, ob.score);
+    e.position_px.push_back(std::hypot(ob.x_px - at(f.t).x, ob.y_px - at(f.t).y));
+  }
+  e.print("ball from rest to 54 px/frame, shutter 0.5");
+  std::printf("[ measured ] lowest score %.3f\n", lowest);
+  EXPECT_GT(lowest, 0.9);                   // measured 0.965 (0.64 unsmeared)
+  EXPECT_LT(e.median(e.position_px), 0.1);  // measured 0.018 px
+  EXPECT_LT(e.max(e.position_px), 0.3);     // measured 0.041 px (5.5 px unsmeared)
 }
 
 TEST(PointTracker, FollowsABlurredNoisyWheelMark) {
@@ -193,9 +256,12 @@ TEST(PointTracker, FollowsABlurredNoisyWheelMark) {
                          [&](double t) { return w.angle(t) - w.angle(0); });
   e.print("blurred wheel 22.5 deg/frame");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.5);
-  EXPECT_LT(e.max(e.position_px), 1.5);
-  EXPECT_LT(e.median(e.angle_deg), 1.5);
+  // Measured median 0.021, max 0.052 px; angle median 0.048, max 0.182 deg (before the
+  // refinement on a resampled window the angle was biased by -0.86 deg here).
+  EXPECT_LT(e.median(e.position_px), 0.06);
+  EXPECT_LT(e.max(e.position_px), 0.12);
+  EXPECT_LT(e.median(e.angle_deg), 0.12);
+  EXPECT_LT(e.max(e.angle_deg), 0.4);
 }
 
 TEST(PointTracker, ReportsAnOcclusionAndNeverGivesAWrongPosition) {
@@ -232,9 +298,23 @@ TEST(PointTracker, ReportsAnOcclusionAndNeverGivesAWrongPosition) {
   }
   std::printf("[ measured ] %zu frames touched by the hand, %d lost\n", touched.size(), e.lost);
   EXPECT_GT(e.lost, 6);  // the mark is fully hidden for about 4 frames in each of 3 passes
-  // Tracked frames, hand near or not: as accurate as the mark in the clear (max 0.069 px
-  // there; 0.3 px allows for the hand's edge inside the patch).
+  // Tracked frames, hand near or not, stay accurate: measured max 0.122 px (0.059 px in the
+  // clear; the hand's edge inside the patch costs a little); 0.3 px, never a wrong match.
   EXPECT_LT(e.max(e.position_px), 0.3);
+}
+
+TEST(PointTracker, DoesNotHoldOnToTheTexturedBackgroundABallLeaves) {
+  // A 6 px ball in a 21 px patch on a textured background: two thirds of the template are
+  // background, which stays where the ball was. Before the first match had to score 0.9, the
+  // background left behind (score 0.84) was accepted and held the track, 36-254 px from the
+  // ball. Lost frames are acceptable here; a wrong position is not.
+  const Throw b;
+  RenderOptions o = small_video();
+  o.background = RenderOptions::Background::texture;
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{b.pose(t)}; };
+  const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
+  e.print("ball on a textured background");
+  EXPECT_LT(e.max(e.position_px), 0.3);  // any frame reported found must be on the ball
 }
 
 TEST(PointTracker, IsNotCapturedByADistractor) {
@@ -259,7 +339,7 @@ TEST(PointTracker, IsNotCapturedByADistractor) {
   const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("ball with distractor");
   EXPECT_GT(e.lost, 0);
-  EXPECT_LT(e.max(e.position_px), 1.5);
+  EXPECT_LT(e.max(e.position_px), 0.1);  // measured 0.030 px; the distractor is 28 px away
 }
 
 TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
@@ -299,8 +379,101 @@ TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
   std::filesystem::remove(path);
   e.print("blurred wheel through MJPG");
   EXPECT_EQ(e.lost, 0);
-  EXPECT_LT(e.median(e.position_px), 0.5);
-  EXPECT_LT(e.max(e.position_px), 1.5);
+  // Measured median 0.017, max 0.046 px (MJPG at quality 95 adds little to blur and noise).
+  EXPECT_LT(e.median(e.position_px), 0.05);
+  EXPECT_LT(e.max(e.position_px), 0.12);
+  EXPECT_LT(e.median(e.angle_deg), 0.12);  // measured 0.049 deg
+}
+
+// The bytes of entry `suffix` (the first whose name ends so) of a zip file; empty if none.
+std::string zip_entry(const std::string& path, const std::string& suffix) {
+  int err = 0;
+  zip_t* z = zip_open(path.c_str(), ZIP_RDONLY, &err);
+  if (!z) return {};
+  std::string out;
+  for (zip_int64_t i = 0; i < zip_get_num_entries(z, 0) && out.empty(); ++i) {
+    const std::string name = zip_get_name(z, i, 0);
+    zip_stat_t st;
+    if (name.size() < suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0 ||
+        zip_stat_index(z, i, 0, &st) != 0) {
+      continue;
+    }
+    zip_file_t* f = zip_fopen_index(z, i, 0);
+    out.resize(st.size);
+    if (!f || zip_fread(f, out.data(), st.size) != static_cast<zip_int64_t>(st.size)) out.clear();
+    if (f) zip_fclose(f);
+  }
+  zip_close(z);
+  return out;
+}
+
+TEST(PointTracker, FollowsBallTossFromTheHumansFirstMark) {
+  // Tracker's own example (640x480, 15 fps, a small bright ball tossed in front of a hand;
+  // not in the repository: docs/theory.md#tracker-files). Started from the human's first
+  // mark, the tracker must stay within the scatter of human marks (~1 px) of every other
+  // mark. Before the first window grew to a quarter of the image, the 70 px first step
+  // left the ball outside it and a match on the hand (score 0.69) was accepted: 47 px off.
+  std::string path;
+  for (const char* root : {"/../shared", "/../../shared"}) {
+    const char* src = std::getenv("TRIBOLAB_SOURCE_DIR");
+    const std::string p = std::string(src ? src : ".") + root + "/data/tracker/BallToss.trz";
+    if (std::filesystem::exists(p)) path = p;
+  }
+  if (path.empty()) GTEST_SKIP() << "BallToss.trz not found beside the repository";
+  const std::string xml = zip_entry(path, ".trk"), video_bytes = zip_entry(path, ".mp4");
+  ASSERT_FALSE(xml.empty());
+  ASSERT_FALSE(video_bytes.empty());
+  // The human's marks: PointMass framedata entries "[n]" with image x, y in px.
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_buffer(xml.data(), xml.size()));
+  std::vector<std::pair<int, cv::Point2d>> marks;
+  for (const auto& node : doc.select_nodes(
+           "//object[@class='org.opensourcephysics.cabrillo.tracker.PointMass$FrameData']")) {
+    const pugi::xml_node o = node.node();
+    const std::string key = o.parent().attribute("name").value();  // "[n]"
+    marks.push_back({std::stoi(key.substr(1)),
+                     {o.select_node("property[@name='x']").node().text().as_double(),
+                      o.select_node("property[@name='y']").node().text().as_double()}});
+  }
+  ASSERT_EQ(marks.size(), 11u);  // frames 2..12
+  const std::filesystem::path video =
+      std::filesystem::temp_directory_path() / ("point_tracker_balltoss_" + std::to_string(::getpid()) + ".mp4");
+  {
+    std::FILE* f = std::fopen(video.string().c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fwrite(video_bytes.data(), 1, video_bytes.size(), f);
+    std::fclose(f);
+  }
+  cv::VideoCapture cap(video.string());
+  ASSERT_TRUE(cap.isOpened());
+  PointTracker tracker;
+  std::vector<double> deviation;
+  std::size_t next = 0;
+  for (int i = 0; next < marks.size(); ++i) {
+    Frame f;
+    f.index = i;
+    ASSERT_TRUE(cap.read(f.bgr)) << "frame " << i;
+    make_gray(f);
+    if (i < marks[0].first) continue;
+    ASSERT_EQ(marks[next].first, i);
+    const cv::Point2d human = marks[next++].second;
+    if (i == marks[0].first) {
+      tracker.start(f, human.x, human.y, "ball");
+      continue;
+    }
+    const Observation ob = tracker.update(f);
+    EXPECT_FALSE(ob.lost) << "frame " << i;
+    deviation.push_back(std::hypot(ob.x_px - human.x, ob.y_px - human.y));
+  }
+  cap.release();
+  std::filesystem::remove(video);
+  Errors e;
+  e.position_px = deviation;
+  e.print("BallToss against the human's marks");
+  // Measured median 0.41 px, max 0.67 px; the issue asks <= 1.5 px median (human marks
+  // scatter ~1 px), and no frame may be off by more than that scatter allows.
+  EXPECT_LT(e.median(deviation), 1.0);
+  EXPECT_LT(e.max(deviation), 1.5);
 }
 
 TEST(PointTracker, RejectsAFeaturelessStart) {
@@ -317,6 +490,46 @@ TEST(PointTracker, RejectsAFeaturelessStart) {
     EXPECT_NE(std::string(err.what()).find("texture"), std::string::npos) << err.what();
   }
   EXPECT_NO_THROW(tracker.start(f0, w.mark(0).x, w.mark(0).y, "mark"));
+}
+
+TEST(PointTracker, RejectsAStartOnAStraightEdge) {
+  // The wheel's rim, far from the mark: strong gradient across it, none along it, so the
+  // correlation is flat along the edge (aperture problem) and the start is refused.
+  const Wheel w;
+  const RenderOptions o = small_video();
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
+  PointTracker tracker;
+  const Frame f0 = film(scene, 0, o);
+  EXPECT_THROW(tracker.start(f0, w.cx, w.cy + w.radius, "rim"), InputError);
+}
+
+TEST(PointTracker, ReportsABallLeavingTheViewAsLost) {
+  // The thrown ball leaves the 320 px frame after frame 8: the following frames are lost
+  // (the prediction runs on outside the image), never placed on something else, and the
+  // tracker gives up after max_gap_frames.
+  const Throw b;
+  const RenderOptions o = small_video();
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{b.pose(t)}; };
+  PointTrackerOptions options;
+  options.max_gap_frames = 2;
+  const Errors e = track(scene, o, 14, [&](double t) { return b.at(t); }, [](double) { return 0.0; }, options);
+  e.print("ball leaving the view");
+  ASSERT_EQ(e.lost_frames.size(), 5u);
+  EXPECT_EQ(e.lost_frames.front(), 9);  // x = 20 + 36 * 9 = 344 px: outside
+  EXPECT_LT(e.max(e.position_px), 0.1);  // measured 0.007 px while in view
+}
+
+TEST(PointTracker, ValidatesItsOptions) {
+  PointTrackerOptions o;
+  EXPECT_EQ(o.validate(), "");
+  o.patch_px = 20;
+  EXPECT_NE(o.validate().find("patch_px"), std::string::npos);
+  o = {};
+  o.min_score = 1.5;
+  EXPECT_NE(o.validate().find("min_score"), std::string::npos);
+  o = {};
+  o.max_turn_deg = -1;
+  EXPECT_THROW(PointTracker{o}, InputError);
 }
 
 TEST(PointTracker, RejectsAStartOutsideTheImage) {
