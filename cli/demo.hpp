@@ -65,6 +65,11 @@ void add_bounce_runs_case_study(report::Report& r, std::ostream& log, const Demo
 /// files to <context.out>/data/bounce_series/.
 void add_bounce_series_case_study(report::Report& r, std::ostream& log, const DemoContext& context);
 
+/// From film to numbers: a simulated throw rendered to <context.out>/data/film/throw.avi,
+/// tracked with the ellipse tracker (report <context.out>/film_tracking.html, linked) and
+/// analysed as `bounce analyze` does, beside the truth (cli/demo_film.cpp).
+void add_film_case_study(report::Report& r, std::ostream& log, const DemoContext& context);
+
 /// The errata of both seeds (cli/demo_errata.cpp).
 void add_errata_section(report::Report& r, std::ostream& log);
 

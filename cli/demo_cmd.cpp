@@ -70,6 +70,7 @@ std::vector<CaseStudy> demo_case_studies(const DemoContext& context) {
       {"bounce", add_bounce_case_study},
       {"bounce-runs", [context](report::Report& r, std::ostream& log) { add_bounce_runs_case_study(r, log, context); }},
       {"bounce-series", [context](report::Report& r, std::ostream& log) { add_bounce_series_case_study(r, log, context); }},
+      {"film", [context](report::Report& r, std::ostream& log) { add_film_case_study(r, log, context); }},
       {"errata", add_errata_section},
   };
 }

@@ -41,6 +41,10 @@ TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/data/bounce/" + f)) << f;
   EXPECT_NE(html.find("tribolab bounce analyze data/bounce/higher.txt --track-a A --track-b B --time-scale 0.125"),
             std::string::npos);
+  // The film case study renders its video at demo time and links its tracking report.
+  for (const char* f : {"/data/film/throw.avi", "/data/film/tracks.csv", "/film_tracking.html"})
+    EXPECT_TRUE(std::filesystem::exists(dir + f)) << f;
+  EXPECT_NE(html.find("<a href=\"film_tracking.html\">film_tracking.html</a>"), std::string::npos);
 }
 
 TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
@@ -51,17 +55,17 @@ TEST(Demo, JsonNamesTheReportAndCountsItsFigures) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["report"], dir + "/report.html");
   EXPECT_EQ(j["case_studies"],
-            nlohmann::json::parse(R"(["about", "incline", "incline-runs", "incline-series", "bounce", "bounce-runs", "bounce-series", "errata"])"));
+            nlohmann::json::parse(R"(["about", "incline", "incline-runs", "incline-series", "bounce", "bounce-runs", "bounce-series", "film", "errata"])"));
   // about 0, incline 7 x 5 (二, 四, 五, 六, 七) + 4 (八), bounce 1 + 4 + 1 + 1 + 5 (maps 53-55).
   // incline-runs: 2 full analyses x (7 kinematics + 2 residuals + a_N + theta_c), the
   // normal-friction test 1, the slide 3. bounce-runs: 3 x 6 (videos) + 5 (table fit).
   // incline-series: seven discs at one angle (mu per run, 4 stop slopes, pooled f_N) and ten
   // at four angles (mu per run, cos theta_c - tan phi, pooled f_N).
-  // bounce-series: analysed vs truth 1 + figures 32, 49, 50, 52.
-  EXPECT_EQ(j["figures"], 51 + 2 * 11 + 1 + 3 + 3 * 6 + 5 + (1 + 4 + 1) + (1 + 1 + 1) + 5);
+  // bounce-series: analysed vs truth 1 + figures 32, 49, 50, 52. film: the 6 of bounce analyze.
+  EXPECT_EQ(j["figures"], 51 + 2 * 11 + 1 + 3 + 3 * 6 + 5 + (1 + 4 + 1) + (1 + 1 + 1) + 5 + 6);
   // incline-series: an introduction, then per series a truth table and 4 summary sections.
-  // bounce-series: an introduction and 5 series sections.
-  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 5 + 4 + 1 + (1 + 2 * (1 + 4)) + 6);
+  // bounce-series: an introduction and 5 series sections. film: one section.
+  EXPECT_EQ(j["sections"], 1 + 5 + 5 + 5 + 4 + 1 + (1 + 2 * (1 + 4)) + 6 + 1);
   const std::string html = slurp(dir + "/report.html");
   EXPECT_EQ(j["figures"].get<std::size_t>(), count(html, "class=\"tribolab-plot\""));
   EXPECT_EQ(j["sections"].get<std::size_t>(), count(html, "<section id="));

@@ -95,10 +95,12 @@ Table video_table(const TrackVideoResult& r) {
   t.rows.push_back({"time scale (real s per video s)", format_value(in.time.time_scale, 6)});
   if (c.calibrated) {
     const auto& k = c.coords.front();
-    t.rows.push_back({"calibration", std::to_string(c.coords.size()) + " key frame(s); from frame " +
-                                         std::to_string(k.frame) + ": " + format_value(k.xscale, 6) + " px per unit along x, " +
-                                         format_value(k.yscale, 6) + " along y"});
-    t.rows.push_back({"length unit", format_value(c.metres_per_unit, 6) + " m per unit; positions below in m"});
+    const std::string per = c.metres_per_unit == 1 ? " px per m" : " px per unit";
+    t.rows.push_back({"calibration", format_value(k.xscale, 6) + per + " along x, " + format_value(k.yscale, 6) +
+                                         " along y (from frame " + std::to_string(k.frame) + "; " +
+                                         std::to_string(c.coords.size()) + " key frame(s))"});
+    if (c.metres_per_unit != 1)
+      t.rows.push_back({"length unit", format_value(c.metres_per_unit, 6) + " m per unit; positions below in m"});
     t.rows.push_back({"origin (px), axes (deg)", "(" + v4(k.origin_x) + ", " + v4(k.origin_y) + "), " + v4(k.angle_deg)});
   } else {
     t.rows.push_back({"calibration", "none: positions in pixels, y up (no scale given)"});
@@ -137,6 +139,25 @@ Figure time_figure(const TrackVideoResult& r, const std::string& title, const st
     f.series.push_back(std::move(d));
   }
   return f;
+}
+
+/// The project's human marks of the tracks compared with them (Tracker's marks on the same
+/// frames), in world units, as black markers.
+void add_human_marks(Figure& f, const TrackVideoResult& r, bool y) {
+  for (const TrackedSeries& s : r.series) {
+    if (!s.vs_human) continue;
+    for (const track::Track& m : r.input.marks_px) {
+      if (m.name != s.name) continue;
+      Series h = named(s.name + ": human marks");
+      h.color = "black";
+      for (const track::TrackPoint& p : m.points) {
+        const auto [wx, wy] = r.input.calibration.to_world(p.frame, p.x, p.y);
+        h.x.push_back(r.input.time.t(p.frame));
+        h.y.push_back(y ? wy : wx);
+      }
+      f.series.push_back(std::move(h));
+    }
+  }
 }
 
 Figure orientation_figure(const TrackVideoResult& r) {
@@ -214,8 +235,12 @@ int add_track_video_sections(report::Report& rep, const TrackVideoResult& r, con
 
   auto& p = rep.add_section(prefix + "Tracks against time");
   Figure x = time_figure(r, "x against time", "x (" + unit + ")", [](const TrackedRow& w) { return w.x; });
+  add_human_marks(x, r, false);
   x.caption = "Horizontal position of every track; gaps are lost frames.";
+  if (std::any_of(r.series.begin(), r.series.end(), [](const TrackedSeries& s) { return s.vs_human.has_value(); }))
+    x.caption += " Black markers: the Tracker project's own (human) marks of the tracks compared with them.";
   Figure y = time_figure(r, "y against time", "y (" + unit + ")", [](const TrackedRow& w) { return w.y; });
+  add_human_marks(y, r, true);
   y.caption = "Vertical position (up) of every track; gaps are lost frames.";
   p.add_figure(std::move(x));
   p.add_figure(std::move(y));

@@ -127,7 +127,8 @@ TEST(TrackVideoReport, SummaryShowsTheVideoTimeBaseAndCalibrationWithUnits) {
   EXPECT_EQ(cell(*t, "frame rate in the container (1/s)"), "240");
   EXPECT_EQ(cell(*t, "frame duration Δt (s)"), "0.00416667");
   EXPECT_EQ(cell(*t, "time scale (real s per video s)"), "1");
-  EXPECT_NE(cell(*t, "calibration").find("500 px per unit along x"), std::string::npos) << cell(*t, "calibration");
+  EXPECT_EQ(cell(*t, "calibration"), "500 px per m along x, 500 along y (from frame 0; 1 key frame(s))");
+  EXPECT_EQ(cell(*t, "origin (px), axes (deg)"), "(0, 240), 0");
   const auto figs = figures(rep);
   ASSERT_EQ(figs.size(), 4u);  // x, y, orientation, score
   EXPECT_EQ(figs[0]->y_axis.title, "x (m)");
@@ -236,6 +237,27 @@ TEST(TrackVideoReport, ThumbnailsAreEmbeddedByteForByte) {
   const cv::Mat back = cv::imdecode(r.thumbnails[1].jpeg, cv::IMREAD_COLOR);
   EXPECT_EQ(back.cols, 160);
   EXPECT_EQ(back.rows, 120);
+}
+
+TEST(TrackVideoReport, HumanMarksAreDrawnInWorldUnits) {
+  auto r = hand_made(true);
+  track::Track marks;
+  marks.name = "mark";
+  marks.points = {{0, 0, 150, 90}, {10, 10 / kFps, 160, 90}};  // pixels, y down
+  r.input.marks_px = {marks};
+  const auto rep = track_video_report(r);
+  const auto figs = figures(rep);
+  const auto* hx = find_series(*figs[0], "mark: human marks");
+  const auto* hy = find_series(*figs[1], "mark: human marks");
+  ASSERT_NE(hx, nullptr);
+  ASSERT_NE(hy, nullptr);
+  // 500 px per m, origin (0, 240) px: x = 150/500 m, y = (240 - 90)/500 m.
+  EXPECT_NEAR(hx->y[0], 0.3, 1e-12);
+  EXPECT_NEAR(hx->y[1], 0.32, 1e-12);
+  EXPECT_NEAR(hy->y[0], 0.3, 1e-12);
+  EXPECT_NEAR(hx->x[1], 10 / kFps, 1e-12);
+  // Only a track compared with human marks gets them.
+  EXPECT_EQ(find_series(*figs[0], "ball: human marks"), nullptr);
 }
 
 }  // namespace
