@@ -47,15 +47,23 @@ cv::Mat make_background(const RenderOptions& o) {
       }
     }
   } else if (o.background == RenderOptions::Background::texture) {
-    // Smooth random texture: a coarse grid of random factors (one cell per ~12 px),
-    // interpolated bicubically and slightly blurred, modulating the colour by about +-25 %.
+    // Smooth random texture: a coarse grid of random brightness factors (one cell per ~20 px,
+    // +-20 %) and a coarser one of colour factors (+-6 % per channel), interpolated
+    // bicubically and blurred: a mottled wall or floor, not a coloured noise.
     cv::RNG rng(mix(o.seed ^ 0x7465787475726555ULL));
-    const int gw = std::max(2, o.width / 12 + 2), gh = std::max(2, o.height / 12 + 2);
-    cv::Mat grid(gh, gw, CV_32FC3);
-    rng.fill(grid, cv::RNG::UNIFORM, cv::Scalar::all(0.75), cv::Scalar::all(1.25));
+    auto smooth = [&](int cell, int channels, double amplitude) {
+      const int gw = std::max(2, o.width / cell + 2), gh = std::max(2, o.height / cell + 2);
+      cv::Mat grid(gh, gw, CV_32FC(channels));
+      rng.fill(grid, cv::RNG::UNIFORM, cv::Scalar::all(1 - amplitude), cv::Scalar::all(1 + amplitude));
+      cv::Mat up;
+      cv::resize(grid, up, cv::Size(o.width, o.height), 0, 0, cv::INTER_CUBIC);
+      cv::GaussianBlur(up, up, cv::Size(0, 0), cell / 6.0);
+      return up;
+    };
+    cv::Mat brightness = smooth(20, 1, 0.2), colour = smooth(60, 3, 0.06);
     cv::Mat up;
-    cv::resize(grid, up, cv::Size(o.width, o.height), 0, 0, cv::INTER_CUBIC);
-    cv::GaussianBlur(up, up, cv::Size(0, 0), 2.0);
+    cv::merge(std::vector<cv::Mat>{brightness, brightness, brightness}, up);
+    up = up.mul(colour);
     bg = bg.mul(up);
   }
   if (o.floor_y_px >= 0) {
@@ -255,7 +263,9 @@ void write_video(const std::string& path, const Scene& scene, int frames, const 
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
   int api = 0, fourcc = 0;
   if (ext == ".avi") {
-    api = cv::CAP_OPENCV_MJPEG;  // OpenCV's own MJPEG writer honours the quality setting
+    // FFmpeg's MJPEG encoder (mean error ~1 grey level). Not OpenCV's own CAP_OPENCV_MJPEG:
+    // in OpenCV 4.6 it wrote a black 16x16 block into some frames (render_throw_test.cpp).
+    api = cv::CAP_FFMPEG;
     fourcc = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
   } else if (ext == ".mp4") {
     api = cv::CAP_FFMPEG;
@@ -278,9 +288,8 @@ void write_video(const std::string& path, const Scene& scene, int frames, const 
   } guard{tmp};
   {
     cv::VideoWriter writer;
-    std::vector<int> params;  // FFmpeg's writer rejects the quality property
-    if (api == cv::CAP_OPENCV_MJPEG) params = {cv::VIDEOWRITER_PROP_QUALITY, 95};
-    if (!writer.open(tmp.string(), api, fourcc, options.fps, cv::Size(options.width, options.height), params) ||
+    // FFmpeg's writer takes no quality property (it rejects VIDEOWRITER_PROP_QUALITY).
+    if (!writer.open(tmp.string(), api, fourcc, options.fps, cv::Size(options.width, options.height)) ||
         !writer.isOpened()) {
       throw InputError(path, "cannot write this video (codec or permissions)");
     }
