@@ -66,7 +66,7 @@ test: build
 # libFuzzer (clang) on every tracked-data parser, FUZZ_SECONDS each, starting from the seed
 # inputs in fuzz/corpus/<parser>/; new interesting inputs go to $(FUZZ_BUILD)/corpus/.
 # Any crash, sanitizer report, hang (>10 s per input) or memory blow-up (>2 GB) fails.
-FUZZ_TARGETS := trk trz export csv
+FUZZ_TARGETS := trk trz export csv trk_roundtrip
 fuzz: deps
 	cmake -S . -B $(FUZZ_BUILD) $(CMAKE_FLAGS) -DCMAKE_CXX_COMPILER=clang++ -DTRIBOLAB_FUZZ=ON \
 	  -DTRIBOLAB_TESTS=OFF -DTRIBOLAB_BENCH=OFF

@@ -4,6 +4,7 @@
 // the truth of the simulation that made it. The files are written to <out>/data/bounce/ so the
 // commands shown can be re-run from the demo folder.
 #include "demo.hpp"
+#include "demo_bounce_truth.hpp"
 #include "demo_data.hpp"
 #include "report_bounce.hpp"
 #include "report_bounce_analysis.hpp"
@@ -30,9 +31,7 @@ namespace {
 using report::format_uncertain;
 using report::format_value;
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kTimeScale = 0.125;  ///< 240 fps played at 30 fps (make.sh: --time-factor 8)
-constexpr double kZ95 = 1.959964;     ///< two-sided 95% normal quantile
 
 /// One shipped video: its file and the synth-video options of its line in make.sh.
 struct Run {
@@ -87,44 +86,10 @@ analysis::SynthTableOptions table_options() {
 
 std::string v4(double x) { return format_value(x, 4); }
 
-/// "yes"/"no": is the truth inside the 95% interval value ± 1.96 sigma.
-std::string covers(double value, double sigma, double truth) {
-  if (!std::isfinite(sigma) || !std::isfinite(value)) return "—";
-  return std::abs(value - truth) <= kZ95 * sigma ? "yes" : "no";
-}
-
 std::vector<std::string> truth_row(const std::string& name, double value, double sigma, double truth) {
-  return {name, format_uncertain(value, sigma), v4(truth), covers(value, sigma, truth)};
-}
-
-/// Recovered vs truth for one analysed video.
-report::Table truth_table(const analysis::BounceAnalysis& r, const analysis::SynthVideoTruth& t, const bounce::Ball& ball) {
-  const double ti = r.impact_time;
-  const double vy_pre = t.vy_flight(true, ti), vy_post = t.vy_flight(false, ti);
-  report::Table tab;
-  tab.caption = "Recovered vs the simulation's truth (v_y at the analysed impact time; e from velocities from "
-                "the first touch to the separation, as the contact simulation defines it)";
-  tab.header = {"quantity", "tribolab (± 1 s.u.)", "truth", "truth in the 95% interval"};
-  tab.rows = {truth_row("v_x before (m/s)", r.pre.vx, r.pre.sigma_vx, t.touch.vx),
-              truth_row("v_y before (m/s)", r.pre.vy, r.pre.sigma_vy, vy_pre),
-              truth_row("ω before (rad/s)", r.pre.omega, r.pre.sigma_omega, t.touch.omega),
-              truth_row("v_x after (m/s)", r.post.vx, r.post.sigma_vx, t.separation.vx),
-              truth_row("v_y after (m/s)", r.post.vy, r.post.sigma_vy, vy_post),
-              truth_row("ω after (rad/s)", r.post.omega, r.post.sigma_omega, t.separation.omega),
-              truth_row("e from velocities", r.e_velocity, r.sigma_e_velocity, -t.separation.vy / t.touch.vy),
-              truth_row("e from apex heights", r.e_height, r.sigma_e_height, std::sqrt(t.post_apex / t.release_apex)),
-              truth_row("apex height before (m)", r.pre.apex_height, r.pre.sigma_apex_height, t.release_apex),
-              truth_row("apex height after (m)", r.post.apex_height, r.post.sigma_apex_height, t.post_apex),
-              truth_row("first touch (s)", r.t_touch, r.sigma_t_touch, t.t_touch),
-              truth_row("separation (s)", r.t_separation, r.sigma_t_separation, t.t_separation),
-              truth_row("collision angle at the touch (deg)", r.collision_angle_deg, r.sigma_collision_angle_deg,
-                        bounce::collision_angle_deg(ball, t.touch.theta, t.touch.vx < 0 ? -1 : 1)),
-              truth_row("e at one instant (impact time)", r.e_velocity_common, r.sigma_e_velocity_common, -vy_post / vy_pre)};
-  const double theta_true = bounce::wrap_angle(t.touch.theta + t.touch.omega * (ti - t.t_touch)) * kDeg;
-  tab.rows.push_back({"θ at the impact time (deg)", v4(r.theta_impact_deg), v4(theta_true), "—"});
-  tab.rows.push_back({"impact time (s)", v4(ti), v4(t.t_touch) + " – " + v4(t.t_separation),
-                      ti >= t.t_touch && ti <= t.t_separation ? "within the contact" : "outside the contact"});
-  return tab;
+  const TruthCheck c{name, value, sigma, truth};
+  const bool defined = std::isfinite(value) && std::isfinite(sigma);
+  return {name, format_uncertain(value, sigma), v4(truth), defined ? (c.covered() ? "yes" : "no") : "—"};
 }
 
 std::string check_same(std::string_view shipped, const std::string& regenerated, const std::string& name) {
@@ -162,7 +127,7 @@ void add_run(report::Report& rep, const Run& run, const std::string& data_dir, s
   s.add_paragraph("The floor is y = 0 in the file, as the seed sets it in Tracker; the contact duration is the "
                   "number of frames in contact (" + v4(contact * 1e3) + " ms; truth " +
                   v4(1e3 * (truth.t_separation - truth.t_touch)) + " ms).");
-  s.add_table(truth_table(r, truth, run.options.ball));
+  s.add_table(bounce_truth_table(r, truth, run.options.ball));
   s.add_table(bounce_segments_table(r));
   s.add_table(bounce_restitution_table(r));
   add_bounce_analysis_figures(s, run.title, r);

@@ -3,6 +3,7 @@
 #include "app.hpp"
 #include "report_option.hpp"
 #include "report_track.hpp"
+#include "track_video_cmd.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/track_csv.hpp"
@@ -103,8 +104,11 @@ const track::Track& choose_track(const track::TrackSet& set, const std::vector<s
 
 void register_track(CLI::App& root) {
   auto* area = root.add_subcommand(
-      "track", "Tracked video data: read Tracker files and exports, velocities and accelerations");
+      "track", "Tracked video data: track points and balls in video, read Tracker files and exports, velocities and accelerations");
   area->require_subcommand(1);
+
+  // track video (cli/track_video_cmd.cpp)
+  register_track_video(*area);
 
   // track import
   {

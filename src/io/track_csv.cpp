@@ -78,6 +78,7 @@ track::TrackSet parse_tidy_csv(std::string_view text, const std::string& source)
   std::map<std::string, std::size_t> index;
   std::vector<std::vector<std::pair<track::TrackPoint, int>>> rows;  // point and its line
   const bool decimal_comma = d != ',';
+  std::size_t lost_rows = 0;
   for (++i; i < ls.size(); ++i) {
     const Line& line = ls[i];
     const std::string_view tl = trim(line.text);
@@ -95,6 +96,10 @@ track::TrackSet parse_tidy_csv(std::string_view text, const std::string& source)
     if (f != std::floor(f) || f < 0 || f > 1e8) {
       throw InputError(where, "frame must be a whole number from 0 to 1e8, got " + format_number(f));
     }
+    if (trim(cell("x")).empty() && trim(cell("y")).empty()) {
+      ++lost_rows;  // `track video` writes a lost object's frames with empty positions
+      continue;
+    }
     track::TrackPoint p;
     p.frame = static_cast<int>(f);
     p.t = parse_double(cell("t"), where + " (t)", decimal_comma) * tscale;
@@ -106,6 +111,11 @@ track::TrackSet parse_tidy_csv(std::string_view text, const std::string& source)
       rows.emplace_back();
     }
     rows[it->second].emplace_back(p, line.number);
+  }
+  if (lost_rows > 0) {
+    set.warnings.push_back(std::to_string(lost_rows) +
+                           " row(s) with empty x and y (frames where the tracker lost its object) "
+                           "were left out");
   }
   for (std::size_t k = 0; k < rows.size(); ++k) {
     auto& r = rows[k];

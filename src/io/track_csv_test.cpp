@@ -56,6 +56,25 @@ TEST(TidyCsv, ErrorsNameTheLine) {
   EXPECT_THAT(err("track,frame,t,x,y\na,1,0\n"), HasSubstr("t.csv:2: missing value"));
 }
 
+TEST(TidyCsv, LostRowsOfTrackVideoAreLeftOutWithOneWarning) {
+  // `track video` writes the frames where it lost its object with empty positions, score 0
+  const auto got = parse_tracks(
+      "track,frame,t,x,y,x_px,y_px,score\n"
+      "ball,0,0,0.1,0.2,10,20,0.99\n"
+      "ball,1,0.01,,,,,0\n"
+      "ball,2,0.02,,,,,0\n"
+      "ball,3,0.03,0.13,0.21,13,19,0.97\n",
+      "video.csv");
+  ASSERT_EQ(got.tracks.size(), 1u);
+  ASSERT_EQ(got.tracks[0].points.size(), 2u);
+  EXPECT_EQ(got.tracks[0].points[1].frame, 3);
+  EXPECT_EQ(got.tracks[0].points[1].x, 0.13);
+  ASSERT_EQ(got.warnings.size(), 1u);
+  EXPECT_THAT(got.warnings[0], HasSubstr("2 row(s) with empty x and y"));
+  // one position without the other is still an error
+  EXPECT_THROW(parse_tracks("track,frame,t,x,y\na,1,0,,3\n", "t.csv"), InputError);
+}
+
 TEST(KinematicsCsv, EmptyCellsWhereUndefined) {
   track::Kinematics k;
   track::KinematicsRow r;

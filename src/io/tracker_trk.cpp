@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -117,33 +118,27 @@ pugi::xml_node find_panel(const pugi::xml_document& doc) {
   return {};
 }
 
-struct Clip {
-  long long start_frame = 0, step_size = 1;
-  std::optional<long long> step_count;
-  double start_time_ms = 0, frame_ms = 0;
-};
-
+/// Resolves Tracker's "fixed" flags: a fixed origin, angle or scale takes the last saved
+/// key frame's value at every frame, as Tracker's loader does.
 struct Coords {
   bool fixed_origin = false, fixed_angle = false, fixed_scale = false;
-  std::vector<std::pair<long long, TrkCoordFrame>> keys;  // sorted by frame
+  std::vector<TrkCoordFrame> keys;  // sorted by frame
 
-  TrkCoordFrame at(long long frame) const {
-    // key frame in force: the last one at or before `frame` (the first before any key)
-    auto it = std::upper_bound(keys.begin(), keys.end(), frame,
-                               [](long long f, const auto& k) { return f < k.first; });
-    if (it != keys.begin()) --it;
-    TrkCoordFrame c = it->second;
-    const TrkCoordFrame& last = keys.back().second;
-    if (fixed_origin) {
-      c.origin_x = last.origin_x;
-      c.origin_y = last.origin_y;
+  std::vector<TrkCoordFrame> resolved() const {
+    std::vector<TrkCoordFrame> out = keys;
+    const TrkCoordFrame& last = keys.back();
+    for (TrkCoordFrame& c : out) {
+      if (fixed_origin) {
+        c.origin_x = last.origin_x;
+        c.origin_y = last.origin_y;
+      }
+      if (fixed_angle) c.angle_deg = last.angle_deg;
+      if (fixed_scale) {
+        c.xscale = last.xscale;
+        c.yscale = last.yscale;
+      }
     }
-    if (fixed_angle) c.angle_deg = last.angle_deg;
-    if (fixed_scale) {
-      c.xscale = last.xscale;
-      c.yscale = last.yscale;
-    }
-    return c;
+    return out;
   }
 };
 
@@ -177,25 +172,29 @@ Coords read_coords(Reader& r, pugi::xml_node panel) {
       r.fail(path, "xscale and yscale must be positive (pixels per unit), got " +
                        format_number(k.xscale) + " and " + format_number(k.yscale));
     }
-    c.keys.emplace_back(n, k);
+    c.keys.push_back(k);
   }
   if (c.keys.empty()) r.fail(base, "no key frame in the coordinate system");
   std::stable_sort(c.keys.begin(), c.keys.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+                   [](const auto& a, const auto& b) { return a.frame < b.frame; });
   return c;
 }
 
-Clip read_clip(Reader& r, pugi::xml_node panel) {
-  Clip clip;
+TrkClip read_clip(Reader& r, pugi::xml_node panel) {
+  TrkClip clip;
   const pugi::xml_node vc = object_of(property(panel, "videoclip"));
   if (vc) {
     const std::string p = "TrackerPanel/videoclip";
-    clip.start_frame = r.opt_int(vc, "startframe", p).value_or(0);
-    clip.step_size = r.opt_int(vc, "stepsize", p).value_or(1);
-    clip.step_count = r.opt_int(vc, "stepcount", p);
+    const long long start = r.opt_int(vc, "startframe", p).value_or(0);
+    const long long step = r.opt_int(vc, "stepsize", p).value_or(1);
+    const long long count = r.opt_int(vc, "stepcount", p).value_or(0);
     clip.start_time_ms = r.opt_double(vc, "starttime", p).value_or(0);
-    if (clip.step_size < 1) r.fail(p + "/stepsize", "must be at least 1");
-    if (clip.start_frame < 0) r.fail(p + "/startframe", "must not be negative");
+    if (step < 1) r.fail(p + "/stepsize", "must be at least 1");
+    if (start < 0) r.fail(p + "/startframe", "must not be negative");
+    if (count < 0) r.fail(p + "/stepcount", "must not be negative");
+    clip.start_frame = static_cast<int>(start);
+    clip.step_size = static_cast<int>(step);
+    clip.step_count = static_cast<int>(count);
   }
   std::optional<double> dt;
   if (const pugi::xml_node cc = object_of(property(panel, "clipcontrol"))) {
@@ -211,7 +210,7 @@ Clip read_clip(Reader& r, pugi::xml_node panel) {
     r.fail("TrackerPanel/clipcontrol/delta_t", "frame duration must be positive, got " +
                                                    format_number(*dt) + " ms");
   }
-  clip.frame_ms = *dt;
+  clip.frame_duration_ms = *dt;
   return clip;
 }
 
@@ -230,7 +229,23 @@ std::pair<double, double> world_to_image(const TrkCoordFrame& c, double x, doubl
   return {c.origin_x + c.xscale * u, c.origin_y - c.yscale * v};
 }
 
-track::TrackSet parse_trk(std::string_view xml, const std::string& source) {
+const TrkCoordFrame& coord_at(const std::vector<TrkCoordFrame>& keys, int frame) {
+  TRIBOLAB_ASSERT(!keys.empty(), std::string("no coordinate key frame"));
+  auto it = std::upper_bound(keys.begin(), keys.end(), frame,
+                             [](int f, const TrkCoordFrame& k) { return f < k.frame; });
+  return it == keys.begin() ? *it : *(it - 1);
+}
+
+bool TrkClip::on_step(long long frame) const {
+  const long long rel = frame - start_frame;
+  return rel >= 0 && rel % step_size == 0 && (step_count <= 0 || rel / step_size < step_count);
+}
+
+double TrkClip::t(long long frame) const {
+  return (start_time_ms + static_cast<double>(frame - start_frame) * frame_duration_ms) / 1000;
+}
+
+TrkProject parse_trk_project(std::string_view xml, const std::string& source) {
   Reader r(source);
   pugi::xml_document doc;
   const pugi::xml_parse_result ok =
@@ -245,15 +260,22 @@ track::TrackSet parse_trk(std::string_view xml, const std::string& source) {
   if (!panel) {
     r.fail("TrackerPanel", "missing element: no <object class=\"...TrackerPanel\"> (not a Tracker file?)");
   }
-  track::TrackSet set;
-  set.source = source;
-  set.format = "trk";
+  TrkProject project;
+  project.source = source;
   if (const pugi::xml_node u = property(panel, "length_unit")) {
     const std::string unit(trim(u.child_value()));
-    if (!unit.empty()) set.file_length_unit = unit;
+    if (!unit.empty()) project.length_unit = unit;
   }
-  const Coords coords = read_coords(r, panel);
-  const Clip clip = read_clip(r, panel);
+  project.coords = read_coords(r, panel).resolved();
+  project.clip = read_clip(r, panel);
+  if (const pugi::xml_node vc = object_of(property(panel, "videoclip"))) {
+    if (const pugi::xml_node v = object_of(property(vc, "video"))) {
+      project.video_path = std::string(trim(property(v, "path").child_value()));
+    }
+    const auto n = r.opt_int(vc, "video_framecount", "TrackerPanel/videoclip");
+    project.video_frame_count = static_cast<int>(std::max(0LL, n.value_or(0)));
+  }
+  const TrkClip& clip = project.clip;
   const pugi::xml_node tracks = property(panel, "tracks");
   if (!tracks) r.fail("TrackerPanel/tracks", "missing element (the list of tracks)");
   int item = 0;
@@ -277,29 +299,51 @@ track::TrackSet parse_trk(std::string_view xml, const std::string& source) {
       marks[n] = {r.req_double(f, "x", p), r.req_double(f, "y", p)};
     }
     for (const auto& [n, px] : marks) {
-      const long long rel = n - clip.start_frame;
-      if (rel < 0 || rel % clip.step_size != 0 ||
-          (clip.step_count && rel / clip.step_size >= *clip.step_count)) {
+      if (!clip.on_step(n)) {
         ++dropped;
         continue;
       }
-      const auto [x, y] = image_to_world(coords.at(n), px.first, px.second);
       track::TrackPoint p;
       p.frame = static_cast<int>(n);
-      p.t = (clip.start_time_ms + static_cast<double>(rel) * clip.frame_ms) / 1000;
-      p.x = x;
-      p.y = y;
+      p.t = clip.t(n);
+      p.x = px.first;
+      p.y = px.second;
       tr.points.push_back(p);
     }
     if (dropped > 0) {
-      set.warnings.push_back("track '" + tr.name + "': " + std::to_string(dropped) +
-                             " point(s) outside the video clip's steps were left out, as in "
-                             "Tracker's table");
+      project.warnings.push_back("track '" + tr.name + "': " + std::to_string(dropped) +
+                                 " point(s) outside the video clip's steps were left out, as in "
+                                 "Tracker's table");
+    }
+    project.marks_px.push_back(std::move(tr));
+  }
+  if (project.marks_px.empty()) r.fail("TrackerPanel/tracks", "no PointMass track in the file");
+  return project;
+}
+
+namespace {
+
+track::TrackSet to_world(TrkProject project) {
+  track::TrackSet set;
+  set.source = project.source;
+  set.format = "trk";
+  set.file_length_unit = project.length_unit;
+  set.warnings = std::move(project.warnings);
+  for (track::Track& tr : project.marks_px) {
+    for (track::TrackPoint& p : tr.points) {
+      const auto [x, y] = image_to_world(coord_at(project.coords, p.frame), p.x, p.y);
+      p.x = x;
+      p.y = y;
     }
     set.tracks.push_back(std::move(tr));
   }
-  if (set.tracks.empty()) r.fail("TrackerPanel/tracks", "no PointMass track in the file");
   return set;
+}
+
+}  // namespace
+
+track::TrackSet parse_trk(std::string_view xml, const std::string& source) {
+  return to_world(parse_trk_project(xml, source));
 }
 
 namespace {
@@ -317,6 +361,72 @@ std::string zip_message(zip_error_t* e) {
   return m;
 }
 
+/// The .trk chosen in an open archive: its XML, its entry name and every entry's name.
+struct TrkInZip {
+  std::string xml, entry;
+  std::vector<std::string> entries;
+};
+
+/// Streams entry `index` of `z` to `sink` in chunks: memory grows with the data actually
+/// inflated, never with the size the archive claims, and stops at `max_bytes` (a zip bomb
+/// guard).
+template <class Sink>
+void read_entry(zip_t* z, zip_uint64_t index, const std::string& where, std::uint64_t max_bytes,
+                Sink&& sink) {
+  std::unique_ptr<zip_file_t, ZipFileCloser> f(zip_fopen_index(z, index, 0));
+  if (!f) throw InputError(where, std::string("cannot open entry: ") + zip_strerror(z));
+  std::vector<char> chunk(1 << 16);
+  std::uint64_t total = 0;
+  while (true) {
+    const zip_int64_t k = zip_fread(f.get(), chunk.data(), chunk.size());
+    if (k < 0) throw InputError(where, std::string("corrupt entry: ") + zip_file_strerror(f.get()));
+    if (k == 0) break;
+    total += static_cast<std::uint64_t>(k);
+    if (total > max_bytes) {
+      throw InputError(where, "entry too large (over " + std::to_string(max_bytes >> 20) + " MB)");
+    }
+    sink(chunk.data(), static_cast<std::size_t>(k));
+  }
+}
+
+TrkInZip trk_in_zip(zip_t* z, const std::string& source, const std::string& entry) {
+  TrkInZip out;
+  const zip_int64_t count = zip_get_num_entries(z, 0);
+  std::vector<std::string> trks;
+  zip_int64_t chosen = -1;
+  for (zip_int64_t i = 0; i < count; ++i) {
+    const char* name = zip_get_name(z, static_cast<zip_uint64_t>(i), 0);
+    if (name == nullptr) continue;
+    out.entries.emplace_back(name);
+    std::string lname(name);
+    for (char& c : lname) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!ends_with(lname, ".trk")) continue;
+    trks.emplace_back(name);
+    if (chosen < 0 && (entry.empty() || entry == name)) chosen = i;
+  }
+  if (trks.empty()) throw InputError(source, "the archive holds no .trk file");
+  if (chosen < 0) {
+    std::string list;
+    for (const auto& t : trks) list += (list.empty() ? "'" : ", '") + t + "'";
+    throw InputError(source, "no entry '" + entry + "' in the archive; its .trk files: " + list);
+  }
+  out.entry = zip_get_name(z, static_cast<zip_uint64_t>(chosen), 0);
+  read_entry(z, static_cast<zip_uint64_t>(chosen), source + ":" + out.entry, kMaxTrkBytes,
+             [&](const char* d, std::size_t n) { out.xml.append(d, n); });
+  return out;
+}
+
+std::unique_ptr<zip_t, ZipCloser> open_zip_file(const std::string& path) {
+  int code = 0;
+  zip_t* z = zip_open(path.c_str(), ZIP_RDONLY, &code);
+  if (z == nullptr) {
+    zip_error_t err;
+    zip_error_init_with_code(&err, code);
+    throw InputError(path, "not a readable .trz/zip archive: " + zip_message(&err));
+  }
+  return std::unique_ptr<zip_t, ZipCloser>(z);
+}
+
 }  // namespace
 
 track::TrackSet read_trz(std::string_view zip_bytes, const std::string& source,
@@ -331,184 +441,37 @@ track::TrackSet read_trz(std::string_view zip_bytes, const std::string& source,
     throw InputError(source, "not a valid .trz/zip archive: " + zip_message(&err));
   }
   zip_error_fini(&err);
-  const zip_int64_t count = zip_get_num_entries(z.get(), 0);
-  std::vector<std::string> trks;
-  zip_int64_t chosen = -1;
-  for (zip_int64_t i = 0; i < count; ++i) {
-    const char* name = zip_get_name(z.get(), static_cast<zip_uint64_t>(i), 0);
-    if (name == nullptr) continue;
-    std::string lname(name);
-    for (char& c : lname) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (!ends_with(lname, ".trk")) continue;
-    trks.emplace_back(name);
-    if (chosen < 0 && (entry.empty() || entry == name)) chosen = i;
-  }
-  if (trks.empty()) throw InputError(source, "the archive holds no .trk file");
-  if (chosen < 0) {
-    std::string list;
-    for (const auto& t : trks) list += (list.empty() ? "'" : ", '") + t + "'";
-    throw InputError(source, "no entry '" + entry + "' in the archive; its .trk files: " + list);
-  }
-  const std::string inner = source + ":" + zip_get_name(z.get(), static_cast<zip_uint64_t>(chosen), 0);
-  std::unique_ptr<zip_file_t, ZipFileCloser> f(zip_fopen_index(z.get(), static_cast<zip_uint64_t>(chosen), 0));
-  if (!f) throw InputError(inner, std::string("cannot open entry: ") + zip_strerror(z.get()));
-  // read in chunks: memory grows with the data actually inflated, never with the size the
-  // archive claims, and stops at kMaxTrkBytes (a zip bomb guard)
-  std::string xml;
-  std::vector<char> chunk(1 << 16);
-  while (true) {
-    const zip_int64_t k = zip_fread(f.get(), chunk.data(), chunk.size());
-    if (k < 0) throw InputError(inner, std::string("corrupt entry: ") + zip_file_strerror(f.get()));
-    if (k == 0) break;
-    if (xml.size() + static_cast<std::size_t>(k) > kMaxTrkBytes) {
-      throw InputError(inner, "entry too large (over 512 MB)");
-    }
-    xml.append(chunk.data(), static_cast<std::size_t>(k));
-  }
-  track::TrackSet set = parse_trk(xml, inner);
+  const TrkInZip trk = trk_in_zip(z.get(), source, entry);
+  track::TrackSet set = parse_trk(trk.xml, source + ":" + trk.entry);
   set.format = "trz";
   return set;
 }
 
-namespace {
-
-std::string num(double v) {
-  char buf[64];
-  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  std::string s(buf, ptr);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // Java writes 66.0
-  return s;
+TrzContents read_trz_file(const std::string& path, const std::string& entry) {
+  const auto z = open_zip_file(path);
+  TrkInZip trk = trk_in_zip(z.get(), path, entry);
+  TrzContents out;
+  out.project = parse_trk_project(trk.xml, path + ":" + trk.entry);
+  out.trk_entry = std::move(trk.entry);
+  out.entries = std::move(trk.entries);
+  return out;
 }
 
-std::string xml_escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
-    }
-  }
-  return o;
-}
-
-}  // namespace
-
-std::string write_trk(const std::vector<track::Track>& tracks, const TrkWriteSpec& spec) {
-  if (spec.coords.empty() || spec.coords.front().frame != 0) {
-    throw InputError("write_trk", "the first coordinate key frame must be frame 0");
-  }
-  int last_frame = spec.start_frame;
-  for (const auto& t : tracks) {
-    for (const auto& p : t.points) last_frame = std::max(last_frame, p.frame);
-  }
-  const int step_count = spec.step_count > 0 ? spec.step_count
-                                             : (last_frame - spec.start_frame) / spec.step_size + 1;
-  std::ostringstream o;
-  const bool fixed = spec.coords.size() == 1;
-  o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-    << "<object class=\"org.opensourcephysics.cabrillo.tracker.TrackerPanel\">\n"
-    << "    <property name=\"semantic_version\" type=\"string\">tribolab</property>\n"
-    << "    <property name=\"videoclip\" type=\"object\">\n"
-    << "    <object class=\"org.opensourcephysics.media.core.VideoClip\">\n"
-    << "        <property name=\"startframe\" type=\"int\">" << spec.start_frame << "</property>\n"
-    << "        <property name=\"stepsize\" type=\"int\">" << spec.step_size << "</property>\n"
-    << "        <property name=\"stepcount\" type=\"int\">" << step_count << "</property>\n"
-    << "        <property name=\"starttime\" type=\"double\">" << num(spec.start_time_ms) << "</property>\n"
-    << "    </object>\n    </property>\n"
-    << "    <property name=\"clipcontrol\" type=\"object\">\n"
-    << "    <object class=\"org.opensourcephysics.media.core.StepperClipControl\">\n"
-    << "        <property name=\"rate\" type=\"double\">1.0</property>\n"
-    << "        <property name=\"delta_t\" type=\"double\">" << num(spec.frame_duration_ms) << "</property>\n"
-    << "        <property name=\"frame\" type=\"int\">0</property>\n"
-    << "    </object>\n    </property>\n"
-    << "    <property name=\"coords\" type=\"object\">\n"
-    << "    <object class=\"org.opensourcephysics.media.core.ImageCoordSystem\">\n";
-  for (const char* f : {"fixedorigin", "fixedangle", "fixedscale"}) {
-    o << "        <property name=\"" << f << "\" type=\"boolean\">" << (fixed ? "true" : "false")
-      << "</property>\n";
-  }
-  o << "        <property name=\"locked\" type=\"boolean\">false</property>\n"
-    << "        <property name=\"framedata\" type=\"array\" "
-       "class=\"[Lorg.opensourcephysics.media.core.ImageCoordSystem$FrameData;\">\n";
-  for (const TrkCoordFrame& c : spec.coords) {
-    o << "            <property name=\"[" << c.frame << "]\" type=\"object\">\n"
-      << "            <object class=\"org.opensourcephysics.media.core.ImageCoordSystem$FrameData\">\n"
-      << "                <property name=\"xorigin\" type=\"double\">" << num(c.origin_x) << "</property>\n"
-      << "                <property name=\"yorigin\" type=\"double\">" << num(c.origin_y) << "</property>\n"
-      << "                <property name=\"angle\" type=\"double\">" << num(c.angle_deg) << "</property>\n"
-      << "                <property name=\"xscale\" type=\"double\">" << num(c.xscale) << "</property>\n"
-      << "                <property name=\"yscale\" type=\"double\">" << num(c.yscale) << "</property>\n"
-      << "            </object>\n            </property>\n";
-  }
-  o << "        </property>\n    </object>\n    </property>\n"
-    << "    <property name=\"length_unit\" type=\"string\">" << xml_escape(spec.length_unit)
-    << "</property>\n"
-    << "    <property name=\"tracks\" type=\"collection\" class=\"java.util.ArrayList\">\n";
-  for (const auto& t : tracks) {
-    o << "        <property name=\"item\" type=\"object\">\n"
-      << "        <object class=\"org.opensourcephysics.cabrillo.tracker.PointMass\">\n"
-      << "            <property name=\"mass\" type=\"double\">1.0</property>\n"
-      << "            <property name=\"name\" type=\"string\">" << xml_escape(t.name) << "</property>\n"
-      << "            <property name=\"framedata\" type=\"array\" "
-         "class=\"[Lorg.opensourcephysics.cabrillo.tracker.PointMass$FrameData;\">\n";
-    for (const auto& p : t.points) {
-      // key frame in force at this frame
-      TrkCoordFrame c = spec.coords.front();
-      for (const auto& k : spec.coords) {
-        if (k.frame <= p.frame) c = k;
-      }
-      const auto [px, py] = world_to_image(c, p.x, p.y);
-      o << "                <property name=\"[" << p.frame << "]\" type=\"object\">\n"
-        << "                <object class=\"org.opensourcephysics.cabrillo.tracker.PointMass$FrameData\">\n"
-        << "                    <property name=\"x\" type=\"double\">" << num(px) << "</property>\n"
-        << "                    <property name=\"y\" type=\"double\">" << num(py) << "</property>\n"
-        << "                </object>\n                </property>\n";
-    }
-    o << "            </property>\n        </object>\n        </property>\n";
-  }
-  o << "    </property>\n</object>\n";
-  return o.str();
-}
-
-std::string write_trz(const std::string& trk_xml, const std::string& entry_name) {
-  zip_error_t err;
-  zip_error_init(&err);
-  zip_source_t* out = zip_source_buffer_create(nullptr, 0, 0, &err);
-  if (out == nullptr) throw InputError("write_trz", zip_message(&err));
-  zip_source_keep(out);
-  zip_t* z = zip_open_from_source(out, ZIP_TRUNCATE, &err);
-  if (z == nullptr) {
-    zip_source_free(out);
-    throw InputError("write_trz", zip_message(&err));
-  }
-  zip_source_t* in = zip_source_buffer(z, trk_xml.data(), trk_xml.size(), 0);
-  if (in == nullptr || zip_file_add(z, entry_name.c_str(), in, ZIP_FL_OVERWRITE) < 0) {
-    if (in) zip_source_free(in);
-    zip_discard(z);
-    zip_source_free(out);
-    throw InputError("write_trz", "cannot add the entry");
-  }
-  if (zip_close(z) != 0) {
-    zip_discard(z);
-    zip_source_free(out);
-    throw InputError("write_trz", "cannot finish the archive");
-  }
-  std::string bytes;
-  if (zip_source_open(out) == 0) {
-    zip_source_seek(out, 0, SEEK_END);
-    const zip_int64_t size = zip_source_tell(out);
-    zip_source_seek(out, 0, SEEK_SET);
-    bytes.resize(static_cast<std::size_t>(std::max<zip_int64_t>(size, 0)));
-    const zip_int64_t got = zip_source_read(out, bytes.data(), bytes.size());
-    zip_source_close(out);
-    if (got != size) bytes.clear();
-  }
-  zip_source_free(out);
-  if (bytes.empty()) throw InputError("write_trz", "cannot read back the archive");
-  return bytes;
+void extract_zip_entry(const std::string& zip_path, const std::string& entry,
+                       const std::string& out_path, std::uint64_t max_bytes) {
+  const auto z = open_zip_file(zip_path);
+  const std::string where = zip_path + ":" + entry;
+  const zip_int64_t index = zip_name_locate(z.get(), entry.c_str(), 0);
+  if (index < 0) throw InputError(where, "no such entry in the archive");
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> out(std::fopen(out_path.c_str(), "wb"), &std::fclose);
+  if (!out) throw InputError(out_path, "cannot create the file");
+  read_entry(z.get(), static_cast<zip_uint64_t>(index), where, max_bytes,
+             [&](const char* d, std::size_t n) {
+               if (std::fwrite(d, 1, n, out.get()) != n) {
+                 throw InputError(out_path, "cannot write (disk full?)");
+               }
+             });
+  if (std::fflush(out.get()) != 0) throw InputError(out_path, "cannot write (disk full?)");
 }
 
 }  // namespace tribolab::io

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 namespace tribolab::io {
 namespace {
@@ -100,6 +103,55 @@ TEST(TrackerTrk, ZipRoundTripAndEntryChoice) {
   EXPECT_THROW(read_trz("PK\x03\x04garbage", "x.trz"), InputError);
 }
 
+TEST(TrackerTrk, ProjectKeepsItsVideoClipAndMarksInPixels) {
+  TrkWriteSpec s = spec();
+  s.video_path = "videos/throw & catch.mp4";
+  s.video_frame_count = 240;
+  s.step_count = 12;
+  const auto tracks = world_tracks();
+  const TrkProject p = parse_trk_project(write_trk(tracks, s), "p.trk");
+  EXPECT_EQ(p.video_path, "videos/throw & catch.mp4");
+  EXPECT_EQ(p.video_frame_count, 240);
+  EXPECT_EQ(p.clip.start_frame, 3);
+  EXPECT_EQ(p.clip.step_size, 2);
+  EXPECT_EQ(p.clip.step_count, 12);
+  EXPECT_DOUBLE_EQ(p.clip.frame_duration_ms, 1000.0 / 240);
+  EXPECT_EQ(p.length_unit, "m");
+  ASSERT_EQ(p.coords.size(), 1u);
+  ASSERT_EQ(p.marks_px.size(), 2u);
+  const auto& m = p.marks_px[0].points[4];
+  const auto [px, py] = world_to_image(s.coords[0], tracks[0].points[4].x, tracks[0].points[4].y);
+  EXPECT_EQ(m.frame, tracks[0].points[4].frame);
+  EXPECT_NEAR(m.x, px, 1e-10);  // printed shortest round-trip: the same double
+  EXPECT_NEAR(m.y, py, 1e-10);
+  EXPECT_DOUBLE_EQ(m.t, p.clip.t(m.frame));
+  // without a video the project says so with an empty path
+  EXPECT_TRUE(parse_trk_project(write_trk(tracks, spec()), "n.trk").video_path.empty());
+}
+
+TEST(TrackerTrk, TrzOnDiskIsReadAndItsEntriesExtracted) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tribolab_trz_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string zip = (dir / "p.trz").string();
+  const std::string video(100000, 'v');
+  {
+    std::ofstream out(zip, std::ios::binary);
+    out << write_trz(write_trk(world_tracks(), spec()), "sub/p.trk", {{"sub/videos/a.mp4", video}});
+  }
+  const TrzContents z = read_trz_file(zip);
+  EXPECT_EQ(z.trk_entry, "sub/p.trk");
+  EXPECT_EQ(z.entries.size(), 2u);
+  EXPECT_EQ(z.project.source, zip + ":sub/p.trk");
+  const std::string out = (dir / "a.mp4").string();
+  extract_zip_entry(zip, "sub/videos/a.mp4", out);
+  std::ifstream in(out, std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), video);
+  EXPECT_THROW(extract_zip_entry(zip, "missing.mp4", out), InputError);
+  EXPECT_THROW(extract_zip_entry(zip, "sub/videos/a.mp4", out, 1000), InputError);  // over the cap
+  EXPECT_THROW(read_trz_file((dir / "none.trz").string()), InputError);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(TrackerTrk, LengthUnitCentimetresIsConvertedToMetres) {
   TrkWriteSpec s = spec();
   s.length_unit = "cm";
@@ -163,6 +215,19 @@ TEST(TrackerTrk, NoPointMassIsAnError) {
   std::string xml = write_trk(world_tracks(), spec());
   while (xml.find(".PointMass\"") != std::string::npos) xml = replace(xml, ".PointMass\"", ".Protractor\"");
   expect_error(xml, "no PointMass");
+}
+
+TEST(TrackerTrk, FixedCoordinateSystemTakesTheLastKeyEverywhere) {
+  TrkWriteSpec s = spec();
+  s.coords = {{0, 320, 240, 0, 400, 400}, {11, 300, 260, 10, 500, 480}};
+  std::string xml = write_trk(world_tracks(), s);
+  xml = replace(xml, "\"fixedscale\" type=\"boolean\">false", "\"fixedscale\" type=\"boolean\">true");
+  const TrkProject p = parse_trk_project(xml, "f.trk");
+  ASSERT_EQ(p.coords.size(), 2u);
+  EXPECT_EQ(p.coords[0].xscale, 500);  // the scale is fixed: the last saved value holds
+  EXPECT_EQ(p.coords[0].origin_x, 320);  // the origin is not
+  EXPECT_EQ(coord_at(p.coords, 5).frame, 0);
+  EXPECT_EQ(coord_at(p.coords, 11).frame, 11);
 }
 
 }  // namespace

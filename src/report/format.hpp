@@ -45,6 +45,10 @@ std::string script_safe(std::string_view js);
 /// "<", ">", "&" written as \u003c, \u003e, \u0026 so no text can close the block.
 std::string json_for_script(const nlohmann::json& j);
 
+/// Base64 (RFC 4648, section 4: A-Z a-z 0-9 + /, '=' padding, no line breaks), for data
+/// URIs: "foob" -> "Zm9vYg==".
+std::string base64(std::string_view bytes);
+
 /// An HTML id from a heading: lower-case ASCII letters and digits joined by '-'
 /// ("Incline: x–t" -> "incline-x-t"); `fallback` when nothing is left.
 std::string slugify(std::string_view text, std::string_view fallback = "section");

@@ -152,6 +152,42 @@ TEST(Slugify, AsciiWordsJoinedByDashes) {
   EXPECT_EQ(slugify("", "plot"), "plot");
 }
 
+TEST(Base64, RfcTestVectors) {
+  // RFC 4648, section 10: every padding case.
+  EXPECT_EQ(base64(""), "");
+  EXPECT_EQ(base64("f"), "Zg==");
+  EXPECT_EQ(base64("fo"), "Zm8=");
+  EXPECT_EQ(base64("foo"), "Zm9v");
+  EXPECT_EQ(base64("foob"), "Zm9vYg==");
+  EXPECT_EQ(base64("fooba"), "Zm9vYmE=");
+  EXPECT_EQ(base64("foobar"), "Zm9vYmFy");
+}
+
+TEST(Base64, HighBytesUseTheWholeAlphabetAndDecodeBack) {
+  // Bytes >= 0x80 must not be sign-extended: FF FF FF is "////", FB FF is "+/8=".
+  EXPECT_EQ(base64("\xFF\xFF\xFF"), "////");
+  EXPECT_EQ(base64("\xFB\xFF"), "+/8=");
+  // Every byte value once, decoded back by an independent reading of the alphabet.
+  std::string all;
+  for (int b = 0; b < 256; ++b) all += static_cast<char>(b);
+  const std::string enc = base64(all);
+  ASSERT_EQ(enc.size(), 344u);  // ceil(256 / 3) * 4
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string dec;
+  unsigned bits = 0;
+  int n = 0;
+  for (char c : enc) {
+    if (c == '=') break;
+    bits = (bits << 6) | static_cast<unsigned>(alphabet.find(c));
+    n += 6;
+    if (n >= 8) {
+      n -= 8;
+      dec += static_cast<char>((bits >> n) & 0xFF);
+    }
+  }
+  EXPECT_EQ(dec, all);
+}
+
 TEST(Embedded, PlotlyLibraryAndVersionAreInTheBinary) {
   // The vendored file begins with its licence banner naming the version.
   const std::string_view js = plotly_js();

@@ -42,6 +42,10 @@ td.num { text-align: right; white-space: nowrap; }
 figure { margin: 16px 0; }
 .tribolab-plot { width: 100%; }
 figcaption { color: var(--muted); font-size: 0.95rem; }
+.gallery { display: flex; flex-wrap: wrap; gap: 12px; margin: 16px 0 4px; }
+.gallery figure { margin: 0; max-width: 100%; }
+.gallery img { display: block; max-width: 100%; height: auto; border: 1px solid var(--rule); }
+.gallery-caption { color: var(--muted); font-size: 0.95rem; margin-top: 0; }
 footer { border-top: 1px solid var(--rule); color: var(--muted); font-size: 0.9rem; padding-top: 10px;
   padding-bottom: 30px; }
 )CSS";
@@ -66,7 +70,9 @@ window.addEventListener('unhandledrejection', function (event) {
 });
 )JS";
 
-// Draws every figure; the status becomes "ok N" once all N Plotly.newPlot promises resolved.
+// Draws every figure and decodes every embedded image; the status becomes "ok N" once all N
+// Plotly.newPlot promises and every image's decode() resolved (an image that does not decode
+// is an error naming it).
 constexpr const char* kRender = R"JS(
 (function () {
   var fail = function (e) {
@@ -79,8 +85,13 @@ constexpr const char* kRender = R"JS(
     var jobs = spec.figures.map(function (f) {
       return Plotly.newPlot(f.id, f.data, f.layout, f.config);
     });
-    Promise.all(jobs).then(function (plots) {
-      window.tribolabShowStatus('ok ' + plots.length);
+    var images = Array.prototype.map.call(document.querySelectorAll('img.tribolab-image'), function (img, i) {
+      return img.decode().catch(function () {
+        throw new Error('image ' + (i + 1) + ' (' + img.alt + ') could not be decoded');
+      });
+    });
+    Promise.all([Promise.all(jobs), Promise.all(images)]).then(function (done) {
+      window.tribolabShowStatus('ok ' + done[0].length);
     }, fail);
   } catch (e) {
     fail(e);
@@ -230,6 +241,21 @@ class Writer {
             std::to_string(figure_number_) + ". " +
             html_escape(f.caption.empty() ? f.title : f.caption) +
             "</figcaption>\n</figure>\n";
+  }
+
+  void block(const Gallery& g) {
+    out_ += "<div class=\"gallery\">\n";
+    for (const Image& im : g.images) {
+      const std::string alt = im.alt.empty() ? im.caption : im.alt;
+      out_ += "<figure><img class=\"tribolab-image\" alt=\"" + html_escape(alt) + "\" src=\"data:" +
+              image_mime(im.data) + ";base64,";
+      out_ += base64(std::string_view(reinterpret_cast<const char*>(im.data.data()), im.data.size()));
+      out_ += "\">";
+      if (!im.caption.empty()) out_ += "<figcaption>" + html_escape(im.caption) + "</figcaption>";
+      out_ += "</figure>\n";
+    }
+    out_ += "</div>\n";
+    if (!g.caption.empty()) out_ += "<p class=\"gallery-caption\">" + html_escape(g.caption) + "</p>\n";
   }
 
   std::string& out_;

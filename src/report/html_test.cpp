@@ -105,7 +105,7 @@ TEST(Html, PageIsSelfContainedWithStatusMarkerAndLibrary) {
   const std::string html = to_html(two_figure_report());
   EXPECT_NE(html.find("<div id=\"tribolab-status\" hidden>pending</div>"), std::string::npos);
   EXPECT_NE(html.find("window.onerror"), std::string::npos);
-  EXPECT_NE(html.find("tribolabShowStatus('ok ' + plots.length)"), std::string::npos);
+  EXPECT_NE(html.find("tribolabShowStatus('ok ' + done[0].length)"), std::string::npos);
   EXPECT_NE(html.find("Plotly.newPlot"), std::string::npos);
   EXPECT_NE(html.find("* plotly.js v"), std::string::npos);  // the library's own banner
   // Nothing is loaded from outside: no script or stylesheet references anywhere.
@@ -238,6 +238,38 @@ TEST(Html, TableRowsLinkTheirFirstCellToRelativePathsOnly) {
   u.links = {"a.html"};
   q.add_section("T").add_table(u);
   EXPECT_NE(q.validate().find("1 links for 2 rows"), std::string::npos);
+}
+
+TEST(Html, GalleryEmbedsImagesAsDataUrisWithEscapedCaptions) {
+  // The 8-byte PNG signature plus one byte, and a JPEG start: enough for the writer, which
+  // only reads the signature (the browser test decodes real images).
+  const std::vector<unsigned char> png = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0x00};
+  const std::vector<unsigned char> jpeg = {0xFF, 0xD8, 0xFF, 0xE0};
+  Report r;
+  r.add_section("Frames").add_gallery({"all <frames>", {{png, "frame 1 & t = 0 s", ""}, {jpeg, "frame 2", "a \"quoted\" alt"}}});
+  const std::string body = body_of(to_html(r));
+  // base64 of 89 50 4E 47 0D 0A 1A 0A 00 is "iVBORw0KGgoA"; of FF D8 FF E0 is "/9j/4A==".
+  EXPECT_NE(body.find("<figure><img class=\"tribolab-image\" alt=\"frame 1 &amp; t = 0 s\" "
+                      "src=\"data:image/png;base64,iVBORw0KGgoA\"><figcaption>frame 1 &amp; t = 0 s</figcaption></figure>"),
+            std::string::npos)
+      << body;
+  EXPECT_NE(body.find("alt=\"a &quot;quoted&quot; alt\" src=\"data:image/jpeg;base64,/9j/4A==\">"), std::string::npos)
+      << body;
+  EXPECT_NE(body.find("<p class=\"gallery-caption\">all &lt;frames&gt;</p>"), std::string::npos);
+  // Images are not plots: the page still waits for no plot, but checks that every image decodes.
+  EXPECT_EQ(count(body, "class=\"tribolab-plot\""), 0u);
+  EXPECT_NE(body.find("img.decode()"), std::string::npos);
+}
+
+TEST(Html, GalleryRefusesBytesThatAreNotAnImage) {
+  Report r;
+  r.add_section("Frames").add_gallery({"g", {{{0xFF, 0xD8, 0xFF}, "fine", ""}, {{'G', 'I', 'F', '8'}, "frame 4", ""}}});
+  EXPECT_EQ(r.validate(), "section 'Frames', gallery 'g', image 2 ('frame 4'): not a JPEG or PNG file (4 bytes)");
+  Report e;
+  e.add_section("Frames").add_gallery({"g", {{{}, "empty", ""}}});
+  EXPECT_NE(e.validate().find("image 1 ('empty'): not a JPEG or PNG file (0 bytes)"), std::string::npos);
+  EXPECT_THROW(to_html(e), std::invalid_argument);
+  EXPECT_EQ(image_mime({0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A}), "");  // a signature cut short
 }
 
 TEST(Report, SectionReferencesStayValidWhileAddingSections) {

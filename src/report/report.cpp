@@ -1,5 +1,7 @@
 #include "report/report.hpp"
 
+#include <algorithm>
+#include <initializer_list>
 #include <string>
 
 namespace tribolab::report {
@@ -82,6 +84,20 @@ Section& Section::add_figure(Figure figure) {
   return *this;
 }
 
+Section& Section::add_gallery(Gallery gallery) {
+  blocks.emplace_back(std::move(gallery));
+  return *this;
+}
+
+std::string image_mime(const std::vector<unsigned char>& d) {
+  auto starts = [&d](std::initializer_list<unsigned char> sig) {
+    return d.size() >= sig.size() && std::equal(sig.begin(), sig.end(), d.begin());
+  };
+  if (starts({0xFF, 0xD8, 0xFF})) return "image/jpeg";
+  if (starts({0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A})) return "image/png";
+  return {};
+}
+
 int Section::figure_count() const {
   int n = 0;
   for (const Block& b : blocks) n += std::holds_alternative<Figure>(b) ? 1 : 0;
@@ -115,6 +131,14 @@ std::string Report::validate() const {
     for (const Block& b : s.blocks) {
       if (const auto* f = std::get_if<Figure>(&b)) {
         if (auto e = f->validate(); !e.empty()) return where + "figure '" + f->title + "': " + e;
+      } else if (const auto* g = std::get_if<Gallery>(&b)) {
+        for (std::size_t i = 0; i < g->images.size(); ++i) {
+          if (image_mime(g->images[i].data).empty()) {
+            return where + "gallery '" + g->caption + "', image " + std::to_string(i + 1) + " ('" +
+                   g->images[i].caption + "'): not a JPEG or PNG file (" + std::to_string(g->images[i].data.size()) +
+                   " bytes)";
+          }
+        }
       } else if (const auto* t = std::get_if<Table>(&b)) {
         if (!t->links.empty() && t->links.size() != t->rows.size()) {
           return where + "table '" + t->caption + "': " + std::to_string(t->links.size()) + " links for " +

@@ -116,8 +116,27 @@ struct Figure {
   std::string validate() const;
 };
 
+/// An encoded still image, e.g. a video frame with the tracks drawn (cv::imencode's output).
+/// It is embedded in the page as a base64 data URI, so the report stays one offline file.
+struct Image {
+  std::vector<unsigned char> data;  ///< the bytes of a JPEG or PNG file
+  std::string caption;              ///< plain text under the image, e.g. "frame 12, t = 0.050 s"
+  std::string alt;                  ///< read out in place of the image; empty: the caption
+};
+
+/// The MIME type of encoded image bytes from their signature: "image/jpeg" (FF D8 FF),
+/// "image/png" (89 50 4E 47 0D 0A 1A 0A), or "" for anything else.
+std::string image_mime(const std::vector<unsigned char>& data);
+
+/// Images side by side, wrapping to the page width (e.g. thumbnails of video frames). Each
+/// keeps its natural size up to the page width; the page checks that every one decodes.
+struct Gallery {
+  std::string caption;  ///< plain text under the whole group; may be empty
+  std::vector<Image> images;
+};
+
 /// One block of a section, in reading order.
-using Block = std::variant<Paragraph, Subheading, List, Equation, Table, Figure>;
+using Block = std::variant<Paragraph, Subheading, List, Equation, Table, Figure, Gallery>;
 
 /// A section of the report: a heading (<h2>, listed in the table of contents) and blocks.
 struct Section {
@@ -130,6 +149,7 @@ struct Section {
   Section& add_equation(std::string text, std::string source, std::string note = {});
   Section& add_table(Table table);
   Section& add_figure(Figure figure);
+  Section& add_gallery(Gallery gallery);
 
   /// Number of figures in this section.
   int figure_count() const;
@@ -147,8 +167,9 @@ struct Report {
 
   /// Number of figures in the report (= plots the page draws).
   int figure_count() const;
-  /// Empty when the report can be written; else the first problem, naming the figure or
-  /// table ("section 'Incline', figure 'x-t': series 'data': x has 10 values, y has 9").
+  /// Empty when the report can be written; else the first problem, naming the figure, table
+  /// or gallery ("section 'Incline', figure 'x-t': series 'data': x has 10 values, y has 9";
+  /// "section 'Frames', gallery 'g', image 2 ('frame 4'): not a JPEG or PNG file").
   std::string validate() const;
 };
 

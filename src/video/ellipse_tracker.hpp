@@ -15,7 +15,8 @@
 namespace tribolab::video {
 
 struct EllipseTrackerOptions {
-  double min_score = 0.6;      ///< below this edge-fit quality the object is lost
+  double min_score = 0.6;      ///< below this edge-fit quality (fraction of edge points kept
+                               ///< times shape agreement, in [0, 1]) the object is lost
   int max_gap_frames = 8;      ///< frames the motion model may bridge before giving up
   std::string validate() const;
 };
@@ -25,6 +26,10 @@ struct EllipseObservation {
   Observation centre;          ///< centre, orientation (angle_rad: direction centre->A), axes
   double ax_px = 0, ay_px = 0; ///< end A of the major axis, px
   double bx_px = 0, by_px = 0; ///< end B, px
+  /// The axes differ by less than 5 %: no measurable orientation, so angle_rad and the ends
+  /// A, B follow the spin predicted from earlier frames (constant for an object always round).
+  bool round = false;
+  double rms_px = 0;           ///< rms distance of the edge points from the fitted ellipse, px
 };
 
 class EllipseTracker {

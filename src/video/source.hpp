@@ -82,6 +82,8 @@ struct VideoInput {
   Calibration calibration;
   std::string input;               ///< what the user named (video, .trk or .trz)
   std::string project_video;       ///< the video path as the project names it ("" for a plain video)
+  /// The video as a file that outlives this run ("" when it lives only inside a .trz).
+  std::string video_file;
   /// The project's tracks in image pixels (x right, y down), by frame; empty for a plain video.
   std::vector<track::Track> marks_px;
   std::vector<std::string> warnings;  ///< e.g. "no scale: positions are in pixels"

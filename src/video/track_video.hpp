@@ -10,6 +10,7 @@
 #include "video/source.hpp"
 
 #include <functional>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,5 +85,18 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
 
 /// The tracked positions as a TrackSet (lost rows left out), for the analyses and --write-trk.
 track::TrackSet to_track_set(const TrackVideoResult& result);
+
+/// Writes the table track,frame,t,x,y,x_px,y_px,score (docs/cli.md#track-video): one row per
+/// series and clip step from its start, numbers in shortest round-trip form; a lost row has
+/// empty x, y, x_px, y_px and score 0.
+void write_csv(std::ostream& out, const TrackVideoResult& result);
+
+/// The result as a Tracker project (PointMass tracks, the video relative to `trk_path`'s
+/// folder, the clip, the time base with any time scale folded into the frame duration, and
+/// the coordinate system), so that Tracker opens it with its video and `track import` reads
+/// back the CSV's numbers. Adds a warning to `warnings` when the video cannot be named
+/// (a video inside a .trz).
+io::TrkWriteSpec trk_spec(const TrackVideoResult& result, const std::string& trk_path,
+                          std::vector<std::string>& warnings);
 
 }  // namespace tribolab::video

@@ -1,5 +1,6 @@
 // Writes a sample report that exercises every block and figure kind of the report writer,
-// for the browser test (check_report.sh): 4 figures. The data are simple closed forms
+// for the browser test (check_report.sh): 4 figures and a gallery of two images (a JPEG and a
+// PNG encoded by OpenCV, which the page must decode). The data are simple closed forms
 // (a free-fall parabola, a power law, a smooth function on a grid), not measurements.
 //
 //   report_sample OUT.html             the test report
@@ -9,11 +10,15 @@
 #include "report/format.hpp"
 #include "report/html.hpp"
 
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
 #include <cmath>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -115,6 +120,19 @@ rpt::Figure trajectory_equal_aspect() {
   return f;
 }
 
+/// A picture drawn with OpenCV (a grey ramp with a red disc and its label), encoded as `ext`.
+rpt::Image drawn_image(const std::string& ext, std::string caption) {
+  cv::Mat img(120, 160, CV_8UC3);
+  for (int i = 0; i < img.rows; ++i)
+    for (int j = 0; j < img.cols; ++j) img.at<cv::Vec3b>(i, j) = cv::Vec3b::all(static_cast<unsigned char>(100 + j / 2));
+  cv::circle(img, cv::Point(80, 60), 30, cv::Scalar(40, 40, 200), cv::FILLED, cv::LINE_AA);
+  cv::putText(img, ext, cv::Point(8, 110), cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  rpt::Image im;
+  if (!cv::imencode(ext, img, im.data)) throw std::runtime_error("OpenCV cannot encode " + ext);
+  im.caption = std::move(caption);
+  return im;
+}
+
 rpt::Report sample() {
   rpt::Report r;
   r.title = "Sample <script>alert('x')</script> & \"report\"";
@@ -139,6 +157,9 @@ rpt::Report sample() {
   plots.add_figure(power_law_log_axes());
   plots.add_figure(heatmap_with_boundary());
   plots.add_figure(trajectory_equal_aspect());
+  auto& images = r.add_section("Images");
+  images.add_gallery({"Two images drawn by OpenCV, embedded as data URIs <not links>.",
+                      {drawn_image(".jpg", "a JPEG & its caption"), drawn_image(".png", "a PNG")}});
   return r;
 }
 

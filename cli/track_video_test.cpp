@@ -1,0 +1,188 @@
+// `tribolab track video` as a user runs it: the real binary on videos rendered here.
+#include "cli_test_util.hpp"
+
+#include "io/track_import.hpp"
+#include "io/tracker_trk.hpp"
+#include "video/render.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace tribolab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::expect_error;
+using testing::run_json;
+using testing::run_tribolab;
+using testing::slurp;
+using testing::temp_dir;
+
+constexpr double kFps = 50;
+constexpr int kFrames = 24;
+
+/// A disc with a checker sticker crossing at 6 px per frame, and a spinning red ellipse.
+cv::Point2d mark_at(int frame) { return {30 + 6.0 * frame, 60}; }
+cv::Point2d ball_at(int frame) { return {60 + 4.0 * frame, 170 - 2.0 * frame}; }
+
+video::Scene scene() {
+  return [](double t) {
+    const double f = t * kFps;
+    video::ShapePose disc;
+    disc.cx_px = 30 + 6 * f;
+    disc.cy_px = 60;
+    disc.a_px = disc.b_px = 12;
+    disc.colour = cv::Scalar(90, 160, 90);
+    disc.mark = true;
+    disc.mark_size_px = 15;
+    video::ShapePose e;
+    e.cx_px = 60 + 4 * f;
+    e.cy_px = 170 - 2 * f;
+    e.a_px = 20;
+    e.b_px = 13;
+    e.angle_rad = 0.2 + 0.1 * f;
+    e.colour = cv::Scalar(40, 40, 210);
+    return std::vector<video::ShapePose>{disc, e};
+  };
+}
+
+std::string film(const std::string& dir) {
+  video::RenderOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.fps = kFps;
+  o.shutter_fraction = 0.3;
+  o.background = video::RenderOptions::Background::plain;
+  o.noise_sigma = 1;
+  const std::string path = dir + "/film.avi";
+  video::write_video(path, scene(), kFrames, o);
+  return path;
+}
+
+std::string q(const std::string& s) { return "'" + s + "'"; }
+
+TEST(TrackVideoCli, PointAndEllipseToCsvAndJsonSummary) {
+  const std::string dir = temp_dir("tv_both");
+  const std::string video = film(dir), out = dir + "/tracks.csv";
+  const auto j = run_json("track video " + q(video) + " --start 'mark=30,60' --ellipse 'ball=76,162@4'" +
+                          " --scale 0.001 --out " + q(out));
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j["frames"], kFrames);
+  EXPECT_DOUBLE_EQ(j["fps"].get<double>(), kFps);
+  EXPECT_EQ(j["video"]["width"], 320);
+  EXPECT_EQ(j["video"]["codec"], "MJPG");
+  EXPECT_EQ(j["time_base"]["time_scale"], 1.0);
+  EXPECT_EQ(j["calibration"]["calibrated"], true);
+  EXPECT_DOUBLE_EQ(j["calibration"]["m_per_px"].get<double>(), 0.001);
+  EXPECT_EQ(j["track_names"], nlohmann::json({"mark", "ball", "ball.A", "ball.B"}));
+  EXPECT_EQ(j["tracks"]["mark"]["tracked"], kFrames);
+  EXPECT_EQ(j["tracks"]["mark"]["lost"], 0);
+  EXPECT_EQ(j["tracks"]["ball"]["start_frame"], 4);
+  EXPECT_EQ(j["tracks"]["ball.B"]["rows"], kFrames - 4);
+  EXPECT_GT(j["tracks"]["mark"]["median_score"].get<double>(), 0.8);
+  EXPECT_TRUE(j["tracks"]["mark"]["vs_human"].is_null());
+  EXPECT_TRUE(j["warnings"].empty());
+  const std::string csv = slurp(out);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "track,frame,t,x,y,x_px,y_px,score");
+  EXPECT_EQ(testing::count_lines(csv), 1 + kFrames + 3 * (kFrames - 4));
+  // the file is what `track import` and the analyses read directly
+  const track::TrackSet set = io::read_tracks(out);
+  const track::Track& mark = set.find("mark");
+  ASSERT_EQ(mark.points.size(), static_cast<std::size_t>(kFrames));
+  for (const auto& p : mark.points) {
+    // 1 mm per px from the bottom-left pixel: the sticker's centre to the trackers' accuracy
+    // (~0.1 px measured in their tests; 0.5 px allows MJPG and noise)
+    EXPECT_NEAR(p.x, mark_at(p.frame).x * 0.001, 0.5e-3) << p.frame;
+    EXPECT_NEAR(p.y, (239 - mark_at(p.frame).y) * 0.001, 0.5e-3) << p.frame;
+    EXPECT_DOUBLE_EQ(p.t, p.frame / kFps);
+  }
+  const track::Track& ball = set.find("ball");
+  EXPECT_NEAR(ball.points.back().x, ball_at(kFrames - 1).x * 0.001, 0.5e-3);
+}
+
+TEST(TrackVideoCli, WrittenTrackerProjectImportsToTheCsvNumbers) {
+  const std::string dir = temp_dir("tv_trk");
+  const std::string video = film(dir), out = dir + "/tracks.csv", trk = dir + "/tracks.trk";
+  const auto j = run_json("track video " + q(video) + " --start mark=30,60 --calibrate 0,0,200,0,0.5" +
+                          " --origin 10,230 --axes-deg 5 --time-scale 0.125 --out " + q(out) +
+                          " --write-trk " + q(trk));
+  EXPECT_EQ(j["write_trk"], trk);
+  EXPECT_DOUBLE_EQ(j["calibration"]["m_per_px"].get<double>(), 0.5 / 200);
+  const track::TrackSet a = io::read_tracks(out), b = io::read_tracks(trk);
+  ASSERT_EQ(b.tracks.size(), 1u);
+  ASSERT_EQ(a.tracks[0].points.size(), b.tracks[0].points.size());
+  for (std::size_t k = 0; k < a.tracks[0].points.size(); ++k) {
+    const auto& p = a.tracks[0].points[k];
+    const auto& r = b.tracks[0].points[k];
+    EXPECT_EQ(p.frame, r.frame);
+    // m -> px written in shortest round-trip form -> m; s vs Tracker's ms: rounding only
+    EXPECT_NEAR(p.x, r.x, 1e-12);
+    EXPECT_NEAR(p.y, r.y, 1e-12);
+    EXPECT_NEAR(p.t, r.t, 1e-14);
+  }
+  // and the project opens with its video: tracking it again from its own track works
+  const auto again = run_json("track video " + q(trk) + " --from-track mark --out " + q(dir + "/again.csv"));
+  EXPECT_EQ(again["tracks"]["mark"]["vs_human"]["frames"], kFrames - 1);
+  // the same tracker on the same frames, started from the first run's refined start point
+  // (a sub-pixel shift of the template): the two runs agree to a small fraction of a pixel
+  EXPECT_LT(again["tracks"]["mark"]["vs_human"]["median_px"].get<double>(), 0.2);
+}
+
+TEST(TrackVideoCli, HelpListsEveryOption) {
+  const auto r = run_tribolab("track video --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* opt : {"--out", "--start", "--ellipse", "--from-track", "--scale", "--calibrate",
+                          "--origin", "--axes-deg", "--fps", "--time-scale", "--write-trk", "--json"}) {
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  }
+}
+
+TEST(TrackVideoCli, BadInputIsOneErrorLineAndNoOutputFile) {
+  const std::string dir = temp_dir("tv_bad");
+  const std::string video = film(dir), out = dir + "/out.csv", trk = dir + "/out.trk";
+  const std::string tail = " --out " + q(out) + " --write-trk " + q(trk);
+  std::ofstream(dir + "/notes.mp4") << "not a video\n";
+  const std::string bytes = slurp(video);
+  std::ofstream(dir + "/cut.avi", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  {
+    io::TrkWriteSpec spec;
+    spec.video_path = "videos/film.avi";
+    track::Track t{"hand", {{3, 0, 0.1, 0.2}}};
+    std::ofstream(dir + "/novideo.trz", std::ios::binary) << io::write_trz(io::write_trk({t}, spec), "p.trk");
+    spec.video_path = "film.avi";
+    std::ofstream(dir + "/p.trk") << io::write_trk({t}, spec);
+  }
+  const std::pair<std::string, std::string> cases[] = {
+      {q(dir + "/missing.avi") + " --start a=1,1", "missing.avi: no such file"},
+      {q(dir + "/notes.mp4") + " --start a=1,1", "cannot be decoded as a video"},
+      {q(dir + "/cut.avi") + " --start mark=30,60", "truncated"},
+      {q(video) + " --start mark=400,60", "outside the 320x240 image"},
+      {q(video) + " --start mark=300,20", "mark"},  // a featureless patch of plain background
+      {q(video) + " --start mark=30;60", "--start mark=30;60"},
+      {q(video) + " --start =30,60", "NAME=X,Y"},
+      {q(video) + " --start mark=30,60@-2", "frame"},
+      {q(video), "nothing to track"},
+      {q(dir + "/novideo.trz") + " --from-track hand", "no video"},
+      {q(dir + "/p.trk") + " --from-track nobody", "its tracks: 'hand'"},
+      {q(video) + " --from-track hand", "only a Tracker project"},
+      {q(video) + " --start mark=30,60 --scale 0.001 --calibrate 0,0,10,0,1", "not both"},
+      {q(video) + " --start mark=30,60 --fps 0.1", "--fps"},
+  };
+  for (const auto& [args, mention] : cases) {
+    expect_error(run_tribolab("track video " + args + tail), mention, args);
+    EXPECT_FALSE(fs::exists(out)) << args;
+    EXPECT_FALSE(fs::exists(trk)) << args;
+  }
+  expect_error(run_tribolab("track video " + q(video) + " --start mark=30,60 --out " + q(out) +
+                            " --write-trk " + q(dir + "/x.txt")),
+               ".trk");
+  EXPECT_FALSE(fs::exists(out));
+  // no leftover temporary files beside the outputs
+  for (const auto& e : fs::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  }
+}
+
+}  // namespace
+}  // namespace tribolab::cli

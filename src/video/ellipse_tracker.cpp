@@ -1,0 +1,422 @@
+// EllipseTracker (docs/theory.md#ellipse-tracking): predict, segment by colour distance,
+// refine the edge to sub-pixel, label the ends of the major axis continuously.
+#include "video/ellipse_tracker.hpp"
+
+#include "numerics/error.hpp"
+#include "video/ellipse_fit.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numbers>
+#include <sstream>
+
+namespace tribolab::video {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr std::size_t kMotionPoints = 8;  ///< centres in the parabola fit
+constexpr std::size_t kSpinPoints = 6;    ///< orientations in the spin fit
+constexpr double kRoundRatio = 0.05;      ///< (a - b) / a below this: no orientation
+constexpr double kRoundPx = 0.5;          ///< nor with the axes closer than this, px
+constexpr double kConfidentScore = 0.9;   ///< a fit from the prediction this good needs no search
+
+/// Distance of every pixel of `roi` to `colour` (per channel, grey levels): low inside the
+/// object, |background - object| outside, linear in the mixing fraction across an edge.
+cv::Mat colour_distance(const Frame& frame, const cv::Rect& roi, const cv::Vec3d& colour) {
+  const cv::Mat& img = frame.bgr.empty() ? frame.gray : frame.bgr;
+  cv::Mat out(roi.height, roi.width, CV_32F);
+  const int ch = img.channels();
+  const float c0 = static_cast<float>(colour[0]), c1 = static_cast<float>(colour[1]), c2 = static_cast<float>(colour[2]);
+  for (int r = 0; r < roi.height; ++r) {
+    const unsigned char* p = img.ptr<unsigned char>(roi.y + r) + static_cast<std::ptrdiff_t>(roi.x) * ch;
+    float* o = out.ptr<float>(r);
+    if (ch == 3) {
+      for (int c = 0; c < roi.width; ++c) {
+        const float d0 = p[3 * c] - c0, d1 = p[3 * c + 1] - c1, d2 = p[3 * c + 2] - c2;
+        o[c] = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+      }
+    } else {
+      for (int c = 0; c < roi.width; ++c) o[c] = std::abs(p[c * ch] - c0);
+    }
+  }
+  return out;
+}
+
+/// Least-squares polynomial (degree <= 2) through (s, v), evaluated at s = x.
+double poly_predict(const std::vector<double>& s, const std::vector<double>& v, int degree, double x) {
+  const int n = static_cast<int>(s.size());
+  cv::Mat A(n, degree + 1, CV_64F), b(n, 1, CV_64F), coef;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j <= degree; ++j) A.at<double>(i, j) = std::pow(s[static_cast<std::size_t>(i)], j);
+    b.at<double>(i) = v[static_cast<std::size_t>(i)];
+  }
+  cv::solve(A, b, coef, cv::DECOMP_QR);
+  double y = 0;
+  for (int j = 0; j <= degree; ++j) y += coef.at<double>(j) * std::pow(x, j);
+  return y;
+}
+
+/// Per-channel median of the pixels of `img` where `mask` is set.
+cv::Vec3d median_colour(const cv::Mat& img, const cv::Mat& mask) {
+  cv::Vec3d out;
+  std::vector<std::vector<unsigned char>> v(static_cast<std::size_t>(img.channels()));
+  for (int r = 0; r < img.rows; ++r) {
+    const unsigned char* p = img.ptr<unsigned char>(r);
+    const unsigned char* m = mask.ptr<unsigned char>(r);
+    for (int c = 0; c < img.cols; ++c) {
+      if (!m[c]) continue;
+      for (int k = 0; k < img.channels(); ++k) v[static_cast<std::size_t>(k)].push_back(p[c * img.channels() + k]);
+    }
+  }
+  for (int k = 0; k < img.channels(); ++k) {
+    auto& w = v[static_cast<std::size_t>(k)];
+    if (w.empty()) continue;
+    std::nth_element(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(w.size() / 2), w.end());
+    out[k] = w[w.size() / 2];
+  }
+  return out;
+}
+
+/// Sensor noise sd of a grey image, robust to edges: 1.4826 MAD of horizontal neighbour
+/// differences over sqrt(2).
+double noise_sd(const cv::Mat& img) {
+  std::vector<int> d;
+  const int ch = img.channels();
+  for (int r = 0; r < img.rows; ++r) {
+    const unsigned char* p = img.ptr<unsigned char>(r);
+    for (int c = 0; c + 1 < img.cols; ++c) d.push_back(std::abs(p[(c + 1) * ch] - p[c * ch]));
+  }
+  if (d.empty()) return 0;
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+  return 1.4826 * d[d.size() / 2] / std::sqrt(2.0);
+}
+
+std::string fmt_point(double x, double y) {
+  std::ostringstream os;
+  os.precision(6);
+  os << "(" << x << ", " << y << ")";
+  return os.str();
+}
+
+}  // namespace
+
+std::string EllipseTrackerOptions::validate() const {
+  if (!(min_score >= 0 && min_score <= 1)) return "ellipse min_score must be in [0, 1]";
+  if (max_gap_frames < 0 || max_gap_frames > 10000) return "ellipse max_gap_frames must be in [0, 10000]";
+  return "";
+}
+
+struct EllipseTracker::Impl {
+  EllipseTrackerOptions options;
+  std::string name;
+  cv::Vec3d colour;            ///< object colour (BGR or grey), learned in the first frame
+  double contrast = 0;         ///< |background - object| in the first frame, grey levels
+  double a_ref = 0, b_ref = 0; ///< running semi-axes, px
+  struct Centre { int index; double x, y; };
+  struct Turn { int index; double phi; };
+  std::deque<Centre> centres;  ///< last good centres (motion model)
+  std::deque<Turn> turns;      ///< last good orientations, unwrapped (spin model)
+  double phi_last = 0;         ///< last orientation (screen, counter-clockwise), rad
+  int index_last = 0;          ///< last good frame index
+  double speed_hint = 0;       ///< px per frame to allow for when the motion model is short
+  int lost_run = 0;            ///< consecutive lost frames
+  bool gave_up = false;
+
+  cv::Point2d predict_centre(int index) const {
+    const Centre& last = centres.back();
+    if (centres.size() == 1) return {last.x, last.y};
+    std::vector<double> s, x, y;
+    for (const auto& c : centres) {
+      s.push_back(c.index - last.index);
+      x.push_back(c.x);
+      y.push_back(c.y);
+    }
+    const int degree = centres.size() >= 3 ? 2 : 1;  // flight is a parabola
+    const double at = index - last.index;
+    return {poly_predict(s, x, degree, at), poly_predict(s, y, degree, at)};
+  }
+
+  double spin_per_frame() const {
+    if (turns.size() < 2) return 0;
+    std::vector<double> s, p;
+    for (const auto& t : turns) {
+      s.push_back(t.index - turns.back().index);
+      p.push_back(t.phi);
+    }
+    const double p1 = poly_predict(s, p, 1, 1), p0 = poly_predict(s, p, 1, 0);
+    return p1 - p0;
+  }
+
+  EllipseObservation observe(int index, const Ellipse& e, double phi, double score, bool lost,
+                             bool round, double rms) const {
+    EllipseObservation o;
+    o.centre.frame = index;
+    o.centre.x_px = e.cx;
+    o.centre.y_px = e.cy;
+    o.centre.score = score;
+    o.centre.lost = lost;
+    o.centre.angle_rad = phi;
+    o.centre.major_px = e.a;
+    o.centre.minor_px = e.b;
+    // screen counter-clockwise angle phi: direction (cos phi, -sin phi) in image coordinates
+    const double ux = std::cos(phi) * e.a, uy = -std::sin(phi) * e.a;
+    o.ax_px = e.cx + ux, o.ay_px = e.cy + uy;
+    o.bx_px = e.cx - ux, o.by_px = e.cy - uy;
+    o.round = round;
+    o.rms_px = rms;
+    return o;
+  }
+
+  /// Edge-fit settings for an object moving by `velocity` (px per frame) and turning by
+  /// `spin_per_frame` (screen, rad); `blur_px`: motion of unknown direction (no velocity
+  /// measured yet), px per frame. The edge ramp of a blurred object is as wide as its travel
+  /// during the exposure (at most one frame's travel): profiles reach past half of it.
+  EdgeFitOptions edge_options(cv::Point2d velocity, double spin_per_frame, double blur_px = 0) const {
+    EdgeFitOptions eo;
+    eo.known_a = a_ref, eo.known_b = b_ref;
+    eo.vx_px = velocity.x, eo.vy_px = velocity.y;
+    eo.dpsi_rad = -spin_per_frame;  // screen counter-clockwise is clockwise in image axes
+    eo.blur_px = blur_px;
+    // Blur beyond about the minor axis leaves no ellipse to fit (docs/theory.md#ellipse-tracking),
+    // and a short exposure leaves a fast object sharp: the reach stops at 2 b of travel.
+    const double travel = std::hypot(velocity.x, velocity.y) + a_ref * std::abs(spin_per_frame) + blur_px;
+    eo.reach_px = 4 + 0.6 * std::min(travel, 2 * b_ref);
+    eo.max_blur_px = b_ref;
+    eo.min_contrast = 0.4 * contrast;
+    eo.max_inside = 0.35 * contrast;
+    eo.iterations = 2;
+    return eo;
+  }
+};
+
+EllipseTracker::EllipseTracker(const EllipseTrackerOptions& options) : impl_(std::make_unique<Impl>()) {
+  if (const std::string err = options.validate(); !err.empty()) throw InputError(err);
+  impl_->options = options;
+}
+EllipseTracker::~EllipseTracker() = default;
+EllipseTracker::EllipseTracker(EllipseTracker&&) noexcept = default;
+EllipseTracker& EllipseTracker::operator=(EllipseTracker&&) noexcept = default;
+
+EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double y_px,
+                                         const std::string& name) {
+  Impl& s = *impl_;
+  {
+    Impl fresh;
+    fresh.options = s.options;
+    fresh.name = name;
+    s = std::move(fresh);
+  }
+  const cv::Mat& img = first.bgr.empty() ? first.gray : first.bgr;
+  const std::string where = "ellipse " + name;
+  if (img.empty() || img.depth() != CV_8U) throw InputError(where, "the start frame is empty");
+  if (!(x_px >= 0 && y_px >= 0 && x_px <= img.cols - 1 && y_px <= img.rows - 1)) {
+    throw InputError(where, "start point " + fmt_point(x_px, y_px) + " is outside the " +
+                                std::to_string(img.cols) + "x" + std::to_string(img.rows) + " image");
+  }
+  const int sx = static_cast<int>(std::lround(x_px)), sy = static_cast<int>(std::lround(y_px));
+  // Object colour: per-channel median of the 5x5 pixels around the start point.
+  {
+    const cv::Rect box = cv::Rect(sx - 2, sy - 2, 5, 5) & cv::Rect(0, 0, img.cols, img.rows);
+    std::vector<cv::Mat> planes;
+    cv::split(img(box).clone(), planes);
+    for (int k = 0; k < img.channels(); ++k) {
+      std::vector<unsigned char> v(planes[static_cast<std::size_t>(k)].begin<unsigned char>(),
+                                   planes[static_cast<std::size_t>(k)].end<unsigned char>());
+      std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+      s.colour[k] = v[v.size() / 2];
+    }
+  }
+  const std::string no_object = "no contrasting object around the start point " + fmt_point(x_px, y_px) +
+                                " (it must lie inside a ball or disc, fully in view, that differs "
+                                "from its surroundings)";
+  // Segment: Otsu threshold of the colour distance in a window around the start point,
+  // grown until the object containing the start point lies inside it.
+  const cv::Rect image_rect(0, 0, img.cols, img.rows);
+  cv::Mat object;  // CV_8U mask of the object in `roi`
+  cv::Rect roi;
+  for (int half = 24;; half *= 2) {
+    roi = cv::Rect(sx - half, sy - half, 2 * half + 1, 2 * half + 1) & image_rect;
+    const bool whole = roi == image_rect;
+    const cv::Mat dist = colour_distance(first, roi, s.colour);
+    cv::Mat dist8, mask, labels;
+    dist.convertTo(dist8, CV_8U);
+    cv::threshold(dist8, mask, 0, 255, cv::THRESH_BINARY_INV | cv::THRESH_OTSU);
+    cv::connectedComponents(mask, labels, 8, CV_32S);
+    const int label = labels.at<int>(sy - roi.y, sx - roi.x);
+    bool usable = label > 0;
+    if (usable) {
+      object = labels == label;
+      cv::Rect bb = cv::boundingRect(object);
+      const bool touches_window = bb.x == 0 || bb.y == 0 || bb.x + bb.width == roi.width ||
+                                  bb.y + bb.height == roi.height;
+      const bool touches_image = (bb.x == 0 && roi.x == 0) || (bb.y == 0 && roi.y == 0) ||
+                                 (bb.x + bb.width == roi.width && roi.x + roi.width == img.cols) ||
+                                 (bb.y + bb.height == roi.height && roi.y + roi.height == img.rows);
+      if (touches_image) throw InputError(where, no_object);
+      if (!touches_window) {
+        // Contrast: the object's median colour against that of a ring 4..8 px outside it.
+        cv::Mat grown4, grown8, core;
+        cv::dilate(object, grown4, cv::getStructuringElement(cv::MORPH_ELLIPSE, {9, 9}));
+        cv::dilate(object, grown8, cv::getStructuringElement(cv::MORPH_ELLIPSE, {17, 17}));
+        cv::erode(object, core, cv::getStructuringElement(cv::MORPH_ELLIPSE, {3, 3}));
+        if (cv::countNonZero(core) < 4) core = object;
+        const cv::Vec3d obj = median_colour(img(roi), core), bg = median_colour(img(roi), grown8 & ~grown4);
+        double c2 = 0;
+        for (int k = 0; k < img.channels(); ++k) c2 += (bg[k] - obj[k]) * (bg[k] - obj[k]);
+        s.colour = obj;
+        s.contrast = std::sqrt(c2);
+        const double noise = noise_sd(first.gray.empty() ? img(roi) : first.gray(roi));
+        if (s.contrast < 20 || s.contrast < 8 * noise || cv::countNonZero(object) < 12) {
+          if (whole) throw InputError(where, no_object);
+        } else {
+          break;
+        }
+      }
+    }
+    if (whole) throw InputError(where, no_object);
+  }
+  Ellipse init = ellipse_from_moments(object, cv::Point2d(roi.x, roi.y));
+  s.a_ref = init.a, s.b_ref = init.b;
+  const cv::Rect fit_roi =
+      cv::Rect(static_cast<int>(init.cx - init.a - 10), static_cast<int>(init.cy - init.a - 10),
+               static_cast<int>(2 * init.a + 21), static_cast<int>(2 * init.a + 21)) & image_rect;
+  EdgeFitOptions eo = s.edge_options({0, 0}, 0);
+  eo.known_a = eo.known_b = 0;  // the shape is what the first frame measures
+  const EdgeFit fit = fit_ellipse_edges(colour_distance(first, fit_roi, s.colour), fit_roi.tl(), init, eo);
+  const double score = fit.ok ? static_cast<double>(fit.inliers) / fit.profiles : 0;
+  if (!fit.ok || score < s.options.min_score || fit.ellipse.b < 2) {
+    throw InputError(where, "the object around the start point " + fmt_point(x_px, y_px) +
+                                " is not an ellipse with a clear edge (edge score " +
+                                std::to_string(score) + ")");
+  }
+  const Ellipse& e = fit.ellipse;
+  s.a_ref = e.a, s.b_ref = e.b;
+  const bool round = e.a - e.b < std::max(kRoundRatio * e.a, kRoundPx);
+  // End A: the end of the major axis pointing right (screen angle in (-90, 90] degrees).
+  double phi = round ? 0 : -e.psi;
+  phi = std::remainder(phi, kPi);
+  if (phi <= -kPi / 2) phi += kPi;
+  s.phi_last = phi;
+  s.index_last = first.index;
+  s.centres.push_back({first.index, e.cx, e.cy});
+  if (!round) s.turns.push_back({first.index, phi});
+  // First step: no velocity is known yet, so allow a fast throw: a tenth of the image diagonal
+  // per frame (a 15 fps video of a toss moves the ball 70 px per frame at 640x480).
+  s.speed_hint = std::max(15 + 0.5 * e.a, 0.1 * std::hypot(img.cols, img.rows));
+  return s.observe(first.index, e, phi, score, false, round, fit.rms_px);
+}
+
+EllipseObservation EllipseTracker::update(const Frame& frame) {
+  Impl& s = *impl_;
+  TRIBOLAB_ASSERT(!s.centres.empty(), std::string("EllipseTracker::update before start"));
+  const cv::Mat& img = frame.bgr.empty() ? frame.gray : frame.bgr;
+  const int index = frame.index;
+  cv::Point2d pred = s.predict_centre(index);
+  if (!std::isfinite(pred.x) || !std::isfinite(pred.y)) pred = {s.centres.back().x, s.centres.back().y};
+  double omega = s.spin_per_frame();  // rad per frame
+  if (!std::isfinite(omega)) omega = 0;
+  const double phi_pred = s.phi_last + omega * (index - s.index_last);
+  Ellipse pred_e{pred.x, pred.y, s.a_ref, s.b_ref, -phi_pred};
+  if (s.gave_up || img.empty()) {
+    return s.observe(index, pred_e, phi_pred, 0, true, false, 0);
+  }
+  const int steps = std::max(1, index - s.centres.back().index);
+  const bool moving = s.centres.size() >= 2;  // a velocity is known
+  const cv::Point2d velocity = moving ? (pred - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps
+                                      : cv::Point2d(0, 0);
+  const double speed = moving ? std::hypot(velocity.x, velocity.y) : s.speed_hint;
+  // Gate: how far the object may lie from the prediction. A bounce reverses the velocity
+  // within a frame (error up to 2 |v| dt); lost frames widen the search.
+  const double gate = 4 + 0.5 * s.b_ref + 2.2 * speed + 3.0 * s.lost_run;
+  // Without a velocity, allow for blur up to the minor semi-axis (a longer smear is no ellipse
+  // any more); the fit is redone below with the motion measured.
+  const EdgeFitOptions eo = s.edge_options(velocity, omega, moving ? 0 : std::min(s.speed_hint, s.b_ref));
+  const cv::Rect image_rect(0, 0, img.cols, img.rows);
+  const auto window = [&](double pad) {
+    // Clamped before the conversion to int: a prediction far outside the image stays defined.
+    const auto clamp_px = [](double v) { return static_cast<int>(std::clamp(v, -1e6, 1e6)); };
+    const int size = clamp_px(2 * pad + 2);
+    return cv::Rect(clamp_px(std::floor(pred.x - pad)), clamp_px(std::floor(pred.y - pad)), size, size) & image_rect;
+  };
+  double score = 0, rms = 0;
+  Ellipse found;
+  const auto try_fit = [&](const cv::Mat& dist, cv::Point origin, const Ellipse& init) {
+    const EdgeFit fit = fit_ellipse_edges(dist, origin, init, eo);
+    if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) return;
+    // Score: fraction of normals giving a kept edge point, times agreement of the axes
+    // with the running ones (a merged or partly hidden object changes shape).
+    const double shape = std::max(std::abs(fit.ellipse.a / s.a_ref - 1), std::abs(fit.ellipse.b / s.b_ref - 1));
+    const double sc = static_cast<double>(fit.inliers) / fit.profiles * std::clamp(1 - 3 * shape, 0.0, 1.0);
+    if (sc > score) score = sc, found = fit.ellipse, rms = fit.rms_px;
+  };
+  // 1. From the prediction (right in flight, also with part of the object hidden), in a window
+  //    just holding the predicted outline and its profiles.
+  if (const cv::Rect roi = window(s.a_ref + eo.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
+    try_fit(colour_distance(frame, roi, s.colour), roi.tl(), pred_e);
+  }
+  // 2. Unless that fit is clearly good: segment the whole gate and start from the region of
+  //    the object's colour nearest the prediction (right after a bounce); the better score wins.
+  if (const cv::Rect roi = window(s.a_ref + gate + eo.reach_px + 3);
+      score < kConfidentScore && roi.width >= 3 && roi.height >= 3) {
+    const cv::Mat dist = colour_distance(frame, roi, s.colour);
+    cv::Mat mask = dist < 0.5 * s.contrast, labels, stats, cents;
+    const int n = cv::connectedComponentsWithStats(mask, labels, stats, cents, 8, CV_32S);
+    const double area = kPi * s.a_ref * s.b_ref;
+    int best = -1;
+    double best_d = gate;
+    for (int k = 1; k < n; ++k) {
+      const double ak = stats.at<int>(k, cv::CC_STAT_AREA);
+      if (ak < 0.4 * area || ak > 2.5 * area) continue;  // not the object (or merged with another)
+      const double d = std::hypot(cents.at<double>(k, 0) + roi.x - pred.x, cents.at<double>(k, 1) + roi.y - pred.y);
+      if (d < best_d) best_d = d, best = k;
+    }
+    if (best > 0) {
+      const Ellipse seg = ellipse_from_moments(labels == best, cv::Point2d(roi.x, roi.y));
+      if (seg.a > 1 && seg.b > 1) try_fit(dist, roi.tl(), seg);
+    }
+  }
+  if (!moving && score >= s.options.min_score) {
+    // No velocity was known, so every edge window allowed for a fast throw's blur: refit with
+    // the motion just measured (sharper windows, less sensitive to the background).
+    const cv::Point2d v = (cv::Point2d(found.cx, found.cy) - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps;
+    EdgeFitOptions eo2 = s.edge_options(v, omega);
+    if (const cv::Rect roi = window(s.a_ref + std::hypot(found.cx - pred.x, found.cy - pred.y) + eo2.reach_px + 3);
+        roi.width >= 3 && roi.height >= 3) {
+      const EdgeFit fit = fit_ellipse_edges(colour_distance(frame, roi, s.colour), roi.tl(), found, eo2);
+      if (fit.ok && static_cast<double>(fit.inliers) / fit.profiles >= score) {
+        score = static_cast<double>(fit.inliers) / fit.profiles, found = fit.ellipse, rms = fit.rms_px;
+      }
+    }
+  }
+  if (score < s.options.min_score) {
+    ++s.lost_run;
+    if (s.lost_run > s.options.max_gap_frames) s.gave_up = true;
+    return s.observe(index, pred_e, phi_pred, score, true, false, 0);
+  }
+  // Accepted. Orientation: the end of the major axis nearest the predicted A direction.
+  const bool round = found.a - found.b < std::max(kRoundRatio * found.a, kRoundPx);
+  const double phi = round ? phi_pred : phi_pred + std::remainder(-found.psi - phi_pred, kPi);
+  // Motion model: a centre far off the prediction (a bounce) restarts the parabola.
+  const double innovation = std::hypot(found.cx - pred.x, found.cy - pred.y);
+  if (s.centres.size() >= 2 && innovation > 3 + 0.25 * speed) {
+    s.speed_hint = std::max(speed, 1.0);
+    s.centres.clear();
+  }
+  s.centres.push_back({index, found.cx, found.cy});
+  while (s.centres.size() > kMotionPoints) s.centres.pop_front();
+  if (!round) {
+    s.turns.push_back({index, phi});
+    while (s.turns.size() > kSpinPoints) s.turns.pop_front();
+  }
+  s.phi_last = phi;
+  s.index_last = index;
+  s.a_ref = 0.8 * s.a_ref + 0.2 * found.a;
+  s.b_ref = 0.8 * s.b_ref + 0.2 * found.b;
+  s.lost_run = 0;
+  return s.observe(index, found, phi, score, false, round, rms);
+}
+
+}  // namespace tribolab::video

@@ -1,0 +1,531 @@
+// Point tracking by rotating-template correlation with a motion model
+// (docs/theory.md#point-tracking).
+#include "video/point_tracker.hpp"
+
+#include "numerics/error.hpp"
+#include "video/motion_model.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numbers>
+#include <vector>
+
+namespace tribolab::video {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+// Largest drop of the score below the median of the last five accepted ones (a junk match
+// of a 21 px patch on a real video scored 0.69 where the ball scored 0.99).
+constexpr double kMaxScoreDrop = 0.3;
+// Least score of the first match after the start (measured 0.97-0.99 on rendered scenes,
+// 0.994 on Tracker's BallToss).
+constexpr double kFirstMatchScore = 0.9;
+
+// Smallest eigenvalue of the mean structure tensor of `patch` (CV_32F), (grey level/px)^2:
+// the squared rms intensity gradient in the patch's weakest direction. Near zero for a flat
+// patch (no texture) and for a straight edge or stripes (the autocorrelation is flat along
+// them): such a patch cannot fix a position in two dimensions.
+double weakest_gradient_energy(const cv::Mat& patch) {
+  cv::Mat gx, gy;
+  cv::Sobel(patch, gx, CV_32F, 1, 0, 3, 1.0 / 8);  // 1/8: grey levels per px
+  cv::Sobel(patch, gy, CV_32F, 0, 1, 3, 1.0 / 8);
+  // Interior only: the Sobel border is extrapolated.
+  const cv::Rect in(1, 1, patch.cols - 2, patch.rows - 2);
+  const double sxx = gx(in).dot(gx(in)), syy = gy(in).dot(gy(in)), sxy = gx(in).dot(gy(in));
+  const double n = in.area();
+  const double tr = (sxx + syy) / n, det = (sxx * syy - sxy * sxy) / (n * n);
+  return tr / 2 - std::sqrt(std::max(0.0, tr * tr / 4 - det));
+}
+
+// Vertex of the parabola through (-1, fm), (0, f0), (1, fp), clamped to [-1, 1].
+double parabola_vertex(double fm, double f0, double fp) {
+  const double curv = fm - 2 * f0 + fp;
+  if (curv >= 0) return 0;
+  return std::clamp(0.5 * (fm - fp) / curv, -1.0, 1.0);
+}
+
+// Sub-pixel offset of the maximum of `r` near integer peak p: least-squares quadratic
+// f = a + b x + c y + d x^2 + e x y + g y^2 over the 3x3 neighbourhood, stationary point;
+// `value` (if given) receives the fitted maximum. Falls back to a parabola per axis when
+// that surface has no maximum within a pixel, and to 0 on the border of r.
+cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p, double* value = nullptr) {
+  if (value) *value = r.at<float>(p);
+  if (p.x < 1 || p.y < 1 || p.x > r.cols - 2 || p.y > r.rows - 2) return {0, 0};
+  double a = 0, b = 0, c = 0, d = 0, e = 0, g = 0;
+  for (int j = -1; j <= 1; ++j) {
+    for (int i = -1; i <= 1; ++i) {
+      const double f = r.at<float>(p.y + j, p.x + i);
+      a += f / 9;
+      b += i * f / 6;
+      c += j * f / 6;
+      e += i * j * f / 4;
+      d += (i * i - 2.0 / 3) * f / 2;  // x^2 - 2/3 is orthogonal to 1 and to y^2 - 2/3
+      g += (j * j - 2.0 / 3) * f / 2;
+    }
+  }
+  // Gradient zero: [2d e; e 2g] [x y]^T = -[b c]^T; a maximum needs a negative-definite Hessian.
+  const double det = 4 * d * g - e * e;
+  if (d < 0 && g < 0 && det > 0) {
+    const double x = (-b * 2 * g + c * e) / det, y = (-c * 2 * d + b * e) / det;
+    if (std::abs(x) <= 1 && std::abs(y) <= 1) {
+      if (value) {
+        *value = a + b * x + c * y + d * (x * x - 2.0 / 3) + e * x * y + g * (y * y - 2.0 / 3);
+      }
+      return {x, y};
+    }
+  }
+  // Otherwise one parabola per axis through the peak row and column.
+  const auto at = [&](int dx, int dy) { return static_cast<double>(r.at<float>(p.y + dy, p.x + dx)); };
+  return {parabola_vertex(at(-1, 0), at(0, 0), at(1, 0)), parabola_vertex(at(0, -1), at(0, 0), at(0, 1))};
+}
+
+// Normalised cross-correlation of template t over every placement in img (both CV_32F), as
+// cv::matchTemplate's TM_CCOEFF_NORMED, by direct sums: for the few placements of the
+// refinement this is several times cheaper than OpenCV's transform-based path.
+void ncc_direct(const cv::Mat& img, const cv::Mat& t, cv::Mat& r) {
+  const int tw = t.cols, th = t.rows, n = tw * th;
+  r.create(img.rows - th + 1, img.cols - tw + 1, CV_32F);
+  const double tmean = cv::mean(t)[0];
+  double tnorm2 = 0;
+  thread_local std::vector<float> tz;
+  tz.resize(n);
+  for (int y = 0; y < th; ++y) {
+    for (int x = 0; x < tw; ++x) {
+      const double v = t.at<float>(y, x) - tmean;
+      tz[y * tw + x] = static_cast<float>(v);
+      tnorm2 += v * v;
+    }
+  }
+  for (int v = 0; v < r.rows; ++v) {
+    for (int u = 0; u < r.cols; ++u) {
+      double sum = 0, sum2 = 0, cross = 0;
+      for (int y = 0; y < th; ++y) {
+        const float* row = img.ptr<float>(v + y) + u;
+        const float* tr = tz.data() + y * tw;
+        float s1 = 0, s2 = 0, sc = 0;
+        for (int x = 0; x < tw; ++x) {
+          s1 += row[x];
+          s2 += row[x] * row[x];
+          sc += row[x] * tr[x];
+        }
+        sum += s1;
+        sum2 += s2;
+        cross += sc;
+      }
+      const double var = sum2 - sum * sum / n;
+      const double den = std::sqrt(std::max(0.0, var) * tnorm2);
+      r.at<float>(v, u) = den > 1e-9 ? static_cast<float>(cross / den) : 0.0f;
+    }
+  }
+}
+
+}  // namespace
+
+std::string PointTrackerOptions::validate() const {
+  if (patch_px < 7 || patch_px % 2 == 0) {
+    return "patch_px must be odd and >= 7, got " + std::to_string(patch_px);
+  }
+  if (search_px < 0) return "search_px must be >= 0, got " + std::to_string(search_px);
+  if (!(min_score > 0 && min_score < 1)) {
+    return "min_score must lie in (0, 1), got " + std::to_string(min_score);
+  }
+  if (!(max_turn_deg >= 0 && max_turn_deg <= 90)) {
+    return "max_turn_deg must lie in [0, 90], got " + std::to_string(max_turn_deg);
+  }
+  if (max_gap_frames < 0) {
+    return "max_gap_frames must be >= 0, got " + std::to_string(max_gap_frames);
+  }
+  return {};
+}
+
+struct PointTracker::Impl {
+  PointTrackerOptions opt;
+  std::string name;
+  cv::Size image_size;
+  cv::Mat big;        // CV_32F reference patch around the start, side sqrt(2) * patch + margin
+  MotionModel model{5, 3};
+  int last_frame = 0;
+  int start_frame = 0;
+  int gap = 0;        // consecutive lost frames
+  bool gave_up = false;
+  std::deque<double> innovation_px;   // |measured - predicted| of the last accepted frames
+  std::deque<double> innovation_rad;  // same for the angle
+  std::deque<double> recent_scores;   // scores of the last accepted frames
+  // Buffers reused from frame to frame.
+  cv::Mat window, templ;
+  std::vector<cv::Mat> results;
+  cv::Mat best_map, scratch, local, small_result, smeared, kernel;
+  // Motion blur: the start's velocity (px/frame, known once three positions are), the
+  // estimated exposure as a fraction of the frame period, and the template's extra smear.
+  cv::Point2d v0;
+  bool have_v0 = false;
+  double shutter = 0;
+  cv::Point2d blur{0, 0};
+
+  bool turns = true;   // false: the pattern looks the same turned (a plain ball), no angle search
+  int half() const { return opt.patch_px / 2; }
+  // Angle step: turns the patch's corner by at most ~1.5 px (8 degrees for a 21 px patch).
+  double angle_step() const { return std::min(8 * kDeg, 1.5 / (std::sqrt(2.0) * half())); }
+
+  // Template for a pattern turned by `angle` (counter-clockwise on screen) since the start,
+  // smeared along `blur` (px, image frame) when that is at least half a pixel long.
+  const cv::Mat& make_template(double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    const double cb = (big.cols - 1) / 2.0;
+    const double len = std::hypot(blur.x, blur.y);
+    const int margin = len >= 0.5 ? static_cast<int>(std::ceil(len / 2)) + 1 : 0;
+    const double h = half() + margin;
+    // dst(x, y) = big(M (x, y, 1)): body offset = R(-angle) * image offset (y down).
+    const cv::Matx23d m(c, -s, cb - c * h + s * h,  //
+                        s, c, cb - s * h - c * h);
+    const int side = opt.patch_px + 2 * margin;
+    cv::warpAffine(big, margin ? smeared : templ, m, cv::Size(side, side),
+                   cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_REPLICATE);
+    if (margin) {
+      // Line kernel: the segment [-blur/2, blur/2] sampled every quarter pixel, splatted
+      // bilinearly (the exposure's uniform motion, docs/theory.md#point-tracking).
+      const int k = 2 * margin + 1;
+      kernel.create(k, k, CV_32F);
+      kernel.setTo(0);
+      const int n = std::max(2, static_cast<int>(std::ceil(4 * len)));
+      for (int i = 0; i < n; ++i) {
+        const double f = (i + 0.5) / n - 0.5;
+        const double x = margin + f * blur.x, y = margin + f * blur.y;
+        const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+        const double fx = x - x0, fy = y - y0;
+        kernel.at<float>(y0, x0) += static_cast<float>((1 - fx) * (1 - fy));
+        kernel.at<float>(y0, x0 + 1) += static_cast<float>(fx * (1 - fy));
+        kernel.at<float>(y0 + 1, x0) += static_cast<float>((1 - fx) * fy);
+        kernel.at<float>(y0 + 1, x0 + 1) += static_cast<float>(fx * fy);
+      }
+      kernel /= n;
+      // filter2D correlates; the kernel is point-symmetric, so this is the convolution.
+      cv::filter2D(smeared, smeared, -1, kernel, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
+      smeared(cv::Rect(margin, margin, opt.patch_px, opt.patch_px)).copyTo(templ);
+    }
+    return templ;
+  }
+
+  // The extra smear, at most two patches long (the reference patch holds no more).
+  double max_blur() const { return 2.0 * opt.patch_px; }
+  void set_blur(cv::Point2d b) {
+    const double len = std::hypot(b.x, b.y), cap = max_blur();
+    blur = len > cap ? b * (cap / len) : b;
+  }
+
+  Observation lost_observation(int frame, const MotionState& pred, double score) {
+    Observation o;
+    o.frame = frame;
+    o.x_px = pred.x_px;
+    o.y_px = pred.y_px;
+    o.angle_rad = pred.angle_rad;
+    o.score = std::clamp(score, 0.0, 1.0);
+    o.lost = true;
+    ++gap;
+    if (gap > opt.max_gap_frames) gave_up = true;
+    return o;
+  }
+
+  Observation update(const Frame& frame);
+};
+
+PointTracker::PointTracker(const PointTrackerOptions& options) : impl_(std::make_unique<Impl>()) {
+  if (const std::string e = options.validate(); !e.empty()) throw InputError("point tracker: " + e);
+  impl_->opt = options;
+}
+PointTracker::~PointTracker() = default;
+PointTracker::PointTracker(PointTracker&&) noexcept = default;
+PointTracker& PointTracker::operator=(PointTracker&&) noexcept = default;
+
+Observation PointTracker::start(const Frame& first, double x_px, double y_px,
+                                const std::string& name) {
+  Impl& m = *impl_;
+  const cv::Mat& gray = first.gray;
+  if (gray.empty() || gray.type() != CV_8UC1) {
+    throw InputError(name, "no grey image in frame " + std::to_string(first.index));
+  }
+  require_finite(x_px, name + " start x");
+  require_finite(y_px, name + " start y");
+  const double h = m.half();
+  if (x_px < 0 || y_px < 0 || x_px > gray.cols - 1 || y_px > gray.rows - 1) {
+    throw InputError(name, "start point (" + std::to_string(x_px) + ", " + std::to_string(y_px) +
+                               ") px lies outside the " + std::to_string(gray.cols) + "x" +
+                               std::to_string(gray.rows) + " image");
+  }
+  if (x_px < h || y_px < h || x_px > gray.cols - 1 - h || y_px > gray.rows - 1 - h) {
+    throw InputError(name, "start point (" + std::to_string(x_px) + ", " + std::to_string(y_px) +
+                               ") px is closer than " + std::to_string(m.half()) +
+                               " px to the image border: the pattern around it is cut");
+  }
+  // The reference patch is wide enough that every rotation of the central patch_px square,
+  // grown by half the longest smear (max_blur) and a pixel on each side, stays inside it
+  // (sqrt(2) times, plus a pixel for the interpolation).
+  const int side = 2 * static_cast<int>(std::ceil(std::sqrt(2.0) * (h + m.opt.patch_px + 1))) + 3;
+  cv::Mat g32, big;
+  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), big, CV_32F);
+  cv::getRectSubPix(gray, cv::Size(m.opt.patch_px, m.opt.patch_px), cv::Point2f(x_px, y_px), g32,
+                    CV_32F);
+  // Threshold: rms gradient of 2 grey levels per px in the weakest direction; sensor noise of
+  // sigma 2 grey levels on a flat patch gives about 0.9 (Sobel/8 of white noise: 0.43 sigma).
+  const double energy = weakest_gradient_energy(g32);
+  if (energy < 4.0) {
+    throw InputError(name, "the " + std::to_string(m.opt.patch_px) + " px patch around (" +
+                               std::to_string(x_px) + ", " + std::to_string(y_px) +
+                               ") px has too little texture to follow (weakest rms gradient " +
+                               std::to_string(std::sqrt(energy)) +
+                               " grey levels/px, needs 2): start on a mark or corner");
+  }
+  // A pattern that correlates >= 0.97 with itself turned by one and by three angle steps
+  // (a plain ball or disc) has no measurable orientation: only the position is searched and
+  // its angle stays 0, instead of wandering along a flat correlation.
+  m.big = big;  // only now: a refused start leaves the tracker as it was
+  m.blur = {0, 0};
+  m.have_v0 = false;
+  m.shutter = 0;
+  m.start_frame = first.index;
+  m.turns = false;
+  if (m.opt.max_turn_deg > 0) {
+    const cv::Mat t0 = m.make_template(0).clone();
+    for (double a : {m.angle_step(), 3 * m.angle_step()}) {
+      cv::Mat c;
+      cv::matchTemplate(t0, m.make_template(a), c, cv::TM_CCOEFF_NORMED);
+      if (!(c.at<float>(0, 0) >= 0.97f)) m.turns = true;
+    }
+  }
+  m.name = name;
+  m.image_size = gray.size();
+  m.model.reset();
+  m.model.add(first.index, x_px, y_px, 0);
+  m.last_frame = first.index;
+  m.gap = 0;
+  m.gave_up = false;
+  m.innovation_px.clear();
+  m.innovation_rad.clear();
+  m.recent_scores.clear();
+  Observation o;
+  o.frame = first.index;
+  o.x_px = x_px;
+  o.y_px = y_px;
+  o.score = 1;
+  return o;
+}
+
+Observation PointTracker::update(const Frame& frame) {
+  if (!impl_ || impl_->big.empty()) throw InputError("point tracker: update() before start()");
+  return impl_->update(frame);
+}
+
+Observation PointTracker::Impl::update(const Frame& frame) {
+  const cv::Mat& gray = frame.gray;
+  if (gray.size() != image_size || gray.type() != CV_8UC1) {
+    throw InputError(name, "frame " + std::to_string(frame.index) + " has no grey image of the " +
+                               "start frame's size");
+  }
+  if (frame.index <= last_frame) {
+    throw InputError(name, "frame " + std::to_string(frame.index) + " does not follow frame " +
+                               std::to_string(last_frame));
+  }
+  last_frame = frame.index;
+  const MotionState pred = model.predict(frame.index);
+  if (gave_up) return lost_observation(frame.index, pred, 0);
+
+  // Motion blur: the template already carries the start's smear (shutter * v0, turned with
+  // the pattern); the frame's smear is shutter * v, so the template is smeared further by
+  // shutter * (v - R(theta) v0) (docs/theory.md#point-tracking).
+  cv::Point2d dv(0, 0);
+  if (have_v0) {
+    const double c = std::cos(pred.angle_rad), sn = std::sin(pred.angle_rad);
+    dv = cv::Point2d(pred.vx_px - (c * v0.x + sn * v0.y), pred.vy_px - (-sn * v0.x + c * v0.y));
+  }
+  set_blur(shutter * dv);
+
+  // Search half-width (also the gate a match must fall in): three times the largest of the
+  // last prediction errors plus a margin; wide on the first step (no velocity known yet: a
+  // quarter of the image's smaller side, since a toss filmed at 15 fps moves 70 px a frame).
+  // While lost, the extrapolation error grows with the horizon like the squared number of
+  // frames bridged times the one-frame error (a polynomial model's error grows at least
+  // that fast), so the gate widens from the recent prediction quality, not from the speed:
+  // a ballistic object predicted to 0.1 px keeps a tight gate that a look-alike resting a
+  // few radii away cannot enter (docs/theory.md#point-tracking).
+  const int p = opt.patch_px, h = half();
+  const int first_search = std::max({2 * p, 48, std::min(image_size.width, image_size.height) / 4});
+  double worst = 0;
+  for (double e : innovation_px) worst = std::max(worst, e);
+  double s;
+  if (opt.search_px > 0) {
+    s = opt.search_px;
+  } else if (model.size() < 2) {
+    s = first_search;
+  } else if (model.size() < 3) {
+    s = std::max<double>(h, 4 + 0.5 * std::hypot(pred.vx_px, pred.vy_px));  // no acceleration yet
+  } else {
+    s = std::max<double>(h, 4 + 3 * worst);
+  }
+  if (gap > 0) s = std::min<double>(s + 2 + 3 * worst * (gap + 1) * (gap + 1), 2.0 * first_search + s);
+  const int si = static_cast<int>(std::ceil(s));
+
+  // Angles: around the predicted one, within three times the recent angle error (all of
+  // max_turn_deg at the start or after a loss), in steps that move the patch's corner by at
+  // most ~1.5 px. When that range is within half a step, the predicted angle alone is
+  // correlated and the refinement below (which reaches 0.75 step) finds the angle.
+  const bool search_angle = opt.max_turn_deg > 0 && turns;
+  std::vector<double> angles;
+  double angle_spacing = angle_step();  // between coarse samples
+  if (search_angle) {
+    double range = opt.max_turn_deg * kDeg;
+    if (model.size() >= 3 && gap == 0) {
+      double worst = 0;
+      for (double e : innovation_rad) worst = std::max(worst, e);
+      range = std::min(range, 3 * worst);
+    }
+    const int k = range <= angle_spacing / 2 ? 0 : static_cast<int>(std::ceil(range / angle_spacing));
+    if (k > 0) angle_spacing = range / k;
+    for (int i = -k; i <= k; ++i) angles.push_back(pred.angle_rad + i * angle_spacing);
+  } else {
+    angles.push_back(0);
+  }
+
+  // Window in the image around the prediction (clipped); too small: the point left the view.
+  const int cx = static_cast<int>(std::lround(pred.x_px)), cy = static_cast<int>(std::lround(pred.y_px));
+  const cv::Rect want(cx - si - h, cy - si - h, 2 * (si + h) + 1, 2 * (si + h) + 1);
+  const cv::Rect win = want & cv::Rect(0, 0, gray.cols, gray.rows);
+  if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0);
+  gray(win).convertTo(window, CV_32F);
+
+  // Correlation maps for every angle and their upper envelope.
+  results.resize(angles.size());
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    cv::matchTemplate(window, make_template(angles[i]), results[i], cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(results[i], -1);
+    if (i == 0) {
+      results[0].copyTo(best_map);
+    } else {
+      cv::max(best_map, results[i], best_map);
+    }
+  }
+
+  // Candidate peaks above min_score (non-maximum suppression over a patch radius). Peaks
+  // within kRival of the best score are rivals: an object that looks the same. Of several
+  // rivals the one nearest the prediction is taken only if every other lies more than twice
+  // as far (+2 px): two look-alikes near the prediction leave the point lost, not guessed.
+  // Weaker peaks (part of the pattern matching part of the template) never compete.
+  constexpr double kRival = 0.1;  // NCC scatter between frames of one object is ~0.02
+  const cv::Point2d pred_in_map(pred.x_px - win.x - h, pred.y_px - win.y - h);
+  struct Peak {
+    cv::Point at;
+    double score, dist;
+  };
+  std::vector<Peak> peaks;
+  double top_score = -1;
+  best_map.copyTo(scratch);
+  for (int n = 0; n < 4; ++n) {
+    double v;
+    cv::Point at;
+    cv::minMaxLoc(scratch, nullptr, &v, nullptr, &at);
+    if (n == 0) top_score = v;
+    if (v < opt.min_score || v < top_score - kRival) break;
+    peaks.push_back({at, v, std::hypot(at.x - pred_in_map.x, at.y - pred_in_map.y)});
+    cv::circle(scratch, at, h, cv::Scalar(-1), cv::FILLED);
+  }
+  if (peaks.empty()) return lost_observation(frame.index, pred, top_score);
+  std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.dist < b.dist; });
+  if (peaks.size() > 1 && peaks[1].dist < 2 * peaks[0].dist + 2) {
+    return lost_observation(frame.index, pred, peaks[0].score);
+  }
+  const cv::Point at = peaks[0].at;
+
+  // Refinement (docs/theory.md#point-tracking): the image is resampled (bilinear) on a
+  // (patch + 4) px square centred on the current estimate, so the peak sits at the centre
+  // of a 5x5 correlation map and every angle is compared at the same, sub-pixel, position
+  // (comparing integer-pixel peaks couples the angle to the pixel grid). The angle is the
+  // vertex of a parabola through the fitted peak values at the current angle and half a
+  // step either side; the position moves to the quadratic peak at that angle. Twice, the
+  // second time with half the angle step.
+  std::size_t kb = 0;
+  for (std::size_t i = 1; i < angles.size(); ++i) {
+    if (results[i].at<float>(at) > results[kb].at<float>(at)) kb = i;
+  }
+  double angle = angles[kb];
+  const cv::Point2d off = subpixel_peak(results[kb], at);
+  cv::Point2d centre(win.x + at.x + off.x + h, win.y + at.y + off.y + h);
+  const cv::Point mid(2, 2);
+  auto peak_value = [&](double a, cv::Point2d* shift) {
+    ncc_direct(local, make_template(a), small_result);
+    cv::Point loc;
+    cv::minMaxLoc(small_result, nullptr, nullptr, nullptr, &loc);
+    double v;
+    const cv::Point2d sub = subpixel_peak(small_result, loc, &v);
+    if (shift) *shift = cv::Point2d(loc - mid) + sub;
+    return v;
+  };
+  double score = 0;
+  double hstep = search_angle ? 0.5 * angle_spacing : 0;
+  for (int pass = 0; pass < 2; ++pass, hstep /= 2) {
+    cv::getRectSubPix(gray, cv::Size(p + 4, p + 4), cv::Point2f(centre), local, CV_32F);
+    if (hstep > 0) {
+      const double f0 = peak_value(angle, nullptr);
+      const double fm = peak_value(angle - hstep, nullptr), fp = peak_value(angle + hstep, nullptr);
+      angle += hstep * parabola_vertex(fm, f0, fp);
+    }
+    const double lo = std::clamp(shutter - 0.25, 0.0, 0.5), xs[3] = {lo, lo + 0.25, lo + 0.5};
+    const double dv_len = std::hypot(dv.x, dv.y);
+    if (pass == 0 && dv_len >= 3 && xs[2] * dv_len <= max_blur()) {
+      // Exposure fraction: parabola through the peak values at shutter -+ 0.25 (in [0, 1]),
+      // kept from frame to frame (it is the camera's); not where the smear would be capped.
+      double f[3];
+      for (int i = 0; i < 3; ++i) {
+        set_blur(xs[i] * dv);
+        f[i] = peak_value(angle, nullptr);
+      }
+      shutter = std::clamp(xs[1] + 0.25 * parabola_vertex(f[0], f[1], f[2]), 0.0, 1.0);
+      set_blur(shutter * dv);
+    }
+    cv::Point2d shift;
+    score = peak_value(angle, &shift);
+    centre += shift;
+  }
+  Observation o;
+  o.frame = frame.index;
+  o.x_px = centre.x;
+  o.y_px = centre.y;
+  o.angle_rad = angle;
+  o.score = std::clamp(score, 0.0, 1.0);
+  if (score < opt.min_score) return lost_observation(frame.index, pred, score);
+  // The first match has nothing to be compared with and the widest window: it must look
+  // like the start (a small ball on a textured background scored 0.84 on the background it
+  // left, which then held the track).
+  if (model.size() == 1 && score < kFirstMatchScore) return lost_observation(frame.index, pred, score);
+  // A sudden drop of the score below what this object scored lately means the view changed
+  // (a hand partly over it, another object in the gate): lost rather than a biased position.
+  if (recent_scores.size() >= 3) {
+    std::vector<double> sorted(recent_scores.begin(), recent_scores.end());
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    if (score < sorted[sorted.size() / 2] - kMaxScoreDrop) return lost_observation(frame.index, pred, score);
+  }
+  recent_scores.push_back(score);
+  if (recent_scores.size() > 5) recent_scores.pop_front();
+
+  if (model.size() >= 2) {  // the first prediction (no velocity yet) says nothing of the model
+    // Across a gap of g frames the error is scaled back to one frame's by (g + 1)^2, the
+    // growth assumed for the gate above.
+    const double k = 1.0 / ((gap + 1) * (gap + 1));
+    innovation_px.push_back(k * std::hypot(o.x_px - pred.x_px, o.y_px - pred.y_px));
+    innovation_rad.push_back(k * std::abs(o.angle_rad - pred.angle_rad));
+  }
+  while (innovation_px.size() > 3) innovation_px.pop_front();
+  while (innovation_rad.size() > 3) innovation_rad.pop_front();
+  gap = 0;
+  model.add(frame.index, o.x_px, o.y_px, o.angle_rad);
+  if (!have_v0 && model.size() == 3) {
+    // The start's velocity from the parabola through the first three positions.
+    const MotionState at_start = model.predict(start_frame);
+    v0 = cv::Point2d(at_start.vx_px, at_start.vy_px);
+    have_v0 = true;
+  }
+  return o;
+}
+
+}  // namespace tribolab::video

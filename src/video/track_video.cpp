@@ -1,0 +1,347 @@
+// The `track video` workflow (track_video.hpp): one pass over the clip, every target
+// followed by its own tracker from its own start frame.
+#include "video/track_video.hpp"
+
+#include "io/text.hpp"
+#include "numerics/error.hpp"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <variant>
+
+namespace tribolab::video {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// Thumbnails are at most this wide, px (a report shows several side by side).
+constexpr int kThumbWidth = 320;
+/// Most thumbnails a run keeps (memory: each is at most 320 px wide).
+constexpr int kMaxThumbnails = 100;
+
+std::vector<std::string> output_names(const Target& t) {
+  if (t.kind == Target::Kind::ellipse) return {t.name, t.name + ".A", t.name + ".B"};
+  return {t.name};
+}
+
+}  // namespace
+
+std::string TrackVideoOptions::validate() const {
+  if (auto e = source.validate(); !e.empty()) return e;
+  if (auto e = point.validate(); !e.empty()) return e;
+  if (auto e = ellipse.validate(); !e.empty()) return e;
+  if (targets.empty()) return "nothing to track: give --start, --ellipse or --from-track";
+  if (thumbnails < 0 || thumbnails > kMaxThumbnails) return "thumbnails must be from 0 to 100";
+  std::set<std::string> names;
+  for (const Target& t : targets) {
+    const std::string opt = !t.from_track.empty() ? "--from-track"
+                            : t.kind == Target::Kind::ellipse ? "--ellipse" : "--start";
+    if (t.name.empty()) return opt + ": the track needs a name";
+    if (t.name.find_first_of("\n\r\"") != std::string::npos) {
+      return opt + " " + t.name + ": a track name may not hold quotes or line breaks";
+    }
+    if (t.from_track.empty()) {
+      if (!std::isfinite(t.x_px) || !std::isfinite(t.y_px)) return opt + " " + t.name + ": position must be finite";
+      if (t.frame < -1) return opt + " " + t.name + ": the start frame must not be negative";
+    }
+    for (const std::string& n : output_names(t)) {
+      if (!names.insert(n).second) return opt + ": the track name '" + n + "' is used twice";
+    }
+  }
+  return "";
+}
+
+namespace {
+
+/// One target being followed: its tracker, where it starts, and the series it fills.
+struct Follower {
+  Target target;
+  int start_frame = 0;
+  double start_x = 0, start_y = 0;
+  std::variant<PointTracker, EllipseTracker> tracker;
+  bool started = false;
+  std::vector<std::size_t> series;  // indices into the result's series
+};
+
+TrackedRow make_row(const Frame& f, const VideoInput& in, double x_px, double y_px, double score,
+                    bool lost) {
+  TrackedRow r;
+  r.frame = f.index;
+  r.t = f.t;
+  r.lost = lost;
+  if (lost || !std::isfinite(x_px) || !std::isfinite(y_px)) {
+    r.lost = true;
+    r.x = r.y = r.x_px = r.y_px = kNaN;
+    r.score = 0;
+    return r;
+  }
+  r.x_px = x_px;
+  r.y_px = y_px;
+  r.score = std::isfinite(score) ? std::clamp(score, 0.0, 1.0) : 0;
+  const auto [x, y] = in.calibration.to_world(f.index, x_px, y_px);
+  r.x = x;
+  r.y = y;
+  return r;
+}
+
+void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<TrackedSeries>& out,
+            const Observation& o) {
+  out[w.series[0]].rows.push_back(make_row(f, in, o.x_px, o.y_px, o.score, o.lost));
+  out[w.series[0]].angle_rad.push_back(o.angle_rad);
+}
+
+void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<TrackedSeries>& out,
+            const EllipseObservation& e) {
+  const Observation& c = e.centre;
+  const double pos[3][2] = {{c.x_px, c.y_px}, {e.ax_px, e.ay_px}, {e.bx_px, e.by_px}};
+  for (int k = 0; k < 3; ++k) {
+    out[w.series[k]].rows.push_back(make_row(f, in, pos[k][0], pos[k][1], c.score, c.lost));
+    out[w.series[k]].angle_rad.push_back(c.angle_rad);
+  }
+}
+
+void resolve_start(Follower& w, const VideoInput& in) {
+  Target& t = w.target;
+  if (!t.from_track.empty()) {
+    if (in.marks_px.empty()) {
+      throw InputError("--from-track " + t.from_track,
+                       "only a Tracker project (.trk or .trz) has tracks to start from");
+    }
+    const auto it = std::find_if(in.marks_px.begin(), in.marks_px.end(),
+                                 [&](const track::Track& m) { return m.name == t.from_track; });
+    if (it == in.marks_px.end()) {
+      std::string names;
+      for (const auto& m : in.marks_px) names += (names.empty() ? "'" : ", '") + m.name + "'";
+      throw InputError("--from-track " + t.from_track,
+                       "no such track in " + in.input + "; its tracks: " + names);
+    }
+    if (it->points.empty()) {
+      throw InputError("--from-track " + t.from_track, "the track has no mark on the clip's frames");
+    }
+    w.start_frame = it->points.front().frame;
+    w.start_x = it->points.front().x;
+    w.start_y = it->points.front().y;
+    return;
+  }
+  const std::string opt = (t.kind == Target::Kind::ellipse ? "--ellipse " : "--start ") + t.name;
+  w.start_frame = t.frame < 0 ? in.clip.start_frame : t.frame;
+  w.start_x = t.x_px;
+  w.start_y = t.y_px;
+  if (!in.clip.contains(w.start_frame)) {
+    throw InputError(opt, "frame " + std::to_string(w.start_frame) + " is not one of the clip's frames (from " +
+                              std::to_string(in.clip.start_frame) + " every " +
+                              std::to_string(in.clip.step_size) + ")");
+  }
+  if (w.start_x < 0 || w.start_y < 0 || w.start_x > in.info.width - 1 || w.start_y > in.info.height - 1) {
+    throw InputError(opt, "the start point (" + io::format_number(w.start_x) + ", " +
+                              io::format_number(w.start_y) + ") px is outside the " +
+                              std::to_string(in.info.width) + "x" + std::to_string(in.info.height) +
+                              " image");
+  }
+}
+
+/// Which clip steps get a thumbnail: n evenly spaced over the expected steps.
+std::set<int> thumbnail_steps(int n, int expected) {
+  std::set<int> s;
+  if (n <= 0) return s;
+  if (expected <= 0) expected = n;
+  for (int i = 0; i < n; ++i) {
+    s.insert(n == 1 ? 0 : static_cast<int>(std::lround(double(i) * (expected - 1) / (n - 1))));
+  }
+  return s;
+}
+
+const cv::Scalar kColours[] = {{40, 40, 230}, {230, 120, 30}, {40, 180, 40}, {200, 40, 200},
+                               {30, 200, 220}, {160, 100, 40}, {120, 120, 120}, {200, 200, 40}};
+
+/// Draws every series' trail up to the thumbnail's frame and its current position.
+void draw_tracks(cv::Mat& img, double scale, int frame, const std::vector<TrackedSeries>& series) {
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const cv::Scalar colour = kColours[k % std::size(kColours)];
+    std::vector<cv::Point> trail;
+    const TrackedRow* now = nullptr;
+    for (const TrackedRow& r : series[k].rows) {
+      if (r.frame > frame) break;
+      if (r.frame == frame) now = &r;
+      if (r.lost) continue;
+      trail.emplace_back(static_cast<int>(std::lround(r.x_px * scale)),
+                         static_cast<int>(std::lround(r.y_px * scale)));
+    }
+    if (trail.size() > 1) cv::polylines(img, trail, false, colour, 1, cv::LINE_AA);
+    if (now != nullptr && !now->lost) {
+      const cv::Point p(static_cast<int>(std::lround(now->x_px * scale)),
+                        static_cast<int>(std::lround(now->y_px * scale)));
+      cv::circle(img, p, 4, colour, 1, cv::LINE_AA);
+    }
+  }
+}
+
+void summarise(TrackedSeries& s) {
+  std::vector<double> scores;
+  int lost_from = -1, lost_to = -1;
+  for (const TrackedRow& r : s.rows) {
+    if (r.lost) {
+      if (lost_from < 0) lost_from = r.frame;
+      lost_to = r.frame;
+      continue;
+    }
+    if (lost_from >= 0) s.lost_ranges.emplace_back(lost_from, lost_to);
+    lost_from = -1;
+    ++s.tracked;
+    scores.push_back(r.score);
+  }
+  if (lost_from >= 0) s.lost_ranges.emplace_back(lost_from, lost_to);
+  if (!scores.empty()) {
+    const auto mid = scores.begin() + static_cast<std::ptrdiff_t>(scores.size() / 2);
+    std::nth_element(scores.begin(), mid, scores.end());
+    s.median_score = *mid;
+    if (scores.size() % 2 == 0) {
+      s.median_score = (s.median_score + *std::max_element(scores.begin(), mid)) / 2;
+    }
+  }
+}
+
+double median(std::vector<double> v) {
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  double m = *mid;
+  if (v.size() % 2 == 0) m = (m + *std::max_element(v.begin(), mid)) / 2;
+  return m;
+}
+
+/// Distance from the project's further human marks (the start mark excluded), px.
+HumanComparison compare_with_human(const TrackedSeries& s, const track::Track& human, int start_frame) {
+  HumanComparison c;
+  std::vector<double> d;
+  std::size_t j = 0;
+  for (const track::TrackPoint& p : human.points) {
+    if (p.frame == start_frame) continue;
+    while (j < s.rows.size() && s.rows[j].frame < p.frame) ++j;
+    if (j == s.rows.size() || s.rows[j].frame != p.frame || s.rows[j].lost) continue;
+    d.push_back(std::hypot(s.rows[j].x_px - p.x, s.rows[j].y_px - p.y));
+  }
+  c.frames = static_cast<int>(d.size());
+  if (!d.empty()) {
+    c.max_px = *std::max_element(d.begin(), d.end());
+    c.median_px = median(d);
+  }
+  return c;
+}
+
+}  // namespace
+
+TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options) {
+  if (const auto err = options.validate(); !err.empty()) throw InputError(err);
+  TrackVideoResult result;
+  result.input = open_input(input, options.source);
+  const VideoInput& in = result.input;
+  std::vector<Follower> followers;
+  for (const Target& t : options.targets) {
+    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}};
+    if (w.target.kind == Target::Kind::ellipse) w.tracker = EllipseTracker(options.ellipse);
+    resolve_start(w, in);
+    for (const std::string& n : output_names(t)) {
+      w.series.push_back(result.series.size());
+      TrackedSeries s;
+      s.name = n;
+      s.kind = t.kind;
+      result.series.push_back(std::move(s));
+    }
+    followers.push_back(std::move(w));
+  }
+
+  FrameReader reader(in);
+  const int expected = reader.expected_steps();
+  const std::set<int> thumb_steps = thumbnail_steps(options.thumbnails, expected);
+  const double scale = std::min(1.0, double(kThumbWidth) / std::max(1, in.info.width));
+  std::vector<std::pair<Frame, cv::Mat>> thumbs;  // frame facts and its downscaled image
+  Frame f;
+  while (reader.next(f)) {
+    for (Follower& w : followers) {
+      if (!w.started && f.index != w.start_frame) continue;
+      std::visit(
+          [&](auto& tracker) {
+            if (w.started) {
+              record(w, f, in, result.series, tracker.update(f));
+            } else {
+              record(w, f, in, result.series, tracker.start(f, w.start_x, w.start_y, w.target.name));
+              w.started = true;
+            }
+          },
+          w.tracker);
+    }
+    if (thumb_steps.count(result.frames) != 0) {
+      Frame meta;
+      meta.index = f.index;
+      meta.t = f.t;
+      cv::Mat small;
+      cv::resize(f.bgr, small, cv::Size(), scale, scale, cv::INTER_AREA);
+      thumbs.emplace_back(std::move(meta), std::move(small));
+    }
+    ++result.frames;
+    if (options.progress) options.progress(result.frames, std::max(expected, result.frames));
+  }
+  for (const Follower& w : followers) {
+    if (!w.started) {
+      throw InputError(w.target.from_track.empty() ? w.target.name : "--from-track " + w.target.from_track,
+                       "the start frame " + std::to_string(w.start_frame) + " is beyond the end of the clip (" +
+                           std::to_string(result.frames) + " frames decoded)");
+    }
+  }
+  for (TrackedSeries& s : result.series) summarise(s);
+  for (const Follower& w : followers) {
+    if (w.target.from_track.empty()) continue;
+    for (const auto& m : in.marks_px) {
+      if (m.name == w.target.from_track) {
+        result.series[w.series[0]].vs_human = compare_with_human(result.series[w.series[0]], m, w.start_frame);
+      }
+    }
+  }
+  for (auto& [meta, img] : thumbs) {
+    draw_tracks(img, scale, meta.index, result.series);
+    Thumbnail t;
+    t.frame = meta.index;
+    t.t = meta.t;
+    if (!cv::imencode(".jpg", img, t.jpeg, {cv::IMWRITE_JPEG_QUALITY, 85})) {
+      throw InputError(input, "cannot encode a thumbnail as JPEG");
+    }
+    result.thumbnails.push_back(std::move(t));
+  }
+  result.warnings = in.warnings;
+  for (const Follower& w : followers) {  // an ellipse's ends are lost with its centre
+    const TrackedSeries& s = result.series[w.series[0]];
+    if (s.lost_ranges.empty()) continue;
+    std::string frames;
+    for (const auto& [a, b] : s.lost_ranges) {
+      frames += (frames.empty() ? "" : ", ") + std::to_string(a) + (a == b ? "" : "-" + std::to_string(b));
+    }
+    result.warnings.push_back("track '" + s.name + "': lost at frame(s) " + frames +
+                              " (rows with empty positions)");
+  }
+  return result;
+}
+
+track::TrackSet to_track_set(const TrackVideoResult& result) {
+  track::TrackSet set;
+  set.source = result.input.input;
+  set.format = "video";
+  set.file_length_unit = result.input.calibration.calibrated ? "m" : "px";
+  set.time_scale = result.input.time.time_scale;
+  set.warnings = result.warnings;
+  for (const TrackedSeries& s : result.series) {
+    track::Track t;
+    t.name = s.name;
+    for (const TrackedRow& r : s.rows) {
+      if (!r.lost) t.points.push_back({r.frame, r.t, r.x, r.y});
+    }
+    set.tracks.push_back(std::move(t));
+  }
+  return set;
+}
+
+}  // namespace tribolab::video
