@@ -9,6 +9,7 @@
 #include "bounce/geometry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/track_csv.hpp"
+#include "io/tracker_trk.hpp"
 #include "numerics/error.hpp"
 #include "video/render_throw.hpp"
 
@@ -50,6 +51,29 @@ video::RenderOptions::Background parse_background(const std::string& name) {
   throw InputError("--background", "unknown background '" + name + "' (plain, gradient, texture)");
 }
 
+// The project Tracker opens with the rendered video: the clip is every frame, frame k at
+// k / fps, and the image coordinate system is the film's (origin on the floor line below the
+// release, px per m = 1 / scale), so `track video FILE.trk` lands in world metres.
+io::TrkWriteSpec trk_spec(const video::ThrowFilm& film, const std::string& video_path, const std::string& trk_path) {
+  namespace fs = std::filesystem;
+  io::TrkWriteSpec spec;
+  io::TrkCoordFrame c;
+  c.origin_x = film.view.origin_x_px;
+  c.origin_y = film.view.origin_y_px;
+  c.xscale = c.yscale = 1 / film.view.scale_m_per_px;
+  spec.coords = {c};
+  spec.step_count = film.frames;
+  spec.frame_duration_ms = 1000 / film.render.fps;
+  spec.length_unit = "m";
+  std::error_code ec;
+  const fs::path dir = fs::absolute(fs::path(trk_path), ec).parent_path();
+  const fs::path video = fs::absolute(fs::path(video_path), ec);
+  const fs::path rel = video.lexically_relative(dir);
+  spec.video_path = (rel.empty() ? video : rel).generic_string();
+  spec.video_frame_count = film.frames;
+  return spec;
+}
+
 // Exact decimal text of a number for options a user pastes into `track video`.
 std::string exact(double v) { return fmt::format("{}", v); }
 
@@ -59,7 +83,7 @@ void register_bounce_render(CLI::App* area) {
   struct Opts {
     video::ThrowFilmOptions o;
     TruthLaw law;
-    std::string out, truth, size = "640x480", background = "gradient";
+    std::string out, truth, write_trk, size = "640x480", background = "gradient";
     double scale = 0;
     bool no_floor = false, json = false;
   };
@@ -68,6 +92,8 @@ void register_bounce_render(CLI::App* area) {
   auto* cmd = area->add_subcommand("render", "film a simulated throw (flight, bounce, flight) to a video with its truth");
   cmd->add_option("--out", opts->out, "output video: .avi (MJPG) or .mp4 (mp4v)")->required();
   cmd->add_option("--truth", opts->truth, "CSV of the true tracks ball, ball.A, ball.B (track,frame,t,x,y; m, s)");
+  cmd->add_option("--write-trk", opts->write_trk,
+                  "a Tracker project (.trk): the video, its clip, time base, calibration and the truth as tracks truth, truth.A, truth.B");
   add_ball_options(cmd, opts->o.motion.ball);
   opts->law.add(cmd);
   auto& m = opts->o.motion;
@@ -114,13 +140,27 @@ void register_bounce_render(CLI::App* area) {
       truth.emplace(opts->truth);
       io::write_tidy_csv(truth->stream(), film.truth);
     }
+    std::optional<io::AtomicFile> trk;
+    if (!opts->write_trk.empty()) {
+      if (std::filesystem::path(opts->write_trk).extension() != ".trk") {
+        throw InputError("--write-trk " + opts->write_trk, "the project file must end in .trk");
+      }
+      trk.emplace(opts->write_trk);
+      // The truth goes in as tracks truth, truth.A, truth.B (a project needs a track, and
+      // Tracker then shows the truth beside what `track video` finds as ball, ball.A, ball.B).
+      auto tracks = film.truth.tracks;
+      for (auto& t : tracks) t.name.replace(0, 4, "truth");
+      trk->stream() << io::write_trk(tracks, trk_spec(film, opts->out, opts->write_trk));
+    }
     video::write_video(opts->out, film.scene, film.frames, film.render);
-    if (truth) {
+    if (truth || trk) {
       try {
-        truth->commit();
+        if (truth) truth->commit();
+        if (trk) trk->commit();
       } catch (...) {
         std::error_code ec;
         std::filesystem::remove(opts->out, ec);
+        if (truth && trk) std::filesystem::remove(opts->truth, ec);  // the project failed after the truth
         throw;
       }
     }
@@ -133,6 +173,7 @@ void register_bounce_render(CLI::App* area) {
     const double deg = 180 / std::numbers::pi;
     print_result({{"out", opts->out},
                   {"truth_file", opts->truth.empty() ? json(nullptr) : json(opts->truth)},
+                  {"write_trk", opts->write_trk.empty() ? json(nullptr) : json(opts->write_trk)},
                   {"frames", film.frames},
                   {"fps", film.render.fps},
                   {"width", film.render.width},

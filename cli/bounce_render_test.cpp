@@ -9,7 +9,9 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <filesystem>
 #include <string>
 
@@ -82,6 +84,35 @@ TEST(BounceRenderCli, VideoAndTruthAgreeWithTheJsonCalibration) {
   fs::remove_all(dir);
 }
 
+TEST(BounceRenderCli, WrittenProjectMakesTrackVideoLandInWorldMetres) {
+  // Render, then track the ball as an ellipse through the written Tracker project: the
+  // tracked centre is the truth in metres. The ellipse tracker's centre error on rendered
+  // video is ~0.05 px in flight (its own tests); the contact frames blur a non-uniform
+  // motion (up to ~0.2 px, render_throw_test). A median of 0.5 px (~1 mm here) bounds both
+  // while a wrong origin, scale or frame time (the ball moves 15-40 px per frame) fails.
+  const std::string dir = temp_dir("bounce_render_trk");
+  const json j = run_json(kSmall + " --out " + dir + "/throw.avi --truth " + dir + "/truth.csv --write-trk " + dir +
+                          "/throw.trk");
+  ASSERT_TRUE(fs::exists(dir + "/throw.trk"));
+  const double scale = j["scale_m_per_px"];
+  const std::string start = fmt::format("ball={},{}@0", j["ball_start_px"][0].get<double>(), j["ball_start_px"][1].get<double>());
+  run_json("track video " + dir + "/throw.trk --out " + dir + "/tracked.csv --ellipse " + start);
+  const auto tracked = io::parse_tidy_csv(slurp(dir + "/tracked.csv"), "tracked.csv");
+  const auto truth = io::parse_tidy_csv(slurp(dir + "/truth.csv"), "truth.csv");
+  const auto& got = tracked.find("ball").points;
+  const auto& want = truth.find("ball").points;
+  ASSERT_EQ(got.size(), want.size());
+  std::vector<double> err;
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    EXPECT_EQ(got[k].frame, want[k].frame);
+    EXPECT_NEAR(got[k].t, want[k].t, 1e-9);
+    err.push_back(std::hypot(got[k].x - want[k].x, got[k].y - want[k].y) / scale);
+  }
+  std::nth_element(err.begin(), err.begin() + err.size() / 2, err.end());
+  EXPECT_LT(err[err.size() / 2], 0.5) << "median centre error, px";
+  fs::remove_all(dir);
+}
+
 TEST(BounceRenderCli, SameSeedSameTruthOtherSeedOtherPhase) {
   const std::string dir = temp_dir("bounce_render_seed");
   auto truth_of = [&](int seed) {
@@ -108,6 +139,8 @@ TEST(BounceRenderCli, BadInputIsOneLineAndNoFile) {
   expect_error(kSmall + " --out " + dir + "/v.gif --truth " + truth, "v.gif");
   expect_error(kSmall + " --out " + video + " --truth " + dir + "/missing/t.csv", "missing");
   expect_error(kSmall + " --out " + dir + "/missing/v.avi --truth " + truth, "missing");
+  expect_error(kSmall + out + " --write-trk " + dir + "/p.xml", "--write-trk");
+  expect_error(kSmall + out + " --write-trk " + dir + "/missing/p.trk", "missing");
   EXPECT_TRUE(fs::is_empty(dir)) << "a failed command left a file";
   fs::remove_all(dir);
 }
