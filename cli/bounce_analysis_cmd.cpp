@@ -6,6 +6,7 @@
 #include "app.hpp"
 #include "bounce_options.hpp"
 #include "bounce_series.hpp"
+#include "bounce_truth_law.hpp"
 #include "report_bounce_analysis.hpp"
 #include "report_bounce_series.hpp"
 #include "report_option.hpp"
@@ -38,49 +39,6 @@ using nlohmann::json;
 using namespace tribolab::analysis;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-bounce::NormalModel parse_model(const std::string& name) {
-  const auto m = bounce::parse_normal_model(name);
-  if (!m) throw InputError("--model", "unknown model '" + name + "' (hooke, hertz, hunt-crossley, flores, lankarani-nikravesh, gonthier)");
-  return *m;
-}
-
-bounce::FrictionKind parse_friction(const std::string& name) {
-  const auto k = bounce::parse_friction_kind(name);
-  if (!k) throw InputError("--friction", "unknown friction model '" + name + "' (coulomb, regularized, spring)");
-  return *k;
-}
-
-/// The contact law of the synthetic generators (truth).
-struct TruthLaw {
-  std::string model = "hunt-crossley", friction = "coulomb";
-  double K = 101054, n = 1.51, D = 60423, mu = 0.5, slip_scale = 0.01;
-  std::optional<double> restitution;
-  void add(CLI::App* cmd) {
-    cmd->add_option("--model", model, "normal law (default hunt-crossley)");
-    cmd->add_option("--K", K, "stiffness, N/m^n (default 101054)");
-    cmd->add_option("--n", n, "exponent (default 1.51)");
-    cmd->add_option("--D", D, "damping, N s/m^(n+1) (default 60423)");
-    cmd->add_option("--restitution", restitution, "target restitution instead of --D");
-    cmd->add_option("--mu", mu, "friction coefficient (default 0.5)");
-    cmd->add_option("--friction", friction, "coulomb|regularized|spring (default coulomb)");
-    cmd->add_option("--slip-scale", slip_scale, "v_s of the regularized law, m/s (default 0.01)");
-  }
-  void apply(bounce::NormalLawSpec& s, bounce::FrictionModel& f) const {
-    for (auto [v, name] : {std::pair{K, "--K"}, {n, "--n"}, {D, "--D"}, {mu, "--mu"}, {slip_scale, "--slip-scale"}})
-      check_finite(v, name);
-    s.model = parse_model(model);
-    s.K = K;
-    s.n = s.model == bounce::NormalModel::hooke ? 1.0 : n;
-    s.D = s.model == bounce::NormalModel::hertz ? 0.0 : D;
-    s.restitution = restitution;
-    if (auto e = s.validate(); !e.empty()) invalid(e);
-    f.kind = parse_friction(friction);
-    f.mu = mu;
-    f.slip_scale = slip_scale;
-    if (auto e = f.validate(); !e.empty()) invalid(e);
-  }
-};
 
 json segment_json(const SegmentFit& s) {
   return {{"vx", s.vx}, {"sigma_vx", num(s.sigma_vx)}, {"vy", s.vy}, {"sigma_vy", s.sigma_vy},

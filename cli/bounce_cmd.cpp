@@ -6,6 +6,7 @@
 #include "app.hpp"
 #include "bounce_analysis_cmd.hpp"
 #include "bounce_options.hpp"
+#include "bounce_render_cmd.hpp"
 #include "report_bounce.hpp"
 #include "report_option.hpp"
 #include "bounce_sweep_cmd.hpp"
@@ -329,6 +330,7 @@ void register_bounce(CLI::App& root) {
   add_drop(area);
   register_bounce_analysis(area);
   register_bounce_sweep(*area);
+  register_bounce_render(area);
 }
 
 }  // namespace tribolab::cli

@@ -343,19 +343,24 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   };
   double score = 0, rms = 0;
   Ellipse found;
-  const auto try_fit = [&](const cv::Mat& dist, cv::Point origin, const Ellipse& init) {
-    const EdgeFit fit = fit_ellipse_edges(dist, origin, init, eo);
-    if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) return;
-    // Score: fraction of normals giving a kept edge point, times agreement of the axes
-    // with the running ones (a merged or partly hidden object changes shape).
+  // Score: fraction of normals giving a kept edge point, times agreement of the axes with the
+  // running ones (a merged or partly hidden object changes shape).
+  const auto score_of = [&](const EdgeFit& fit) {
     const double shape = std::max(std::abs(fit.ellipse.a / s.a_ref - 1), std::abs(fit.ellipse.b / s.b_ref - 1));
-    const double sc = static_cast<double>(fit.inliers) / fit.profiles * std::clamp(1 - 3 * shape, 0.0, 1.0);
-    if (sc > score) score = sc, found = fit.ellipse, rms = fit.rms_px;
+    return static_cast<double>(fit.inliers) / fit.profiles * std::clamp(1 - 3 * shape, 0.0, 1.0);
+  };
+  // Keeps the fit from `init` when it scores better (or as well, with `ties`).
+  const auto try_fit = [&](const cv::Mat& dist, cv::Point origin, const Ellipse& init, const EdgeFitOptions& opt,
+                           bool ties = false) {
+    const EdgeFit fit = fit_ellipse_edges(dist, origin, init, opt);
+    if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) return;
+    const double sc = score_of(fit);
+    if (sc > score || (ties && sc >= score)) score = sc, found = fit.ellipse, rms = fit.rms_px;
   };
   // 1. From the prediction (right in flight, also with part of the object hidden), in a window
   //    just holding the predicted outline and its profiles.
   if (const cv::Rect roi = window(s.a_ref + eo.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
-    try_fit(colour_distance(frame, roi, s.colour), roi.tl(), pred_e);
+    try_fit(colour_distance(frame, roi, s.colour), roi.tl(), pred_e, eo);
   }
   // 2. Unless that fit is clearly good: segment the whole gate and start from the region of
   //    the object's colour nearest the prediction (right after a bounce); the better score wins.
@@ -375,20 +380,17 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
     }
     if (best > 0) {
       const Ellipse seg = ellipse_from_moments(labels == best, cv::Point2d(roi.x, roi.y));
-      if (seg.a > 1 && seg.b > 1) try_fit(dist, roi.tl(), seg);
+      if (seg.a > 1 && seg.b > 1) try_fit(dist, roi.tl(), seg, eo);
     }
   }
   if (!moving && score >= s.options.min_score) {
     // No velocity was known, so every edge window allowed for a fast throw's blur: refit with
     // the motion just measured (sharper windows, less sensitive to the background).
     const cv::Point2d v = (cv::Point2d(found.cx, found.cy) - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps;
-    EdgeFitOptions eo2 = s.edge_options(v, omega);
+    const EdgeFitOptions eo2 = s.edge_options(v, omega);
     if (const cv::Rect roi = window(s.a_ref + std::hypot(found.cx - pred.x, found.cy - pred.y) + eo2.reach_px + 3);
         roi.width >= 3 && roi.height >= 3) {
-      const EdgeFit fit = fit_ellipse_edges(colour_distance(frame, roi, s.colour), roi.tl(), found, eo2);
-      if (fit.ok && static_cast<double>(fit.inliers) / fit.profiles >= score) {
-        score = static_cast<double>(fit.inliers) / fit.profiles, found = fit.ellipse, rms = fit.rms_px;
-      }
+      try_fit(colour_distance(frame, roi, s.colour), roi.tl(), found, eo2, true);
     }
   }
   if (score < s.options.min_score) {

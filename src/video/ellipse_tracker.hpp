@@ -1,9 +1,10 @@
 // Following a ball or disc that contrasts with its background as an ellipse
-// (docs/theory.md#video-tracking): the object is segmented near its predicted position,
-// edge points are located to sub-pixel along rays from the predicted centre, an ellipse is
-// fitted to them robustly, and the two ends of the major axis are labelled A and B
-// continuously in time (the label that moved least, given the spin predicted from the past
-// frames), so `bounce analyze --track-a NAME.A --track-b NAME.B` reads them directly.
+// (docs/theory.md#ellipse-tracking): the object is found near its predicted position by its
+// colour, edge points are located to sub-pixel along the normals of the expected outline (the
+// mean edge over the exposure), an ellipse is fitted to them robustly, and the two ends of the
+// major axis are labelled A and B continuously in time (the end nearest the direction
+// predicted from the spin of the past frames), so `bounce analyze --track-a NAME.A --track-b
+// NAME.B` reads them directly.
 #pragma once
 
 #include "video/frame.hpp"

@@ -247,7 +247,7 @@ TEST(EllipseTracker, FastParabolicFlight) {
   const double centre = median(run.centre_err_px);
   const double worst = *std::max_element(run.centre_err_px.begin(), run.centre_err_px.end());
   std::printf("flight 22 px/frame: median centre error %.4f px, max %.4f px\n", centre, worst);
-  // Measured 0.051 px median, 0.107 px worst: the blurred outline is not quite an ellipse and
+  // Measured 0.038 px median, 0.087 px worst: the blurred outline is not quite an ellipse and
   // changes with the direction of flight; a fit holding the previous shape was 0.67 px off.
   EXPECT_LE(centre, 0.15);
   EXPECT_LE(worst, 0.3);

@@ -54,7 +54,7 @@ struct RenderOptions {
 /// position at t: the frame's time stamp is the middle of its exposure.
 cv::Mat render_frame(const Scene& scene, double t, const RenderOptions& options, int frame_index);
 
-/// Writes frames 0..frames-1 to `path` (.avi: MJPG at high quality, .mp4: mp4v); throws
+/// Writes frames 0..frames-1 to `path` (.avi: MJPG, .mp4: mp4v, both by FFmpeg); throws
 /// InputError when the file cannot be written. The video's frame rate is options.fps and
 /// frame i is rendered at t = i / fps. The file appears whole or not at all.
 void write_video(const std::string& path, const Scene& scene, int frames, const RenderOptions& options);

@@ -207,7 +207,7 @@ TEST_P(WriteVideo, DecodesToTheFramesSizeAndRateWritten) {
   }
   EXPECT_EQ(count, 12);
   // Lossy compression: the decoded frame stays within a few grey levels of the rendered one
-  // on average (MJPG at quality 95 ~ 1, mp4v ~ 2-3); 6 catches a wrong frame or colour order.
+  // on average (MJPG ~ 1, mp4v ~ 2-3); 6 catches a wrong frame or colour order.
   EXPECT_LT(err, 6.0) << GetParam();
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);  // no temporary left
   fs::remove_all(dir);

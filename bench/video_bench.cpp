@@ -1,0 +1,140 @@
+// Video benchmarks (docs/benchmarks.md#video-tracking): frames per second at 640x480 for
+// decoding alone and for point and ellipse tracking per frame (frames decoded beforehand, so
+// tracking excludes decoding). The video is a rendered throw (bounce render's defaults: 240
+// fps, textured background, noise 2, shutter 0.5; a checker sticker on the ball for the point
+// tracker), written once to a temporary .avi (MJPG).
+#include "video/frame.hpp"
+#include "video/ellipse_tracker.hpp"
+#include "video/point_tracker.hpp"
+#include "video/render_throw.hpp"
+
+#include <benchmark/benchmark.h>
+#include <opencv2/videoio.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+using namespace tribolab;
+
+struct Clip {
+  std::string path;
+  cv::Point2d ball, sticker;  ///< px in frame 0
+  std::vector<video::Frame> frames;
+  ~Clip() { std::filesystem::remove(path); }
+};
+
+const Clip& clip() {
+  static const Clip c = [] {
+    Clip c;
+    video::ThrowFilmOptions o;
+    o.render.width = 640;
+    o.render.height = 480;
+    o.render.background = video::RenderOptions::Background::texture;
+    o.render.background_colour = cv::Scalar(180, 185, 190);
+    o.sticker = true;
+    o.motion.after = 0.1;
+    const auto film = video::plan_throw_film(o);
+    c.path = (std::filesystem::temp_directory_path() / ("video_bench_" + std::to_string(::getpid()) + ".avi")).string();
+    video::write_video(c.path, film.scene, film.frames, film.render);
+    const auto shape = film.scene(0).front();
+    c.ball = {shape.cx_px, shape.cy_px};
+    // The sticker's centre: mark_u_px along the body x-axis (angle counter-clockwise on screen).
+    c.sticker = {shape.cx_px + shape.mark_u_px * std::cos(shape.angle_rad),
+                 shape.cy_px - shape.mark_u_px * std::sin(shape.angle_rad)};
+    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    video::Frame f;
+    while (cap.read(f.bgr)) {
+      f.t = f.index / film.render.fps;
+      video::make_gray(f);
+      c.frames.push_back(f);
+      f = video::Frame{};
+      f.index = static_cast<int>(c.frames.size());
+    }
+    if (c.frames.empty()) throw std::runtime_error("video_bench: the rendered video does not decode");
+    return c;
+  }();
+  return c;
+}
+
+void BM_Decode640x480(benchmark::State& state) {
+  const Clip& c = clip();
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    cv::Mat m;
+    while (cap.read(m)) {
+      benchmark::DoNotOptimize(m.data);
+      ++frames;
+    }
+  }
+  state.SetItemsProcessed(frames);  // items_per_second = frames per second
+}
+BENCHMARK(BM_Decode640x480)->Unit(benchmark::kMillisecond);
+
+void BM_DecodeAndGray640x480(benchmark::State& state) {
+  const Clip& c = clip();
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    video::Frame f;
+    while (cap.read(f.bgr)) {
+      video::make_gray(f);
+      benchmark::DoNotOptimize(f.gray.data);
+      ++frames;
+    }
+  }
+  state.SetItemsProcessed(frames);
+}
+BENCHMARK(BM_DecodeAndGray640x480)->Unit(benchmark::kMillisecond);
+
+void BM_TrackPoint640x480(benchmark::State& state) {
+  const Clip& c = clip();
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    video::PointTracker tracker;
+    benchmark::DoNotOptimize(tracker.start(c.frames[0], c.sticker.x, c.sticker.y, "sticker"));
+    for (std::size_t k = 1; k < c.frames.size(); ++k) benchmark::DoNotOptimize(tracker.update(c.frames[k]));
+    frames += static_cast<std::int64_t>(c.frames.size());
+  }
+  state.SetItemsProcessed(frames);
+}
+BENCHMARK(BM_TrackPoint640x480)->Unit(benchmark::kMillisecond);
+
+void BM_TrackEllipse640x480(benchmark::State& state) {
+  const Clip& c = clip();
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    video::EllipseTracker tracker;
+    benchmark::DoNotOptimize(tracker.start(c.frames[0], c.ball.x, c.ball.y, "ball"));
+    for (std::size_t k = 1; k < c.frames.size(); ++k) benchmark::DoNotOptimize(tracker.update(c.frames[k]));
+    frames += static_cast<std::int64_t>(c.frames.size());
+  }
+  state.SetItemsProcessed(frames);
+}
+BENCHMARK(BM_TrackEllipse640x480)->Unit(benchmark::kMillisecond);
+
+void BM_RenderFrame640x480(benchmark::State& state) {
+  video::ThrowFilmOptions o;
+  o.render.background = video::RenderOptions::Background::texture;
+  const auto film = video::plan_throw_film(o);
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < film.frames; k += 10) {
+      benchmark::DoNotOptimize(video::render_frame(film.scene, k / film.render.fps, film.render, k).data);
+      ++frames;
+    }
+  }
+  state.SetItemsProcessed(frames);
+}
+BENCHMARK(BM_RenderFrame640x480)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
