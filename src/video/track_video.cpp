@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -322,6 +323,17 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
     }
     result.warnings.push_back("track '" + s.name + "': lost at frame(s) " + frames +
                               " (rows with empty positions)");
+  }
+  // The project's own marks are an independent check: a track far from them has followed
+  // something else (an edge sliding along itself, a look-alike) even where its score held.
+  constexpr double kHumanDisagreementPx = 3;  // human marks scatter ~1 px; 3x that is not scatter
+  for (const TrackedSeries& s : result.series) {
+    if (!s.vs_human || s.vs_human->frames == 0 || !(s.vs_human->median_px > kHumanDisagreementPx)) continue;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.1f px (median over %d frames)", s.vs_human->median_px, s.vs_human->frames);
+    result.warnings.push_back("track '" + s.name + "' lies " + buf +
+                              " from the project's own marks: it has followed something else; check the report, "
+                              "start on a textured mark or use --ellipse for a ball");
   }
   return result;
 }

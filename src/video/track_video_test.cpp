@@ -290,6 +290,25 @@ TEST(TrackVideo, FromTrackStartsAtTheHumansFirstMarkAndMeasuresTheRest) {
   EXPECT_NEAR(row.x, (row.x_px - 10) / 500, 1e-12);
   EXPECT_NEAR(row.y, (230 - row.y_px) / 500, 1e-12);
   EXPECT_DOUBLE_EQ(row.t, (row.frame - 2) / kFps);  // starttime 0 at the clip's frame 2
+  for (const auto& w : r.warnings) EXPECT_EQ(w.find("project's own marks"), std::string::npos) << w;
+}
+
+TEST(TrackVideo, ATrackFarFromTheProjectsOwnMarksIsWarned) {
+  // The marks disagree by 8 px with what is tracked (a track that followed another feature
+  // looks the same from here): the agreement is the user's independent check, so say it.
+  const std::string dir = temp_dir("fromtrack_far");
+  film(dir);
+  write_project(dir, 8.0);
+  TrackVideoOptions o;
+  Target t;
+  t.name = t.from_track = "by hand";
+  o.targets = {t};
+  const TrackVideoResult r = track_video(dir + "/p.trk", o);
+  ASSERT_TRUE(r.series[0].vs_human.has_value());
+  EXPECT_NEAR(r.series[0].vs_human->median_px, 8.0, 0.3);
+  bool warned = false;
+  for (const auto& w : r.warnings) warned = warned || w.find("'by hand' lies 8.0 px (median over 8 frames) from the project's own marks") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
 
 TEST(TrackVideo, WrittenProjectReadsBackToTheCsvNumbers) {
