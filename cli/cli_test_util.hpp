@@ -63,15 +63,24 @@ inline int count_lines(const std::string& s) {
   return n;
 }
 
-/// Runs `tribolab <args> --json` that must succeed: exit 0, nothing on stderr, and stdout
-/// either empty (commands whose output is a file) or exactly one line of JSON.
+/// Runs `tribolab <args> --json` that must succeed: exit 0, nothing on stderr but the
+/// result's own `warnings` (each as one "tribolab: warning: ..." line), and stdout either
+/// empty (commands whose output is a file) or exactly one line of JSON.
 inline nlohmann::json run_json(const std::string& args) {
   const auto r = run_tribolab(args + " --json");
   EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
-  EXPECT_TRUE(r.err.empty()) << args << "\n" << r.err;
-  if (r.out.empty()) return nlohmann::json();
+  if (r.out.empty()) {
+    EXPECT_TRUE(r.err.empty()) << args << "\n" << r.err;
+    return nlohmann::json();
+  }
   EXPECT_EQ(count_lines(r.out), 1) << args << "\n" << r.out;
-  return nlohmann::json::parse(r.out);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  std::string expected_err;
+  if (j.is_object() && j.contains("warnings") && j["warnings"].is_array()) {
+    for (const auto& w : j["warnings"]) expected_err += "tribolab: warning: " + w.get<std::string>() + "\n";
+  }
+  EXPECT_EQ(r.err, expected_err) << args;
+  return j;
 }
 
 /// Bad input as the user sees it: non-zero exit, exactly one line on stderr that contains
