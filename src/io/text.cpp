@@ -78,4 +78,14 @@ std::string format_number(double v) {
   return std::string(buf, ptr);
 }
 
+std::string csv_quote(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string o = "\"";
+  for (char c : s) {
+    if (c == '"') o += '"';
+    o += c;
+  }
+  return o + "\"";
+}
+
 }  // namespace tribolab::io

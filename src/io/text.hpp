@@ -28,4 +28,8 @@ std::string read_file(const std::string& path);
 /// Formats a double with up to 12 significant digits, shortest form ("0.1", "1e-09").
 std::string format_number(double v);
 
+/// A CSV cell for `s`: as it is, or in double quotes (inner quotes doubled) when it holds a
+/// comma, a quote or a line break (RFC 4180).
+std::string csv_quote(const std::string& s);
+
 }  // namespace tribolab::io

@@ -138,22 +138,13 @@ track::TrackSet parse_tidy_csv(std::string_view text, const std::string& source)
 }
 
 namespace {
-std::string quote(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string o = "\"";
-  for (char c : s) {
-    if (c == '"') o += '"';
-    o += c;
-  }
-  return o + "\"";
-}
 std::string cell(double v) { return std::isfinite(v) ? exact(v) : ""; }
 }  // namespace
 
 void write_tidy_csv(std::ostream& out, const track::TrackSet& set) {
   out << "track,frame,t,x,y\n";
   for (const auto& tr : set.tracks) {
-    const std::string name = quote(tr.name);
+    const std::string name = csv_quote(tr.name);
     for (const auto& p : tr.points) {
       out << name << ',' << p.frame << ',' << exact(p.t) << ',' << exact(p.x) << ',' << exact(p.y)
           << '\n';

@@ -4,6 +4,7 @@
 #include "numerics/error.hpp"
 #include "video/ellipse_fit.hpp"
 #include "video/render.hpp"
+#include "video/test_videos.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
@@ -21,14 +22,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Frame frame_at(const Scene& scene, int index, const RenderOptions& o) {
-  Frame f;
-  f.index = index;
-  f.t = index / o.fps;
-  f.bgr = render_frame(scene, f.t, o, index);
-  make_gray(f);
-  return f;
-}
+/// Frame `index` of the scene (test_videos.hpp).
+constexpr auto& frame_at = testing::rendered_frame;
 
 RenderOptions small_video() {
   RenderOptions o;

@@ -3,6 +3,7 @@
 #include "numerics/error.hpp"
 #include "video/motion_model.hpp"
 #include "video/render.hpp"
+#include "video/test_videos.hpp"
 
 #include <gtest/gtest.h>
 #include <pugixml.hpp>
@@ -27,14 +28,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
 
-Frame film(const Scene& scene, int index, const RenderOptions& o) {
-  Frame f;
-  f.index = index;
-  f.t = index / o.fps;
-  f.bgr = render_frame(scene, f.t, o, index);
-  make_gray(f);
-  return f;
-}
+/// Frame `index` of the scene (test_videos.hpp).
+constexpr auto& film = testing::rendered_frame;
 
 RenderOptions small_video() {
   RenderOptions o;

@@ -3,6 +3,9 @@
 // index so a test can check which frame it was given. For the source, workflow and CLI tests.
 #pragma once
 
+#include "video/frame.hpp"
+#include "video/render.hpp"
+
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
@@ -63,6 +66,16 @@ inline void write_test_video(const std::string& path, const TestVideo& v) {
                     cv::Size(v.width, v.height));
   if (!w.isOpened()) throw std::runtime_error("cannot write test video " + path);
   for (int i = 0; i < v.frames; ++i) w.write(test_frame(v, i));
+}
+
+/// Frame `index` of `scene` as a tracker receives it: rendered at t = index / fps, grey made.
+inline Frame rendered_frame(const Scene& scene, int index, const RenderOptions& o) {
+  Frame f;
+  f.index = index;
+  f.t = index / o.fps;
+  f.bgr = render_frame(scene, f.t, o, index);
+  make_gray(f);
+  return f;
 }
 
 }  // namespace tribolab::video::testing

@@ -1,6 +1,7 @@
 // What `track video` writes: the CSV table and the Tracker project (track_video.hpp).
 #include "video/track_video.hpp"
 
+#include "io/text.hpp"
 #include "io/track_text.hpp"
 
 #include <filesystem>
@@ -8,25 +9,11 @@
 
 namespace tribolab::video {
 
-namespace {
-
-std::string quote(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string o = "\"";
-  for (char c : s) {
-    if (c == '"') o += '"';
-    o += c;
-  }
-  return o + "\"";
-}
-
-}  // namespace
-
 void write_csv(std::ostream& out, const TrackVideoResult& result) {
   using io::tracktext::exact;
   out << "track,frame,t,x,y,x_px,y_px,score\n";
   for (const TrackedSeries& s : result.series) {
-    const std::string name = quote(s.name);
+    const std::string name = io::csv_quote(s.name);
     for (const TrackedRow& r : s.rows) {
       out << name << ',' << r.frame << ',' << exact(r.t) << ',';
       if (r.lost) {
