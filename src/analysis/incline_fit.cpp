@@ -172,6 +172,28 @@ std::vector<incline::State> model_a_states(const incline::Parameters& p, double 
   return out;
 }
 
+namespace {
+
+/// Model B's residuals (data - model, x then y) for q = (mu, v0, x0, y0, t0, psi) at gravity g;
+/// false where the model is undefined (the least squares then shortens its step).
+bool model_b_residuals(const std::vector<track::TrackPoint>& pts, const std::vector<double>& t, double phi,
+                       const double* q, double g, double* r) {
+  if (!(q[0] > 0 && q[1] > 0) || !std::isfinite(q[4]) || !std::isfinite(q[5])) return false;
+  try {
+    const auto s = model_b_states(launch(q[0], phi, q[1], g), q[4], q[2], q[3], t, q[5]);
+    const std::size_t n = pts.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      r[i] = pts[i].x - s[i].x;
+      r[n + i] = pts[i].y - s[i].y;
+    }
+  } catch (const std::exception&) {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
   if (const std::string e = o.validate(); !e.empty()) throw InputError("incline analyze", e);
   track::validate_track(track, where(track));
@@ -193,19 +215,7 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
   const Guess g = initial_guess(track, o, noise);
   const std::vector<double> t = times_of(track);
 
-  auto residuals = [&](const double* q, double* r) {
-    if (!(q[0] > 0 && q[1] > 0) || !std::isfinite(q[4]) || !std::isfinite(q[5])) return false;
-    try {
-      const auto s = model_b_states(launch(q[0], o.phi, q[1], o.g), q[4], q[2], q[3], t, q[5]);
-      for (int i = 0; i < n; ++i) {
-        r[i] = pts[i].x - s[i].x;
-        r[n + i] = pts[i].y - s[i].y;
-      }
-    } catch (const std::exception&) {
-      return false;
-    }
-    return true;
-  };
+  auto residuals = [&](const double* q, double* r) { return model_b_residuals(pts, t, o.phi, q, o.g, r); };
   // Starting friction values: the stop point (eq 十A) first, then a spread of k.
   std::vector<double> mu_starts;
   if (g.mu_from_stop) mu_starts.push_back(*g.mu_from_stop);
@@ -329,17 +339,7 @@ std::optional<GravityCheck> check_gravity(const track::Track& track, const Incli
   const track::Kinematics kin = track::differentiate(track);
   const double noise = std::max({kin.noise_x, kin.noise_y, 1e-6});
   auto residuals = [&](const double* q, double* r) {
-    if (!(q[0] > 0 && q[1] > 0 && q[6] > 0) || !std::isfinite(q[4]) || !std::isfinite(q[5])) return false;
-    try {
-      const auto s = model_b_states(launch(q[0], o.phi, q[1], q[6]), q[4], q[2], q[3], t, q[5]);
-      for (int i = 0; i < n; ++i) {
-        r[i] = pts[i].x - s[i].x;
-        r[n + i] = pts[i].y - s[i].y;
-      }
-    } catch (const std::exception&) {
-      return false;
-    }
-    return true;
+    return q[6] > 0 && model_b_residuals(pts, t, o.phi, q, q[6], r);
   };
   numerics::FitResult best;
   bool have = false;

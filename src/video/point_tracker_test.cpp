@@ -3,11 +3,10 @@
 #include "numerics/error.hpp"
 #include "video/motion_model.hpp"
 #include "video/render.hpp"
+#include "video/source.hpp"
 #include "video/test_videos.hpp"
 
 #include <gtest/gtest.h>
-#include <pugixml.hpp>
-#include <zip.h>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
@@ -380,88 +379,39 @@ TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
   EXPECT_LT(e.median(e.angle_deg), 0.12);  // measured 0.049 deg
 }
 
-// The bytes of entry `suffix` (the first whose name ends so) of a zip file; empty if none.
-std::string zip_entry(const std::string& path, const std::string& suffix) {
-  int err = 0;
-  zip_t* z = zip_open(path.c_str(), ZIP_RDONLY, &err);
-  if (!z) return {};
-  std::string out;
-  for (zip_int64_t i = 0; i < zip_get_num_entries(z, 0) && out.empty(); ++i) {
-    const std::string name = zip_get_name(z, i, 0);
-    zip_stat_t st;
-    if (name.size() < suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0 ||
-        zip_stat_index(z, i, 0, &st) != 0) {
-      continue;
-    }
-    zip_file_t* f = zip_fopen_index(z, i, 0);
-    out.resize(st.size);
-    if (!f || zip_fread(f, out.data(), st.size) != static_cast<zip_int64_t>(st.size)) out.clear();
-    if (f) zip_fclose(f);
-  }
-  zip_close(z);
-  return out;
-}
-
 TEST(PointTracker, FollowsBallTossFromTheHumansFirstMark) {
   // Tracker's own example (640x480, 15 fps, a small bright ball tossed in front of a hand;
   // not in the repository: docs/theory.md#tracker-files). Started from the human's first
   // mark, the tracker must stay within the scatter of human marks (~1 px) of every other
   // mark. Before the first window grew to a quarter of the image, the 70 px first step
   // left the ball outside it and a match on the hand (score 0.69) was accepted: 47 px off.
-  std::string path;
-  for (const char* root : {"/../shared", "/../../shared"}) {
-    const char* src = std::getenv("TRIBOLAB_SOURCE_DIR");
-    const std::string p = std::string(src ? src : ".") + root + "/data/tracker/BallToss.trz";
-    if (std::filesystem::exists(p)) path = p;
-  }
+  const std::string path = testing::ball_toss_path();
   if (path.empty()) GTEST_SKIP() << "BallToss.trz not found beside the repository";
-  const std::string xml = zip_entry(path, ".trk"), video_bytes = zip_entry(path, ".mp4");
-  ASSERT_FALSE(xml.empty());
-  ASSERT_FALSE(video_bytes.empty());
-  // The human's marks: PointMass framedata entries "[n]" with image x, y in px.
-  pugi::xml_document doc;
-  ASSERT_TRUE(doc.load_buffer(xml.data(), xml.size()));
-  std::vector<std::pair<int, cv::Point2d>> marks;
-  for (const auto& node : doc.select_nodes(
-           "//object[@class='org.opensourcephysics.cabrillo.tracker.PointMass$FrameData']")) {
-    const pugi::xml_node o = node.node();
-    const std::string key = o.parent().attribute("name").value();  // "[n]"
-    marks.push_back({std::stoi(key.substr(1)),
-                     {o.select_node("property[@name='x']").node().text().as_double(),
-                      o.select_node("property[@name='y']").node().text().as_double()}});
-  }
-  ASSERT_EQ(marks.size(), 11u);  // frames 2..12
-  const std::filesystem::path video =
-      std::filesystem::temp_directory_path() / ("point_tracker_balltoss_" + std::to_string(::getpid()) + ".mp4");
-  {
-    std::FILE* f = std::fopen(video.string().c_str(), "wb");
-    ASSERT_NE(f, nullptr);
-    std::fwrite(video_bytes.data(), 1, video_bytes.size(), f);
-    std::fclose(f);
-  }
-  cv::VideoCapture cap(video.string());
-  ASSERT_TRUE(cap.isOpened());
+  // The human's marks in image pixels and the project's video, as `track video` reads them.
+  const VideoInput in = open_input(path, {});
+  const track::Track* marks = nullptr;
+  for (const auto& t : in.marks_px)
+    if (t.name == "ball") marks = &t;
+  ASSERT_NE(marks, nullptr);
+  ASSERT_EQ(marks->points.size(), 11u);  // frames 2..12
+  FrameReader reader(in);
   PointTracker tracker;
   std::vector<double> deviation;
   std::size_t next = 0;
-  for (int i = 0; next < marks.size(); ++i) {
-    Frame f;
-    f.index = i;
-    ASSERT_TRUE(cap.read(f.bgr)) << "frame " << i;
-    make_gray(f);
-    if (i < marks[0].first) continue;
-    ASSERT_EQ(marks[next].first, i);
-    const cv::Point2d human = marks[next++].second;
-    if (i == marks[0].first) {
+  Frame f;
+  while (next < marks->points.size() && reader.next(f)) {
+    if (f.index < marks->points[0].frame) continue;
+    ASSERT_EQ(marks->points[next].frame, f.index);
+    const track::TrackPoint& human = marks->points[next++];
+    if (next == 1) {
       tracker.start(f, human.x, human.y, "ball");
       continue;
     }
     const Observation ob = tracker.update(f);
-    EXPECT_FALSE(ob.lost) << "frame " << i;
+    EXPECT_FALSE(ob.lost) << "frame " << f.index;
     deviation.push_back(std::hypot(ob.x_px - human.x, ob.y_px - human.y));
   }
-  cap.release();
-  std::filesystem::remove(video);
+  ASSERT_EQ(next, marks->points.size());
   Errors e;
   e.position_px = deviation;
   e.print("BallToss against the human's marks");

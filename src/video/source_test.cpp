@@ -170,12 +170,7 @@ TEST(Source, TrzHoldsTheVideoAsATemporaryCopyRemovedAfterUse) {
 
 TEST(Source, ProjectMarksLandOnTrackImportsNumbersForBallToss) {
   // Tracker's own example project (not in the repository: see docs/theory.md#tracker-files)
-  std::string path;
-  for (const char* root : {"/../shared", "/../../shared"}) {
-    const char* src = std::getenv("TRIBOLAB_SOURCE_DIR");
-    const std::string p = std::string(src ? src : ".") + root + "/data/tracker/BallToss.trz";
-    if (fs::exists(p)) path = p;
-  }
+  const std::string path = video::testing::ball_toss_path();
   if (path.empty()) GTEST_SKIP() << "BallToss.trz not found beside the repository";
   const VideoInput in = open_input(path, {});
   EXPECT_EQ(in.info.width, 640);

@@ -9,6 +9,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -76,6 +78,18 @@ inline Frame rendered_frame(const Scene& scene, int index, const RenderOptions& 
   f.bgr = render_frame(scene, f.t, o, index);
   make_gray(f);
   return f;
+}
+
+/// Tracker's example project BallToss.trz beside the repository (../shared/data/tracker, not
+/// in git; docs/theory.md#tracker-files), or "" when absent.
+inline std::string ball_toss_path() {
+  std::string path;
+  for (const char* root : {"/../shared", "/../../shared"}) {
+    const char* src = std::getenv("TRIBOLAB_SOURCE_DIR");
+    const std::string p = std::string(src ? src : ".") + root + "/data/tracker/BallToss.trz";
+    if (std::filesystem::exists(p)) path = p;
+  }
+  return path;
 }
 
 }  // namespace tribolab::video::testing

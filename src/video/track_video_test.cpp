@@ -4,6 +4,7 @@
 #include "io/tracker_trk.hpp"
 #include "numerics/error.hpp"
 #include "video/render.hpp"
+#include "video/test_videos.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -384,12 +385,7 @@ TEST(TrackVideo, BadTargetsAreClearErrors) {
 
 TEST(TrackVideo, BallTossFromTheHumansFirstMark) {
   // Tracker's example project (not in the repository; see docs/theory.md#tracker-files)
-  std::string path;
-  for (const char* root : {"/../shared", "/../../shared"}) {
-    const char* src = std::getenv("TRIBOLAB_SOURCE_DIR");
-    const std::string p = std::string(src ? src : ".") + root + "/data/tracker/BallToss.trz";
-    if (fs::exists(p)) path = p;
-  }
+  const std::string path = video::testing::ball_toss_path();
   if (path.empty()) GTEST_SKIP() << "BallToss.trz not found beside the repository";
   TrackVideoOptions o;
   Target t;
