@@ -9,7 +9,12 @@
 
 #include <string>
 
+namespace tribolab::app {}  // the application layer (src/app): workflows, reports, the demo
+
 namespace tribolab::cli {
+
+/// The command line is one front end of the application layer; its names read unqualified.
+using namespace ::tribolab::app;
 
 /// Registers `tribolab incline ...`.
 void register_incline(CLI::App& root);

@@ -5,10 +5,10 @@
 
 #include "app.hpp"
 #include "bounce_options.hpp"
-#include "bounce_series.hpp"
+#include "app/bounce_series.hpp"
 #include "bounce_truth_law.hpp"
-#include "report_bounce_analysis.hpp"
-#include "report_bounce_series.hpp"
+#include "app/report_bounce_analysis.hpp"
+#include "app/report_bounce_series.hpp"
 #include "report_option.hpp"
 #include "series_cmd.hpp"
 

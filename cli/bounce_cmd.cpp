@@ -7,7 +7,7 @@
 #include "bounce_analysis_cmd.hpp"
 #include "bounce_options.hpp"
 #include "bounce_render_cmd.hpp"
-#include "report_bounce.hpp"
+#include "app/report_bounce.hpp"
 #include "report_option.hpp"
 #include "bounce_sweep_cmd.hpp"
 

@@ -1,7 +1,7 @@
 // In-process tests of the demo's content: the numbers the report shows are the library's
 // (table 1 from incline::seed000_case_study), and every erratum is on the errata page.
 #include "cli_test_util.hpp"
-#include "demo.hpp"
+#include "app/demo.hpp"
 
 #include "analysis/bounce_analyze.hpp"
 #include "incline/case_study.hpp"
@@ -17,6 +17,8 @@
 
 namespace tribolab::cli {
 namespace {
+
+using namespace tribolab::app;  // the demo lives in the application layer
 
 const report::Table* find_table(const report::Report& r, const std::string& caption_start) {
   for (const auto& s : r.sections)

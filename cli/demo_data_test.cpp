@@ -1,12 +1,14 @@
 // The shipped demo data is exactly what its committed commands make (data/demo/README.md).
 #include "cli_test_util.hpp"
-#include "demo_data.hpp"
+#include "app/demo_data.hpp"
 
 #include <filesystem>
 #include <set>
 
 namespace tribolab::cli::testing {
 namespace {
+
+using namespace tribolab::app;  // the demo lives in the application layer
 
 namespace fs = std::filesystem;
 

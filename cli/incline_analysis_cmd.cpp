@@ -16,10 +16,10 @@
 #include "io/tracker_export.hpp"
 #include "numerics/error.hpp"
 #include "numerics/physical_range.hpp"
-#include "report_incline_analysis.hpp"
+#include "app/report_incline_analysis.hpp"
 #include "report_option.hpp"
-#include "incline_series.hpp"
-#include "report_incline_series.hpp"
+#include "app/incline_series.hpp"
+#include "app/report_incline_series.hpp"
 #include "series_cmd.hpp"
 
 #include <cmath>

@@ -4,8 +4,8 @@
 // that every error names its option; the library does the physics.
 #include "app.hpp"
 #include "incline_analysis_cmd.hpp"
-#include "report_incline.hpp"
-#include "report_incline_analysis.hpp"
+#include "app/report_incline.hpp"
+#include "app/report_incline_analysis.hpp"
 #include "report_option.hpp"
 
 #include "incline/closed_form.hpp"

@@ -18,7 +18,7 @@
 #include "numerics/error.hpp"
 #include "numerics/physical_range.hpp"
 #include "report_option.hpp"
-#include "report_sweep.hpp"
+#include "app/report_sweep.hpp"
 
 namespace tribolab::cli {
 namespace {

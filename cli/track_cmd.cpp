@@ -2,7 +2,7 @@
 // differentiate it. Options are documented in docs/cli.md#track.
 #include "app.hpp"
 #include "report_option.hpp"
-#include "report_track.hpp"
+#include "app/report_track.hpp"
 #include "track_video_cmd.hpp"
 
 #include "io/atomic_file.hpp"

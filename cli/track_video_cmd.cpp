@@ -5,7 +5,7 @@
 
 #include "app.hpp"
 #include "report_option.hpp"
-#include "report_track_video.hpp"
+#include "app/report_track_video.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/text.hpp"

@@ -1,0 +1,103 @@
+#include "app/incline_series.hpp"
+
+#include "incline/params.hpp"
+
+#include <cmath>
+
+namespace tribolab::app {
+namespace {
+
+using nlohmann::json;
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+json opt(const std::optional<double>& v) { return v && std::isfinite(*v) ? json(*v) : json(nullptr); }
+
+json pulls_by_run(const std::optional<analysis::WeightedMean>& m, const std::vector<int>& index, std::size_t n_runs,
+                  const std::vector<std::size_t>& run_of_point) {
+  json out = json::array();
+  for (std::size_t i = 0; i < n_runs; ++i) out.push_back(nullptr);
+  if (!m) return out;
+  for (std::size_t j = 0; j < index.size(); ++j)
+    out[run_of_point[static_cast<std::size_t>(index[j])]] = num(m->pulls[j]);
+  return out;
+}
+
+}  // namespace
+
+void add_weighted_mean(json& j, const std::optional<analysis::WeightedMean>& m, const std::string& name) {
+  j[name] = m ? json(m->mean) : json(nullptr);
+  j["sigma_" + name] = m ? json(m->sigma) : json(nullptr);
+  j["sigma_" + name + "_scaled"] = m ? json(m->sigma_scaled) : json(nullptr);
+  j["chi2"] = m ? json(m->chi2) : json(nullptr);
+  j["dof"] = m ? json(m->dof) : json(nullptr);
+  j["p_value"] = m ? num(m->p_value) : json(nullptr);
+  j["birge_ratio"] = m ? num(m->birge_ratio) : json(nullptr);
+  j["n_" + name] = m ? m->n : 0;
+}
+
+json incline_series_json(const analysis::InclineSeriesSummary& s, std::size_t n_runs,
+                         const std::vector<std::size_t>& run_of_point) {
+  json j;
+  add_weighted_mean(j, s.mu, "mu");
+  j["mu_pulls"] = pulls_by_run(s.mu, s.mu_index, n_runs, run_of_point);
+  j["outliers"] = s.outliers;
+  j["phi_deg"] = s.common_phi ? json(incline::rad_to_deg(*s.common_phi)) : json(nullptr);
+  if (s.scaling.empty()) {
+    j["stop_scaling"] = nullptr;
+  } else {
+    json sc;
+    for (const auto& r : s.scaling) {
+      sc[analysis::stop_relation_key(r.relation)] = {
+          {"slope", r.fit.slope},          {"sigma_slope", r.fit.sigma},
+          {"slope_ci95", json::array({r.fit.ci_low, r.fit.ci_high})},
+          {"n", r.fit.n},                  {"rms", r.fit.rms},
+          {"mu", opt(r.mu)},               {"mu_ci95", json::array({opt(r.mu_ci_low), opt(r.mu_ci_high)})},
+          {"slope_model", opt(r.slope_model)}};
+    }
+    j["stop_scaling"] = sc;
+  }
+  j["stop_scaling_note"] = s.scaling_note;
+  if (s.theta_c_test) {
+    const auto& t = *s.theta_c_test;
+    j["theta_c_test"] = {{"slope", t.slope},
+                         {"sigma_slope", t.sigma_slope},
+                         {"mu", t.mu},
+                         {"sigma_mu", t.sigma_mu},
+                         {"intercept", t.intercept},
+                         {"intercept_ci95", json::array({t.intercept_ci_low, t.intercept_ci_high})},
+                         {"verdict", t.verdict},
+                         {"n_runs", t.points.size()}};
+  } else {
+    j["theta_c_test"] = nullptr;
+  }
+  j["theta_c_note"] = s.theta_c_note;
+  if (s.normal_friction) {
+    const auto& n = *s.normal_friction;
+    j["normal_friction"] = {{"normal_accel", n.mean.mean},
+                            {"sigma_normal_accel", n.mean.sigma},
+                            {"sigma_normal_accel_scaled", n.mean.sigma_scaled},
+                            {"normal_accel_ci95", json::array({n.ci_low, n.ci_high})},
+                            {"chi2", n.mean.chi2},
+                            {"dof", n.mean.dof},
+                            {"p_value", num(n.mean.p_value)},
+                            {"verdict", n.verdict},
+                            {"n_runs", n.mean.n},
+                            {"n_runs_present", n.n_present}};
+  } else {
+    j["normal_friction"] = nullptr;
+  }
+  j["normal_friction_note"] = s.normal_friction_note;
+  return j;
+}
+
+json slide_series_json(const analysis::SlideSeriesSummary& s, std::size_t n_runs,
+                       const std::vector<std::size_t>& run_of_point) {
+  json j;
+  add_weighted_mean(j, s.mu, "mu");
+  j["mu_pulls"] = pulls_by_run(s.mu, s.mu_index, n_runs, run_of_point);
+  j["outliers"] = s.outliers;
+  j["note"] = s.note;
+  return j;
+}
+
+}  // namespace tribolab::app
