@@ -73,6 +73,7 @@ int run(int argc, char** argv) {
       "tribolab"};
   app.set_version_flag("--version", "tribolab 0.1.0");
   app.require_subcommand(1);
+  app.option_defaults()->always_capture_default();  // help shows each default from its option struct
   register_incline(app);
   register_bounce(app);
   register_track(app);

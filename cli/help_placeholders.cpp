@@ -28,7 +28,16 @@ std::string listed_choices(const std::string& description) {
   return m.str(1).size() <= 48 ? m.str(1) : "NAME";  // too many to list: see the help text
 }
 
+/// The help shows each option's default as CLI11 captured it from the option struct
+/// (`--g NUM=9.8`), so no help text repeats a default by hand. A required option has no
+/// default to show, nor has an empty list or an empty text (an output not written).
+void tidy_default(CLI::Option& opt) {
+  const std::string d = opt.get_default_str();
+  if (opt.get_required() || d == "[]" || d == "\"\"") opt.default_str("");
+}
+
 void tidy(CLI::Option& opt) {
+  tidy_default(opt);
   const std::string type = opt.get_type_name();
   if (opt.get_positional() && !opt.nonpositional()) {
     // "FILE FILE ..." or "files TEXT ...": the name says it; keep only the repetition.

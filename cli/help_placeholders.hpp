@@ -5,6 +5,8 @@
 // choices (a|b|c) -> those choices (NAME when too many to list), NAME=VALUE, I/N and a range
 // lo:hi:count -> LO:HI:N as their help says, a track name -> NAME, and drops the placeholder
 // of a positional argument whose name already says what it is (FILE, not FILE FILE).
+// Defaults are captured from the option structs (app.cpp) and shown as `--g NUM=9.8`; this
+// pass hides them where there is none to show (a required option, an empty list).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -108,11 +108,13 @@ TEST(Cli, EveryHelpUsesOnePlaceholderVocabulary) {
   const std::string sim = run_tribolab("bounce simulate --help").out;
   EXPECT_EQ(placeholder(sim, "--history"), "FILE");
   EXPECT_EQ(placeholder(sim, "--vy"), "NUM");
-  EXPECT_EQ(placeholder(sim, "--friction"), "coulomb|regularized|spring");
+  EXPECT_EQ(placeholder(sim, "--friction"), "coulomb|regularized|spring=coulomb");  // with its default
+  EXPECT_EQ(placeholder(sim, "--g"), "NUM=9.8");  // the default, from the option struct
+  EXPECT_EQ(placeholder(sim, "--tol"), "NUM=1e-10");
   EXPECT_EQ(placeholder(run_tribolab("track import --help").out, "--entry"), "NAME");
   EXPECT_NE(placeholder(run_tribolab("track kinematics --help").out, "--impacts"), "NAME");
   for (const char* bad : {" FLOAT", " UINT", " TEXT TEXT", "FILE.html:FILE.html", "FILE FILE",
-                          "FILE TEXT"}) {
+                          "FILE TEXT", "=[]", "=\"\""}) {
     EXPECT_EQ(all.find(bad), std::string::npos) << "'" << bad << "' in:\n" << all;
   }
 }
