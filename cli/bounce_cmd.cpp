@@ -148,7 +148,7 @@ void add_contact_time(CLI::App* area) {
   cmd->add_option("--theta-deg", o->theta_deg, "major axis from the horizontal at the apex, deg (default 0)");
   cmd->add_option("--direction", o->direction, "direction of motion for the collision angle: 1 (+x) or -1 (default 1)");
   cmd->add_option("--g", o->g, "gravitational acceleration, m/s^2 (default 9.8)");
-  o->ball.add(cmd);
+  add_ball_options(cmd, o->ball);
   add_json_flag(*cmd, o->json);
   add_report_option(*cmd, o->report);
   cmd->callback([o] {
@@ -197,8 +197,8 @@ void add_simulate(CLI::App* area) {
   cmd->add_option("--theta-deg", o->theta_deg, "major axis from the horizontal at first touch, deg (default 0)");
   cmd->add_option("--g", o->g, "gravitational acceleration, m/s^2 (default 9.8)");
   cmd->add_option("--history", o->history, "write the time history to this CSV file");
-  o->ball.add(cmd);
-  o->law.add(cmd);
+  add_ball_options(cmd, o->ball);
+  add_law_options(cmd, o->law);
   add_json_flag(*cmd, o->json);
   add_report_option(*cmd, o->report);
   cmd->callback([o] {
@@ -253,8 +253,8 @@ void add_drop(CLI::App* area) {
   cmd->add_option("--g", o->g, "gravitational acceleration, m/s^2 (default 9.8)");
   cmd->add_option("--trajectory", o->trajectory, "write the sampled trajectory to this CSV file");
   cmd->add_option("--sample-dt", o->sample_dt, "flight sampling step of --trajectory, s (default 1e-3)");
-  o->ball.add(cmd);
-  o->law.add(cmd);
+  add_ball_options(cmd, o->ball);
+  add_law_options(cmd, o->law);
   add_json_flag(*cmd, o->json);
   add_report_option(*cmd, o->report);
   cmd->callback([o] {
