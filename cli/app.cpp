@@ -2,6 +2,7 @@
 
 #include "command_line_check.hpp"
 #include "help_placeholders.hpp"
+#include "text_listing.hpp"
 
 #include "numerics/error.hpp"
 
@@ -13,25 +14,6 @@
 
 namespace tribolab::cli {
 namespace {
-
-void flatten(const nlohmann::json& j, const std::string& prefix,
-             std::vector<std::pair<std::string, std::string>>& out) {
-  if (j.is_object()) {
-    for (const auto& [k, v] : j.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, out);
-    return;
-  }
-  std::string value;
-  if (j.is_number_float()) {
-    value = fmt::format("{:.6g}", j.get<double>());
-  } else if (j.is_string()) {
-    value = j.get<std::string>();
-  } else if (j.is_null()) {
-    value = "-";
-  } else {
-    value = j.dump();
-  }
-  out.emplace_back(prefix, value);
-}
 
 /// One line, whatever the message holds: newlines would break "one clear line".
 std::string one_line(std::string s) {
@@ -55,11 +37,7 @@ void print_result(const nlohmann::json& result, bool as_json) {
     std::cout << result.dump() << '\n';
     return;
   }
-  std::vector<std::pair<std::string, std::string>> rows;
-  flatten(result, "", rows);
-  std::size_t width = 0;
-  for (const auto& r : rows) width = std::max(width, r.first.size());
-  for (const auto& [k, v] : rows) std::cout << fmt::format("{:<{}}  {}\n", k, width, v);
+  std::cout << text_listing(result);
 }
 
 void add_json_flag(CLI::App& cmd, bool& flag) {
