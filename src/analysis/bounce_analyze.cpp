@@ -5,6 +5,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
+#include "numerics/units.hpp"
 
 #include <Eigen/Dense>
 
@@ -37,7 +38,6 @@ std::string BounceAnalyzeOptions::validate() const {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 /// Fits the line and parabola of rows [begin, end) with s = t - t0.
 void fit_segment(const std::vector<track::RigidBodyRow>& rows, SegmentFit& seg, double t0,
@@ -110,17 +110,17 @@ void check_gravity(const std::vector<track::RigidBodyRow>& rows, BounceAnalysis&
   const double g = std::hypot(ax, ay);
   r.gravity = g;
   r.sigma_gravity = std::sqrt(ax * ax * vax + ay * ay * vay) / g;
-  r.gravity_tilt_deg = std::atan2(ax, -ay) * kDeg;
-  r.sigma_gravity_tilt_deg = std::sqrt(ay * ay * vax + ax * ax * vay) / (g * g) * kDeg;
+  r.gravity_tilt_deg = to_deg(std::atan2(ax, -ay));
+  r.sigma_gravity_tilt_deg = to_deg(std::sqrt(ay * ay * vax + ax * ax * vay) / (g * g));
   auto fmt = [](double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return std::string(buf);
   };
-  if (std::abs(g - 9.8) > 3 * r.sigma_gravity + 0.03) {
+  if (std::abs(g - kDefaultG) > 3 * r.sigma_gravity + 0.03) {
     // Times wrong by a factor c scale g by 1/c^2: name the factor that restores 9.8.
-    const double factor = std::sqrt(g / 9.8);
-    const bool gross = std::abs(g / 9.8 - 1) > 0.25;
+    const double factor = std::sqrt(g / kDefaultG);
+    const bool gross = std::abs(g / kDefaultG - 1) > 0.25;
     r.warnings.push_back(
         "the flights fall at g = " + fmt(g, g < 1 ? 3 : 2) + " +- " + fmt(r.sigma_gravity, g < 1 ? 3 : 2) +
         " m/s^2, not 9.8: " +
@@ -276,7 +276,7 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
     // Orientation at the impulse centroid (kept as theta_impact_deg; the collision angle is
     // moved to the first touch by locate_touch below).
     const double theta_imp = r.pre.spin.theta_ref + r.pre.omega * (t_imp - r.pre.spin.t_ref);
-    r.theta_impact_deg = bounce::wrap_angle(theta_imp) * kDeg;
+    r.theta_impact_deg = to_deg(bounce::wrap_angle(theta_imp));
     r.collision_angle_deg = bounce::collision_angle_deg(ball, theta_imp, r.pre.vx >= 0 ? 1 : -1);
 
 

@@ -3,6 +3,7 @@
 #include "analysis/bounce_synth.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +51,7 @@ TEST(BounceAnalyze, ExactDataRecoversTheFlights) {
   EXPECT_NEAR(rf.pre.apex_height, tr.release_apex, 1e-6);
   EXPECT_NEAR(rf.post.apex_height, tr.post_apex, 1e-6);
   EXPECT_NEAR(rf.e_height, std::sqrt(tr.post_apex / tr.release_apex), 1e-6);
-  EXPECT_NEAR(r.theta_impact_deg, bounce::wrap_angle(tr.touch.theta + tr.touch.omega * (r.impact_time - tr.t_touch)) * 180 / M_PI, 1e-5);
+  EXPECT_NEAR(r.theta_impact_deg, to_deg(bounce::wrap_angle(tr.touch.theta + tr.touch.omega * (r.impact_time - tr.t_touch))), 1e-5);
   // Energies at the impact from the fitted velocities.
   EXPECT_NEAR(r.pre.energy.rotational, 0.5 * 4.1e-3 * tr.touch.omega * tr.touch.omega, 1e-9);
 }

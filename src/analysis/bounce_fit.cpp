@@ -2,6 +2,7 @@
 #include "analysis/bounce_fit.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@
 namespace tribolab::analysis {
 
 namespace {
-constexpr double kDeg = 180.0 / std::numbers::pi;
 const char* const kNames[] = {"K", "n", "D", "e", "mu"};
 }  // namespace
 
@@ -41,7 +41,7 @@ BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
                             double tolerance) {
   BounceFitRow p;
   bounce::BodyState s;
-  s.theta = row.theta_deg / kDeg;
+  s.theta = row.theta_deg / kDegPerRad;  // not to_rad(): the same bits as before
   s.vx = row.vx_in;
   s.vy = row.vy_in;
   s.omega = row.omega_in;

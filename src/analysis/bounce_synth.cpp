@@ -5,6 +5,7 @@
 
 #include "bounce/flight.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,8 +16,6 @@
 namespace tribolab::analysis {
 
 namespace {
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
 void throw_invalid(const std::string& e) {
   const auto colon = e.find(':');
   if (colon != std::string::npos && colon < 24) throw InputError("--" + e.substr(0, colon), e.substr(colon + 2));
@@ -50,11 +49,11 @@ double SynthVideoTruth::vy_flight(bool pre, double t) const {
 
 ThrowMotion simulate_throw(const SynthVideoOptions& o) {
   if (auto e = o.validate(); !e.empty()) throw_invalid(e);
-  const double g = 9.8;
+  const double g = kDefaultG;  // the synthetic videos fall at the studies' g
   ThrowMotion m;
   bounce::BodyState& s0 = m.release;
   s0.y = o.height;
-  s0.theta = o.theta_deg / kDeg;
+  s0.theta = o.theta_deg / kDegPerRad;  // not to_rad(): the same bits as before
   s0.omega = o.omega;
   s0.vx = o.vx;
   s0.vy = o.vy;
@@ -172,7 +171,7 @@ std::vector<BounceRow> synth_table(const SynthTableOptions& o) {
     const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, s);
     if (c.status != bounce::ContactStatus::separated) continue;
     BounceRow r;
-    r.theta_deg = s.theta * kDeg;
+    r.theta_deg = to_deg(s.theta);
     r.vx_in = s.vx;
     r.vy_in = s.vy;
     r.omega_in = s.omega;

@@ -3,6 +3,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
+#include "numerics/units.hpp"
 
 #include <Eigen/Dense>
 
@@ -15,7 +16,6 @@
 namespace tribolab::analysis::detail {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Parameters of the propagation: the flights' fits and the floor's (or T's) own error.
@@ -201,8 +201,8 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
   r.sigma_t_separation = sd(oSep);
   r.contact_duration = o0(oT);
   r.sigma_contact_duration = sd(oT);
-  r.theta_touch_deg = bounce::wrap_angle(o0(oTheta)) * kDeg;
-  r.sigma_theta_touch_deg = sd(oTheta) * kDeg;
+  r.theta_touch_deg = to_deg(bounce::wrap_angle(o0(oTheta)));
+  r.sigma_theta_touch_deg = to_deg(sd(oTheta));
   r.collision_angle_impact_deg = r.collision_angle_deg;  // analyze_bounce set it at impact_time
   r.collision_angle_deg = o0(oAngle);
   r.sigma_collision_angle_deg = sd(oAngle);

@@ -1,6 +1,7 @@
 #include "analysis/incline_diagnostics.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -140,7 +141,7 @@ std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_gue
   r.t_c = t_guess + tc;
   r.vx = derivative(r.fit_x.coef, 1, tc);
   r.vy = derivative(r.fit_y.coef, 1, tc);
-  r.theta_c_deg = std::acos(std::clamp(r.cos_theta_c, -1.0, 1.0)) * 180 / M_PI;
+  r.theta_c_deg = to_deg(std::acos(std::clamp(r.cos_theta_c, -1.0, 1.0)));
 
   // Delta method with central differences; the x and y fits are independent.
   std::vector<double> g_cos(2 * nc), g_t(2 * nc);

@@ -4,6 +4,7 @@
 #include "incline/inverse.hpp"
 #include "incline/numeric.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <boost/math/distributions/fisher_f.hpp>
 
@@ -331,7 +332,7 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
 
 std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& o,
                                           const ModelBFit& b) {
-  constexpr double kMinPhi = 3.0 * M_PI / 180.0;  // below, g sin(phi) is too small to separate g from mu
+  constexpr double kMinPhi = to_rad(3.0);  // below, g sin(phi) is too small to separate g from mu
   if (o.phi < kMinPhi) return std::nullopt;
   const auto& pts = track.points;
   const int n = static_cast<int>(pts.size());

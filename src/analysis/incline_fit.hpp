@@ -22,6 +22,7 @@
 #include "numerics/least_squares.hpp"
 #include "track/kinematics.hpp"
 #include "track/track.hpp"
+#include "numerics/units.hpp"
 
 #include <optional>
 #include <string>
@@ -31,7 +32,7 @@ namespace tribolab::analysis {
 
 struct InclineFitOptions {
   double phi = 0;             ///< incline angle, rad, in [0, pi/2) (required input)
-  double g = 9.8;             ///< m/s^2
+  double g = kDefaultG;       ///< m/s^2
   bool fit_model_a = true;    ///< also fit model A and test it against B
   double level = 0.95;        ///< confidence level of the intervals
   double significance = 0.05; ///< size of the A-vs-B test
@@ -107,7 +108,7 @@ struct ModelTest {
 struct InclineAnalysis {
   std::vector<track::TrackPoint> data;  ///< the points fitted (file time and frame)
   track::Kinematics kinematics;         ///< Savitzky-Golay velocities/accelerations (figures)
-  double phi = 0, g = 9.8;              ///< rad, m/s^2
+  double phi = 0, g = kDefaultG;        ///< rad, m/s^2
   ModelBFit model_b;
   std::optional<ModelAFit> model_a;
   std::optional<ModelTest> test;

@@ -8,6 +8,7 @@
 #include "analysis/incline_diagnostics.hpp"
 #include "analysis/incline_fit.hpp"
 #include "analysis/series_stats.hpp"
+#include "numerics/units.hpp"
 
 #include <optional>
 #include <string>
@@ -88,7 +89,7 @@ struct InclineSeriesSummary {
 };
 
 struct InclineSeriesOptions {
-  double g = 9.8;             ///< m/s^2
+  double g = kDefaultG;       ///< m/s^2
   double level = 0.95;        ///< of every interval
   double outlier_pull = 3;    ///< |pull| beyond which a run is named an outlier
   std::string validate() const;
