@@ -138,6 +138,17 @@ void check_gravity(const std::vector<track::RigidBodyRow>& rows, BounceAnalysis&
 
 }  // namespace
 
+const char* to_string(FloorMethod m) {
+  switch (m) {
+    case FloorMethod::contact_duration: return "contact_duration";
+    case FloorMethod::bracket: return "bracket";
+    case FloorMethod::given: break;
+  }
+  return "given";
+}
+
+const char* to_string(ForceDurationMethod m) { return m == ForceDurationMethod::given ? "given" : "located"; }
+
 BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
                               const BounceAnalyzeOptions& options) {
   if (auto e = options.validate(); !e.empty()) {
@@ -329,7 +340,8 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
     };
     const auto floor0 = floor_of(r.pre.y_parabola.coef, r.post.y_parabola.coef);
     r.floor_half_width = floor0[1];
-    r.floor_method = floor_given ? "given" : (floor0[1] == 0 ? "contact_duration" : "bracket");
+    r.floor_method = floor_given ? FloorMethod::given
+                     : (floor0[1] == 0 ? FloorMethod::contact_duration : FloorMethod::bracket);
     auto e_height_of = [&](const std::vector<double>& p, const std::vector<double>& q, double shift) {
       const double floor = floor_of(p, q)[0] + shift;
       const double H = vertex(p)[1] - floor, H2 = vertex(q)[1] - floor;
@@ -372,7 +384,7 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
     // A bracketed floor is not trusted for e_height: at 240 fps the bracket missed the truth in
     // 200 of 200 synthetic runs (late contact frames pass the trim test and t4 falls inside the
     // contact), so e_height is reported only with floor_y or contact_duration.
-    if (r.floor_method == "bracket") r.e_height = r.sigma_e_height = NAN;
+    if (r.floor_method == FloorMethod::bracket) r.e_height = r.sigma_e_height = NAN;
 
     // First touch and separation on the fitted flights; the collision angle, e (as bounce
     // simulate defines it), the contact point's velocity and the mean normal force there.
@@ -396,7 +408,9 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
   for (auto [trimmed, now, which] : {std::tuple{pre_trimmed, r.pre.n_points, "pre"}, {post_trimmed, r.post.n_points, "post"}}) {
     const int lost = trimmed - now;
     if (lost > std::max(3, trimmed / 10)) {
-      const std::string what = r.floor_method == "given" ? "--floor-y" : r.floor_method == "contact_duration" ? "--contact-duration" : "floor";
+      const std::string what = r.floor_method == FloorMethod::given              ? "--floor-y"
+                               : r.floor_method == FloorMethod::contact_duration ? "--contact-duration"
+                                                                                 : "floor";
       throw InputError(what, "puts the ball on the floor during " + std::to_string(lost) + " frames of the " + which +
                                  "-impact flight that move as free flight; check the floor's height (file frame, m) and the contact duration");
     }

@@ -196,7 +196,7 @@ TEST(BounceTouch, IntervalsCoverSimulateAt80Fps) {
 // touch quantities keep their estimates but no sigma, no mean force, and a warning says why.
 TEST(BounceTouch, BracketedFloorStatesNoUncertainty) {
   const FilmedRun x = run(kCases[0], 1, Floor::bracket);
-  EXPECT_EQ(x.r.floor_method, "bracket");
+  EXPECT_EQ(x.r.floor_method, FloorMethod::bracket);
   EXPECT_TRUE(std::isfinite(x.r.collision_angle_deg));
   EXPECT_TRUE(std::isnan(x.r.sigma_collision_angle_deg));
   EXPECT_TRUE(std::isnan(x.r.sigma_e_velocity));

@@ -93,6 +93,8 @@ double inflection(const std::vector<double>& cy, double start) {
 
 }  // namespace
 
+const char* to_string(Verdict v) { return v == Verdict::present ? "present" : "absent"; }
+
 std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
                                          double window_low, double window_high, int degree) {
   std::vector<double> tau, x, y;
@@ -200,7 +202,7 @@ NormalFrictionTest normal_friction_test(const std::vector<ThetaCPoint>& points, 
   const double h = r.line.ci_half_width(0, level);
   r.intercept_ci_low = r.intercept - h;
   r.intercept_ci_high = r.intercept + h;
-  r.verdict = (r.intercept_ci_low > 0 || r.intercept_ci_high < 0) ? "present" : "absent";
+  r.verdict = verdict_from(r.intercept_ci_low > 0 || r.intercept_ci_high < 0);
   return r;
 }
 

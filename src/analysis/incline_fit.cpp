@@ -373,6 +373,15 @@ std::optional<GravityCheck> check_gravity(const track::Track& track, const Incli
   return c;
 }
 
+const char* to_string(VerdictSource s) {
+  switch (s) {
+    case VerdictSource::model_a_test: return "model_a_test";
+    case VerdictSource::a_n_intercept: return "a_n_intercept";
+    case VerdictSource::none: break;
+  }
+  return "none";
+}
+
 InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitOptions& o) {
   InclineAnalysis a;
   a.phi = o.phi;
@@ -478,14 +487,14 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
   }
 
   if (a.test) {
-    a.verdict = a.test->present ? "present" : "absent";
-    a.verdict_source = "model_a_test";
+    a.verdict = verdict_from(a.test->present);
+    a.verdict_source = VerdictSource::model_a_test;
   } else if (a.a_n) {
-    a.verdict = a.a_n->intercept_excludes_zero ? "present" : "absent";
-    a.verdict_source = "a_n_intercept";
+    a.verdict = verdict_from(a.a_n->intercept_excludes_zero);
+    a.verdict_source = VerdictSource::a_n_intercept;
   } else {
-    a.verdict = "absent";
-    a.verdict_source = "none";
+    a.verdict = Verdict::absent;
+    a.verdict_source = VerdictSource::none;
     a.notes.push_back("no test could decide; verdict defaults to absent");
   }
   return a;

@@ -105,6 +105,15 @@ struct ModelTest {
   double size = 0.05;             ///< the test's size: how often a model-B run is called present
 };
 
+/// What decided InclineAnalysis::verdict.
+enum class VerdictSource {
+  none,           ///< no test could decide (the verdict defaults to absent)
+  model_a_test,   ///< the model A test (ModelTest::present)
+  a_n_intercept,  ///< the eq b diagnostic's intercept interval (NormalAccelDiagnostic)
+};
+/// "none", "model_a_test" or "a_n_intercept": the value of the JSON key "verdict_source".
+const char* to_string(VerdictSource s);
+
 struct InclineAnalysis {
   std::vector<track::TrackPoint> data;  ///< the points fitted (file time and frame)
   track::Kinematics kinematics;         ///< Savitzky-Golay velocities/accelerations (figures)
@@ -115,10 +124,10 @@ struct InclineAnalysis {
   std::optional<NormalAccelDiagnostic> a_n;  ///< eq b diagnostic (absent: too few blocks)
   std::optional<ThetaC> theta_c;              ///< eq c diagnostic (absent: k >= 1 or no window)
   double cos_theta_c_model = 0;  ///< model B's cos(theta_c) = k = tan(phi)/mu (eq c'), when k < 1
-  /// "present" or "absent": decided by the model A test (ModelTest::present); when model A
-  /// is not fitted, by the a_N intercept's interval (NormalAccelDiagnostic).
-  std::string verdict = "absent";
-  std::string verdict_source;  ///< "model_a_test" or "a_n_intercept"
+  /// Decided by the model A test (ModelTest::present); when model A is not fitted, by the
+  /// a_N intercept's interval (NormalAccelDiagnostic).
+  Verdict verdict = Verdict::absent;
+  VerdictSource verdict_source = VerdictSource::none;
   // Curves for figures: models at the data times and on a fine grid (400 times over the
   // data's span), states in the file's time and frame; residuals data - model, m.
   std::vector<incline::State> model_b_at_data, model_b_fine;
