@@ -64,7 +64,9 @@ ThrowMotion simulate_throw(const SynthVideoOptions& o) {
   bounce::ContactOptions co;
   co.g = g;
   const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, first.state, co, &m.contact);
-  if (c.status != bounce::ContactStatus::separated) throw InputError("the contact did not end: " + std::string(c.message));
+  // Still on the floor after max_duration is what the input asks for; a failed integration is not.
+  if (c.status == bounce::ContactStatus::max_duration) throw InputError("the contact did not end: " + std::string(c.message));
+  if (c.status != bounce::ContactStatus::separated) throw SolverError("the contact did not end: " + std::string(c.message));
   SynthVideoTruth& tr = m.truth;
   tr.g = g;
   tr.t_touch = first.t_contact;

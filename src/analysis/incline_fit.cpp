@@ -87,7 +87,7 @@ Guess initial_guess(const track::Track& track, const InclineFitOptions& o, doubl
     if (sm.x_stop > 0 && sm.y_stop < 0) {
       try {
         g.mu_from_stop = incline::mu_from_stop(sm).mu;
-      } catch (const InputError&) {
+      } catch (const Error&) {  // no stop estimate: the fit starts elsewhere
       }
     }
   }
@@ -158,7 +158,7 @@ std::vector<incline::State> model_a_states(const incline::Parameters& p, double 
   if (!rel.empty()) {
     const auto r = incline::simulate(p, rel, no);
     if (r.status == incline::NumericStatus::failed)
-      throw InputError("model A", "integration failed: " + r.message);
+      throw SolverError("model A", "integration failed: " + r.message);
     moving = r.samples;
   }
   std::vector<incline::State> out;
@@ -244,7 +244,7 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
     if (best.ok() && best.rms < 2.0 * noise) break;
   }
   if (!best.ok())
-    throw InputError(where(track), "model B cannot be fitted: " + best.message);
+    numerics::throw_fit_failure(best, where(track), "model B cannot be fitted: " + best.message);
   ModelBFit r;
   r.fit = best;
   r.mu = estimate(best, 0, o.level);
@@ -309,7 +309,7 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
   fo.gradient_tolerance = 1e-12;
   fo.max_iterations = 100;
   const numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params, fo);
-  if (!f.ok()) throw InputError(where(track), "model A cannot be fitted: " + f.message);
+  if (!f.ok()) numerics::throw_fit_failure(f, where(track), "model A cannot be fitted: " + f.message);
   ModelAFit r;
   r.fit = f;
   r.mu = estimate(f, 0, o.level);
@@ -427,7 +427,7 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
       test.present = test.ci_excludes_zero && test.significant;
       a.model_a = std::move(fa);
       a.test = test;
-    } catch (const InputError& e) {
+    } catch (const Error& e) {
       a.notes.push_back(std::string("model A not fitted: ") + e.what());
     }
   }

@@ -80,7 +80,7 @@ double theta_for_collision_angle(const Ball& ball, double angle_deg, int directi
   auto f = [&](double th) { return collision_angle_deg(ball, th, +1) - angle_deg; };
   const double lo = std::nextafter(-half, 0.0), hi = std::nextafter(half, 0.0);
   const numerics::RootResult r = numerics::find_root(f, lo, hi);
-  if (!r.converged) throw InputError("collision angle", "no orientation found");
+  if (!r.converged) throw SolverError("collision angle", "no orientation found");
   return direction * r.x;
 }
 
