@@ -64,7 +64,7 @@ json bounce_analysis_json(const BounceAnalysis& r) {
             {"floor_y", r.floor_y},
             {"floor_given", r.floor_given},
             {"floor_half_width", r.floor_half_width},
-            {"floor_method", r.floor_method},
+            {"floor_method", to_string(r.floor_method)},
             {"theta_impact_deg", r.theta_impact_deg},
             {"collision_angle_deg", num(r.collision_angle_deg)},
             {"sigma_collision_angle_deg", num(r.sigma_collision_angle_deg)},
@@ -103,7 +103,7 @@ json bounce_analysis_json(const BounceAnalysis& r) {
   if (r.mean_normal_force) {
     j["mean_normal_force"] = num(*r.mean_normal_force);
     j["sigma_mean_normal_force"] = num(*r.sigma_mean_normal_force);
-    j["force_duration_method"] = r.force_duration_method;
+    j["force_duration_method"] = to_string(r.force_duration_method);
   }
   return j;
 }

@@ -225,7 +225,7 @@ void add_simulate(CLI::App* area) {
     io.contact = copt;
     const ImpactResult r = simulate_impact(ball, spec, fr, s, io, o->history.empty() && o->report.empty() ? nullptr : &hist);
     if (r.status == ImpactStatus::failed || r.status == ImpactStatus::max_contacts)
-      throw InputError(std::string("contact simulation failed: ") + std::string(r.message));
+      throw SolverError(std::string("contact simulation failed: ") + std::string(r.message));
     write_report_if_requested(o->report, [&] { return bounce_simulate_report(ball, fr, copt.g, r.whole, hist, r.contacts); });
     if (!o->history.empty()) write_history(o->history, hist);
     print_result(impact_json(ball, r, spec.model), o->json);
@@ -283,7 +283,7 @@ void add_drop(CLI::App* area) {
     rel.vx = o->vx;
     rel.vy = o->vy;
     const DropResult r = simulate_drop(ball, spec, fr, rel, d);
-    if (r.status == DropStatus::failed) throw InputError("drop simulation failed: " + r.message);
+    if (r.status == DropStatus::failed) throw SolverError("drop simulation failed: " + r.message);
     json bounces = json::array();
     for (const Bounce& b : r.bounces) {
       bounces.push_back({{"t_touch", b.t_touch},

@@ -352,8 +352,8 @@ json analysis_json(const analysis::InclineAnalysis& a) {
       nf[k] = nullptr;
     nf["slope_expected"] = a.g * std::sin(a.phi);
   }
-  nf["verdict"] = a.verdict;
-  nf["verdict_source"] = a.verdict_source;
+  nf["verdict"] = to_string(a.verdict);
+  nf["verdict_source"] = to_string(a.verdict_source);
   // What the verdict is: a test with a size, so a reader knows how often it errs.
   if (a.test) {
     const int in = static_cast<int>(std::lround(1 / a.test->size));
@@ -621,7 +621,7 @@ void add_normal_friction_test(CLI::App* area) {
     j["sigma_intercept"] = r.sigma_intercept;
     j["intercept_ci95"] = interval(r.intercept_ci_low, r.intercept_ci_high);
     j["r_squared"] = r.line.r_squared;
-    j["verdict"] = r.verdict;
+    j["verdict"] = to_string(r.verdict);
     j["test_size"] = 0.05;
     j["meaning"] = "present when the 95 % interval of the intercept of cos(theta_c) against tan(phi) excludes 0 "
                    "(eq c): about one series in twenty without normal friction is called present";

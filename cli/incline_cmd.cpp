@@ -213,7 +213,7 @@ void add_simulate(CLI::App* area) {
       o.model = model_a ? incline::Model::A : incline::Model::B;
       const incline::NumericResult r = incline::simulate(p, times, o);
       if (r.status == incline::NumericStatus::failed)
-        throw std::runtime_error("numerical integration failed: " + r.message);
+        throw SolverError("numerical integration failed: " + r.message);
       states = r.samples;
       // As for the analytic method: a stop is reported when it happens within t-end.
       const bool stopped = r.t_stop && *r.t_stop <= t_end;

@@ -5,6 +5,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
+#include "numerics/units.hpp"
 
 #include <Eigen/Dense>
 
@@ -37,7 +38,6 @@ std::string BounceAnalyzeOptions::validate() const {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 /// Fits the line and parabola of rows [begin, end) with s = t - t0.
 void fit_segment(const std::vector<track::RigidBodyRow>& rows, SegmentFit& seg, double t0,
@@ -110,17 +110,17 @@ void check_gravity(const std::vector<track::RigidBodyRow>& rows, BounceAnalysis&
   const double g = std::hypot(ax, ay);
   r.gravity = g;
   r.sigma_gravity = std::sqrt(ax * ax * vax + ay * ay * vay) / g;
-  r.gravity_tilt_deg = std::atan2(ax, -ay) * kDeg;
-  r.sigma_gravity_tilt_deg = std::sqrt(ay * ay * vax + ax * ax * vay) / (g * g) * kDeg;
+  r.gravity_tilt_deg = to_deg(std::atan2(ax, -ay));
+  r.sigma_gravity_tilt_deg = to_deg(std::sqrt(ay * ay * vax + ax * ax * vay) / (g * g));
   auto fmt = [](double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return std::string(buf);
   };
-  if (std::abs(g - 9.8) > 3 * r.sigma_gravity + 0.03) {
+  if (std::abs(g - kDefaultG) > 3 * r.sigma_gravity + 0.03) {
     // Times wrong by a factor c scale g by 1/c^2: name the factor that restores 9.8.
-    const double factor = std::sqrt(g / 9.8);
-    const bool gross = std::abs(g / 9.8 - 1) > 0.25;
+    const double factor = std::sqrt(g / kDefaultG);
+    const bool gross = std::abs(g / kDefaultG - 1) > 0.25;
     r.warnings.push_back(
         "the flights fall at g = " + fmt(g, g < 1 ? 3 : 2) + " +- " + fmt(r.sigma_gravity, g < 1 ? 3 : 2) +
         " m/s^2, not 9.8: " +
@@ -138,28 +138,43 @@ void check_gravity(const std::vector<track::RigidBodyRow>& rows, BounceAnalysis&
 
 }  // namespace
 
-BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
-                              const BounceAnalyzeOptions& options) {
-  if (auto e = options.validate(); !e.empty()) {
-    const auto colon = e.find(':');
-    throw InputError("--" + e.substr(0, colon), colon == std::string::npos ? e : e.substr(colon + 2));
+const char* to_string(FloorMethod m) {
+  switch (m) {
+    case FloorMethod::contact_duration: return "contact_duration";
+    case FloorMethod::bracket: return "bracket";
+    case FloorMethod::given: break;
   }
-  BounceAnalysis r;
-  {
-    // Tracks that do not overlap in frames cannot give a body.
-    std::size_t common = 0;
-    std::size_t j = 0;
-    for (const auto& p : a.points) {
-      while (j < b.points.size() && b.points[j].frame < p.frame) ++j;
-      if (j < b.points.size() && b.points[j].frame == p.frame) ++common;
-    }
-    if (common < 2) {
-      throw InputError("tracks '" + a.name + "' and '" + b.name + "' share " + std::to_string(common) +
-                       " frame(s); the tips must be marked in the same frames");
-    }
+  return "given";
+}
+
+const char* to_string(ForceDurationMethod m) { return m == ForceDurationMethod::given ? "given" : "located"; }
+
+namespace {
+
+// A parabola with a noise estimate needs 4 points; the spin fit's sigma 3. Ask for 5.
+constexpr int kMinPoints = 5;
+
+/// Throws InputError unless tracks `a` and `b` are marked in at least two common frames
+/// (docs/theory.md#bounce-analysis: the body needs both tips in one frame).
+void require_common_frames(const track::Track& a, const track::Track& b) {
+  std::size_t common = 0;
+  std::size_t j = 0;
+  for (const auto& p : a.points) {
+    while (j < b.points.size() && b.points[j].frame < p.frame) ++j;
+    if (j < b.points.size() && b.points[j].frame == p.frame) ++common;
   }
-  r.body = track::rigid_body_from_points(a, b);
-  r.centre = track::centre_track(r.body);
+  if (common < 2) {
+    throw InputError("tracks '" + a.name + "' and '" + b.name + "' share " + std::to_string(common) +
+                     " frame(s); the tips must be marked in the same frames");
+  }
+}
+
+/// The impact options.impact of the centre track and the flights on either side of it, less
+/// options.exclude points next to it (docs/theory.md#bounce-analysis). Fills r.impacts,
+/// r.impact_used, r.pre and r.post's ranges; throws InputError when there is no such impact
+/// or a flight keeps fewer than kMinPoints points.
+const track::Impact& choose_impact(const track::Track& a, const track::Track& b,
+                                   const BounceAnalyzeOptions& options, BounceAnalysis& r) {
   r.impacts = track::detect_impacts(r.centre, options.impacts);
   if (r.impacts.impacts.empty()) {
     throw InputError("no impact found in the centre track of '" + a.name + "' and '" + b.name +
@@ -171,7 +186,6 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
                                      std::to_string(r.impacts.impacts.size()) + " found");
   }
   r.impact_used = static_cast<std::size_t>(options.impact - 1);
-  const track::Impact& imp = r.impacts.impacts[r.impact_used];
   // centre_track has one point per body row, so track indices are row indices.
   const auto segs = track::flight_segments(r.centre.points.size(), r.impacts.impacts);
   const track::Segment in = segs[r.impact_used], out = segs[r.impact_used + 1];
@@ -182,8 +196,6 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
   r.post.end = out.end;
   r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
   r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
-  // A parabola with a noise estimate needs 4 points; the spin fit's sigma 3. Ask for 5.
-  constexpr int kMinPoints = 5;
   for (const auto* seg : {&r.pre, &r.post}) {
     if (seg->n_points < kMinPoints) {
       throw InputError(std::string(seg == &r.pre ? "pre" : "post") + "-impact segment has " +
@@ -192,6 +204,271 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
                        std::to_string(kMinPoints) + " are needed for a y-t parabola");
     }
   }
+  return r.impacts.impacts[r.impact_used];
+}
+
+/// The median time between consecutive rows, s: the frame period (it sets the uncertainty of a
+/// contact duration counted in frames, docs/theory.md#bounce-analysis).
+double median_frame_period(const std::vector<track::RigidBodyRow>& rows) {
+  std::vector<double> dts;
+  for (std::size_t i = 1; i < rows.size(); ++i) dts.push_back(rows[i].t - rows[i - 1].t);
+  std::nth_element(dts.begin(), dts.begin() + dts.size() / 2, dts.end());
+  return dts[dts.size() / 2];
+}
+
+/// Where the two fitted y parabolas (in s = t - t_detect) meet: the root nearest the
+/// detector's time t_detect within the gap widened by its length on both sides, else
+/// t_detect itself (docs/theory.md#bounce-analysis, the impact time).
+double parabolas_meeting_time(const std::vector<track::RigidBodyRow>& rows, const BounceAnalysis& r,
+                              double t_detect) {
+  const auto& p = r.pre.y_parabola.coef;
+  const auto& q = r.post.y_parabola.coef;
+  const double A = p[2] - q[2], B = p[1] - q[1], C = p[0] - q[0];
+  const double lo = rows[r.pre.end - 1].t - t_detect, hi = rows[r.post.begin].t - t_detect;
+  double best = NAN;
+  auto consider = [&](double s) {
+    if (std::isfinite(s) && s >= lo - (hi - lo) && s <= hi + (hi - lo) &&
+        (!std::isfinite(best) || std::abs(s) < std::abs(best)))
+      best = s;
+  };
+  if (std::abs(A) > 1e-12 * (std::abs(B) + 1)) {
+    const double disc = B * B - 4 * A * C;
+    if (disc >= 0) {
+      const double sq = std::sqrt(disc);
+      consider((-B + sq) / (2 * A));
+      consider((-B - sq) / (2 * A));
+    }
+  } else if (B != 0) {
+    consider(-C / B);
+  }
+  return std::isfinite(best) ? t_detect + best : t_detect;
+}
+
+/// A flight's quantities at the impact time from its fits (fitted about t_imp): velocities,
+/// vertical acceleration, spin, apex, kinetic energy, and the fitted curves on a grid of
+/// options.grid_points times over the flight for figures (docs/theory.md#bounce-analysis).
+void describe_flight(const std::vector<track::RigidBodyRow>& rows, double t_imp, const bounce::Ball& ball,
+                     int grid_points, SegmentFit& seg) {
+  seg.grid_t.clear(), seg.grid_x.clear(), seg.grid_y.clear(), seg.grid_theta.clear();
+  seg.vx = seg.x_line.coef[1];
+  seg.sigma_vx = seg.x_line.sigma[1];
+  seg.vy = seg.y_parabola.coef[1];
+  seg.sigma_vy = seg.y_parabola.sigma[1];
+  seg.acceleration_y = 2 * seg.y_parabola.coef[2];
+  seg.sigma_acceleration_y = 2 * seg.y_parabola.sigma[2];
+  seg.spin = track::fit_spin(rows, seg.begin, seg.end);
+  seg.omega = seg.spin.omega;
+  seg.sigma_omega = seg.spin.sigma_omega;
+  const auto v = vertex(seg.y_parabola.coef);
+  seg.apex_time = t_imp + v[0];
+  seg.apex_y = v[1];
+  seg.energy.translational_x = 0.5 * ball.mass * seg.vx * seg.vx;
+  seg.energy.translational_y = 0.5 * ball.mass * seg.vy * seg.vy;
+  seg.energy.rotational = 0.5 * ball.inertia * seg.omega * seg.omega;
+  const double t_lo = rows[seg.begin].t, t_hi = rows[seg.end - 1].t;
+  const int n = grid_points;
+  for (int k = 0; k < n; ++k) {
+    const double t = t_lo + (t_hi - t_lo) * k / (n - 1);
+    seg.grid_t.push_back(t);
+    seg.grid_x.push_back(seg.x_line(t - t_imp));
+    seg.grid_y.push_back(seg.y_parabola(t - t_imp));
+    seg.grid_theta.push_back(seg.spin.theta_ref + seg.omega * (t - seg.spin.t_ref));
+  }
+}
+
+/// The floor's height from the two flights (docs/theory.md#bounce-analysis, "floor").
+///
+/// Restitution from apex heights over the floor. The floor, unless given (recommended: the
+/// seed sets y = 0 on the floor in Tracker), is bracketed by the fitted flights: with
+/// h(t) = y(t) - Y(theta(t)) the height of the lowest point, the ball touches between the
+/// last sure pre-impact flight frame t1 and impact_time (the centroid of the normal impulse,
+/// after the touch) and separates between impact_time and the first post-impact flight
+/// frame t4 (sure flight). h_pre falls through the floor at the touch and h_post rises through it at the
+/// separation, so  max(h_pre(t_imp), h_post(t_imp)) <= floor <= min(h_pre(t1), h_post(t4)).
+/// The bracket is wide (its lower end is the extrapolated flights' depth at the impulse
+/// centroid, ~1-2 cm for a rugby ball) but never wrong; give --floor-y for a sharp e_height.
+/// The estimate is the bracket's middle, its half-width w entering the uncertainty as a
+/// uniform error (sd w / sqrt 3).
+///
+/// With a contact duration T (and no floor), the floor follows from the flights alone: the
+/// touch t_c and the separation t_c + T both lie on the floor, h_pre(t_c) = floor =
+/// h_post(t_c + T), and t_c lies in [t_imp - T, t_imp] because the impulse centroid t_imp lies
+/// inside the contact. g(t) = h_pre(t) - h_post(t + T) decreases (h_pre falls, h_post rises)
+/// from g(t_imp - T) > 0 to g(t_imp) < 0, so its root is unique. T counted from frames is
+/// uncertain by a uniform frame period: sd dt / sqrt 12, propagated by dfloor/dT.
+struct FloorFromFlights {
+  const BounceAnalyzeOptions& options;
+  const BounceAnalysis& r;
+  double t_imp, theta_imp, theta_post0;
+  double t1, t4;  ///< the last sure pre-impact and first sure post-impact flight frames, s
+  double frame_dt;
+
+  static double poly(const std::vector<double>& c, double s) { return c[0] + s * (c[1] + s * c[2]); }
+
+  /// {floor, half-width of a bracket (0 otherwise), sd of the floor from what is not in the
+  /// fit covariances (bracket or T)} for the y parabolas p (pre) and q (post).
+  std::array<double, 3> floor_of(const std::vector<double>& p, const std::vector<double>& q) const {
+    if (options.floor_y.has_value()) return {*options.floor_y, 0.0, 0.0};
+    const bounce::Ball& ball = options.ball;
+    auto h_pre = [&](double t) { return poly(p, t - t_imp) - bounce::support_depth(ball, theta_imp + r.pre.omega * (t - t_imp)); };
+    auto h_post = [&](double t) { return poly(q, t - t_imp) - bounce::support_depth(ball, theta_post0 + r.post.omega * (t - t_imp)); };
+    if (options.contact_duration) {
+      auto floor_for = [&](double T) {
+        const auto root = numerics::find_root([&](double t) { return h_pre(t) - h_post(t + T); }, t_imp - T, t_imp);
+        return root.converged ? h_pre(root.x) : NAN;
+      };
+      const double T = *options.contact_duration;
+      const double f = floor_for(T);
+      const double dT = 1e-3 * T;
+      const double slope = (floor_for(T + dT) - floor_for(T - dT)) / (2 * dT);
+      if (std::isfinite(f) && std::isfinite(slope)) return {f, 0.0, std::abs(slope) * frame_dt / std::sqrt(12.0)};
+    }
+    const double lo = std::max(h_pre(t_imp), h_post(t_imp));
+    const double hi = std::min(h_pre(t1), h_post(t4));
+    return {0.5 * (lo + hi), 0.5 * std::abs(hi - lo), 0.5 * std::abs(hi - lo) / std::sqrt(3.0)};
+  }
+
+  /// {floor + shift, apex height over it before, after}.
+  std::array<double, 3> apex_heights(const std::vector<double>& p, const std::vector<double>& q, double shift) const {
+    const double floor = floor_of(p, q)[0] + shift;
+    const double H = vertex(p)[1] - floor, H2 = vertex(q)[1] - floor;
+    return std::array<double, 3>{floor, H, H2};
+  }
+};
+
+/// The floor, the apex heights over it and e_height = sqrt(H'/H) with their uncertainties,
+/// propagated linearly through the 6 parabola coefficients (two independent blocks) and the
+/// floor's own error, with central differences of the closed forms
+/// (docs/theory.md#bounce-analysis, "e from apex heights").
+void estimate_floor_and_e_height(const FloorFromFlights& ff, BounceAnalysis& r) {
+  const bool floor_given = ff.options.floor_y.has_value();
+  const auto floor0 = ff.floor_of(r.pre.y_parabola.coef, r.post.y_parabola.coef);
+  r.floor_half_width = floor0[1];
+  r.floor_method = floor_given ? FloorMethod::given
+                   : (floor0[1] == 0 ? FloorMethod::contact_duration : FloorMethod::bracket);
+  const auto& pc = r.pre.y_parabola.coef;
+  const auto& qc = r.post.y_parabola.coef;
+  const auto base = ff.apex_heights(pc, qc, 0.0);
+  r.floor_y = base[0];
+  r.pre.apex_height = base[1];
+  r.post.apex_height = base[2];
+  // A parabola opening upwards (noise on a short segment) has no apex: no e_height.
+  const bool apexes = pc[2] < 0 && qc[2] < 0;
+  if (!apexes) r.pre.apex_height = r.post.apex_height = NAN;
+  r.e_height = (apexes && base[1] > 0 && base[2] >= 0) ? std::sqrt(base[2] / base[1]) : NAN;
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(7, 7);
+  cov.topLeftCorner(3, 3) = r.pre.y_parabola.covariance;
+  cov.block(3, 3, 3, 3) = r.post.y_parabola.covariance;
+  cov(6, 6) = floor0[2] * floor0[2];  // the floor's own error: bracket (uniform) or T
+  Eigen::MatrixXd J(3, 7);  // rows: H, H', e_height; columns: 6 coefficients, floor shift
+  for (int k = 0; k < 7; ++k) {
+    auto p = pc, q = qc;
+    double shift = 0;
+    double& c = k < 3 ? p[k] : (k < 6 ? q[k - 3] : shift);
+    const double h = k < 6 ? 1e-6 * (std::abs(c) + 1e-3) : 1e-7;
+    c += h;
+    const auto up = ff.apex_heights(p, q, shift);
+    c -= 2 * h;
+    const auto dn = ff.apex_heights(p, q, shift);
+    J(0, k) = (up[1] - dn[1]) / (2 * h);
+    J(1, k) = (up[2] - dn[2]) / (2 * h);
+    J(2, k) = (std::sqrt(up[2] / up[1]) - std::sqrt(dn[2] / dn[1])) / (2 * h);
+  }
+  const Eigen::MatrixXd C = J * cov * J.transpose();
+  r.pre.sigma_apex_height = apexes ? std::sqrt(C(0, 0)) : NAN;
+  r.post.sigma_apex_height = apexes ? std::sqrt(C(1, 1)) : NAN;
+  r.sigma_e_height = std::isfinite(r.e_height) ? std::sqrt(C(2, 2)) : NAN;
+  // A bracketed floor is not trusted for e_height: at 240 fps the bracket missed the truth in
+  // 200 of 200 synthetic runs (late contact frames pass the trim test and t4 falls inside the
+  // contact), so e_height is reported only with floor_y or contact_duration.
+  if (r.floor_method == FloorMethod::bracket) r.e_height = r.sigma_e_height = NAN;
+}
+
+/// One pass of the flight fits (docs/theory.md#bounce-analysis): both flights fitted about
+/// the detector's time, then about the time their parabolas meet; the flights described
+/// there; the orientation and collision angle at that time; the floor and e_height; the
+/// first touch and the separation (detail::locate_touch).
+void fit_flights_once(const std::vector<track::RigidBodyRow>& rows, const track::Impact& imp,
+                      const BounceAnalyzeOptions& options, double frame_dt, BounceAnalysis& r) {
+  r.warnings.clear();
+  fit_segment(rows, r.pre, imp.t, "pre-impact");
+  fit_segment(rows, r.post, imp.t, "post-impact");
+  const double t_imp = parabolas_meeting_time(rows, r, imp.t);
+  r.impact_time = t_imp;
+  fit_segment(rows, r.pre, t_imp, "pre-impact");
+  fit_segment(rows, r.post, t_imp, "post-impact");
+
+  const bounce::Ball& ball = options.ball;
+  for (SegmentFit* seg : {&r.pre, &r.post}) describe_flight(rows, t_imp, ball, options.grid_points, *seg);
+
+  // Orientation at the impulse centroid (kept as theta_impact_deg; the collision angle is
+  // moved to the first touch by locate_touch below).
+  const double theta_imp = r.pre.spin.theta_ref + r.pre.omega * (t_imp - r.pre.spin.t_ref);
+  r.theta_impact_deg = to_deg(bounce::wrap_angle(theta_imp));
+  r.collision_angle_deg = bounce::collision_angle_deg(ball, theta_imp, r.pre.vx >= 0 ? 1 : -1);
+
+  r.floor_given = options.floor_y.has_value();
+  const double theta_post0 = r.post.spin.theta_ref + r.post.omega * (t_imp - r.post.spin.t_ref);
+  // The frame next to the contact may itself be early (or late) in the contact: its motion
+  // hardly differs from flight while the force is small. So t1 and t4 are taken one frame
+  // further out, where the ball is surely in flight.
+  const double t1 = rows[r.pre.end - 2].t, t4 = rows[r.post.begin + 1].t;
+  const FloorFromFlights ff{options, r, t_imp, theta_imp, theta_post0, t1, t4, frame_dt};
+  estimate_floor_and_e_height(ff, r);
+
+  // First touch and separation on the fitted flights; the collision angle, e (as bounce
+  // simulate defines it), the contact point's velocity and the mean normal force there.
+  detail::locate_touch(options, frame_dt, t1, t4, r);
+}
+
+/// Drops the frames of each flight that lie inside the located contact (after the touch,
+/// before the separation), keeping kMinPoints; true when any was dropped: the flights are
+/// then fitted again (docs/theory.md#bounce-analysis, contact frames).
+bool drop_frames_inside_contact(const std::vector<track::RigidBodyRow>& rows, BounceAnalysis& r) {
+  bool dropped = false;
+  while (static_cast<int>(r.pre.end - r.pre.begin) > kMinPoints && rows[r.pre.end - 1].t > r.t_touch) {
+    --r.pre.end;
+    dropped = true;
+  }
+  while (static_cast<int>(r.post.end - r.post.begin) > kMinPoints && rows[r.post.begin].t < r.t_separation) {
+    ++r.post.begin;
+    dropped = true;
+  }
+  r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
+  r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
+  return dropped;
+}
+
+/// A few contact frames pass the trim test (measured: at most 1 before and 3 after at 240
+/// fps); many more mean the floor (or T) puts the ball on the floor while the flights show
+/// free flight: a wrong --floor-y (e.g. in other units or another origin). Throws InputError
+/// naming the option then (docs/theory.md#bounce-analysis).
+void require_plausible_floor(int pre_trimmed, int post_trimmed, const BounceAnalysis& r) {
+  for (auto [trimmed, now, which] : {std::tuple{pre_trimmed, r.pre.n_points, "pre"}, {post_trimmed, r.post.n_points, "post"}}) {
+    const int lost = trimmed - now;
+    if (lost > std::max(3, trimmed / 10)) {
+      const std::string what = r.floor_method == FloorMethod::given              ? "--floor-y"
+                               : r.floor_method == FloorMethod::contact_duration ? "--contact-duration"
+                                                                                 : "floor";
+      throw InputError(what, "puts the ball on the floor during " + std::to_string(lost) + " frames of the " + which +
+                                 "-impact flight that move as free flight; check the floor's height (file frame, m) and the contact duration");
+    }
+  }
+}
+
+}  // namespace
+
+BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
+                              const BounceAnalyzeOptions& options) {
+  if (auto e = options.validate(); !e.empty()) {
+    const auto colon = e.find(':');
+    throw InputError("--" + e.substr(0, colon), colon == std::string::npos ? e : e.substr(colon + 2));
+  }
+  BounceAnalysis r;
+  require_common_frames(a, b);
+  r.body = track::rigid_body_from_points(a, b);
+  r.centre = track::centre_track(r.body);
+  const track::Impact& imp = choose_impact(a, b, options, r);
   const auto& rows = r.body.rows;
   // Noise of the centre: the track's robust estimate, floored (exact synthetic data).
   const double nx = std::max(r.impacts.noise_x, 1e-6), ny = std::max(r.impacts.noise_y, 1e-6);
@@ -199,208 +476,17 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
   trim_contact_frames(rows, r.post, false, nx, ny, kMinPoints);
   r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
   r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
-  double frame_dt = 0;
-  {
-    std::vector<double> dts;
-    for (std::size_t i = 1; i < rows.size(); ++i) dts.push_back(rows[i].t - rows[i - 1].t);
-    std::nth_element(dts.begin(), dts.begin() + dts.size() / 2, dts.end());
-    frame_dt = dts[dts.size() / 2];
-  }
+  const double frame_dt = median_frame_period(rows);
   // Contact frames that pass the trim test (small force early and late in the contact) bias
   // the flights just where the touch and the separation are read. Once located, every kept
   // frame after the touch (pre) or before the separation (post) is in contact by definition:
   // drop them and fit again, until none is left (docs/theory.md#bounce-analysis).
   const int pre_trimmed = r.pre.n_points, post_trimmed = r.post.n_points;
   for (int pass = 0;; ++pass) {
-    r.warnings.clear();
-    // First pass about the detector's time, then the exact meeting point of the parabolas.
-    fit_segment(rows, r.pre, imp.t, "pre-impact");
-    fit_segment(rows, r.post, imp.t, "post-impact");
-    double t_imp = imp.t;
-    {
-      const auto& p = r.pre.y_parabola.coef;
-      const auto& q = r.post.y_parabola.coef;
-      const double A = p[2] - q[2], B = p[1] - q[1], C = p[0] - q[0];
-      const double lo = rows[r.pre.end - 1].t - imp.t, hi = rows[r.post.begin].t - imp.t;
-      double best = NAN;
-      auto consider = [&](double s) {
-        if (std::isfinite(s) && s >= lo - (hi - lo) && s <= hi + (hi - lo) &&
-            (!std::isfinite(best) || std::abs(s) < std::abs(best)))
-          best = s;
-      };
-      if (std::abs(A) > 1e-12 * (std::abs(B) + 1)) {
-        const double disc = B * B - 4 * A * C;
-        if (disc >= 0) {
-          const double sq = std::sqrt(disc);
-          consider((-B + sq) / (2 * A));
-          consider((-B - sq) / (2 * A));
-        }
-      } else if (B != 0) {
-        consider(-C / B);
-      }
-      if (std::isfinite(best)) t_imp = imp.t + best;
-    }
-    r.impact_time = t_imp;
-    fit_segment(rows, r.pre, t_imp, "pre-impact");
-    fit_segment(rows, r.post, t_imp, "post-impact");
-
-    const bounce::Ball& ball = options.ball;
-    for (SegmentFit* seg : {&r.pre, &r.post}) {
-      seg->grid_t.clear(), seg->grid_x.clear(), seg->grid_y.clear(), seg->grid_theta.clear();
-      seg->vx = seg->x_line.coef[1];
-      seg->sigma_vx = seg->x_line.sigma[1];
-      seg->vy = seg->y_parabola.coef[1];
-      seg->sigma_vy = seg->y_parabola.sigma[1];
-      seg->acceleration_y = 2 * seg->y_parabola.coef[2];
-      seg->sigma_acceleration_y = 2 * seg->y_parabola.sigma[2];
-      seg->spin = track::fit_spin(rows, seg->begin, seg->end);
-      seg->omega = seg->spin.omega;
-      seg->sigma_omega = seg->spin.sigma_omega;
-      const auto v = vertex(seg->y_parabola.coef);
-      seg->apex_time = t_imp + v[0];
-      seg->apex_y = v[1];
-      seg->energy.translational_x = 0.5 * ball.mass * seg->vx * seg->vx;
-      seg->energy.translational_y = 0.5 * ball.mass * seg->vy * seg->vy;
-      seg->energy.rotational = 0.5 * ball.inertia * seg->omega * seg->omega;
-      const double t_lo = rows[seg->begin].t, t_hi = rows[seg->end - 1].t;
-      const int n = options.grid_points;
-      for (int k = 0; k < n; ++k) {
-        const double t = t_lo + (t_hi - t_lo) * k / (n - 1);
-        seg->grid_t.push_back(t);
-        seg->grid_x.push_back(seg->x_line(t - t_imp));
-        seg->grid_y.push_back(seg->y_parabola(t - t_imp));
-        seg->grid_theta.push_back(seg->spin.theta_ref + seg->omega * (t - seg->spin.t_ref));
-      }
-    }
-
-    // Orientation at the impulse centroid (kept as theta_impact_deg; the collision angle is
-    // moved to the first touch by locate_touch below).
-    const double theta_imp = r.pre.spin.theta_ref + r.pre.omega * (t_imp - r.pre.spin.t_ref);
-    r.theta_impact_deg = bounce::wrap_angle(theta_imp) * kDeg;
-    r.collision_angle_deg = bounce::collision_angle_deg(ball, theta_imp, r.pre.vx >= 0 ? 1 : -1);
-
-
-    // Restitution from apex heights over the floor. The floor, unless given (recommended: the
-    // seed sets y = 0 on the floor in Tracker), is bracketed by the fitted flights: with
-    // h(t) = y(t) - Y(theta(t)) the height of the lowest point, the ball touches between the
-    // last sure pre-impact flight frame t1 and impact_time (the centroid of the normal impulse,
-    // after the touch) and separates between impact_time and the first post-impact flight
-    // frame t4 (sure flight). h_pre falls through the floor at the touch and h_post rises through it at the
-    // separation, so  max(h_pre(t_imp), h_post(t_imp)) <= floor <= min(h_pre(t1), h_post(t4)).
-    // The bracket is wide (its lower end is the extrapolated flights' depth at the impulse
-    // centroid, ~1-2 cm for a rugby ball) but never wrong; give --floor-y for a sharp e_height.
-    // The estimate is the bracket's middle, its half-width w entering the uncertainty as a
-    // uniform error (sd w / sqrt 3). docs/theory.md#bounce-analysis.
-    //
-    // With a contact duration T (and no floor), the floor follows from the flights alone: the
-    // touch t_c and the separation t_c + T both lie on the floor, h_pre(t_c) = floor =
-    // h_post(t_c + T), and t_c lies in [t_imp - T, t_imp] because the impulse centroid t_imp lies
-    // inside the contact. g(t) = h_pre(t) - h_post(t + T) decreases (h_pre falls, h_post rises)
-    // from g(t_imp - T) > 0 to g(t_imp) < 0, so its root is unique. T counted from frames is
-    // uncertain by a uniform frame period: sd dt / sqrt 12, propagated by dfloor/dT.
-    const bool floor_given = options.floor_y.has_value();
-    r.floor_given = floor_given;
-    const double theta_post0 = r.post.spin.theta_ref + r.post.omega * (t_imp - r.post.spin.t_ref);
-    auto poly = [](const std::vector<double>& c, double s) { return c[0] + s * (c[1] + s * c[2]); };
-    // The frame next to the contact may itself be early (or late) in the contact: its motion
-    // hardly differs from flight while the force is small. So t1 and t4 are taken one frame
-    // further out, where the ball is surely in flight.
-    const double t1 = rows[r.pre.end - 2].t, t4 = rows[r.post.begin + 1].t;
-    // Returns {floor, half-width of a bracket (0 otherwise), sd of the floor from what is not
-    // in the fit covariances (bracket or T)}.
-    auto floor_of = [&](const std::vector<double>& p, const std::vector<double>& q) -> std::array<double, 3> {
-      if (floor_given) return {*options.floor_y, 0.0, 0.0};
-      auto h_pre = [&](double t) { return poly(p, t - t_imp) - bounce::support_depth(ball, theta_imp + r.pre.omega * (t - t_imp)); };
-      auto h_post = [&](double t) { return poly(q, t - t_imp) - bounce::support_depth(ball, theta_post0 + r.post.omega * (t - t_imp)); };
-      if (options.contact_duration) {
-        auto floor_for = [&](double T) {
-          const auto root = numerics::find_root([&](double t) { return h_pre(t) - h_post(t + T); }, t_imp - T, t_imp);
-          return root.converged ? h_pre(root.x) : NAN;
-        };
-        const double T = *options.contact_duration;
-        const double f = floor_for(T);
-        const double dT = 1e-3 * T;
-        const double slope = (floor_for(T + dT) - floor_for(T - dT)) / (2 * dT);
-        if (std::isfinite(f) && std::isfinite(slope)) return {f, 0.0, std::abs(slope) * frame_dt / std::sqrt(12.0)};
-      }
-      const double lo = std::max(h_pre(t_imp), h_post(t_imp));
-      const double hi = std::min(h_pre(t1), h_post(t4));
-      return {0.5 * (lo + hi), 0.5 * std::abs(hi - lo), 0.5 * std::abs(hi - lo) / std::sqrt(3.0)};
-    };
-    const auto floor0 = floor_of(r.pre.y_parabola.coef, r.post.y_parabola.coef);
-    r.floor_half_width = floor0[1];
-    r.floor_method = floor_given ? "given" : (floor0[1] == 0 ? "contact_duration" : "bracket");
-    auto e_height_of = [&](const std::vector<double>& p, const std::vector<double>& q, double shift) {
-      const double floor = floor_of(p, q)[0] + shift;
-      const double H = vertex(p)[1] - floor, H2 = vertex(q)[1] - floor;
-      return std::array<double, 3>{floor, H, H2};
-    };
-    const auto& pc = r.pre.y_parabola.coef;
-    const auto& qc = r.post.y_parabola.coef;
-    const auto base = e_height_of(pc, qc, 0.0);
-    r.floor_y = base[0];
-    r.pre.apex_height = base[1];
-    r.post.apex_height = base[2];
-    // A parabola opening upwards (noise on a short segment) has no apex: no e_height.
-    const bool apexes = pc[2] < 0 && qc[2] < 0;
-    if (!apexes) r.pre.apex_height = r.post.apex_height = NAN;
-    r.e_height = (apexes && base[1] > 0 && base[2] >= 0) ? std::sqrt(base[2] / base[1]) : NAN;
-    // Linear propagation through the 6 parabola coefficients (two independent blocks), with
-    // central differences of the closed forms above.
-    Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(7, 7);
-    cov.topLeftCorner(3, 3) = r.pre.y_parabola.covariance;
-    cov.block(3, 3, 3, 3) = r.post.y_parabola.covariance;
-    cov(6, 6) = floor0[2] * floor0[2];  // the floor's own error: bracket (uniform) or T
-    Eigen::MatrixXd J(3, 7);  // rows: H, H', e_height; columns: 6 coefficients, floor shift
-    for (int k = 0; k < 7; ++k) {
-      auto p = pc, q = qc;
-      double shift = 0;
-      double& c = k < 3 ? p[k] : (k < 6 ? q[k - 3] : shift);
-      const double h = k < 6 ? 1e-6 * (std::abs(c) + 1e-3) : 1e-7;
-      c += h;
-      const auto up = e_height_of(p, q, shift);
-      c -= 2 * h;
-      const auto dn = e_height_of(p, q, shift);
-      J(0, k) = (up[1] - dn[1]) / (2 * h);
-      J(1, k) = (up[2] - dn[2]) / (2 * h);
-      J(2, k) = (std::sqrt(up[2] / up[1]) - std::sqrt(dn[2] / dn[1])) / (2 * h);
-    }
-    const Eigen::MatrixXd C = J * cov * J.transpose();
-    r.pre.sigma_apex_height = apexes ? std::sqrt(C(0, 0)) : NAN;
-    r.post.sigma_apex_height = apexes ? std::sqrt(C(1, 1)) : NAN;
-    r.sigma_e_height = std::isfinite(r.e_height) ? std::sqrt(C(2, 2)) : NAN;
-    // A bracketed floor is not trusted for e_height: at 240 fps the bracket missed the truth in
-    // 200 of 200 synthetic runs (late contact frames pass the trim test and t4 falls inside the
-    // contact), so e_height is reported only with floor_y or contact_duration.
-    if (r.floor_method == "bracket") r.e_height = r.sigma_e_height = NAN;
-
-    // First touch and separation on the fitted flights; the collision angle, e (as bounce
-    // simulate defines it), the contact point's velocity and the mean normal force there.
-    detail::locate_touch(options, frame_dt, t1, t4, r);
-    bool dropped = false;
-    while (static_cast<int>(r.pre.end - r.pre.begin) > kMinPoints && rows[r.pre.end - 1].t > r.t_touch) {
-      --r.pre.end;
-      dropped = true;
-    }
-    while (static_cast<int>(r.post.end - r.post.begin) > kMinPoints && rows[r.post.begin].t < r.t_separation) {
-      ++r.post.begin;
-      dropped = true;
-    }
-    r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
-    r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
-    if (!dropped || pass == 5) break;
+    fit_flights_once(rows, imp, options, frame_dt, r);
+    if (!drop_frames_inside_contact(rows, r) || pass == 5) break;
   }
-  // A few contact frames pass the trim test (measured: at most 1 before and 3 after at 240
-  // fps); many more mean the floor (or T) puts the ball on the floor while the flights show
-  // free flight: a wrong --floor-y (e.g. in other units or another origin).
-  for (auto [trimmed, now, which] : {std::tuple{pre_trimmed, r.pre.n_points, "pre"}, {post_trimmed, r.post.n_points, "post"}}) {
-    const int lost = trimmed - now;
-    if (lost > std::max(3, trimmed / 10)) {
-      const std::string what = r.floor_method == "given" ? "--floor-y" : r.floor_method == "contact_duration" ? "--contact-duration" : "floor";
-      throw InputError(what, "puts the ball on the floor during " + std::to_string(lost) + " frames of the " + which +
-                                 "-impact flight that move as free flight; check the floor's height (file frame, m) and the contact duration");
-    }
-  }
+  require_plausible_floor(pre_trimmed, post_trimmed, r);
   check_gravity(rows, r);
   return r;
 }

@@ -60,6 +60,23 @@ struct SegmentFit {
   std::vector<double> grid_t, grid_x, grid_y, grid_theta;
 };
 
+/// How BounceAnalysis found the floor (docs/theory.md#bounce-analysis).
+enum class FloorMethod {
+  given,             ///< the floor_y option
+  contact_duration,  ///< both flights meet the floor contact_duration apart (recommended without floor_y)
+  bracket,           ///< neither given: unreliable at high frame rates
+};
+/// "given", "contact_duration" or "bracket": the value of the JSON key "floor_method".
+const char* to_string(FloorMethod m);
+
+/// The contact duration dividing the impulse for BounceAnalysis::mean_normal_force.
+enum class ForceDurationMethod {
+  located,  ///< t_separation - t_touch
+  given,    ///< the contact_duration option, uncertain by a uniform half frame
+};
+/// "located" or "given": the value of the JSON key "force_duration_method".
+const char* to_string(ForceDurationMethod m);
+
 struct BounceAnalysis {
   track::RigidBody body;             ///< tips -> centre, orientation, local spin per frame
   track::Track centre;               ///< the centre track ("A+B")
@@ -76,7 +93,7 @@ struct BounceAnalysis {
   /// How the floor was found: "given" (floor_y option), "contact_duration" (both flights meet
   /// the floor contact_duration apart; recommended without floor_y) or "bracket" (neither
   /// given: unreliable at high frame rates, see docs/theory.md#bounce-analysis).
-  std::string floor_method = "given";
+  FloorMethod floor_method = FloorMethod::given;
   double theta_impact_deg = 0;       ///< pre-impact spin fit at impact_time, wrapped to (-180, 180]
   double collision_angle_deg = 0;    ///< bounce::collision_angle_deg at first touch (t_touch)
   std::optional<double> mean_normal_force, sigma_mean_normal_force;  ///< N
@@ -99,9 +116,8 @@ struct BounceAnalysis {
   /// omega x r_contact (bounce::contact_point_velocity), m/s; speed = its magnitude.
   double contact_point_vx = 0, contact_point_vy = 0, contact_point_speed = 0;
   double sigma_contact_point_vx = 0, sigma_contact_point_vy = 0, sigma_contact_point_speed = 0;
-  /// Contact duration dividing the impulse for mean_normal_force: "given" (contact_duration
-  /// option, uncertain by a uniform half frame) or "located" (t_separation - t_touch).
-  std::string force_duration_method;
+  /// Contact duration dividing the impulse for mean_normal_force (set with it).
+  ForceDurationMethod force_duration_method = ForceDurationMethod::located;
   /// Gravity seen by the flights: magnitude and tilt from the file's -y axis (positive: g
   /// has a +x component), from y parabolas and x parabolas of both flights (weighted). A
   /// wrong frame rate scales the magnitude (by the square of the rate's error); a turned

@@ -3,6 +3,7 @@
 #include "analysis/bounce_synth.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +51,7 @@ TEST(BounceAnalyze, ExactDataRecoversTheFlights) {
   EXPECT_NEAR(rf.pre.apex_height, tr.release_apex, 1e-6);
   EXPECT_NEAR(rf.post.apex_height, tr.post_apex, 1e-6);
   EXPECT_NEAR(rf.e_height, std::sqrt(tr.post_apex / tr.release_apex), 1e-6);
-  EXPECT_NEAR(r.theta_impact_deg, bounce::wrap_angle(tr.touch.theta + tr.touch.omega * (r.impact_time - tr.t_touch)) * 180 / M_PI, 1e-5);
+  EXPECT_NEAR(r.theta_impact_deg, to_deg(bounce::wrap_angle(tr.touch.theta + tr.touch.omega * (r.impact_time - tr.t_touch))), 1e-5);
   // Energies at the impact from the fitted velocities.
   EXPECT_NEAR(r.pre.energy.rotational, 0.5 * 4.1e-3 * tr.touch.omega * tr.touch.omega, 1e-9);
 }
@@ -86,7 +87,7 @@ Coverage run_coverage(double fps, int runs) {
     BounceAnalyzeOptions with_duration;
     with_duration.contact_duration = tr.t_separation - tr.t_touch + half_frame(rng);
     const auto rd = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), with_duration);
-    EXPECT_EQ(rd.floor_method, "contact_duration");
+    EXPECT_EQ(rd.floor_method, FloorMethod::contact_duration);
     auto in = [&](double est, double sigma, double truth, int dof) {
       return std::abs(est - truth) <= sigma * (dof > 60 ? 1.96 : 2.0);
     };
@@ -149,6 +150,15 @@ TEST(BounceAnalyze, IntervalsCoverTheTruthAt80Fps) {
                          {c.e, "e_velocity_common"}, {c.e_touch, "e_velocity"}, {c.eh, "e_height"}})
     expect_binomial(k, c.n, name);
   expect_floor_from_duration(c);
+}
+
+// The methods' text is the JSON value of "floor_method" and "force_duration_method" (docs/cli.md).
+TEST(FloorMethod, TextIsTheJsonValue) {
+  EXPECT_STREQ(to_string(FloorMethod::given), "given");
+  EXPECT_STREQ(to_string(FloorMethod::contact_duration), "contact_duration");
+  EXPECT_STREQ(to_string(FloorMethod::bracket), "bracket");
+  EXPECT_STREQ(to_string(ForceDurationMethod::given), "given");
+  EXPECT_STREQ(to_string(ForceDurationMethod::located), "located");
 }
 
 }  // namespace

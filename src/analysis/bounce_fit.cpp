@@ -2,6 +2,7 @@
 #include "analysis/bounce_fit.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@
 namespace tribolab::analysis {
 
 namespace {
-constexpr double kDeg = 180.0 / std::numbers::pi;
 const char* const kNames[] = {"K", "n", "D", "e", "mu"};
 }  // namespace
 
@@ -41,7 +41,7 @@ BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
                             double tolerance) {
   BounceFitRow p;
   bounce::BodyState s;
-  s.theta = row.theta_deg / kDeg;
+  s.theta = row.theta_deg / kDegPerRad;  // not to_rad(): the same bits as before
   s.vx = row.vx_in;
   s.vy = row.vy_in;
   s.omega = row.omega_in;
@@ -124,7 +124,7 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
       BounceFitRow q;
       try {
         q = predict_bounce(rows[i], o.ball, spec, fr, o.tolerance);
-      } catch (const InputError&) {
+      } catch (const Error&) {
         return false;  // e.g. a restitution the law cannot reach: the solver backs off
       }
       r[3 * i] = q.r_vx;
@@ -160,7 +160,7 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
       double zeta = 0.9;  // heavily damped but still separating when e_med is out of reach
       try {
         zeta = bounce::hooke_damping_ratio(e_med);
-      } catch (const InputError&) {
+      } catch (const Error&) {
       }
       const double D = 2 * zeta * std::sqrt(std::exp(params[0].initial) * o.ball.mass);
       second[2].initial = std::clamp(std::log(D), std::log(1e-6), std::log(1e10));
@@ -176,7 +176,7 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
     std::string why = f.message;
     if (f.status == numerics::FitStatus::not_identifiable)
       why = "the data cannot determine all free parameters (" + f.message + "); fix some with --fix";
-    throw InputError("bounce fit failed: " + why);
+    numerics::throw_fit_failure(f, "", "bounce fit failed: " + why);
   }
   const auto& v = f.values;
   const auto& s = f.sigma;

@@ -5,6 +5,7 @@
 
 #include "bounce/flight.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,8 +16,6 @@
 namespace tribolab::analysis {
 
 namespace {
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
 void throw_invalid(const std::string& e) {
   const auto colon = e.find(':');
   if (colon != std::string::npos && colon < 24) throw InputError("--" + e.substr(0, colon), e.substr(colon + 2));
@@ -50,11 +49,11 @@ double SynthVideoTruth::vy_flight(bool pre, double t) const {
 
 ThrowMotion simulate_throw(const SynthVideoOptions& o) {
   if (auto e = o.validate(); !e.empty()) throw_invalid(e);
-  const double g = 9.8;
+  const double g = kDefaultG;  // the synthetic videos fall at the studies' g
   ThrowMotion m;
   bounce::BodyState& s0 = m.release;
   s0.y = o.height;
-  s0.theta = o.theta_deg / kDeg;
+  s0.theta = o.theta_deg / kDegPerRad;  // not to_rad(): the same bits as before
   s0.omega = o.omega;
   s0.vx = o.vx;
   s0.vy = o.vy;
@@ -65,7 +64,9 @@ ThrowMotion simulate_throw(const SynthVideoOptions& o) {
   bounce::ContactOptions co;
   co.g = g;
   const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, first.state, co, &m.contact);
-  if (c.status != bounce::ContactStatus::separated) throw InputError("the contact did not end: " + std::string(c.message));
+  // Still on the floor after max_duration is what the input asks for; a failed integration is not.
+  if (c.status == bounce::ContactStatus::max_duration) throw InputError("the contact did not end: " + std::string(c.message));
+  if (c.status != bounce::ContactStatus::separated) throw SolverError("the contact did not end: " + std::string(c.message));
   SynthVideoTruth& tr = m.truth;
   tr.g = g;
   tr.t_touch = first.t_contact;
@@ -172,7 +173,7 @@ std::vector<BounceRow> synth_table(const SynthTableOptions& o) {
     const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, s);
     if (c.status != bounce::ContactStatus::separated) continue;
     BounceRow r;
-    r.theta_deg = s.theta * kDeg;
+    r.theta_deg = to_deg(s.theta);
     r.vx_in = s.vx;
     r.vy_in = s.vy;
     r.omega_in = s.omega;

@@ -9,6 +9,7 @@
 #include "analysis/bounce_fit.hpp"
 #include "bounce/contact.hpp"
 #include "track/track.hpp"
+#include "numerics/units.hpp"
 
 #include <cstdint>
 #include <string>
@@ -37,7 +38,7 @@ struct SynthVideoOptions {
 struct SynthVideoTruth {
   double t_touch = 0, t_separation = 0;  ///< s from the first frame's time origin
   bounce::BodyState touch, separation;   ///< states at first touch and at separation
-  double g = 9.8;                        ///< m/s^2
+  double g = kDefaultG;                  ///< m/s^2
   double floor_y = 0;                    ///< m
   double release_apex = 0;               ///< centre height at the pre-impact apex, m
   double post_apex = 0;                  ///< centre height at the post-impact apex, m

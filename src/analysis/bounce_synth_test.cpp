@@ -1,10 +1,12 @@
 // Synthetic bounce video: the motion it draws is continuous through the contact.
 #include "analysis/bounce_synth.hpp"
+#include "numerics/error.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace tribolab::analysis {
 namespace {
@@ -61,6 +63,30 @@ TEST(ThrowMotion, PoseIsContinuousAtTouchAndSeparationAndFollowsTheContactHistor
     EXPECT_NEAR(s.y, 0.5 * (p.state.y + q.state.y), 1e-5) << i;
   }
   EXPECT_GT(m.t_end, tr.t_separation);
+}
+
+}  // namespace
+}  // namespace tribolab::analysis
+
+namespace tribolab::analysis {
+namespace {
+
+// numerics/error.hpp: a contact whose integration gives up on valid input is a solver
+// failure, not the user's: a Hooke law so overdamped (K = 1e3 N/m, D = 1e9 N s/m) that the
+// ball creeps and the integrator's step budget runs out (the same law makes `bounce
+// simulate --vy -4` print "integrator step budget exhausted").
+TEST(ThrowMotion, ContactIntegrationThatGivesUpIsASolverError) {
+  SynthVideoOptions o;
+  o.law.model = bounce::NormalModel::hooke;
+  o.law.K = 1e3;
+  o.law.D = 1e9;
+  ASSERT_TRUE(o.validate().empty()) << o.validate();
+  EXPECT_THROW(simulate_throw(o), SolverError);
+  try {
+    simulate_throw(o);
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("the contact did not end"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

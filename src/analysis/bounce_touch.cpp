@@ -3,6 +3,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
+#include "numerics/units.hpp"
 
 #include <Eigen/Dense>
 
@@ -15,7 +16,6 @@
 namespace tribolab::analysis::detail {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Parameters of the propagation: the flights' fits and the floor's (or T's) own error.
@@ -58,7 +58,7 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
   };
   const double gap = rows[r.post.begin].t - rows[r.pre.end - 1].t;  // frames spanning the contact
   const int direction = r.pre.vx >= 0 ? 1 : -1;
-  const std::string method = r.floor_method;
+  const FloorMethod method = r.floor_method;
   const double T_given = options.contact_duration.value_or(kNaN);
   const double step = frame_dt / 4;
 
@@ -82,7 +82,7 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
     auto h_pre = [&](double t) { return y(kPreY, t) - bounce::support_depth(ball, theta_pre(t)); };
     auto h_post = [&](double t) { return y(kPostY, t) - bounce::support_depth(ball, theta_post(t)); };
     double floor = kNaN, t_touch = kNaN, t_sep = kNaN;
-    if (method == "contact_duration") {
+    if (method == FloorMethod::contact_duration) {
       // Touch t_c and separation t_c + T both on the floor (see analyze_bounce).
       const double T = T_given + P(kFloor);
       const auto root = numerics::find_root([&](double t) { return h_pre(t) - h_post(t + T); }, t_imp - T, t_imp);
@@ -92,7 +92,7 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
         floor = h_pre(root.x);
       }
     } else {
-      if (method == "given") {
+      if (method == FloorMethod::given) {
         floor = *options.floor_y + P(kFloor);
       } else {  // bracket: its middle (analyze_bounce), moving with the fits
         const double lo = std::max(h_pre(t_imp), h_post(t_imp)), hi = std::min(h_pre(t1), h_post(t4));
@@ -146,7 +146,7 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
     }
     // Mean normal force: the impulse m (vy_post - vy_pre) at one instant (gravity cancels, so
     // it equals m (vy_out - vy_in) + m g T) over the contact duration.
-    const double T_force = method != "contact_duration" && std::isfinite(T_given) ? T_given + P(kForceT) : o(oT);
+    const double T_force = method != FloorMethod::contact_duration && std::isfinite(T_given) ? T_given + P(kForceT) : o(oT);
     o(oForce) = ball.mass * (P(kPostY + 1) - P(kPreY + 1)) / T_force;
     return o;
   };
@@ -162,10 +162,10 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
   spin_block(r.post.spin, C, kPostSpin);
   // A contact duration counted in frames: uniform error of half a frame, sd dt / sqrt 12.
   const double sd_T = frame_dt / std::sqrt(12.0);
-  if (method == "given") C(kFloor, kFloor) = options.sigma_floor_y * options.sigma_floor_y;
-  else if (method == "contact_duration") C(kFloor, kFloor) = sd_T * sd_T;
+  if (method == FloorMethod::given) C(kFloor, kFloor) = options.sigma_floor_y * options.sigma_floor_y;
+  else if (method == FloorMethod::contact_duration) C(kFloor, kFloor) = sd_T * sd_T;
   else C(kFloor, kFloor) = r.floor_half_width * r.floor_half_width / 3;  // uniform on the bracket
-  if (std::isfinite(T_given) && method != "contact_duration") C(kForceT, kForceT) = sd_T * sd_T;
+  if (std::isfinite(T_given) && method != FloorMethod::contact_duration) C(kForceT, kForceT) = sd_T * sd_T;
 
   const OutVec o0 = evaluate(P0);
   if (!std::isfinite(o0(oTouch)) || !std::isfinite(o0(oSep))) {
@@ -176,7 +176,7 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
                          bounce::support_depth(ball, seg.spin.theta_ref + seg.spin.omega * (t_imp - seg.spin.t_ref));
     const std::string where = std::string(pre ? "pre" : "post") + "-impact flight (its lowest point is at y = " +
                               std::to_string(h_imp).substr(0, 7) + " m at the impact time)";
-    if (method == "given")
+    if (method == FloorMethod::given)
       throw InputError("--floor-y", "the floor at y = " + std::to_string(*options.floor_y).substr(0, 7) +
                                         " m does not meet the fitted " + where + "; check the floor's height and the track's origin");
     throw InputError("the first touch and separation could not be located on the fitted " + where + "; give --floor-y");
@@ -201,8 +201,8 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
   r.sigma_t_separation = sd(oSep);
   r.contact_duration = o0(oT);
   r.sigma_contact_duration = sd(oT);
-  r.theta_touch_deg = bounce::wrap_angle(o0(oTheta)) * kDeg;
-  r.sigma_theta_touch_deg = sd(oTheta) * kDeg;
+  r.theta_touch_deg = to_deg(bounce::wrap_angle(o0(oTheta)));
+  r.sigma_theta_touch_deg = to_deg(sd(oTheta));
   r.collision_angle_impact_deg = r.collision_angle_deg;  // analyze_bounce set it at impact_time
   r.collision_angle_deg = o0(oAngle);
   r.sigma_collision_angle_deg = sd(oAngle);
@@ -223,7 +223,7 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
   // Energies at the instants simulate uses: first touch and separation.
   r.pre.energy.translational_y = 0.5 * ball.mass * r.vy_touch * r.vy_touch;
   r.post.energy.translational_y = 0.5 * ball.mass * r.vy_separation * r.vy_separation;
-  if (method == "bracket") {
+  if (method == FloorMethod::bracket) {
     // Without --floor-y or --contact-duration the floor is only bracketed, and at high frame
     // rates the bracket is wrong (late contact frames pass as flight): over 200 synthetic
     // runs at 240 fps the intervals from it held simulate's angle in 68 and e in 89 (e biased
@@ -236,7 +236,7 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
                          "bracketed floor, uncertainties of the touch quantities (angle, e_velocity) not stated");
     return;
   }
-  r.force_duration_method = std::isfinite(T_given) ? "given" : "located";
+  r.force_duration_method = std::isfinite(T_given) ? ForceDurationMethod::given : ForceDurationMethod::located;
   r.mean_normal_force = o0(oForce);
   r.sigma_mean_normal_force = sd(oForce);
 }

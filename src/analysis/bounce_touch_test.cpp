@@ -5,6 +5,7 @@
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_synth.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -195,7 +196,7 @@ TEST(BounceTouch, IntervalsCoverSimulateAt80Fps) {
 // touch quantities keep their estimates but no sigma, no mean force, and a warning says why.
 TEST(BounceTouch, BracketedFloorStatesNoUncertainty) {
   const FilmedRun x = run(kCases[0], 1, Floor::bracket);
-  EXPECT_EQ(x.r.floor_method, "bracket");
+  EXPECT_EQ(x.r.floor_method, FloorMethod::bracket);
   EXPECT_TRUE(std::isfinite(x.r.collision_angle_deg));
   EXPECT_TRUE(std::isnan(x.r.sigma_collision_angle_deg));
   EXPECT_TRUE(std::isnan(x.r.sigma_e_velocity));
@@ -241,7 +242,7 @@ Imperfect imperfect(const Case& k, double turn_deg, double rate) {
   out.e = bounce::simulate_contact(o.ball, o.law, o.friction, v.truth.touch).restitution;
   out.angle = bounce::collision_angle_deg(o.ball, v.truth.touch.theta, v.truth.touch.vx < 0 ? -1 : 1);
   auto turn = [&](track::Track t) {
-    const double c = std::cos(turn_deg * M_PI / 180), s = std::sin(turn_deg * M_PI / 180);
+    const double c = std::cos(to_rad(turn_deg)), s = std::sin(to_rad(turn_deg));
     for (auto& p : t.points) {
       const double x = c * p.x - s * p.y, y = s * p.x + c * p.y;
       p.x = x, p.y = y;

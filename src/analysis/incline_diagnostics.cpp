@@ -1,6 +1,7 @@
 #include "analysis/incline_diagnostics.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -92,6 +93,8 @@ double inflection(const std::vector<double>& cy, double start) {
 
 }  // namespace
 
+const char* to_string(Verdict v) { return v == Verdict::present ? "present" : "absent"; }
+
 std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
                                          double window_low, double window_high, int degree) {
   std::vector<double> tau, x, y;
@@ -140,7 +143,7 @@ std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_gue
   r.t_c = t_guess + tc;
   r.vx = derivative(r.fit_x.coef, 1, tc);
   r.vy = derivative(r.fit_y.coef, 1, tc);
-  r.theta_c_deg = std::acos(std::clamp(r.cos_theta_c, -1.0, 1.0)) * 180 / M_PI;
+  r.theta_c_deg = to_deg(std::acos(std::clamp(r.cos_theta_c, -1.0, 1.0)));
 
   // Delta method with central differences; the x and y fits are independent.
   std::vector<double> g_cos(2 * nc), g_t(2 * nc);
@@ -199,7 +202,7 @@ NormalFrictionTest normal_friction_test(const std::vector<ThetaCPoint>& points, 
   const double h = r.line.ci_half_width(0, level);
   r.intercept_ci_low = r.intercept - h;
   r.intercept_ci_high = r.intercept + h;
-  r.verdict = (r.intercept_ci_low > 0 || r.intercept_ci_high < 0) ? "present" : "absent";
+  r.verdict = verdict_from(r.intercept_ci_low > 0 || r.intercept_ci_high < 0);
   return r;
 }
 

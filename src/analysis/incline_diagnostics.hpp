@@ -67,6 +67,14 @@ struct ThetaC {
 std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
                                          double window_low, double window_high, int degree = 4);
 
+/// Whether a friction component normal to the path is present (docs/theory.md, model A):
+/// present when the test's interval excludes 0.
+enum class Verdict { absent, present };
+/// "absent" or "present": the value of the JSON key "verdict".
+const char* to_string(Verdict v);
+/// present when `excludes_zero`, else absent.
+constexpr Verdict verdict_from(bool excludes_zero) { return excludes_zero ? Verdict::present : Verdict::absent; }
+
 /// One run of the cos(theta_c) - tan(phi) test.
 struct ThetaCPoint {
   double phi = 0;              ///< rad
@@ -83,7 +91,7 @@ struct NormalFrictionTest {
   double mu = 0, sigma_mu = 0;        ///< 1/slope and sigma_slope/slope^2
   double intercept = 0, sigma_intercept = 0;
   double intercept_ci_low = 0, intercept_ci_high = 0;  ///< at `level`
-  std::string verdict;         ///< "present" when the interval excludes 0, else "absent"
+  Verdict verdict = Verdict::absent;  ///< present when the interval excludes 0
 };
 
 /// Fits the line; throws InputError with fewer than 3 runs or a single angle.

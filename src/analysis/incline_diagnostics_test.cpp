@@ -123,7 +123,7 @@ TEST(NormalFrictionTest, SlopeIsOneOverMuAndInterceptZeroForModelB) {
   EXPECT_LT(t.sigma_mu, 0.03);
   EXPECT_LE(t.intercept_ci_low, 0.0);
   EXPECT_GE(t.intercept_ci_high, 0.0);
-  EXPECT_EQ(t.verdict, "absent");
+  EXPECT_EQ(t.verdict, Verdict::absent);
 }
 
 TEST(NormalFrictionTest, ExactLineGivesExactMu) {
@@ -134,7 +134,7 @@ TEST(NormalFrictionTest, ExactLineGivesExactMu) {
   const auto t = normal_friction_test(pts);
   EXPECT_NEAR(t.mu, 0.5, 1e-6);
   EXPECT_NEAR(t.intercept, 0.1, 1e-6);
-  EXPECT_EQ(t.verdict, "present");
+  EXPECT_EQ(t.verdict, Verdict::present);
 }
 
 TEST(NormalFrictionTest, RejectsDataThatCannotSupportTheLine) {
@@ -144,6 +144,14 @@ TEST(NormalFrictionTest, RejectsDataThatCannotSupportTheLine) {
   EXPECT_THROW(normal_friction_test(same), InputError);
   std::vector<ThetaCPoint> bad{{0.2, 1.5, 0, "a"}, {0.3, 0.6, 0, "b"}, {0.25, 0.55, 0, "c"}};
   EXPECT_THROW(normal_friction_test(bad), InputError);
+}
+
+// The verdict's text is the JSON value `incline analyze` and the series print (docs/cli.md).
+TEST(Verdict, TextIsTheJsonValue) {
+  EXPECT_STREQ(to_string(Verdict::absent), "absent");
+  EXPECT_STREQ(to_string(Verdict::present), "present");
+  EXPECT_EQ(verdict_from(true), Verdict::present);
+  EXPECT_EQ(verdict_from(false), Verdict::absent);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "incline/inverse.hpp"
 #include "incline/numeric.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <boost/math/distributions/fisher_f.hpp>
 
@@ -86,7 +87,7 @@ Guess initial_guess(const track::Track& track, const InclineFitOptions& o, doubl
     if (sm.x_stop > 0 && sm.y_stop < 0) {
       try {
         g.mu_from_stop = incline::mu_from_stop(sm).mu;
-      } catch (const InputError&) {
+      } catch (const Error&) {  // no stop estimate: the fit starts elsewhere
       }
     }
   }
@@ -157,7 +158,7 @@ std::vector<incline::State> model_a_states(const incline::Parameters& p, double 
   if (!rel.empty()) {
     const auto r = incline::simulate(p, rel, no);
     if (r.status == incline::NumericStatus::failed)
-      throw InputError("model A", "integration failed: " + r.message);
+      throw SolverError("model A", "integration failed: " + r.message);
     moving = r.samples;
   }
   std::vector<incline::State> out;
@@ -243,7 +244,7 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
     if (best.ok() && best.rms < 2.0 * noise) break;
   }
   if (!best.ok())
-    throw InputError(where(track), "model B cannot be fitted: " + best.message);
+    numerics::throw_fit_failure(best, where(track), "model B cannot be fitted: " + best.message);
   ModelBFit r;
   r.fit = best;
   r.mu = estimate(best, 0, o.level);
@@ -308,7 +309,7 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
   fo.gradient_tolerance = 1e-12;
   fo.max_iterations = 100;
   const numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params, fo);
-  if (!f.ok()) throw InputError(where(track), "model A cannot be fitted: " + f.message);
+  if (!f.ok()) numerics::throw_fit_failure(f, where(track), "model A cannot be fitted: " + f.message);
   ModelAFit r;
   r.fit = f;
   r.mu = estimate(f, 0, o.level);
@@ -331,7 +332,7 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
 
 std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& o,
                                           const ModelBFit& b) {
-  constexpr double kMinPhi = 3.0 * M_PI / 180.0;  // below, g sin(phi) is too small to separate g from mu
+  constexpr double kMinPhi = to_rad(3.0);  // below, g sin(phi) is too small to separate g from mu
   if (o.phi < kMinPhi) return std::nullopt;
   const auto& pts = track.points;
   const int n = static_cast<int>(pts.size());
@@ -370,6 +371,15 @@ std::optional<GravityCheck> check_gravity(const track::Track& track, const Incli
   c.time_factor = std::sqrt(c.ratio);
   c.implausible = std::abs(c.ratio - 1) > 0.25 && std::abs(c.g.value - o.g) > 3 * c.g.sigma;
   return c;
+}
+
+const char* to_string(VerdictSource s) {
+  switch (s) {
+    case VerdictSource::model_a_test: return "model_a_test";
+    case VerdictSource::a_n_intercept: return "a_n_intercept";
+    case VerdictSource::none: break;
+  }
+  return "none";
 }
 
 InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitOptions& o) {
@@ -417,7 +427,7 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
       test.present = test.ci_excludes_zero && test.significant;
       a.model_a = std::move(fa);
       a.test = test;
-    } catch (const InputError& e) {
+    } catch (const Error& e) {
       a.notes.push_back(std::string("model A not fitted: ") + e.what());
     }
   }
@@ -477,14 +487,14 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
   }
 
   if (a.test) {
-    a.verdict = a.test->present ? "present" : "absent";
-    a.verdict_source = "model_a_test";
+    a.verdict = verdict_from(a.test->present);
+    a.verdict_source = VerdictSource::model_a_test;
   } else if (a.a_n) {
-    a.verdict = a.a_n->intercept_excludes_zero ? "present" : "absent";
-    a.verdict_source = "a_n_intercept";
+    a.verdict = verdict_from(a.a_n->intercept_excludes_zero);
+    a.verdict_source = VerdictSource::a_n_intercept;
   } else {
-    a.verdict = "absent";
-    a.verdict_source = "none";
+    a.verdict = Verdict::absent;
+    a.verdict_source = VerdictSource::none;
     a.notes.push_back("no test could decide; verdict defaults to absent");
   }
   return a;

@@ -22,6 +22,7 @@
 #include "numerics/least_squares.hpp"
 #include "track/kinematics.hpp"
 #include "track/track.hpp"
+#include "numerics/units.hpp"
 
 #include <optional>
 #include <string>
@@ -31,7 +32,7 @@ namespace tribolab::analysis {
 
 struct InclineFitOptions {
   double phi = 0;             ///< incline angle, rad, in [0, pi/2) (required input)
-  double g = 9.8;             ///< m/s^2
+  double g = kDefaultG;       ///< m/s^2
   bool fit_model_a = true;    ///< also fit model A and test it against B
   double level = 0.95;        ///< confidence level of the intervals
   double significance = 0.05; ///< size of the A-vs-B test
@@ -104,20 +105,29 @@ struct ModelTest {
   double size = 0.05;             ///< the test's size: how often a model-B run is called present
 };
 
+/// What decided InclineAnalysis::verdict.
+enum class VerdictSource {
+  none,           ///< no test could decide (the verdict defaults to absent)
+  model_a_test,   ///< the model A test (ModelTest::present)
+  a_n_intercept,  ///< the eq b diagnostic's intercept interval (NormalAccelDiagnostic)
+};
+/// "none", "model_a_test" or "a_n_intercept": the value of the JSON key "verdict_source".
+const char* to_string(VerdictSource s);
+
 struct InclineAnalysis {
   std::vector<track::TrackPoint> data;  ///< the points fitted (file time and frame)
   track::Kinematics kinematics;         ///< Savitzky-Golay velocities/accelerations (figures)
-  double phi = 0, g = 9.8;              ///< rad, m/s^2
+  double phi = 0, g = kDefaultG;        ///< rad, m/s^2
   ModelBFit model_b;
   std::optional<ModelAFit> model_a;
   std::optional<ModelTest> test;
   std::optional<NormalAccelDiagnostic> a_n;  ///< eq b diagnostic (absent: too few blocks)
   std::optional<ThetaC> theta_c;              ///< eq c diagnostic (absent: k >= 1 or no window)
   double cos_theta_c_model = 0;  ///< model B's cos(theta_c) = k = tan(phi)/mu (eq c'), when k < 1
-  /// "present" or "absent": decided by the model A test (ModelTest::present); when model A
-  /// is not fitted, by the a_N intercept's interval (NormalAccelDiagnostic).
-  std::string verdict = "absent";
-  std::string verdict_source;  ///< "model_a_test" or "a_n_intercept"
+  /// Decided by the model A test (ModelTest::present); when model A is not fitted, by the
+  /// a_N intercept's interval (NormalAccelDiagnostic).
+  Verdict verdict = Verdict::absent;
+  VerdictSource verdict_source = VerdictSource::none;
   // Curves for figures: models at the data times and on a fine grid (400 times over the
   // data's span), states in the file's time and frame; residuals data - model, m.
   std::vector<incline::State> model_b_at_data, model_b_fine;

@@ -50,7 +50,7 @@ TEST(InclineFit, RecoversModelBParameters) {
   // The residual rms estimates the 1 mm noise (2n = 180 residuals: +-10 % is 3 sigma).
   EXPECT_NEAR(b.rms_residual, 0.001, 0.0001);
   ASSERT_TRUE(a.test.has_value());
-  EXPECT_EQ(a.verdict, "absent");
+  EXPECT_EQ(a.verdict, Verdict::absent);
   // Curves for figures: one state per data point and a 400-point grid.
   EXPECT_EQ(a.model_b_at_data.size(), run.track.points.size());
   EXPECT_EQ(a.model_b_fine.size(), 400u);
@@ -121,7 +121,7 @@ TEST(InclineFit, DetectsANormalFrictionComponent) {
     const auto run = synthesize_incline_run(s);
     const InclineAnalysis a = analyze_incline_run(run.track, fit_options(s));
     ASSERT_TRUE(a.model_a && a.test);
-    detected += a.verdict == "present";
+    detected += a.verdict == Verdict::present;
     const auto& na = a.model_a->normal_accel;
     covered += std::abs(na.value - 0.3) < 3.3 * na.sigma;
   }
@@ -153,7 +153,7 @@ TurnedFrameCounts analyse_turned_runs(int runs, std::uint64_t first_seed, double
     EXPECT_TRUE(a.model_a && a.test);
     if (!a.model_a || !a.test) continue;
     ++c.runs;
-    c.present += a.verdict == "present";
+    c.present += a.verdict == Verdict::present;
     c.cover_psi += covers(a.model_a->frame_rotation, s.frame_rotation);
     c.cover_mu += covers(a.model_b.mu, 0.634);
     c.max_abs_correlation = std::max(c.max_abs_correlation, std::abs(a.model_a->rotation_correlation));
@@ -307,6 +307,13 @@ TEST(InclineGravity, AFlatInclineHasNoGravityToCheck) {
   const auto run = synthesize_incline_run(s);
   const InclineFitOptions o = fit_options(s);
   EXPECT_FALSE(check_gravity(run.track, o, fit_model_b(run.track, o)));
+}
+
+// The text of what decided the verdict is the JSON value of "verdict_source" (docs/cli.md).
+TEST(VerdictSource, TextIsTheJsonValue) {
+  EXPECT_STREQ(to_string(VerdictSource::model_a_test), "model_a_test");
+  EXPECT_STREQ(to_string(VerdictSource::a_n_intercept), "a_n_intercept");
+  EXPECT_STREQ(to_string(VerdictSource::none), "none");
 }
 
 }  // namespace

@@ -237,7 +237,7 @@ InclineSeriesSummary summarize_incline_series(const std::vector<InclineRunPoint>
     if (p.normal_accel && p.sigma_normal_accel && *p.sigma_normal_accel > 0 && std::isfinite(*p.normal_accel)) {
       fn.push_back(*p.normal_accel);
       sfn.push_back(*p.sigma_normal_accel);
-      n_present += p.verdict == "present";
+      n_present += p.verdict == Verdict::present;
     }
   }
   if (fn.size() < 2) {
@@ -248,7 +248,7 @@ InclineSeriesSummary summarize_incline_series(const std::vector<InclineRunPoint>
     const double z = boost::math::quantile(boost::math::normal(), 0.5 + o.level / 2);
     pn.ci_low = pn.mean.mean - z * pn.mean.sigma_scaled;
     pn.ci_high = pn.mean.mean + z * pn.mean.sigma_scaled;
-    pn.verdict = (pn.ci_low > 0 || pn.ci_high < 0) ? "present" : "absent";
+    pn.verdict = verdict_from(pn.ci_low > 0 || pn.ci_high < 0);
     pn.n_present = n_present;
     r.normal_friction = pn;
   }

@@ -8,6 +8,7 @@
 #include "analysis/incline_diagnostics.hpp"
 #include "analysis/incline_fit.hpp"
 #include "analysis/series_stats.hpp"
+#include "numerics/units.hpp"
 
 #include <optional>
 #include <string>
@@ -27,7 +28,7 @@ struct InclineRunPoint {
   std::optional<double> y_stop;  ///< and up the slope, m, < 0 (eq 九)
   std::optional<double> cos_theta_c, sigma_cos_theta_c;    ///< eq c diagnostic
   std::optional<double> normal_accel, sigma_normal_accel;  ///< model A's f_N/m, m/s^2
-  std::string verdict;         ///< the run's own normal-friction verdict
+  Verdict verdict = Verdict::absent;  ///< the run's own normal-friction verdict
 };
 
 /// The point of one run's analysis.
@@ -68,8 +69,8 @@ struct StopScaling {
 struct PooledNormalFriction {
   WeightedMean mean;          ///< of f_N/m, m/s^2
   double ci_low = 0, ci_high = 0;  ///< mean -+ z sigma_scaled at `level`, m/s^2
-  std::string verdict;        ///< "present" when the interval excludes 0, else "absent"
-  int n_present = 0;          ///< runs whose own verdict was "present"
+  Verdict verdict = Verdict::absent;  ///< present when the interval excludes 0
+  int n_present = 0;          ///< runs whose own verdict was present
 };
 
 struct InclineSeriesSummary {
@@ -88,7 +89,7 @@ struct InclineSeriesSummary {
 };
 
 struct InclineSeriesOptions {
-  double g = 9.8;             ///< m/s^2
+  double g = kDefaultG;       ///< m/s^2
   double level = 0.95;        ///< of every interval
   double outlier_pull = 3;    ///< |pull| beyond which a run is named an outlier
   std::string validate() const;

@@ -157,7 +157,7 @@ TEST(InclineSeries, SeveralAnglesSkipTheSlopesAndRunTheThetaCTest) {
   EXPECT_NE(s.scaling_note.find("4 different angles"), std::string::npos) << s.scaling_note;
   ASSERT_TRUE(s.theta_c_test) << s.theta_c_note;
   EXPECT_NEAR(s.theta_c_test->mu, mu, 1e-9);  // exact points: slope 1/mu through the origin
-  EXPECT_EQ(s.theta_c_test->verdict, "absent");
+  EXPECT_EQ(s.theta_c_test->verdict, Verdict::absent);
 }
 
 TEST(InclineSeries, OutliersAreNamedAndPullsFollowTheRuns) {
@@ -222,7 +222,7 @@ TEST(InclineSeries, SyntheticRunsGiveTheTruthAndPoolNormalFriction) {
 
   const auto a = summarize_incline_series(analysed_series(0.3, 4, 600));
   ASSERT_TRUE(a.normal_friction);
-  EXPECT_EQ(a.normal_friction->verdict, "present");
+  EXPECT_EQ(a.normal_friction->verdict, Verdict::present);
   EXPECT_NEAR(a.normal_friction->mean.mean, 0.3, 3.3 * a.normal_friction->mean.sigma_scaled);
 }
 

@@ -1,6 +1,7 @@
 #include "analysis/incline_slide.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -88,7 +89,7 @@ SlideResult mu_from_slide(const track::Track& track, const SlideOptions& o) {
   r.a = 2 * r.parabola.coef[2];
   r.sigma_a = 2 * r.parabola.sigma[2];
   r.r_squared = r.parabola.r_squared;
-  r.direction_deg = std::atan2(dy, dx) * 180 / M_PI;
+  r.direction_deg = to_deg(std::atan2(dy, dx));
   double dsum = 0;
   for (double v : d) dsum += v * v;
   r.straightness_rms = std::sqrt(dsum / n);

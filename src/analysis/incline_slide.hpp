@@ -11,6 +11,7 @@
 
 #include "numerics/polyfit.hpp"
 #include "track/track.hpp"
+#include "numerics/units.hpp"
 
 #include <optional>
 #include <string>
@@ -21,7 +22,7 @@ namespace tribolab::analysis {
 struct SlideOptions {
   std::optional<double> phi;  ///< incline angle, rad, in (0, pi/2); empty: report a only
   double sigma_phi = 0;       ///< standard uncertainty of phi, rad (0 = exact)
-  double g = 9.8;             ///< m/s^2
+  double g = kDefaultG;       ///< m/s^2
   int min_points = 6;         ///< fewest moving points accepted for the parabola
 
   std::string validate() const;

@@ -75,7 +75,7 @@ InclineSynthRun synthesize_incline_run(const InclineSynthOptions& o) {
     no.model = incline::Model::A;
     const auto r = incline::simulate(p, rel, no);
     if (r.status == incline::NumericStatus::failed)
-      throw InputError("synthetic run", "integration failed: " + r.message);
+      throw SolverError("synthetic run", "integration failed: " + r.message);
     moving = r.samples;
   } else {
     moving = incline::ClosedForm(p).trajectory(rel);

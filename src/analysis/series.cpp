@@ -32,7 +32,7 @@ std::vector<std::optional<RunError>> run_each(std::size_t n, const std::function
     const auto i = static_cast<std::size_t>(k);
     try {
       job(i);
-    } catch (const InputError& e) {
+    } catch (const Error& e) {  // InputError or SolverError
       errors[i] = RunError{e.what(), e.where()};
     } catch (const std::exception& e) {
       errors[i] = RunError{e.what(), {}};

@@ -83,7 +83,7 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
     const track::Track track = read_run(path);
     analysis::InclineAnalysis a = analysis::analyze_incline_run(track, o);
     // The parameters of the model the verdict accepts: A when normal friction is present.
-    const bool use_a = a.verdict == "present" && a.model_a;
+    const bool use_a = a.verdict == analysis::Verdict::present && a.model_a;
     const analysis::Estimate& mu = use_a ? a.model_a->mu : a.model_b.mu;
     const analysis::Estimate& v0 = use_a ? a.model_a->v0 : a.model_b.v0;
     made.rows.push_back({data_path(run), run.synth,
@@ -92,10 +92,10 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
                       holds(mu, run.mu) ? "yes" : "no", format_value(run.v0, 4), format_uncertain(v0.value, v0.sigma),
                       holds(v0, run.v0) ? "yes" : "no", format_value(run.normal_accel, 3),
                       a.model_a ? format_uncertain(a.model_a->normal_accel.value, a.model_a->normal_accel.sigma) : "—",
-                      a.verdict});
+                      to_string(a.verdict)});
     char line[160];
     std::snprintf(line, sizeof line, "    %-24s %s  %.4f +- %.4f  %s  %s\n", run.file, use_a ? "A" : "B", mu.value,
-                  mu.sigma, holds(mu, run.mu) ? "yes" : "no", a.verdict.c_str());
+                  mu.sigma, holds(mu, run.mu) ? "yes" : "no", to_string(a.verdict));
     log << line;
     if (run.normal_accel == 0) {
       // As `incline normal-friction-test` does: model B only, theta_c of each run.
@@ -116,7 +116,7 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
   for (std::size_t i = 0; i < analyses.size(); ++i)
     if (kRuns[i].normal_accel == 0) {
       ++model_b_runs;
-      flagged += analyses[i].verdict == "present";
+      flagged += analyses[i].verdict == analysis::Verdict::present;
     }
   summary.add_paragraph("Decision rule for the verdict: " + incline_decision_rule() + " Of the " +
                         std::to_string(model_b_runs) + " runs made without normal friction, " + std::to_string(flagged) +
@@ -149,7 +149,7 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
   const analysis::NormalFrictionTest test = analysis::normal_friction_test(nft);
   add_normal_friction_fit(ns, "Across angles", test, 0.634);
   log << "  normal-friction-test: mu = " << format_uncertain(test.mu, test.sigma_mu) << " (truth 0.634), verdict "
-      << test.verdict << '\n';
+      << to_string(test.verdict) << '\n';
 
   auto& ss = r.add_section("Incline runs: straight slide, μ from eq a");
   const std::string slide_path = write_demo_file(std::string("incline/") + kSlide.file, data_dir);

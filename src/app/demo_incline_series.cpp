@@ -159,12 +159,12 @@ void add_incline_series_case_study(report::Report& r, std::ostream& log, const s
     const auto& tc = *all.summary.theta_c_test;
     truth2.rows.push_back({"μ = 1/slope of cos θ_c against tan φ", format_value(kMuTruth, 4),
                            format_uncertain(tc.mu, tc.sigma_mu), yes_no(std::abs(tc.mu - kMuTruth) <= 2 * tc.sigma_mu)});
-    truth2.rows.push_back({"normal friction (eq c' intercept)", "absent", tc.verdict, yes_no(tc.verdict == "absent")});
+    truth2.rows.push_back({"normal friction (eq c' intercept)", "absent", to_string(tc.verdict), yes_no(tc.verdict == analysis::Verdict::absent)});
     log << "  ten discs, four angles: cos(theta_c)-tan(phi) mu = " << format_uncertain(tc.mu, tc.sigma_mu) << '\n';
   }
   if (all.summary.normal_friction)
-    truth2.rows.push_back({"normal friction pooled (model A)", "absent", all.summary.normal_friction->verdict,
-                           yes_no(all.summary.normal_friction->verdict == "absent")});
+    truth2.rows.push_back({"normal friction pooled (model A)", "absent", to_string(all.summary.normal_friction->verdict),
+                           yes_no(all.summary.normal_friction->verdict == analysis::Verdict::absent)});
   t2.add_table(std::move(truth2));
   add_incline_series(r, "Ten discs", all.report_runs, all.summary, {});
 }

@@ -65,7 +65,7 @@ json incline_series_json(const analysis::InclineSeriesSummary& s, std::size_t n_
                          {"sigma_mu", t.sigma_mu},
                          {"intercept", t.intercept},
                          {"intercept_ci95", json::array({t.intercept_ci_low, t.intercept_ci_high})},
-                         {"verdict", t.verdict},
+                         {"verdict", to_string(t.verdict)},
                          {"n_runs", t.points.size()}};
   } else {
     j["theta_c_test"] = nullptr;
@@ -80,7 +80,7 @@ json incline_series_json(const analysis::InclineSeriesSummary& s, std::size_t n_
                             {"chi2", n.mean.chi2},
                             {"dof", n.mean.dof},
                             {"p_value", num(n.mean.p_value)},
-                            {"verdict", n.verdict},
+                            {"verdict", to_string(n.verdict)},
                             {"n_runs", n.mean.n},
                             {"n_runs_present", n.n_present}};
   } else {

@@ -254,19 +254,19 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
   t.rows.push_back({"separation t_s (s)", format_uncertain(r.t_separation, r.sigma_t_separation),
                     "lowest point of the post-impact flight leaves the floor"});
   t.rows.push_back({"contact duration (s)", format_uncertain(r.contact_duration, r.sigma_contact_duration),
-                    r.floor_method == "contact_duration" ? "given (--contact-duration)" : "t_s − t_c"});
+                    r.floor_method == analysis::FloorMethod::contact_duration ? "given (--contact-duration)" : "t_s − t_c"});
   t.rows.push_back({"impact time t_i (s)", v4(r.impact_time), "where the two y–t parabolas meet (impulse centroid)"});
   t.rows.push_back({"e from velocities", format_uncertain(r.e_velocity, r.sigma_e_velocity),
                     "−v_y(t_s) / v_y(t_c): as bounce simulate"});
   t.rows.push_back({"e at one instant", format_uncertain(r.e_velocity_common, r.sigma_e_velocity_common),
                     "−v_y,after(t_i) / v_y,before(t_i): gravity between touch and separation biases it up"});
   const std::string floor_note =
-      r.floor_method == "given" ? "--floor-y"
-      : r.floor_method == "contact_duration"
+      r.floor_method == analysis::FloorMethod::given ? "--floor-y"
+      : r.floor_method == analysis::FloorMethod::contact_duration
           ? "where both flights touch the floor a contact duration apart"
           : "middle of a ±" + v4(1e3 * r.floor_half_width) + " mm bracket from the flights (not trusted for e)";
   t.rows.push_back({"e from apex heights", format_uncertain(r.e_height, r.sigma_e_height),
-                    r.floor_method == "bracket"
+                    r.floor_method == analysis::FloorMethod::bracket
                         ? "not reported: the floor estimated without --floor-y or --contact-duration is not "
                           "reliable enough (docs/theory.md#bounce-analysis)"
                         : "sqrt(H'/H)"});
@@ -288,7 +288,7 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
                     "rotational energy lost in the contact"});
   if (r.mean_normal_force) {
     t.rows.push_back({"mean normal force (N)", format_uncertain(*r.mean_normal_force, *r.sigma_mean_normal_force),
-                      std::string("impulse / T, T ") + (r.force_duration_method == "given" ? "given" : "= t_s − t_c") +
+                      std::string("impulse / T, T ") + (r.force_duration_method == analysis::ForceDurationMethod::given ? "given" : "= t_s − t_c") +
                           " (its uncertainty included)"});
   }
   t.rows.push_back({"g seen by the flights (m/s²)", format_uncertain(r.gravity, r.sigma_gravity),
@@ -317,7 +317,7 @@ void add_bounce_analysis_equations(report::Section& s, const BounceAnalysis& r) 
   s.add_equation("e_h = sqrt(H'/H),   H = y_0 − v_y^2/(2 a_y) − y_{floor}", "seed 001, 實驗二 (三)",
                  r.floor_given ? "apex heights of the centre above the given floor"
                                : "floor from the lowest point h = y − Y(θ) of the flights; see docs/theory.md#bounce-analysis");
-  if (r.floor_method == "contact_duration") {
+  if (r.floor_method == analysis::FloorMethod::contact_duration) {
     s.add_equation("h_{pre}(t_c) = y_{floor} = h_{post}(t_c + T),   h = y − Y(θ),   t_i − T ≤ t_c ≤ t_i",
                    "docs/theory.md#bounce-analysis", "the floor from the flights: touch at t_c, separation T later");
   }

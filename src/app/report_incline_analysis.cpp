@@ -209,8 +209,8 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
                                                                                    ? " (in the interval)"
                                                                                    : " (outside the interval)")});
   }
-  cmp.rows.push_back({"verdict: normal friction", a.verdict});
-  cmp.rows.push_back({"decided by", a.verdict_source == "model_a_test" ? "model A test" : "a_N intercept"});
+  cmp.rows.push_back({"verdict: normal friction", to_string(a.verdict)});
+  cmp.rows.push_back({"decided by", a.verdict_source == analysis::VerdictSource::model_a_test ? "model A test" : "a_N intercept"});
   s.add_table(std::move(cmp));
   s.add_paragraph("Decision rule: " + incline_decision_rule());
 
@@ -280,7 +280,7 @@ int add_normal_friction_fit(report::Section& s, const std::string& title, const 
               {"intercept c_0", format_uncertain(r.intercept, r.sigma_intercept)},
               {"95 % interval of the intercept", interval(r.intercept_ci_low, r.intercept_ci_high)},
               {"R^2", format_value(r.line.r_squared, 5)},
-              {"verdict: normal friction", r.verdict}};
+              {"verdict: normal friction", to_string(r.verdict)}};
   if (mu_truth) fit.rows.push_back({"truth μ (make.sh)", format_value(*mu_truth, 4)});
   s.add_table(std::move(fit));
   s.add_paragraph("Rule: with no normal friction (model B) the line passes through the origin with slope 1/μ "

@@ -228,7 +228,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
     t.rows.push_back({run.source, format_value(incline::rad_to_deg(run.phi), 5), format_uncertain(p.mu, p.sigma_mu),
                       std::isfinite(pull) ? format_value(pull, 3) : "—", format_uncertain(p.v0, p.sigma_v0),
                       opt_value(p.t_stop), opt_value(p.x_stop), opt_value(p.y_stop),
-                      p.normal_accel ? format_uncertain(*p.normal_accel, *p.sigma_normal_accel) : "—", p.verdict,
+                      p.normal_accel ? format_uncertain(*p.normal_accel, *p.sigma_normal_accel) : "—", to_string(p.verdict),
                       is_outlier ? "outlier" : ""});
     t.links.push_back(i < links.size() ? links[i] : std::string());
   }
@@ -258,7 +258,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
     pt.header = {"quantity", "value"};
     add_mean_rows(pt, "f_N/m (m/s^2)", p.mean);
     pt.rows.push_back({"95 % interval (m/s^2)", interval(p.ci_low, p.ci_high)});
-    pt.rows.push_back({"pooled verdict: normal friction", p.verdict});
+    pt.rows.push_back({"pooled verdict: normal friction", to_string(p.verdict)});
     pt.rows.push_back({"runs whose own verdict is present", std::to_string(p.n_present) + " of " + std::to_string(p.mean.n)});
     nf.add_table(std::move(pt));
     std::vector<bool> none(fn.size(), false);

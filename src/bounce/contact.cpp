@@ -177,11 +177,10 @@ struct PeakTracker {
   }
 };
 
-}  // namespace
-
-ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
-                               const BodyState& touch, const ContactOptions& options,
-                               std::vector<ContactSample>* history) {
+/// Throws InputError unless the ball, the friction model, the options, the resolved law and
+/// the incoming state are valid (docs/theory.md#bounce-contact).
+void validate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                      const BodyState& touch, const ContactOptions& options) {
   if (auto e = ball.validate(); !e.empty()) throw InputError(e);
   if (auto e = friction.validate(); !e.empty()) throw InputError(e);
   if (auto e = options.validate(); !e.empty()) throw InputError(e);
@@ -189,20 +188,20 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     throw InputError("normal law: need K > 0, n >= 1, D >= 0");
   for (double v : {touch.x, touch.theta, touch.vx, touch.vy, touch.omega})
     require_finite(v, "incoming state");
+}
 
-  const Model model{ball, law, friction, options.g, 1 / ball.mass, 1 / ball.inertia};
-  ContactResult r;
-  r.law = law;
+/// The state at first touch (y = Y(theta): gap 0) and the contact point's velocity there
+/// into r.in, r.v_in_normal, r.v_t_in; throws InputError unless the contact point approaches
+/// the floor (docs/theory.md#bounce-contact).
+State state_at_touch(const Ball& ball, const BodyState& touch, ContactResult& r) {
   r.in = touch;
   r.in.y = support(ball, touch.theta).Y;
-  {
-    const PointVelocity pv = contact_point_velocity(ball, touch.theta, touch.vx, touch.vy, touch.omega);
-    r.v_in_normal = -pv.vy;
-    r.v_t_in = pv.vx;
-    if (!(pv.vy < 0)) {
-      throw InputError("incoming state", "the contact point must approach the floor at first touch "
-                                         "(vy + omega X = " + std::to_string(pv.vy) + " m/s, need < 0)");
-    }
+  const PointVelocity pv = contact_point_velocity(ball, touch.theta, touch.vx, touch.vy, touch.omega);
+  r.v_in_normal = -pv.vy;
+  r.v_t_in = pv.vx;
+  if (!(pv.vy < 0)) {
+    throw InputError("incoming state", "the contact point must approach the floor at first touch "
+                                       "(vy + omega X = " + std::to_string(pv.vy) + " m/s, need < 0)");
   }
   State x{};
   x[iX] = r.in.x;
@@ -211,61 +210,69 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   x[iVx] = r.in.vx;
   x[iVy] = r.in.vy;
   x[iW] = r.in.omega;
+  return x;
+}
 
-  // Initial friction mode (docs/theory.md#bounce-friction, "phase selection").
+/// The friction regime of one smooth phase (docs/theory.md#bounce-friction): its mode and slip
+/// direction s (+-1; 0 unset).
+struct FrictionPhase {
   Mode mode = Mode::free;
   double s = 0;
-  const bool frictionless = friction.mu == 0;
-  auto choose_after_stop = [&](const State& st) {
-    // Coulomb, v_t = 0: stick if the required force fits in the cone, else slip against it.
-    const Eval e = model.eval(st, Mode::coulomb_stick, 0);
-    if (std::abs(e.f_req) <= friction.mu * e.N) {
-      mode = Mode::coulomb_stick;
-    } else {
-      mode = Mode::coulomb_slip;
-      s = -sign_of(e.f_req);
-    }
-  };
-  if (frictionless) {
-    mode = Mode::free;
-  } else if (friction.kind == FrictionKind::regularized) {
-    mode = Mode::regularized;
-  } else if (friction.kind == FrictionKind::coulomb) {
-    if (r.v_t_in != 0) {
-      mode = Mode::coulomb_slip;
-      s = sign_of(r.v_t_in);
-    } else {
-      choose_after_stop(x);
-    }
-  } else {
-    // Decide with the load just after touch, N(0+): a Hooke dashpot jumps to D d_dot there,
-    // and a spring put on that cap would gain energy from nothing.
-    const Eval e = model.eval(x, Mode::spring_elastic, 0);
-    const double N0 = law.eval(std::numeric_limits<double>::min(), e.d_dot).N;
-    const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
-    if (friction.mu * N0 - std::abs(trial) > 0 || e.v_t == 0) {
-      mode = Mode::spring_elastic;
-    } else {
-      mode = Mode::spring_slip;
-      s = trial != 0 ? sign_of(trial) : sign_of(e.v_t);
-      x[iU] = (s * friction.mu * e.N - friction.c_t * e.v_t) / friction.k_t;
-    }
-  }
+};
 
-  PeakTracker peak;
-  double t = 0;
-  // First step from the contact's time scale tau = (m / (K v_in^(n-1)))^(1/(n+1)) (the
-  // time in which the law's force stops the ball: ~1/3 of the contact duration) times
-  // tol^(1/5), the 5th-order step of that tolerance: e.g. 3.5e-4 s for the seed's law at
-  // 4 m/s and tol 1e-6, instead of ramping up from initial_step (docs/theory.md#bounce-integrator).
-  double h = options.integrator.initial_step;
-  {
-    const double tau = std::pow(ball.mass / (law.K * std::pow(r.v_in_normal, law.n - 1)), 1 / (law.n + 1));
-    const double h_scale = tau * std::pow(options.integrator.abs_tol, 0.2);
-    if (std::isfinite(h_scale) && h_scale > 0) h = h_scale;
+/// Coulomb with v_t = 0 (docs/theory.md#bounce-friction): stick if the required force fits
+/// in the cone mu N, else slip against it. Stick keeps the previous s (`before`).
+FrictionPhase coulomb_at_rest(const Model& model, const FrictionModel& friction, const State& x,
+                              FrictionPhase before) {
+  const Eval e = model.eval(x, Mode::coulomb_stick, 0);
+  if (std::abs(e.f_req) <= friction.mu * e.N) return {Mode::coulomb_stick, before.s};
+  return {Mode::coulomb_slip, -sign_of(e.f_req)};
+}
+
+/// The friction regime at first touch (docs/theory.md#bounce-friction, "phase selection");
+/// for the spring model starting in slip, puts the elongation x[iU] on the cap.
+FrictionPhase initial_friction_phase(const Model& model, const NormalLaw& law, const FrictionModel& friction,
+                                     double v_t_in, State& x) {
+  if (friction.mu == 0) return {Mode::free, 0};
+  if (friction.kind == FrictionKind::regularized) return {Mode::regularized, 0};
+  if (friction.kind == FrictionKind::coulomb) {
+    if (v_t_in != 0) return {Mode::coulomb_slip, sign_of(v_t_in)};
+    return coulomb_at_rest(model, friction, x, {Mode::free, 0});
   }
-  Mode cur_mode = mode;
-  double cur_s = s;
+  // Decide with the load just after touch, N(0+): a Hooke dashpot jumps to D d_dot there,
+  // and a spring put on that cap would gain energy from nothing.
+  const Eval e = model.eval(x, Mode::spring_elastic, 0);
+  const double N0 = law.eval(std::numeric_limits<double>::min(), e.d_dot).N;
+  const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
+  if (friction.mu * N0 - std::abs(trial) > 0 || e.v_t == 0) return {Mode::spring_elastic, 0};
+  const double s = trial != 0 ? sign_of(trial) : sign_of(e.v_t);
+  x[iU] = (s * friction.mu * e.N - friction.c_t * e.v_t) / friction.k_t;
+  return {Mode::spring_slip, s};
+}
+
+/// The first trial step (docs/theory.md#bounce-integrator, "First step"): the contact's time
+/// scale tau = (m / (K v_in^(n-1)))^(1/(n+1)) (the time in which the law's force stops the
+/// ball: ~1/3 of the contact duration) times tol^(1/5), the 5th-order step of that
+/// tolerance: e.g. 3.5e-4 s for the seed's law at 4 m/s and tol 1e-6; initial_step when
+/// that is not a positive number.
+double first_step(const Ball& ball, const NormalLaw& law, double v_in_normal, const PhaseOptions& integrator) {
+  double h = integrator.initial_step;
+  const double tau = std::pow(ball.mass / (law.K * std::pow(v_in_normal, law.n - 1)), 1 / (law.n + 1));
+  const double h_scale = tau * std::pow(integrator.abs_tol, 0.2);
+  if (std::isfinite(h_scale) && h_scale > 0) h = h_scale;
+  return h;
+}
+
+/// The equations of motion of one smooth phase for integrate_phase (docs/theory.md#bounce-contact):
+/// the right-hand side, the guards (separation d; the friction regime's end) with their
+/// rates, and the observer (peaks, history). Allocation-free; inlined into the phase loop.
+struct PhaseSystem {
+  const Model& model;
+  const FrictionModel& friction;
+  std::vector<ContactSample>* history;
+  FrictionPhase cur;  ///< the regime being integrated
+  PeakTracker peak;   ///< of N
+  PeakTracker peak_d; ///< of the penetration d
 
   // The integrator asks for the same state three times per accepted step (the FSAL rhs
   // at the step end, the guards there, the observer): the last evaluation is reused when
@@ -277,19 +284,20 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     Eval e;
     bool valid = false;
   } cache;
-  auto eval_at = [&](const State& st) -> const Eval& {
-    if (!(cache.valid && cache.mode == cur_mode && std::memcmp(&cache.s, &cur_s, sizeof cur_s) == 0 &&
+
+  const Eval& eval_at(const State& st) {
+    if (!(cache.valid && cache.mode == cur.mode && std::memcmp(&cache.s, &cur.s, sizeof cur.s) == 0 &&
           std::memcmp(cache.x.data(), st.data(), sizeof(State)) == 0)) {
-      cache.e = model.eval(st, cur_mode, cur_s);
+      cache.e = model.eval(st, cur.mode, cur.s);
       cache.x = st;
-      cache.mode = cur_mode;
-      cache.s = cur_s;
+      cache.mode = cur.mode;
+      cache.s = cur.s;
       cache.valid = true;
     }
     return cache.e;
-  };
+  }
 
-  auto rhs = [&](const State& st, State& dx, double) {
+  void rhs(const State& st, State& dx) {
     const Eval& e = eval_at(st);
     dx[iX] = st[iVx];
     dx[iY] = st[iVy];
@@ -297,37 +305,38 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
     dx[iVx] = e.ax;
     dx[iVy] = e.ay;
     dx[iW] = e.alpha;
-    dx[iU] = cur_mode == Mode::spring_elastic ? e.v_t : 0.0;
+    dx[iU] = cur.mode == Mode::spring_elastic ? e.v_t : 0.0;
     dx[iWn] = (e.N - e.elastic) * e.d_dot;
     dx[iWf] = -e.f * e.v_t;
-  };
+  }
+
   // Guards and their rates (NaN = not supplied): the rates of the separation guard d and
   // of the slip guard let the integrator find a brief dip below zero inside one step.
-  constexpr double kNoRate = std::numeric_limits<double>::quiet_NaN();
-  auto guards = [&](double, const State& st, std::array<double, 2>& gv, std::array<double, 2>& rate) {
+  void guards(const State& st, std::array<double, 2>& gv, std::array<double, 2>& rate) {
+    constexpr double kNoRate = std::numeric_limits<double>::quiet_NaN();
     const Eval& e = eval_at(st);
     gv[0] = e.d;  // separation
     rate[0] = e.d_dot;
     rate[1] = kNoRate;
     const double muN = friction.mu * e.N;
-    switch (cur_mode) {
+    switch (cur.mode) {
       case Mode::coulomb_slip:
-        gv[1] = cur_s * e.v_t;
-        rate[1] = cur_s * model.slip_accel(e, st[iW]);
+        gv[1] = cur.s * e.v_t;
+        rate[1] = cur.s * model.slip_accel(e, st[iW]);
         break;
       case Mode::coulomb_stick: gv[1] = muN - std::abs(e.f_req); break;
       case Mode::spring_elastic:
         gv[1] = muN - std::abs(friction.k_t * st[iU] + friction.c_t * e.v_t);
         break;
       case Mode::spring_slip:
-        gv[1] = cur_s * (friction.k_t * e.v_t + friction.c_t * model.slip_accel(e, st[iW])) -
+        gv[1] = cur.s * (friction.k_t * e.v_t + friction.c_t * model.slip_accel(e, st[iW])) -
                 friction.mu * model.force_rate(e, st[iW]);
         break;
       default: gv[1] = 1.0; break;
     }
-  };
-  PeakTracker peak_d;
-  auto observer = [&](double tt, const State& st) {
+  }
+
+  void observe(double tt, const State& st) {
     const Eval& e = eval_at(st);
     peak.add(tt, e.N);
     peak_d.add(tt, std::max(e.d, 0.0));
@@ -340,103 +349,89 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
       smp.N = e.N;
       smp.f = e.f;
       smp.v_t = e.v_t;
-      smp.phase = kind_of(cur_mode, cur_s);
+      smp.phase = kind_of(cur.mode, cur.s);
       history->push_back(smp);
     }
-  };
-  if (history) history->clear();
+  }
+};
 
-  // Phases that ended at once at the same time, in a row: two such (stick ends at once,
-  // then slip ends at once) mean a point where neither friction phase can go on (e.g. the
-  // spring model as the load vanishes, both guards negative to rounding). The next phase
-  // then keeps its friction guard waiting until it becomes positive instead of ending at
-  // once again, so that time moves on.
-  int immediate_run = 0;
-  bool done = false;
-  while (!done) {
-    if (r.n_phases >= options.max_phases) {
-      r.status = ContactStatus::failed;
-      r.message = "too many stick/slip phase changes";
+/// The friction regime after the friction guard of `cur` reached zero at x
+/// (docs/theory.md#bounce-friction, the events of each model); may put x on the new
+/// regime's constraint (v_t = 0 for Coulomb stick, u on the cap for spring slip).
+FrictionPhase next_friction_phase(const Model& model, const FrictionModel& friction, FrictionPhase cur, State& x) {
+  const Eval e = model.eval(x, cur.mode, cur.s);
+  FrictionPhase next = cur;
+  switch (cur.mode) {
+    case Mode::coulomb_slip:
+      x[iVx] = -x[iW] * e.sp.Y;  // v_t = 0 exactly (the event is located to rounding)
+      next = coulomb_at_rest(model, friction, x, cur);
+      if (next.mode == Mode::coulomb_slip && next.s == cur.s) next.s = -cur.s;  // must reverse
+      break;
+    case Mode::coulomb_stick:
+      next.mode = Mode::coulomb_slip;
+      next.s = -sign_of(e.f_req);
+      if (next.s == 0) next.s = 1;
+      break;
+    case Mode::spring_elastic: {
+      const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
+      next.mode = Mode::spring_slip;
+      // The slip goes the way the trial force points. When it is zero to rounding (no
+      // load: N clamped to 0, cap 0), the way it is about to point: its rate
+      // k_t v_t + c_t a_t, or failing that the slip velocity.
+      const double scale = friction.k_t * std::abs(x[iU]) + friction.c_t * std::abs(e.v_t);
+      if (std::abs(trial) > 1e-9 * scale && trial != 0) {
+        next.s = sign_of(trial);
+      } else {
+        const double rate = friction.k_t * e.v_t + friction.c_t * model.slip_accel(e, x[iW]);
+        next.s = rate != 0 ? sign_of(rate) : (e.v_t != 0 ? sign_of(e.v_t) : 1.0);
+      }
       break;
     }
-    cur_mode = mode;
-    cur_s = s;
-    const unsigned patient = immediate_run >= 2 ? 2u : 0u;  // guard 1: friction
-    const PhaseEnd<kN> end = integrate_phase<kN, 2>(rhs, guards, observer, t, x,
-                                                    options.max_duration, h, options.integrator,
-                                                    patient);
-    immediate_run = end.immediate ? immediate_run + 1 : 0;
-    r.steps += end.steps;
-    r.rhs_calls += end.rhs_calls;
-    if (r.n_phases < kMaxStoredPhases) r.phases[r.n_phases] = {kind_of(cur_mode, cur_s), t, end.t};
-    ++r.n_phases;
-    t = end.t;
-    x = end.x;
-    if (end.next_step > 0) h = end.next_step;
-    switch (end.status) {
-      case PhaseStatus::reached_end:
-        r.status = ContactStatus::max_duration;
-        r.message = "still in contact after max_duration";
-        done = true;
-        continue;
-      case PhaseStatus::max_steps:
-      case PhaseStatus::non_finite:
-      case PhaseStatus::step_underflow:
-        r.status = ContactStatus::failed;
-        r.message = end.status == PhaseStatus::max_steps ? "integrator step budget exhausted"
-                                                         : "integrator failed (non-finite state or step underflow)";
-        done = true;
-        continue;
-      case PhaseStatus::guard: break;
-    }
-    if (end.guard == 0) {
-      r.status = ContactStatus::separated;
-      r.message = "separated";
-      done = true;
-      continue;
-    }
-    // Friction phase change at the guard.
-    const Eval e = model.eval(x, cur_mode, cur_s);
-    switch (cur_mode) {
-      case Mode::coulomb_slip:
-        x[iVx] = -x[iW] * e.sp.Y;  // v_t = 0 exactly (the event is located to rounding)
-        choose_after_stop(x);
-        if (mode == Mode::coulomb_slip && s == cur_s) s = -cur_s;  // must reverse
-        break;
-      case Mode::coulomb_stick:
-        mode = Mode::coulomb_slip;
-        s = -sign_of(e.f_req);
-        if (s == 0) s = 1;
-        break;
-      case Mode::spring_elastic: {
-        const double trial = friction.k_t * x[iU] + friction.c_t * e.v_t;
-        mode = Mode::spring_slip;
-        // The slip goes the way the trial force points. When it is zero to rounding (no
-        // load: N clamped to 0, cap 0), the way it is about to point: its rate
-        // k_t v_t + c_t a_t, or failing that the slip velocity.
-        const double scale = friction.k_t * std::abs(x[iU]) + friction.c_t * std::abs(e.v_t);
-        if (std::abs(trial) > 1e-9 * scale && trial != 0) {
-          s = sign_of(trial);
-        } else {
-          const double rate = friction.k_t * e.v_t + friction.c_t * model.slip_accel(e, x[iW]);
-          s = rate != 0 ? sign_of(rate) : (e.v_t != 0 ? sign_of(e.v_t) : 1.0);
-        }
-        break;
-      }
-      case Mode::spring_slip:
-        mode = Mode::spring_elastic;
-        x[iU] = (cur_s * friction.mu * e.N - friction.c_t * e.v_t) / friction.k_t;
-        break;
-      default: break;
-    }
+    case Mode::spring_slip:
+      next.mode = Mode::spring_elastic;
+      x[iU] = (cur.s * friction.mu * e.N - friction.c_t * e.v_t) / friction.k_t;
+      break;
+    default: break;
   }
+  return next;
+}
 
+/// How a phase that ended on `end` ends the contact (docs/theory.md#bounce-contact): true (and
+/// r.status, r.message set) at separation (guard 0: d = 0), at max_duration or on an
+/// integrator failure; false at the friction guard (a stick/slip change follows).
+bool contact_ends(const PhaseEnd<kN>& end, ContactResult& r) {
+  switch (end.status) {
+    case PhaseStatus::reached_end:
+      r.status = ContactStatus::max_duration;
+      r.message = "still in contact after max_duration";
+      return true;
+    case PhaseStatus::max_steps:
+    case PhaseStatus::non_finite:
+    case PhaseStatus::step_underflow:
+      r.status = ContactStatus::failed;
+      r.message = end.status == PhaseStatus::max_steps ? "integrator step budget exhausted"
+                                                       : "integrator failed (non-finite state or step underflow)";
+      return true;
+    case PhaseStatus::guard: break;
+  }
+  if (end.guard == 0) {
+    r.status = ContactStatus::separated;
+    r.message = "separated";
+    return true;
+  }
+  return false;
+}
+
+/// The outgoing state at time t and what follows from it (docs/theory.md#bounce-contact):
+/// e, peaks, impulses from momentum, energies and the energy balance's residual.
+void finish_contact(const Ball& ball, const NormalLaw& law, const ContactOptions& options, const State& x,
+                    double t, const PhaseSystem& sys, ContactResult& r) {
   r.out = {x[iX], x[iY], x[iTh], x[iVx], x[iVy], x[iW]};
   r.contact_duration = t;
   r.restitution = r.in.vy != 0 ? -r.out.vy / r.in.vy : std::numeric_limits<double>::quiet_NaN();
-  r.peak_force = peak.peak;
-  r.t_peak = peak.t_peak;
-  r.max_penetration = peak_d.peak;
+  r.peak_force = sys.peak.peak;
+  r.t_peak = sys.peak.t_peak;
+  r.max_penetration = sys.peak_d.peak;
   r.impulse_normal = ball.mass * (r.out.vy - r.in.vy) + ball.mass * options.g * t;
   r.impulse_tangential = ball.mass * (r.out.vx - r.in.vx);
   const Support sp_out = support(ball, r.out.theta);
@@ -449,6 +444,58 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   const double d_end = std::max(0.0, sp_out.Y - r.out.y);
   r.energy_residual = r.energy_in.total() + r.work_gravity - r.energy_out.total() -
                       r.dissipated_normal - r.dissipated_friction - law.potential(d_end);
+}
+
+}  // namespace
+
+ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                               const BodyState& touch, const ContactOptions& options,
+                               std::vector<ContactSample>* history) {
+  validate_contact(ball, law, friction, touch, options);
+  const Model model{ball, law, friction, options.g, 1 / ball.mass, 1 / ball.inertia};
+  ContactResult r;
+  r.law = law;
+  State x = state_at_touch(ball, touch, r);
+  FrictionPhase phase = initial_friction_phase(model, law, friction, r.v_t_in, x);
+  double t = 0;
+  double h = first_step(ball, law, r.v_in_normal, options.integrator);
+  PhaseSystem sys{model, friction, history, phase, {}, {}, {}};
+  auto rhs = [&sys](const State& st, State& dx, double) { sys.rhs(st, dx); };
+  auto guards = [&sys](double, const State& st, std::array<double, 2>& gv, std::array<double, 2>& rate) {
+    sys.guards(st, gv, rate);
+  };
+  auto observer = [&sys](double tt, const State& st) { sys.observe(tt, st); };
+  if (history) history->clear();
+
+  // Phases that ended at once at the same time, in a row: two such (stick ends at once,
+  // then slip ends at once) mean a point where neither friction phase can go on (e.g. the
+  // spring model as the load vanishes, both guards negative to rounding). The next phase
+  // then keeps its friction guard waiting until it becomes positive instead of ending at
+  // once again, so that time moves on (docs/theory.md#bounce-integrator, "Zero-progress chatter").
+  int immediate_run = 0;
+  while (true) {
+    if (r.n_phases >= options.max_phases) {
+      r.status = ContactStatus::failed;
+      r.message = "too many stick/slip phase changes";
+      break;
+    }
+    sys.cur = phase;
+    const unsigned patient = immediate_run >= 2 ? 2u : 0u;  // guard 1: friction
+    const PhaseEnd<kN> end = integrate_phase<kN, 2>(rhs, guards, observer, t, x,
+                                                    options.max_duration, h, options.integrator,
+                                                    patient);
+    immediate_run = end.immediate ? immediate_run + 1 : 0;
+    r.steps += end.steps;
+    r.rhs_calls += end.rhs_calls;
+    if (r.n_phases < kMaxStoredPhases) r.phases[r.n_phases] = {kind_of(sys.cur.mode, sys.cur.s), t, end.t};
+    ++r.n_phases;
+    t = end.t;
+    x = end.x;
+    if (end.next_step > 0) h = end.next_step;
+    if (contact_ends(end, r)) break;
+    phase = next_friction_phase(model, friction, sys.cur, x);
+  }
+  finish_contact(ball, law, options, x, t, sys, r);
   return r;
 }
 

@@ -14,6 +14,7 @@
 #include "bounce/geometry.hpp"
 #include "bounce/normal_law.hpp"
 #include "bounce/phase_integrator.hpp"
+#include "numerics/units.hpp"
 
 #include <array>
 #include <cstddef>
@@ -24,7 +25,7 @@
 namespace tribolab::bounce {
 
 struct ContactOptions {
-  double g = 9.8;  ///< gravitational acceleration during the contact, m/s^2 (0 allowed)
+  double g = kDefaultG;  ///< gravitational acceleration during the contact, m/s^2 (0 allowed)
   /// Integrator tolerances. The defaults (1e-10 abs and rel) give outgoing velocities to
   /// ~1e-9 m/s; the `accuracy` helper below scales them.
   PhaseOptions integrator{};

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "bounce/geometry.hpp"
+#include "numerics/units.hpp"
 
 #include <cstddef>
 #include <limits>
@@ -26,9 +27,9 @@ struct BodyState {
 BodyState free_flight(const BodyState& s0, double g, double t);
 
 struct FlightOptions {
-  /// Gravitational acceleration, m/s^2 (9.8). 0 is allowed: the centre then moves uniformly
+  /// Gravitational acceleration, m/s^2 (kDefaultG). 0 is allowed: the centre then moves uniformly
   /// and a ball moving up (or not at all, without spin) may never touch (status no_contact).
-  double g = 9.8;
+  double g = kDefaultG;
   /// A gap below this counts as touching, m: ends the search at a grazing touch, where the
   /// gap has a double root. Default 1e-13 m (far below any measurable gap).
   double gap_tol = 1e-13;

@@ -4,6 +4,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
+#include "numerics/units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -65,7 +66,7 @@ double collision_angle_deg(const Ball& ball, double theta, int direction) {
   const double tx = sign * c, ty = sign * s;
   const double rx = sp.X, ry = -sp.Y;
   const double cross = rx * ty - ry * tx, dot = rx * tx + ry * ty;
-  return std::atan2(std::abs(cross), dot) * 180.0 / std::numbers::pi;
+  return to_deg(std::atan2(std::abs(cross), dot));
 }
 
 double theta_for_collision_angle(const Ball& ball, double angle_deg, int direction) {
@@ -79,7 +80,7 @@ double theta_for_collision_angle(const Ball& ball, double angle_deg, int directi
   auto f = [&](double th) { return collision_angle_deg(ball, th, +1) - angle_deg; };
   const double lo = std::nextafter(-half, 0.0), hi = std::nextafter(half, 0.0);
   const numerics::RootResult r = numerics::find_root(f, lo, hi);
-  if (!r.converged) throw InputError("collision angle", "no orientation found");
+  if (!r.converged) throw SolverError("collision angle", "no orientation found");
   return direction * r.x;
 }
 

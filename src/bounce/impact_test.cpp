@@ -4,6 +4,7 @@
 
 #include "bounce/drop.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,7 @@
 namespace tribolab::bounce {
 namespace {
 
-constexpr double kG = 9.8;
+constexpr double kG = kDefaultG;
 
 /// The seed's map of `bounce sweep --theta-deg 100:170:71 --omega 30:50:21 --D 6000`: the
 /// collision angle chi (direction +1, vx = 0), spin omega (CCW), vy = -4 m/s.

@@ -298,6 +298,147 @@ double polish_event(Rhs& rhs, GuardValue& guard_value, std::size_t i, double t, 
 
 }  // namespace detail
 
+namespace detail {
+
+/// The error of a trial step in the max norm of the step control (Hairer, Nørsett & Wanner
+/// §II.4): max_i |err_i| / (abs_tol + rel_tol max(|x_i|, |x_new_i|)); `finite` is false when
+/// a component of x_new is not finite (docs/theory.md#bounce-integrator).
+template <std::size_t N>
+double step_error_norm(const Vec<N>& x, const Vec<N>& x_new, const Vec<N>& err, const PhaseOptions& opt,
+                       bool& finite) {
+  double err_norm = 0;
+  finite = true;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (!std::isfinite(x_new[i])) finite = false;
+    const double sc = opt.abs_tol + opt.rel_tol * std::max(std::abs(x[i]), std::abs(x_new[i]));
+    err_norm = std::max(err_norm, std::abs(err[i]) / sc);
+  }
+  return err_norm;
+}
+
+/// The retry after a rejected step of length h whose controller proposes h_new
+/// (docs/theory.md#bounce-integrator, "Brief lift-offs"). When an armed guard with a known
+/// rate is <= 0 at the trial end (g_b), the step may have failed because the right-hand side
+/// is not smooth beyond that event (the normal force's kink at d = 0, seen by the later
+/// stages): the retry is aimed just past the guard's zero, estimated by the quadratic through
+/// g and g' at the start (g_a, r_a) and g at the trial end, so that little of the step lies
+/// beyond it.
+template <std::size_t E>
+double retry_step_past_guard_zero(double h, double h_new, const std::array<bool, E>& armed,
+                                  const std::array<double, E>& g_a, const std::array<double, E>& r_a,
+                                  const std::array<double, E>& g_b) {
+  for (std::size_t i = 0; i < E; ++i) {
+    if (!armed[i] || g_b[i] > 0 || !(r_a[i] < 0)) continue;
+    const double c = (g_b[i] - g_a[i] - r_a[i] * h) / (h * h);
+    // Root of g_a + r_a tau + c tau^2 in (0, h]: the smaller positive one.
+    const double disc = r_a[i] * r_a[i] - 4 * c * g_a[i];
+    double tau = -g_a[i] / r_a[i];
+    if (c != 0 && disc >= 0) tau = 2 * g_a[i] / (-r_a[i] + std::sqrt(disc));
+    if (tau > 0 && tau < h) h_new = std::min(h_new, std::max(1.05 * tau, 0.1 * h));
+  }
+  return h_new;
+}
+
+/// For an armed guard over the accepted step [0, h] (values g_a, g_b and rates r_a, r_b at
+/// its ends; guard_at(tau) on the dense output): h if it is <= 0 at the step end; else, if it
+/// dips to <= 0 inside the step, a time where it does so; else -1
+/// (docs/theory.md#bounce-integrator, "Brief lift-offs").
+template <class GuardAt>
+double guard_zero_bound(double h, double g_a, double g_b, double r_a, double r_b, GuardAt&& guard_at) {
+  if (!(g_b > 0)) return h;
+  // Positive at both ends: a dip below zero inside? Only where the guard falls at the
+  // start and rises at the end (rates known), and its cubic Hermite has an interior
+  // minimum; that minimum is then searched on the dense output.
+  if (!(r_a < 0 && r_b > 0)) return -1;
+  const double s_min = hermite_interior_minimum(g_a, g_b, h * r_a, h * r_b);
+  if (s_min < 0) return -1;
+  double lo_m = 0, hi_m = h, tau_m = s_min * h;
+  double g_m = guard_at(tau_m);
+  // Golden-section search for the minimum on [0, h], started at the Hermite minimum;
+  // it stops at a non-positive value or when the minimum is known to 1e-3 h (then g
+  // there is within ~1e-6 g'' h^2 / 2 of the minimum, far below the tolerance).
+  constexpr double kGold = 0.3819660112501051;
+  for (int it = 0; it < 40 && g_m > 0 && hi_m - lo_m > 1e-3 * h; ++it) {
+    const bool right = tau_m - lo_m < hi_m - tau_m;
+    const double probe = right ? tau_m + kGold * (hi_m - tau_m) : tau_m - kGold * (tau_m - lo_m);
+    const double g_p = guard_at(probe);
+    if (g_p < g_m) {
+      (right ? lo_m : hi_m) = tau_m;
+      tau_m = probe;
+      g_m = g_p;
+    } else {
+      (right ? hi_m : lo_m) = probe;
+    }
+  }
+  return g_m > 0 ? -1 : tau_m;
+}
+
+/// Guards not yet armed after an accepted step (values g_b at its end): one that became
+/// positive is armed (newly_armed); one still negative at the end of the phase's first
+/// step (steps == 1) ends the phase at once, unless its bit is set in patient_guards
+/// (docs/theory.md#bounce-integrator, "Zero-progress chatter"). Returns that guard, or -1.
+template <std::size_t E>
+int guard_ending_phase_at_once(const std::array<bool, E>& armed, const std::array<double, E>& g_b,
+                               std::size_t steps, unsigned patient_guards, std::array<bool, E>& newly_armed) {
+  for (std::size_t i = 0; i < E; ++i) {
+    if (armed[i]) continue;
+    if (g_b[i] > 0) {
+      newly_armed[i] = true;
+    } else if (g_b[i] < 0 && steps == 1 && !((patient_guards >> i) & 1u)) {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+/// The first event of the accepted step [t, t + h] (docs/theory.md#bounce-integrator,
+/// "Events"): the earliest zero on the dense output among the armed guards (zero_bound(i):
+/// guard_zero_bound of guard i; guard_at(i, tau): guard i on the dense output), located by
+/// TOMS 748 and refined by polish_event (state in x_ev); a dip the exact step does not
+/// confirm is dropped and the search repeated without that guard. Returns the guard, or -1,
+/// with its time in tau_hit (h: at the step end, whose state is x_new).
+template <std::size_t N, std::size_t E, class Rhs, class GuardValue, class ZeroBound, class GuardAt>
+int first_event_in_step(Rhs& rhs, GuardValue& guard_value, ZeroBound& zero_bound, GuardAt& guard_at,
+                        const std::array<bool, E>& armed, double t, const Vec<N>& x, const Vec<N>& k1,
+                        const std::array<double, E>& g_a, const std::array<double, E>& g_b, double h,
+                        const PhaseOptions& opt, Vec<N>& x_ev, std::size_t& rhs_calls, double& tau_hit) {
+  numerics::RootOptions root_options;
+  root_options.x_tol = opt.event_tol();
+  std::array<bool, E> excluded{};
+  int hit = -1;
+  tau_hit = h;
+  for (std::size_t attempt = 0; attempt < E; ++attempt) {
+    hit = -1;
+    tau_hit = h;
+    for (std::size_t i = 0; i < E; ++i) {
+      if (!armed[i] || excluded[i]) continue;
+      const double hi = zero_bound(i);  // the guard is <= 0 at tau = hi; -1: none
+      if (hi < 0) continue;
+      auto phi = [&](double tau) { return guard_at(i, tau); };
+      const numerics::RootResult root = numerics::find_root(phi, 0.0, hi, root_options);
+      const double tau = root.converged ? root.hi : hi;  // root.hi: the guard is <= 0 there
+      if (tau <= tau_hit) {
+        tau_hit = tau;
+        hit = static_cast<int>(i);
+      }
+    }
+    if (hit < 0 || tau_hit == h) break;
+    const std::size_t ih = static_cast<std::size_t>(hit);
+    const double tau = polish_event(rhs, guard_value, ih, t, x, k1, g_a[ih], g_b[ih], h, tau_hit, opt, x_ev,
+                                    rhs_calls);
+    if (tau >= 0) {
+      tau_hit = tau;
+      break;
+    }
+    excluded[ih] = true;  // the dip was not confirmed: look again without this guard
+    hit = -1;
+    tau_hit = h;
+  }
+  return hit;
+}
+
+}  // namespace detail
+
 /// Integrates x' = rhs(x, dxdt, t) from (t0, x0) until t_end or until one of the E guards
 /// falls to <= 0. guards(t, x, g) fills g[0..E); a guard functor that also takes a second
 /// array, guards(t, x, g, rate), fills rate[i] = dg_i/dt too (NaN when unknown), which
@@ -308,6 +449,7 @@ double polish_event(Rhs& rhs, GuardValue& guard_value, std::size_t i, double t, 
 /// guard then just waits to become positive (used to leave a point where two phases both
 /// end at once, see contact.cpp).
 /// observer(t, x) is called at t0 and after every accepted step and at the end.
+/// docs/theory.md#bounce-integrator.
 template <std::size_t N, std::size_t E, class Rhs, class Guards, class Observer>
 PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, double t0,
                             const Vec<N>& x0, double t_end, double h0,
@@ -365,13 +507,8 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     }
     dopri_step<N>(rhs, t, x, k1, h, x_new, k7, &err, true, &stages);
     out.rhs_calls += 6;
-    double err_norm = 0;
     bool finite = true;
-    for (std::size_t i = 0; i < N; ++i) {
-      if (!std::isfinite(x_new[i])) finite = false;
-      const double sc = opt.abs_tol + opt.rel_tol * std::max(std::abs(x[i]), std::abs(x_new[i]));
-      err_norm = std::max(err_norm, std::abs(err[i]) / sc);
-    }
+    const double err_norm = detail::step_error_norm<N>(x, x_new, err, opt, finite);
     if (!finite || !std::isfinite(err_norm)) {
       // Shrink hard; a genuinely non-finite state shows up as underflow of h.
       h *= 0.1;
@@ -384,23 +521,10 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     const double factor =
         err_norm == 0 ? 5.0 : std::clamp(0.9 * std::pow(err_norm, -0.2), 0.2, 5.0);
     if (err_norm > 1) {
-      // Rejected. When an armed guard with a known rate is <= 0 at the trial end, the step
-      // may have failed because the right-hand side is not smooth beyond that event (the
-      // normal force's kink at d = 0, seen by the later stages): the retry is aimed just
-      // past the guard's zero, estimated by the quadratic through g and g' at the start
-      // and g at the trial end, so that little of the step lies beyond it.
       double h_new = h * std::max(factor, 0.1);
       if constexpr (has_rates) {
         eval_guards(t + h, x_new, g_b, r_b);  // k7 was evaluated there: no new model call
-        for (std::size_t i = 0; i < E; ++i) {
-          if (!armed[i] || g_b[i] > 0 || !(r_a[i] < 0)) continue;
-          const double c = (g_b[i] - g_a[i] - r_a[i] * h) / (h * h);
-          // Root of g_a + r_a tau + c tau^2 in (0, h]: the smaller positive one.
-          const double disc = r_a[i] * r_a[i] - 4 * c * g_a[i];
-          double tau = -g_a[i] / r_a[i];
-          if (c != 0 && disc >= 0) tau = 2 * g_a[i] / (-r_a[i] + std::sqrt(disc));
-          if (tau > 0 && tau < h) h_new = std::min(h_new, std::max(1.05 * tau, 0.1 * h));
-        }
+        h_new = detail::retry_step_past_guard_zero<E>(h, h_new, armed, g_a, r_a, g_b);
       }
       h = h_new;
       continue;
@@ -422,81 +546,17 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
       return gs[i];
     };
     eval_guards(t + h, x_new, g_b, r_b);
-    numerics::RootOptions root_options;
-    root_options.x_tol = opt.event_tol();
-    // For an armed guard i: h if it is <= 0 at the step end; else, if it dips to <= 0
-    // inside the step, a time where it does so; else -1.
-    auto first_zero_bound = [&](std::size_t i) -> double {
-      if (!(g_b[i] > 0)) return h;
-      // Positive at both ends: a dip below zero inside? Only where the guard falls at the
-      // start and rises at the end (rates known), and its cubic Hermite has an interior
-      // minimum; that minimum is then searched on the dense output.
-      if (!(r_a[i] < 0 && r_b[i] > 0)) return -1;
-      const double s_min = detail::hermite_interior_minimum(g_a[i], g_b[i], h * r_a[i], h * r_b[i]);
-      if (s_min < 0) return -1;
-      double lo_m = 0, hi_m = h, tau_m = s_min * h;
-      double g_m = guard_at(i, tau_m);
-      // Golden-section search for the minimum on [0, h], started at the Hermite minimum;
-      // it stops at a non-positive value or when the minimum is known to 1e-3 h (then g
-      // there is within ~1e-6 g'' h^2 / 2 of the minimum, far below the tolerance).
-      constexpr double kGold = 0.3819660112501051;
-      for (int it = 0; it < 40 && g_m > 0 && hi_m - lo_m > 1e-3 * h; ++it) {
-        const bool right = tau_m - lo_m < hi_m - tau_m;
-        const double probe = right ? tau_m + kGold * (hi_m - tau_m) : tau_m - kGold * (tau_m - lo_m);
-        const double g_p = guard_at(i, probe);
-        if (g_p < g_m) {
-          (right ? lo_m : hi_m) = tau_m;
-          tau_m = probe;
-          g_m = g_p;
-        } else {
-          (right ? hi_m : lo_m) = probe;
-        }
-      }
-      return g_m > 0 ? -1 : tau_m;
-    };
-    int hit = -1;
-    double tau_hit = h;
-    bool immediate = false;
     std::array<bool, E> newly_armed{};
-    for (std::size_t i = 0; i < E && !immediate; ++i) {
-      if (armed[i]) continue;
-      if (g_b[i] > 0) {
-        newly_armed[i] = true;
-      } else if (g_b[i] < 0 && out.steps == 1 && !((patient_guards >> i) & 1u)) {
-        hit = static_cast<int>(i);
-        tau_hit = 0;
-        immediate = true;
-      }
-    }
-    // The earliest zero of an armed guard on the dense output, among those not excluded
-    // (a dip the exact step did not confirm), then refined by polish_event.
-    std::array<bool, E> excluded{};
-    for (std::size_t attempt = 0; attempt < E && !immediate; ++attempt) {
-      hit = -1;
-      tau_hit = h;
-      for (std::size_t i = 0; i < E; ++i) {
-        if (!armed[i] || excluded[i]) continue;
-        const double hi = first_zero_bound(i);  // the guard is <= 0 at tau = hi; -1: none
-        if (hi < 0) continue;
-        auto phi = [&](double tau) { return guard_at(i, tau); };
-        const numerics::RootResult root = numerics::find_root(phi, 0.0, hi, root_options);
-        const double tau = root.converged ? root.hi : hi;  // root.hi: the guard is <= 0 there
-        if (tau <= tau_hit) {
-          tau_hit = tau;
-          hit = static_cast<int>(i);
-        }
-      }
-      if (hit < 0 || tau_hit == h) break;
-      const std::size_t ih = static_cast<std::size_t>(hit);
-      const double tau = detail::polish_event(rhs, guard_value, ih, t, x, k1, g_a[ih], g_b[ih], h,
-                                              tau_hit, opt, x_ev, out.rhs_calls);
-      if (tau >= 0) {
-        tau_hit = tau;
-        break;
-      }
-      excluded[ih] = true;  // the dip was not confirmed: look again without this guard
-      hit = -1;
-      tau_hit = h;
+    int hit = detail::guard_ending_phase_at_once<E>(armed, g_b, out.steps, patient_guards, newly_armed);
+    const bool immediate = hit >= 0;
+    double tau_hit = immediate ? 0 : h;
+    if (!immediate) {
+      auto zero_bound = [&](std::size_t i) {
+        return detail::guard_zero_bound(h, g_a[i], g_b[i], r_a[i], r_b[i],
+                                        [&](double tau) { return guard_at(i, tau); });
+      };
+      hit = detail::first_event_in_step<N, E>(rhs, guard_value, zero_bound, guard_at, armed, t, x, k1, g_a, g_b, h,
+                                              opt, x_ev, out.rhs_calls, tau_hit);
     }
     for (std::size_t i = 0; i < E; ++i) armed[i] = armed[i] || newly_armed[i];
     if (hit >= 0) {

@@ -7,6 +7,8 @@
 // with -O3 -march=native (bench/seed/seed_native.cpp).
 #pragma once
 
+#include "numerics/units.hpp"
+
 namespace tribolab::bounce::seed {
 
 /// Everything one contact needs, SI units (the ball, the Hunt–Crossley law
@@ -20,7 +22,7 @@ struct SeedParams {
   double mu = 0.5;               ///< Coulomb coefficient
   bool regularized = false;      ///< f = -mu N tanh(v_t / v_s) instead of exact Coulomb sign
   double slip_scale = 0.05;      ///< v_s, m/s
-  double g = 9.8;                ///< m/s^2
+  double g = kDefaultG;          ///< m/s^2
 };
 
 struct SeedOut {

@@ -1,6 +1,7 @@
 #include "incline/case_study.hpp"
 
 #include "incline/inverse.hpp"
+#include "numerics/units.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,12 +10,12 @@
 namespace tribolab::incline {
 namespace {
 
-constexpr double kG = 9.8;
+constexpr double kG = kDefaultG;  // the seed's g, m/s^2
 
 Parameters setup(double mu, double phi_deg, double v0) {
   Parameters p;
   p.mu = mu;
-  p.phi = deg_to_rad(phi_deg);
+  p.phi = to_rad(phi_deg);
   p.v0 = v0;
   p.g = kG;
   return p;
@@ -40,7 +41,7 @@ double mu_from_slide_acceleration(double phi, double a, double g) {
 
 CaseStudy seed000_case_study() {
   CaseStudy cs;
-  cs.mu_o_from_eq_a = mu_from_slide_acceleration(deg_to_rad(41.09), 1.758, kG);
+  cs.mu_o_from_eq_a = mu_from_slide_acceleration(to_rad(41.09), 1.758, kG);
 
   // Table 1 (表一), seed 000 陸-四-5.
   struct Col { double phi, x, y, mu_a, diff; };
@@ -49,7 +50,7 @@ CaseStudy seed000_case_study() {
                       {23.20, 0.506, 0.277, 0.636, 0.32}};
   for (const Col& c : cols) {
     StopMeasurement m;
-    m.phi = deg_to_rad(c.phi);
+    m.phi = to_rad(c.phi);
     m.x_stop = c.x;
     m.y_stop = -c.y;
     Table1Row row;
@@ -92,11 +93,11 @@ CaseStudy seed000_case_study() {
   cs.checks.push_back(check("圖五-4Y a_y0 = -g sin phi, m/s^2", -3.50, p5.a_y0, 0.005, "eq 1.2a at theta = 90 deg"));
   cs.checks.push_back(check("圖五-4Y a_yf = g mu cos phi - g sin phi, m/s^2", 2.30, p5.a_y_final, 0.005,
                             "limit of eq 四"));
-  cs.checks.push_back(check("伍-一-(三)-1 g sin(23.20 deg), m/s^2", 3.856, kG * std::sin(deg_to_rad(23.20)),
+  cs.checks.push_back(check("伍-一-(三)-1 g sin(23.20 deg), m/s^2", 3.856, kG * std::sin(to_rad(23.20)),
                             0.0005, "direct"));
-  cs.checks.push_back(check("圖六 boundary atan(0.634), deg", 32.39, rad_to_deg(std::atan(0.634)), 0.005,
+  cs.checks.push_back(check("圖六 boundary atan(0.634), deg", 32.39, to_deg(std::atan(0.634)), 0.005,
                             "k = 1"));
-  cs.checks.push_back(check("圖七 boundary tan(20.96 deg)", 0.383, std::tan(deg_to_rad(20.96)), 0.0005,
+  cs.checks.push_back(check("圖七 boundary tan(20.96 deg)", 0.383, std::tan(to_rad(20.96)), 0.0005,
                             "k = 1"));
   cs.checks.push_back(check("圖三-2 1/slope = 1/1.5746", 0.635, 1 / 1.5746, 0.0005, "direct"));
 

@@ -5,6 +5,7 @@
 
 #include "incline/closed_form.hpp"
 #include "incline/params.hpp"
+#include "numerics/units.hpp"
 
 #include <string>
 #include <vector>
@@ -49,7 +50,7 @@ struct CaseStudy {
 };
 
 /// mu from a straight slide down the incline (seed eq a): (g sin phi - a) / (g cos phi).
-double mu_from_slide_acceleration(double phi, double a, double g = 9.8);
+double mu_from_slide_acceleration(double phi, double a, double g = kDefaultG);
 
 /// Computes the whole case study (a few milliseconds).
 CaseStudy seed000_case_study();

@@ -86,7 +86,7 @@ double ClosedForm::log_speed_ratio_at(double t) const {
       // The bound is attained at k = 0; widen it so that the bracket is strict.
       const double s_hi = -1.01 * std::log1p(-t / T) / (1 - k) + 1e-300;
       const auto r = numerics::find_root([&](double s) { return time_at(s) - t; }, 0.0, s_hi);
-      if (!r.converged) throw InputError("the closed form cannot be evaluated at t = " + std::to_string(t) + " s for these parameters");
+      if (!r.converged) throw SolverError("the closed form cannot be evaluated at t = " + std::to_string(t) + " s for these parameters");
       return r.x;
     }
     // Near the stop: match the remaining time R = T - t in logarithms, where
@@ -102,7 +102,7 @@ double ClosedForm::log_speed_ratio_at(double t) const {
     const double s_lo = std::max(0.0, 0.99 * std::log(v0 / (2 * a * (1 - k) * R)) / (1 - k));
     const double s_hi = 1.01 * std::log(T / R) / (1 - k) + 1e-300;
     const auto r = numerics::find_root(log_rem, s_lo, std::max(s_lo, s_hi));
-    if (!r.converged) throw InputError("the closed form cannot be evaluated at t = " + std::to_string(t) + " s for these parameters");
+    if (!r.converged) throw SolverError("the closed form cannot be evaluated at t = " + std::to_string(t) + " s for these parameters");
     return r.x;
   }
   // k >= 1: E(1+k, s) <= s <= E(1-k, s), so (v0/(2a)) E(1-k, s) <= t(s) <= (v0/a) E(1-k, s),
@@ -116,8 +116,8 @@ double ClosedForm::log_speed_ratio_at(double t) const {
   };
   const auto r = numerics::find_root(f, lo, hi);
   if (!r.converged) {
-    throw InputError("the closed form cannot be evaluated at t = " + std::to_string(t) +
-                     " s for these parameters (k = " + std::to_string(k) + ")");
+    throw SolverError("the closed form cannot be evaluated at t = " + std::to_string(t) +
+                      " s for these parameters (k = " + std::to_string(k) + ")");
   }
   return r.x;
 }

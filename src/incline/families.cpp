@@ -1,6 +1,7 @@
 #include "incline/families.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -68,7 +69,7 @@ Family make_family(const FamilyOptions& o) {
       std::snprintf(buf, sizeof buf,
                     "%s = %.6g gives k = tan(phi)/mu = %.4f, near 1: the disc %s (k < 1 stops, k >= 1 never does); "
                     "its curve spans %.4g s",
-                    to_string(o.vary), o.vary == FamilyParameter::phi ? m.value * 180 / M_PI : m.value, k,
+                    to_string(o.vary), o.vary == FamilyParameter::phi ? to_deg(m.value) : m.value, k,
                     m.prediction.t_stop ? "takes very long to stop" : "never stops", m.t_end);
       f.warnings.push_back(buf);
     }

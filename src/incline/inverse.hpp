@@ -14,6 +14,8 @@
 #include <optional>
 #include <string>
 
+#include "numerics/units.hpp"
+
 namespace tribolab::incline {
 
 struct StopMeasurement {
@@ -22,7 +24,7 @@ struct StopMeasurement {
   double y_stop = 0;     ///< stopping point up the slope, m, < 0 (seed: -0.03 to -0.28 m)
   double sigma_phi = 0;  ///< standard uncertainty of phi, rad (0 = exact)
   double sigma_pos = 0;  ///< standard uncertainty of x_stop and of y_stop, m (0 = exact)
-  double g = 9.8;        ///< m/s^2; only used for the implied launch speed
+  double g = kDefaultG;  ///< m/s^2; only used for the implied launch speed
 
   std::string validate() const;
 };
@@ -53,7 +55,7 @@ MuFromStopResult mu_from_stop(const StopMeasurement& m);
 /// sigma_mu of the stop method for a disc launched at v0 on an incline of friction mu and
 /// angle phi (its predicted stop point), with the given measurement uncertainties.
 double stop_method_sigma_mu(double mu, double phi, double v0, double sigma_phi,
-                            double sigma_pos, double g = 9.8);
+                            double sigma_pos, double g = kDefaultG);
 
 /// What is held fixed while the incline angle is varied.
 enum class SetupConstraint {
@@ -77,6 +79,6 @@ struct AngleAdvice {
 /// For mu <= 1, sigma_mu falls monotonically toward atan(mu) (docs/theory.md), so the
 /// answer is usually the largest admissible angle (at_boundary). Throws InputError.
 AngleAdvice best_angle(double mu, double scale, SetupConstraint constraint, double sigma_phi,
-                       double sigma_pos, double max_stop_distance, double g = 9.8);
+                       double sigma_pos, double max_stop_distance, double g = kDefaultG);
 
 }  // namespace tribolab::incline

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "numerics/units.hpp"
+
 namespace tribolab::incline {
 
 /// Motion regimes of model B for a disc launched with v0 > 0 (seed 000, 陸-一 and 圖六).
@@ -22,7 +24,7 @@ struct Parameters {
   double mu = 0.634;        ///< kinetic friction coefficient, >= 0 (seed 000: 0.583-0.634)
   double phi = 0.3658;      ///< incline angle, rad, in [0, pi/2) (seed 000: 4.8-23.2 deg)
   double v0 = 2.62;         ///< launch speed along +x, m/s, >= 0 (seed 000: 1-3 m/s)
-  double g = 9.8;           ///< gravitational acceleration, m/s^2 (the seed's value)
+  double g = kDefaultG;     ///< gravitational acceleration, m/s^2 (the seed's value)
   /// Static friction coefficient deciding whether a disc at rest stays; default = mu.
   std::optional<double> mu_static;
   /// Model A only: friction component normal to the path divided by the mass, m/s^2,
@@ -48,8 +50,9 @@ struct Parameters {
   bool stays_at_rest() const;
 };
 
-/// Degrees to radians and back.
-inline double deg_to_rad(double deg) { return deg * (M_PI / 180.0); }
-inline double rad_to_deg(double rad) { return rad * (180.0 / M_PI); }
+/// Degrees to radians and back: the same as tribolab::to_rad / to_deg (numerics/units.hpp),
+/// kept for the callers outside the core; new code calls those.
+inline double deg_to_rad(double deg) { return to_rad(deg); }
+inline double rad_to_deg(double rad) { return to_deg(rad); }
 
 }  // namespace tribolab::incline

@@ -1,8 +1,18 @@
-// Error conventions shared by every layer of tribolab (STYLE.md, habit 6).
+// Error conventions shared by every layer of tribolab (STYLE.md, habit 6; docs/design.md,
+// "Errors: input, solver, bug").
 //
 // * Invalid user input (a parameter out of range, a malformed file, data that cannot
-//   support a fit) is reported by throwing InputError. The command-line layer catches it
-//   and prints one line; library users catch it like any std::exception.
+//   support a fit: too few points, parameters the data cannot determine) is reported by
+//   throwing InputError: the user changes the input.
+// * A solver that fails on input that passed validation (an ODE integration that gives up,
+//   a root or a least-squares fit that does not converge, a contact whose integration
+//   fails) throws SolverError: not the user's fault, but the message names what failed so
+//   the user can try another tolerance, start or method. A solver's own result struct
+//   reports such failures as a status (Ceres' Summary, odeint); the code that needs the
+//   answer to go on throws.
+// * Both derive from Error (where() + message): the command-line layer catches them and
+//   prints one line, "tribolab: error: <where>: <message>", exit status 1; library users
+//   catch Error, or std::exception.
 // * Internal invariants are checked with TRIBOLAB_ASSERT, which prints both the
 //   condition and the values involved and aborts: such a failure is a bug in tribolab.
 // * Non-finite numbers are never passed on silently: require_finite() turns them into
@@ -18,17 +28,30 @@
 
 namespace tribolab {
 
-/// Invalid input from the user: a parameter, an option or a file. `where()` names the
-/// source ("file.csv:12", "--mu") when one is known; what() is the whole message.
-class InputError : public std::runtime_error {
+/// An error tribolab reports to its user: what() is the whole message, `where()` names the
+/// source ("file.csv:12", "--mu", "model A") when one is known.
+class Error : public std::runtime_error {
  public:
-  explicit InputError(const std::string& message) : std::runtime_error(message) {}
-  InputError(const std::string& where, const std::string& message)
+  explicit Error(const std::string& message) : std::runtime_error(message) {}
+  Error(const std::string& where, const std::string& message)
       : std::runtime_error(where.empty() ? message : where + ": " + message), where_(where) {}
   const std::string& where() const noexcept { return where_; }
 
  private:
   std::string where_;
+};
+
+/// Invalid input from the user: a parameter, an option or a file, or data that cannot
+/// support the computation asked for.
+class InputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A solver failed on valid input: an integration gave up, a root or fit did not converge.
+class SolverError : public Error {
+ public:
+  using Error::Error;
 };
 
 /// Throws InputError("<name> must be finite, got <value>") when value is NaN or infinite.

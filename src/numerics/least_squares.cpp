@@ -36,6 +36,19 @@ std::size_t FitResult::index(const std::string& name) const {
   throw InputError("fit has no parameter named '" + name + "'");
 }
 
+void throw_fit_failure(const FitResult& fit, const std::string& where, const std::string& message) {
+  switch (fit.status) {
+    case FitStatus::too_few_points:
+    case FitStatus::not_identifiable:
+      throw InputError(where, message);
+    case FitStatus::converged:
+    case FitStatus::no_convergence:
+    case FitStatus::failed:
+      break;
+  }
+  throw SolverError(where, message);
+}
+
 FitResult fit_least_squares(const ResidualFunction& residuals, int num_residuals,
                             const std::vector<FitParameter>& parameters,
                             const FitOptions& options) {

@@ -98,6 +98,11 @@ struct FitResult {
   double sigma_of(const std::string& name) const { return sigma[index(name)]; }
 };
 
+/// Throws for a fit that is not ok() (the convention of numerics/error.hpp): InputError when
+/// the data cannot support the fit (too_few_points, not_identifiable), SolverError when the
+/// solver failed on it (no_convergence, failed). what() is "<where>: <message>".
+[[noreturn]] void throw_fit_failure(const FitResult& fit, const std::string& where, const std::string& message);
+
 /// Residual function for numeric differentiation: fills r[0..N) from p[0..P); returns false
 /// when the model cannot be evaluated at p (the solver then backs off).
 using ResidualFunction = std::function<bool(const double* p, double* r)>;

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "sweep/runner.hpp"
+#include "numerics/units.hpp"
 
 namespace tribolab::sweep::synthetic {
 
@@ -22,7 +23,7 @@ inline CellModel wave_model() {
   m.output_names = {"vx", "vy", "omega_out", "e"};
   m.evaluate = [](const CellInput& in) {
     const double e = std::exp((in.omega - wave_threshold(in.theta_deg, in.speed, in.mu)) / 5);
-    return CellOutputs{0.1 * std::cos(in.theta_deg * std::numbers::pi / 180), e * in.speed,
+    return CellOutputs{0.1 * std::cos(to_rad(in.theta_deg)), e * in.speed,
                        in.omega * (1.2 - 0.2 * e), e};
   };
   m.description = "synthetic wave: e = exp((omega - 40.3 - 5 sin(2 theta) - 2 (speed - 4) - 3 (mu - 0.5)) / 5)";

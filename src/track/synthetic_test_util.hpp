@@ -2,6 +2,7 @@
 // (point mass, restitution e), sampled at a frame rate with Gaussian position noise.
 #pragma once
 
+#include "numerics/units.hpp"
 #include "track/track.hpp"
 
 #include <cmath>
@@ -19,7 +20,7 @@ struct Bouncing {
 /// with restitution e; sampled at `fps` from t = 0 for `duration` s, noise sd `noise` (m).
 inline Bouncing bouncing_ball(double fps, double duration, double h0, double vx, double e,
                               double noise, unsigned seed, double t_release = 0.0123,
-                              double g = 9.8) {
+                              double g = kDefaultG) {
   Bouncing b;
   // flights: start time, start height, start vertical speed
   struct Flight {
