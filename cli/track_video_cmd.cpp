@@ -143,6 +143,7 @@ nlohmann::json summary(const video::TrackVideoResult& r, const Args& a) {
                         {"tracked", s.tracked},
                         {"lost", lost_rows},
                         {"lost_ranges", lost},
+                        {"refound_frames", s.refound_frames},
                         {"median_score", s.median_score}};
     if (s.vs_human) {
       t["vs_human"] = {{"frames", s.vs_human->frames},
@@ -247,7 +248,7 @@ void register_track_video(CLI::App& track_area) {
   cmd->add_option("--ellipse-min-score", a->options.ellipse.min_score,
                   "Ellipses: below this edge-fit quality (0..1) the object is lost (default 0.6)");
   cmd->add_option("--max-gap", a->options.point.max_gap_frames,
-                  "Frames the motion model may bridge before a target is given up (default 8)");
+                  "Frames the motion model may bridge; beyond, an ellipse is given up and a point is searched for afresh");
   cmd->add_option("--write-trk", a->write_trk,
                   "Also write the tracks as a Tracker project (opens in Tracker with its video)");
   add_json_flag(*cmd, a->as_json);
