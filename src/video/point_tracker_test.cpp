@@ -511,7 +511,8 @@ TEST(PointTracker, FollowsBallTossFromTheHumansFirstMark) {
   Errors e;
   e.position_px = deviation;
   e.print("BallToss against the human's marks");
-  // Measured median 0.41 px, max 0.67 px; the issue asks <= 1.5 px median (human marks
+  // Measured median 0.43 px, max 0.68 px (0.26-0.75 px median for starts moved by up to
+  // half a pixel: the human's start mark is itself uncertain by that); the issue asks <= 1.5 px median (human marks
   // scatter ~1 px), and no frame may be off by more than that scatter allows.
   EXPECT_LT(e.median(deviation), 1.0);
   EXPECT_LT(e.max(deviation), 1.5);
