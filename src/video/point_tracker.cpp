@@ -1,5 +1,7 @@
 // Point tracking by rotating-template correlation with a motion model
-// (docs/theory.md#point-tracking).
+// (docs/theory.md#point-tracking). A wide window (the first step, a long gap) is searched
+// coarse to fine; after max_gap_frames lost frames the point is searched for afresh around
+// the prediction and taken again only where the match is unambiguous.
 #include "video/point_tracker.hpp"
 
 #include "numerics/error.hpp"
