@@ -97,15 +97,30 @@ BENCHMARK(BM_DecodeAndGray640x480)->Unit(benchmark::kMillisecond);
 void BM_TrackPoint640x480(benchmark::State& state) {
   const Clip& c = clip();
   std::int64_t frames = 0;
+  int lost = 0;
   for (auto _ : state) {
     video::PointTracker tracker;
     benchmark::DoNotOptimize(tracker.start(c.frames[0], c.sticker.x, c.sticker.y, "sticker"));
-    for (std::size_t k = 1; k < c.frames.size(); ++k) benchmark::DoNotOptimize(tracker.update(c.frames[k]));
+    lost = 0;
+    for (std::size_t k = 1; k < c.frames.size(); ++k) lost += tracker.update(c.frames[k]).lost;
     frames += static_cast<std::int64_t>(c.frames.size());
   }
   state.SetItemsProcessed(frames);
+  state.counters["lost"] = lost;  // frames of the clip where the sticker was not found
 }
 BENCHMARK(BM_TrackPoint640x480)->Unit(benchmark::kMillisecond);
+
+// The one-off part alone: the start (reference patch, symmetry check) and the first step's
+// wide search (a quarter of the image's smaller side around the start, all rotations).
+void BM_TrackPoint640x480StartAndFirstStep(benchmark::State& state) {
+  const Clip& c = clip();
+  for (auto _ : state) {
+    video::PointTracker tracker;
+    benchmark::DoNotOptimize(tracker.start(c.frames[0], c.sticker.x, c.sticker.y, "sticker"));
+    benchmark::DoNotOptimize(tracker.update(c.frames[1]));
+  }
+}
+BENCHMARK(BM_TrackPoint640x480StartAndFirstStep)->Unit(benchmark::kMillisecond);
 
 // The same clip without the one-off start (template, symmetry check) and first step (a search
 // over a quarter of the image): the cost every further frame adds, which is what decides

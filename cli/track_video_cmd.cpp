@@ -79,7 +79,7 @@ void register_track_video(CLI::App& track_area) {
                   "Points: largest rotation of the pattern searched per frame, degrees");
   cmd->add_option("--ellipse-min-score", o->ellipse_min_score,
                   "Ellipses: below this edge-fit quality (0..1) the object is lost");
-  cmd->add_option("--max-gap", o->max_gap, "Frames the motion model may bridge before a target is given up");
+  cmd->add_option("--max-gap", o->max_gap, "Frames the motion model may bridge; beyond, an ellipse is given up and a point is searched for afresh");
   cmd->add_option("--write-trk", o->write_trk,
                   "Also write the tracks as a Tracker project (opens in Tracker with its video)");
   add_json_flag(*cmd, *as_json);

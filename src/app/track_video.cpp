@@ -141,6 +141,7 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
                         {"tracked", s.tracked},
                         {"lost", lost_rows},
                         {"lost_ranges", lost},
+                        {"refound_frames", s.refound_frames},
                         {"median_score", s.median_score}};
     if (s.vs_human) {
       t["vs_human"] = {{"frames", s.vs_human->frames},

@@ -1,6 +1,8 @@
 // EllipseTracker on rendered scenes with known truth (docs/theory.md#ellipse-tracking).
 #include "video/ellipse_tracker.hpp"
 
+#include "numerics/units.hpp"
+
 #include "numerics/error.hpp"
 #include "video/ellipse_fit.hpp"
 #include "video/render.hpp"
@@ -80,7 +82,7 @@ TEST(EllipseFit, BoxConventionGivesMajorAxisDirection) {
   const Ellipse e = ellipse_from_box(cv::RotatedRect({10, 20}, {20, 60}, 30));
   EXPECT_DOUBLE_EQ(e.a, 30);
   EXPECT_DOUBLE_EQ(e.b, 10);
-  EXPECT_NEAR(e.psi, (30 + 90 - 180) * kPi / 180, 1e-6);  // mod pi, in [-pi/2, pi/2]
+  EXPECT_NEAR(e.psi, to_rad(30 + 90 - 180), 1e-6);  // mod pi, in [-pi/2, pi/2]
 }
 
 TEST(EllipseFit, SharpEllipseIsFittedToAHundredthOfAPixel) {
@@ -128,7 +130,7 @@ SpinResult spinning_ball(const RenderOptions& o, int frames = 48) {
   const TrackRun run = track(scene, frames, o);
   std::vector<double> abs_angle;
   for (double a : run.angle_err_rad) abs_angle.push_back(std::abs(a));
-  return {median(run.centre_err_px), median(abs_angle) * 180 / kPi,
+  return {median(run.centre_err_px), to_deg(median(abs_angle)),
           abs_angle.empty() ? 0 : *std::max_element(abs_angle.begin(), abs_angle.end()), run.lost};
 }
 
@@ -139,7 +141,7 @@ TEST(EllipseTracker, SpinningBallAt40RadPerSecondWithBlurAndNoise) {
   RecordProperty("median_centre_error_px", std::to_string(r.centre_px));
   RecordProperty("median_angle_error_deg", std::to_string(r.angle_deg));
   std::printf("spin 40 rad/s: median centre error %.4f px, orientation %.4f deg, worst %.4f deg\n", r.centre_px,
-              r.angle_deg, r.worst_angle_rad * 180 / kPi);
+              r.angle_deg, to_deg(r.worst_angle_rad));
   EXPECT_EQ(r.lost, 0);
   // The requirement is 0.5 px and 0.5 degree; measured 0.012 px and 0.014 degree, so
   // 0.05 px and 0.07 degree catch a regression by a factor of 4-5.
@@ -157,7 +159,7 @@ TEST(EllipseTracker, SpinningBallOnATexturedBackground) {
   o.background = RenderOptions::Background::texture;
   const SpinResult r = spinning_ball(o);
   std::printf("spin 40 rad/s, texture: median centre error %.4f px, orientation %.4f deg, worst %.4f deg\n",
-              r.centre_px, r.angle_deg, r.worst_angle_rad * 180 / kPi);
+              r.centre_px, r.angle_deg, to_deg(r.worst_angle_rad));
   EXPECT_EQ(r.lost, 0);
   // Measured 0.054 px and 0.084 degree (worst frame 0.34 degree = 0.006 rad): the issue's
   // 0.5 px and 0.5 degree hold; a margin of about 3 for another texture seed.
@@ -199,11 +201,11 @@ TEST(EllipseTracker, SpinningBallDecodedFromCompressedVideo) {
     }
     EXPECT_EQ(centre.size(), 24u) << name;
     std::printf("%s: median centre error %.4f px, orientation %.4f deg\n", name, median(centre),
-                median(angle) * 180 / kPi);
+                to_deg(median(angle)));
     // Measured (avi, mp4) 0.022, 0.030 px and 0.021, 0.042 degree; 0.1 px and 0.15 degree
     // leave a margin of 3 (codec versions differ) within the 0.5 px and 0.5 degree.
     EXPECT_LE(median(centre), 0.1) << name;
-    EXPECT_LE(median(angle) * 180 / kPi, 0.15) << name;
+    EXPECT_LE(to_deg(median(angle)), 0.15) << name;
   }
   fs::remove_all(dir);
 }
@@ -218,8 +220,8 @@ TEST(EllipseTracker, LabelsStayOnTheSameTipsOverFiveTurns) {
   std::vector<double> abs_angle;
   for (double a : run.angle_err_rad) abs_angle.push_back(std::abs(a));
   std::printf("spin 0.5 rad/frame: median centre error %.4f px, orientation %.4f deg, worst %.4f deg\n",
-              median(run.centre_err_px), median(abs_angle) * 180 / kPi,
-              *std::max_element(abs_angle.begin(), abs_angle.end()) * 180 / kPi);
+              median(run.centre_err_px), to_deg(median(abs_angle)),
+              to_deg(*std::max_element(abs_angle.begin(), abs_angle.end())));
   for (std::size_t i = 0; i < run.angle_err_rad.size(); ++i) {
     // A wrong label is an error of pi; with 15 degrees of blur per frame the orientation is
     // still within 0.15 degree (measured worst; median 0.022), so 0.05 rad separates the two.
@@ -301,7 +303,7 @@ TEST(EllipseTracker, BounceNearADarkFloor) {
   EXPECT_LE(worst, 0.3);   // the floor's edge must not pull the fit (measured below 0.05 px)
   double worst_angle = 0;
   for (double a : run.angle_err_rad) worst_angle = std::max(worst_angle, std::abs(a));
-  std::printf("bounce by the floor: worst orientation error %.4f deg\n", worst_angle * 180 / kPi);
+  std::printf("bounce by the floor: worst orientation error %.4f deg\n", to_deg(worst_angle));
   EXPECT_LT(worst_angle, 0.01);  // measured 0.24 degree = 0.004 rad
 }
 

@@ -1,6 +1,7 @@
 #include "video/motion_model.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <Eigen/Dense>
 
@@ -14,7 +15,7 @@ namespace {
 
 // Rotations below this spread over the history leave the rigid-turn model undetermined
 // (its lever arm is then confounded with the centre): the parabola is used.
-constexpr double kMinSpread = 15 * std::numbers::pi / 180;
+constexpr double kMinSpread = to_rad(15);
 
 }  // namespace
 

@@ -1,8 +1,11 @@
 // Point tracking by rotating-template correlation with a motion model
-// (docs/theory.md#point-tracking).
+// (docs/theory.md#point-tracking). A wide window (the first step, a long gap) is searched
+// coarse to fine; after max_gap_frames lost frames the point is searched for afresh around
+// the prediction and taken again only where the match is unambiguous.
 #include "video/point_tracker.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 #include "video/motion_model.hpp"
 
 #include <opencv2/imgproc.hpp>
@@ -10,19 +13,27 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <numbers>
 #include <vector>
 
 namespace tribolab::video {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
 // Largest drop of the score below the median of the last five accepted ones (a junk match
 // of a 21 px patch on a real video scored 0.69 where the ball scored 0.99).
 constexpr double kMaxScoreDrop = 0.3;
 // Least score of the first match after the start (measured 0.97-0.99 on rendered scenes,
 // 0.994 on Tracker's BallToss).
 constexpr double kFirstMatchScore = 0.9;
+// A search half-width above this many patch sides goes coarse to fine (the first step's
+// quarter of the image, a long gap); below it the direct correlation is cheap enough.
+constexpr int kCoarseFromPatches = 2;
+// Coarse to fine: candidate places kept from the half-resolution envelope, how far below
+// its best (and below min_score) a candidate may score there, and the full-resolution
+// half-width searched around each, px. The half-resolution score of the object itself was
+// measured 0.02-0.15 below its full-resolution one on the rendered scenes and BallToss.
+constexpr int kCoarseCandidates = 6;
+constexpr double kCoarseSlack = 0.25;
+constexpr int kFineRadius = 4;
 
 // Smallest eigenvalue of the mean structure tensor of `patch` (CV_32F), (grey level/px)^2:
 // the squared rms intensity gradient in the patch's weakest direction. Near zero for a flat
@@ -45,6 +56,16 @@ double parabola_vertex(double fm, double f0, double fp) {
   const double curv = fm - 2 * f0 + fp;
   if (curv >= 0) return 0;
   return std::clamp(0.5 * (fm - fp) / curv, -1.0, 1.0);
+}
+
+// Where the maximum of f over [-1, 1] lies, from f(-1), f(0), f(1): the parabola's vertex
+// when it has one, else the best of the three samples. (A parabola without a maximum, as the
+// peak correlations of a sharp object at exposures 0, 1/4, 1/2 decreasing ever faster, gave
+// the middle sample: BallToss's sharp ball was then matched with a 17 px smear, scored 0.76
+// and was lost five frames later.)
+double best_vertex(double fm, double f0, double fp) {
+  if (fm - 2 * f0 + fp < 0) return parabola_vertex(fm, f0, fp);
+  return fm > f0 && fm >= fp ? -1.0 : fp > f0 && fp > fm ? 1.0 : 0.0;
 }
 
 // Sub-pixel offset of the maximum of `r` near integer peak p: least-squares quadratic
@@ -151,6 +172,7 @@ struct PointTracker::Impl {
   int start_frame = 0;
   int gap = 0;        // consecutive lost frames
   bool gave_up = false;
+  bool restarted = false;  // found again after giving up: the start's velocity is not measured
   std::deque<double> innovation_px;   // |measured - predicted| of the last accepted frames
   std::deque<double> innovation_rad;  // same for the angle
   std::deque<double> recent_scores;   // scores of the last accepted frames
@@ -158,6 +180,8 @@ struct PointTracker::Impl {
   cv::Mat window, templ;
   std::vector<cv::Mat> results;
   cv::Mat best_map, scratch, local, small_result, smeared, kernel;
+  cv::Mat window_coarse, coarse_templ, coarse_scratch, coarse_best, part;
+  std::vector<cv::Mat> coarse_results;
   // Motion blur: the start's velocity (px/frame, known once three positions are), the
   // estimated exposure as a fraction of the frame period, and the template's extra smear.
   cv::Point2d v0;
@@ -168,20 +192,22 @@ struct PointTracker::Impl {
   bool turns = true;   // false: the pattern looks the same turned (a plain ball), no angle search
   int half() const { return opt.patch_px / 2; }
   // Angle step: turns the patch's corner by at most ~1.5 px (8 degrees for a 21 px patch).
-  double angle_step() const { return std::min(8 * kDeg, 1.5 / (std::sqrt(2.0) * half())); }
+  double angle_step() const { return std::min(to_rad(8), 1.5 / (std::sqrt(2.0) * half())); }
 
   // Template for a pattern turned by `angle` (counter-clockwise on screen) since the start,
-  // smeared along `blur` (px, image frame) when that is at least half a pixel long.
-  const cv::Mat& make_template(double angle) {
+  // smeared along `blur` (px, image frame) when that is at least half a pixel long; side
+  // 2 * half_side + 1 (default: patch_px).
+  const cv::Mat& make_template(double angle, int half_side = -1) {
+    if (half_side < 0) half_side = half();
     const double c = std::cos(angle), s = std::sin(angle);
     const double cb = (big.cols - 1) / 2.0;
     const double len = std::hypot(blur.x, blur.y);
     const int margin = len >= 0.5 ? static_cast<int>(std::ceil(len / 2)) + 1 : 0;
-    const double h = half() + margin;
+    const double h = half_side + margin;
     // dst(x, y) = big(M (x, y, 1)): body offset = R(-angle) * image offset (y down).
     const cv::Matx23d m(c, -s, cb - c * h + s * h,  //
                         s, c, cb - s * h - c * h);
-    const int side = opt.patch_px + 2 * margin;
+    const int out = 2 * half_side + 1, side = out + 2 * margin;
     cv::warpAffine(big, margin ? smeared : templ, m, cv::Size(side, side),
                    cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_REPLICATE);
     if (margin) {
@@ -204,10 +230,29 @@ struct PointTracker::Impl {
       kernel /= n;
       // filter2D correlates; the kernel is point-symmetric, so this is the convolution.
       cv::filter2D(smeared, smeared, -1, kernel, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
-      smeared(cv::Rect(margin, margin, opt.patch_px, opt.patch_px)).copyTo(templ);
+      smeared(cv::Rect(margin, margin, out, out)).copyTo(templ);
     }
     return templ;
   }
+
+  // Half side of the half-resolution template (cv::pyrDown of the window and template).
+  int coarse_half() const { return (half() + 1) / 2; }
+  // The template at half resolution: a full-resolution template two px wider than twice the
+  // coarse one, pyrDown (coarse pixel i at full pixel 2i, both centred), cropped so that no
+  // coarse pixel depends on the pyramid's border rule.
+  const cv::Mat& make_coarse_template(double angle) {
+    const int hc = coarse_half();
+    cv::pyrDown(make_template(angle, 2 * hc + 2), coarse_scratch);
+    coarse_scratch(cv::Rect(1, 1, 2 * hc + 1, 2 * hc + 1)).copyTo(coarse_templ);
+    return coarse_templ;
+  }
+
+  // Correlation maps (`results`, per angle, and their envelope `best_map`, each of the full
+  // resolution size for `window`) by a coarse-to-fine search for a wide window: the window
+  // and the templates at half resolution (every other angle, twice the step) give the
+  // candidate places, and only around the best few is the full resolution correlated, for
+  // the angles next to each candidate's coarse angle. Elsewhere the maps hold -1.
+  void coarse_to_fine(const std::vector<double>& angles, double min_score);
 
   // The extra smear, at most two patches long (the reference patch holds no more).
   double max_blur() const { return 2.0 * opt.patch_px; }
@@ -231,6 +276,66 @@ struct PointTracker::Impl {
 
   Observation update(const Frame& frame);
 };
+
+void PointTracker::Impl::coarse_to_fine(const std::vector<double>& angles, double min_score) {
+  const int p = opt.patch_px, h = half(), hc = coarse_half();
+  const cv::Size full(window.cols - p + 1, window.rows - p + 1);
+  for (cv::Mat& r : results) {
+    r.create(full, CV_32F);
+    r.setTo(-1);
+  }
+  best_map.create(full, CV_32F);
+  best_map.setTo(-1);
+  cv::pyrDown(window, window_coarse);
+  // Coarse angles: every other one (each angle within one step of a coarse one).
+  std::vector<std::size_t> coarse_of;  // index into angles
+  for (std::size_t i = 0; i < angles.size(); i += 2) coarse_of.push_back(i);
+  if (angles.size() % 2 == 0 && angles.size() > 1) coarse_of.push_back(angles.size() - 1);
+  coarse_results.resize(coarse_of.size());
+  const int tc = 2 * hc + 1;
+  if (window_coarse.cols < tc || window_coarse.rows < tc) return;
+  for (std::size_t j = 0; j < coarse_of.size(); ++j) {
+    cv::matchTemplate(window_coarse, make_coarse_template(angles[coarse_of[j]]), coarse_results[j],
+                      cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(coarse_results[j], -1);
+    if (j == 0) {
+      coarse_results[0].copyTo(coarse_best);
+    } else {
+      cv::max(coarse_best, coarse_results[j], coarse_best);
+    }
+  }
+  // Candidates: the best few peaks of the coarse envelope (non-maximum suppression over
+  // the coarse patch radius).
+  double top = -1;
+  for (int n = 0; n < kCoarseCandidates; ++n) {
+    double v;
+    cv::Point at;
+    cv::minMaxLoc(coarse_best, nullptr, &v, nullptr, &at);
+    if (n == 0) top = v;
+    if (v < top - kCoarseSlack || v < min_score - kCoarseSlack) break;
+    std::size_t jb = 0;
+    for (std::size_t j = 1; j < coarse_of.size(); ++j) {
+      if (coarse_results[j].at<float>(at) > coarse_results[jb].at<float>(at)) jb = j;
+    }
+    cv::circle(coarse_best, at, hc, cv::Scalar(-1), cv::FILLED);
+    // Coarse placement (template's top-left) at -> template centre 2 (at + hc) in the
+    // window -> full-resolution placement 2 (at + hc) - h.
+    const cv::Point c(2 * (at.x + hc) - h, 2 * (at.y + hc) - h);
+    const cv::Rect region = cv::Rect(c.x - kFineRadius, c.y - kFineRadius, 2 * kFineRadius + 1, 2 * kFineRadius + 1) &
+                            cv::Rect(0, 0, full.width, full.height);
+    if (region.empty()) continue;
+    const cv::Mat img = window(cv::Rect(region.x, region.y, region.width + p - 1, region.height + p - 1));
+    const std::size_t mid = coarse_of[jb];
+    const std::size_t lo = mid >= 2 ? mid - 2 : 0, hi = std::min(angles.size() - 1, mid + 2);
+    for (std::size_t i = lo; i <= hi; ++i) {
+      cv::matchTemplate(img, make_template(angles[i]), part, cv::TM_CCOEFF_NORMED);
+      cv::patchNaNs(part, -1);
+      part.copyTo(results[i](region));
+      cv::Mat env = best_map(region);
+      cv::max(env, part, env);
+    }
+  }
+}
 
 PointTracker::PointTracker(const PointTrackerOptions& options) : impl_(std::make_unique<Impl>()) {
   if (const std::string e = options.validate(); !e.empty()) throw InputError("point tracker: " + e);
@@ -263,7 +368,8 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
   // The reference patch is wide enough that every rotation of the central patch_px square,
   // grown by half the longest smear (max_blur) and a pixel on each side, stays inside it
   // (sqrt(2) times, plus a pixel for the interpolation).
-  const int side = 2 * static_cast<int>(std::ceil(std::sqrt(2.0) * (h + m.opt.patch_px + 1))) + 3;
+  // (+2: the coarse search's template is two px wider than the patch.)
+  const int side = 2 * static_cast<int>(std::ceil(std::sqrt(2.0) * (h + m.opt.patch_px + 3))) + 3;
   cv::Mat g32, big;
   cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), big, CV_32F);
   cv::getRectSubPix(gray, cv::Size(m.opt.patch_px, m.opt.patch_px), cv::Point2f(x_px, y_px), g32,
@@ -302,6 +408,7 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
   m.last_frame = first.index;
   m.gap = 0;
   m.gave_up = false;
+  m.restarted = false;
   m.innovation_px.clear();
   m.innovation_rad.clear();
   m.recent_scores.clear();
@@ -330,7 +437,9 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   }
   last_frame = frame.index;
   const MotionState pred = model.predict(frame.index);
-  if (gave_up) return lost_observation(frame.index, pred, 0);
+  // Given up (more than max_gap_frames lost in a row): every frame is searched again, as
+  // after a start, around the motion model's prediction (docs/theory.md#point-tracking).
+  const bool reacquire = gave_up;
 
   // Motion blur: the template already carries the start's smear (shutter * v0, turned with
   // the pattern); the frame's smear is shutter * v, so the template is smeared further by
@@ -364,7 +473,14 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   } else {
     s = std::max<double>(h, 4 + 3 * worst);
   }
-  if (gap > 0) s = std::min<double>(s + 2 + 3 * worst * (gap + 1) * (gap + 1), 2.0 * first_search + s);
+  if (reacquire) {
+    // Re-acquisition: the gate (where a match is accepted) is the first step's window; the
+    // search looks twice as far, so that a look-alike just outside the gate is seen as a
+    // rival and leaves the point lost rather than guessed.
+    s = 2.0 * first_search;
+  } else if (gap > 0) {
+    s = std::min<double>(s + 2 + 3 * worst * (gap + 1) * (gap + 1), 2.0 * first_search + s);
+  }
   const int si = static_cast<int>(std::ceil(s));
 
   // Angles: around the predicted one, within three times the recent angle error (all of
@@ -375,7 +491,7 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   std::vector<double> angles;
   double angle_spacing = angle_step();  // between coarse samples
   if (search_angle) {
-    double range = opt.max_turn_deg * kDeg;
+    double range = to_rad(opt.max_turn_deg);
     if (model.size() >= 3 && gap == 0) {
       double worst = 0;
       for (double e : innovation_rad) worst = std::max(worst, e);
@@ -395,15 +511,20 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0);
   gray(win).convertTo(window, CV_32F);
 
-  // Correlation maps for every angle and their upper envelope.
+  // Correlation maps for every angle and their upper envelope: directly for a narrow
+  // window, coarse to fine for a wide one (the first step, a long gap).
   results.resize(angles.size());
-  for (std::size_t i = 0; i < angles.size(); ++i) {
-    cv::matchTemplate(window, make_template(angles[i]), results[i], cv::TM_CCOEFF_NORMED);
-    cv::patchNaNs(results[i], -1);
-    if (i == 0) {
-      results[0].copyTo(best_map);
-    } else {
-      cv::max(best_map, results[i], best_map);
+  if (si > kCoarseFromPatches * p) {
+    coarse_to_fine(angles, opt.min_score);
+  } else {
+    for (std::size_t i = 0; i < angles.size(); ++i) {
+      cv::matchTemplate(window, make_template(angles[i]), results[i], cv::TM_CCOEFF_NORMED);
+      cv::patchNaNs(results[i], -1);
+      if (i == 0) {
+        results[0].copyTo(best_map);
+      } else {
+        cv::max(best_map, results[i], best_map);
+      }
     }
   }
 
@@ -435,6 +556,7 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   if (peaks.size() > 1 && peaks[1].dist < 2 * peaks[0].dist + 2) {
     return lost_observation(frame.index, pred, peaks[0].score);
   }
+  if (reacquire && peaks[0].dist > first_search) return lost_observation(frame.index, pred, peaks[0].score);
   const cv::Point at = peaks[0].at;
 
   // Refinement (docs/theory.md#point-tracking): the image is resampled (bilinear) on a
@@ -480,7 +602,7 @@ Observation PointTracker::Impl::update(const Frame& frame) {
         set_blur(xs[i] * dv);
         f[i] = peak_value(angle, nullptr);
       }
-      shutter = std::clamp(xs[1] + 0.25 * parabola_vertex(f[0], f[1], f[2]), 0.0, 1.0);
+      shutter = std::clamp(xs[1] + 0.25 * best_vertex(f[0], f[1], f[2]), 0.0, 1.0);
       set_blur(shutter * dv);
     }
     cv::Point2d shift;
@@ -508,7 +630,16 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   recent_scores.push_back(score);
   if (recent_scores.size() > 5) recent_scores.pop_front();
 
-  if (model.size() >= 2) {  // the first prediction (no velocity yet) says nothing of the model
+  if (reacquire) {
+    // Found again: the motion model starts afresh from here (its extrapolation across the
+    // gap says nothing of the motion now), as after start().
+    o.refound = true;
+    gave_up = false;
+    model.reset();
+    innovation_px.clear();
+    innovation_rad.clear();
+    restarted = true;
+  } else if (model.size() >= 2) {  // the first prediction (no velocity yet) says nothing of the model
     // Across a gap of g frames the error is scaled back to one frame's by (g + 1)^2, the
     // growth assumed for the gate above.
     const double k = 1.0 / ((gap + 1) * (gap + 1));
@@ -519,7 +650,7 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   while (innovation_rad.size() > 3) innovation_rad.pop_front();
   gap = 0;
   model.add(frame.index, o.x_px, o.y_px, o.angle_rad);
-  if (!have_v0 && model.size() == 3) {
+  if (!have_v0 && !restarted && model.size() == 3) {
     // The start's velocity from the parabola through the first three positions.
     const MotionState at_start = model.predict(start_frame);
     v0 = cv::Point2d(at_start.vx_px, at_start.vy_px);

@@ -20,7 +20,8 @@ struct PointTrackerOptions {
   int search_px = 0;          ///< search half-width around the prediction, px (0 = automatic)
   double min_score = 0.6;     ///< below this normalised correlation a point is lost
   double max_turn_deg = 40;   ///< largest pattern rotation searched per frame, degrees
-  int max_gap_frames = 8;     ///< frames the motion model may bridge before giving up
+  int max_gap_frames = 8;     ///< lost frames the motion model may bridge; beyond, the point is
+                              ///< searched for afresh (wider, unambiguous matches only)
   std::string validate() const;
 };
 
@@ -30,6 +31,7 @@ struct Observation {
   double x_px = 0, y_px = 0;  ///< position, px (image x right, y down)
   double score = 0;           ///< match quality in [0, 1]
   bool lost = false;          ///< true: no reliable position this frame (x_px, y_px = prediction)
+  bool refound = false;       ///< true: found again after more than max_gap_frames lost in a row
   double angle_rad = 0;       ///< pattern rotation since the first frame (point) or major-axis
                               ///< direction (ellipse), image frame, counter-clockwise on screen, unwrapped
   double major_px = 0;        ///< ellipse semi-major axis, px (0 for a point)

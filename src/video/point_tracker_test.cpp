@@ -1,6 +1,7 @@
 #include "video/point_tracker.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 #include "video/motion_model.hpp"
 #include "video/render.hpp"
 #include "video/source.hpp"
@@ -25,7 +26,6 @@ namespace tribolab::video {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180;
 
 /// Frame `index` of the scene (test_videos.hpp).
 constexpr auto& film = testing::rendered_frame;
@@ -46,7 +46,7 @@ RenderOptions small_video() {
 struct Wheel {
   double cx = 160, cy = 120, radius = 70, mark_r = 40, mark_size = 15, deg_per_frame = 22.5;
   double fps = 240;
-  double angle(double t) const { return deg_per_frame * kDeg * fps * t + 0.3; }
+  double angle(double t) const { return to_rad(deg_per_frame) * fps * t + 0.3; }
   ShapePose pose(double t) const {
     ShapePose s;
     s.cx_px = cx;
@@ -105,7 +105,7 @@ Errors track(const Scene& scene, const RenderOptions& o, int frames, Truth truth
     }
     const cv::Point2d p = truth(f.t);
     e.position_px.push_back(std::hypot(ob.x_px - p.x, ob.y_px - p.y));
-    e.angle_deg.push_back(std::abs(ob.angle_rad - turn(f.t)) / kDeg);
+    e.angle_deg.push_back(to_deg(std::abs(ob.angle_rad - turn(f.t))));
   }
   return e;
 }
@@ -336,6 +336,102 @@ TEST(PointTracker, IsNotCapturedByADistractor) {
   EXPECT_LT(e.max(e.position_px), 0.1);  // measured 0.030 px; the distractor is 28 px away
 }
 
+// A disc with a sticker drifting right at 1 px/frame and turning 2 deg/frame, a hand that
+// covers it from frame 10 to 24 (15 frames, more than max_gap_frames = 8), and an identical
+// disc resting 130 px to the right: inside the re-acquisition search, outside its gate.
+struct HiddenDisc {
+  double fps = 240;
+  int hand_from = 10, hand_to = 24;
+  bool hand_stays = false;  // true: the hand never leaves
+  ShapePose disc(double cx, double cy, double angle) const {
+    ShapePose s;
+    s.cx_px = cx;
+    s.cy_px = cy;
+    s.a_px = s.b_px = 22;
+    s.angle_rad = angle;
+    s.colour = cv::Scalar(60, 140, 60);
+    s.mark = true;
+    s.mark_size_px = 15;
+    return s;
+  }
+  cv::Point2d at(double t) const { return {80 + t * fps, 120}; }
+  double turn(double t) const { return to_rad(2) * t * fps; }
+  Scene scene() const {
+    return [*this](double t) {
+      const int frame = static_cast<int>(std::lround(t * fps));
+      std::vector<ShapePose> s{disc(at(t).x, at(t).y, 0.3 + turn(t)), disc(230, 120, 0.3)};
+      if (frame >= hand_from && (hand_stays || frame <= hand_to)) {
+        ShapePose hand;
+        hand.kind = ShapePose::Kind::rectangle;
+        hand.cx_px = 95;
+        hand.cy_px = 120;
+        hand.a_px = 40;
+        hand.b_px = 60;
+        hand.colour = cv::Scalar(150, 170, 190);
+        s.push_back(hand);
+      }
+      return s;
+    };
+  }
+};
+
+TEST(PointTracker, FindsThePointAgainAfterALongOcclusionAndNotTheLookAlike) {
+  // Before re-acquisition, the point was given up after 8 lost frames and every later frame
+  // was lost. Now it is searched for again and found as soon as the hand has gone; the
+  // identical disc 130 px away is never taken, neither while ours is hidden (it is the only
+  // match in the image then) nor after.
+  const HiddenDisc d;
+  const RenderOptions o = small_video();
+  PointTracker tracker;
+  tracker.start(film(d.scene(), 0, o), d.at(0).x, d.at(0).y, "disc");
+  Errors e;
+  int refound = -1;
+  for (int i = 1; i < 40; ++i) {
+    const Frame f = film(d.scene(), i, o);
+    const Observation ob = tracker.update(f);
+    if (ob.refound) {
+      EXPECT_EQ(refound, -1) << "found again twice";
+      refound = i;
+    }
+    if (ob.lost) {
+      ++e.lost;
+      e.lost_frames.push_back(i);
+      continue;
+    }
+    e.position_px.push_back(std::hypot(ob.x_px - d.at(f.t).x, ob.y_px - d.at(f.t).y));
+    e.angle_deg.push_back(to_deg(std::abs(ob.angle_rad - d.turn(f.t))));
+  }
+  e.print("disc hidden 15 frames beside a look-alike");
+  std::printf("[ measured ] found again at frame %d\n", refound);
+  ASSERT_FALSE(e.lost_frames.empty());
+  EXPECT_GE(e.lost_frames.front(), 5);   // the hand's edge reaches the patch at frame ~7
+  EXPECT_LE(e.lost_frames.back(), 24);   // nothing lost once the hand has gone
+  EXPECT_GT(e.lost, 8);                  // more than max_gap_frames: given up, then found
+  EXPECT_EQ(refound, 25);                // the first frame without the hand
+  // Every accepted frame is on our disc (the look-alike is 130 px away): 0.2 px is twice the
+  // wheel tests' worst error, far below any wrong match.
+  EXPECT_LT(e.max(e.position_px), 0.2);
+}
+
+TEST(PointTracker, NeverTakesTheLookAlikeWhileThePointStaysHidden) {
+  // The same scene with a hand that never leaves: the look-alike is the only match in the
+  // image, 130 px from where ours is hidden, and must not be taken.
+  HiddenDisc d;
+  d.hand_stays = true;
+  const RenderOptions o = small_video();
+  PointTracker tracker;
+  tracker.start(film(d.scene(), 0, o), d.at(0).x, d.at(0).y, "disc");
+  int lost_from = -1;
+  for (int i = 1; i < 40; ++i) {
+    const Observation ob = tracker.update(film(d.scene(), i, o));
+    if (ob.lost && lost_from < 0) lost_from = i;
+    if (lost_from > 0) {
+      EXPECT_TRUE(ob.lost) << "frame " << i << " found at (" << ob.x_px << ", " << ob.y_px << ")";
+    }
+  }
+  EXPECT_GT(lost_from, 0);
+}
+
 TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
   // Written as MJPG (quality 95) and decoded by OpenCV like a user's video: compression
   // artefacts on top of blur and noise.
@@ -367,7 +463,7 @@ TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
       continue;
     }
     e.position_px.push_back(std::hypot(ob.x_px - w.mark(f.t).x, ob.y_px - w.mark(f.t).y));
-    e.angle_deg.push_back(std::abs(ob.angle_rad - (w.angle(f.t) - w.angle(0))) / kDeg);
+    e.angle_deg.push_back(to_deg(std::abs(ob.angle_rad - (w.angle(f.t) - w.angle(0)))));
   }
   video.release();
   std::filesystem::remove(path);
@@ -415,7 +511,8 @@ TEST(PointTracker, FollowsBallTossFromTheHumansFirstMark) {
   Errors e;
   e.position_px = deviation;
   e.print("BallToss against the human's marks");
-  // Measured median 0.41 px, max 0.67 px; the issue asks <= 1.5 px median (human marks
+  // Measured median 0.43 px, max 0.68 px (0.26-0.75 px median for starts moved by up to
+  // half a pixel: the human's start mark is itself uncertain by that); the issue asks <= 1.5 px median (human marks
   // scatter ~1 px), and no frame may be off by more than that scatter allows.
   EXPECT_LT(e.median(deviation), 1.0);
   EXPECT_LT(e.max(deviation), 1.5);
@@ -503,7 +600,7 @@ TEST(MotionModel, PredictsAMarkOnATurningWheelExactly) {
   // A mark 40 px from the hub of a wheel rolling right at 3 px/frame and turning 25 deg/frame:
   // the turning-body model reproduces it to rounding; a parabola through the same five
   // positions misses by several px (third derivative of the circle).
-  const double w = 25 * kDeg;
+  const double w = to_rad(25);
   auto at = [&](int i) {
     const double a = 0.2 + w * i;
     return cv::Point2d(100 + 3 * i + 40 * std::cos(a), 80 - 40 * std::sin(a));

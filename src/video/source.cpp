@@ -31,6 +31,18 @@ double TimeBase::t(int frame) const {
   return (start_time_s + static_cast<double>(frame - start_frame) * frame_duration_s) * time_scale;
 }
 
+io::TrkCoordFrame from_tracker_pixels(io::TrkCoordFrame c) {
+  c.origin_x -= kTrackerPixelOffset;
+  c.origin_y -= kTrackerPixelOffset;
+  return c;
+}
+
+io::TrkCoordFrame to_tracker_pixels(io::TrkCoordFrame c) {
+  c.origin_x += kTrackerPixelOffset;
+  c.origin_y += kTrackerPixelOffset;
+  return c;
+}
+
 const io::TrkCoordFrame& Calibration::at(int frame) const { return io::coord_at(coords, frame); }
 
 std::pair<double, double> Calibration::to_world(int frame, double px, double py) const {
@@ -262,14 +274,21 @@ void apply_project(VideoInput& in, const io::TrkProject& p, const SourceOptions&
     in.warnings.push_back("calibration options override the project's coordinate system");
     in.calibration = plain_calibration(o, in.info, in.warnings);
   } else {
-    in.calibration.coords = p.coords;
+    // Marks and origins both move by the same half pixel, so track video's world positions of
+    // the marks are track import's (the differences px - origin are exact, bit for bit).
+    in.calibration.coords.clear();
+    for (const auto& c : p.coords) in.calibration.coords.push_back(from_tracker_pixels(c));
     in.calibration.metres_per_unit = io::metres_per_unit(p.length_unit, p.source + ": length unit");
     in.calibration.calibrated = true;
   }
   for (const auto& w : p.warnings) in.warnings.push_back(w);
   in.marks_px = p.marks_px;
   for (auto& tr : in.marks_px) {
-    for (auto& pt : tr.points) pt.t = in.time.t(pt.frame);
+    for (auto& pt : tr.points) {
+      pt.t = in.time.t(pt.frame);
+      pt.x -= kTrackerPixelOffset;
+      pt.y -= kTrackerPixelOffset;
+    }
   }
 }
 

@@ -45,6 +45,17 @@ struct TimeBase {
   double t(int frame) const;
 };
 
+/// Tracker's image position of a point minus OpenCV's (docs/theory.md#video-input-and-the-track-video-workflow):
+/// Tracker puts the image's top-left corner at (0, 0), so the centre of pixel (column j, row i)
+/// is at (j + 0.5, i + 0.5); tribolab's pixels (OpenCV's, every `_px` in `track video`) put it
+/// at (j, i). A Tracker project's marks and coordinate origins are moved by -0.5 px when read
+/// and by +0.5 px when written.
+inline constexpr double kTrackerPixelOffset = 0.5;
+/// A key frame in Tracker's image positions -> the same key frame in OpenCV's pixels.
+io::TrkCoordFrame from_tracker_pixels(io::TrkCoordFrame c);
+/// A key frame in OpenCV's pixels -> the same key frame in Tracker's image positions.
+io::TrkCoordFrame to_tracker_pixels(io::TrkCoordFrame c);
+
 /// Image pixels -> world metres, per frame (Tracker's ImageCoordSystem: key frames, each
 /// holding until the next). An uncalibrated video has scale 1 px per unit and unit "px".
 struct Calibration {
@@ -84,7 +95,8 @@ struct VideoInput {
   std::string project_video;       ///< the video path as the project names it ("" for a plain video)
   /// The video as a file that outlives this run ("" when it lives only inside a .trz).
   std::string video_file;
-  /// The project's tracks in image pixels (x right, y down), by frame; empty for a plain video.
+  /// The project's tracks in image pixels (x right, y down, OpenCV's pixel centres: Tracker's
+  /// image positions - kTrackerPixelOffset), by frame; empty for a plain video.
   std::vector<track::Track> marks_px;
   std::vector<std::string> warnings;  ///< e.g. "no scale: positions are in pixels"
   std::shared_ptr<void> temp_owner;   ///< keeps an extracted temporary video alive

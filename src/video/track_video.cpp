@@ -94,6 +94,7 @@ void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<Track
             const Observation& o) {
   out[w.series[0]].rows.push_back(make_row(f, in, o.x_px, o.y_px, o.score, o.lost));
   out[w.series[0]].angle_rad.push_back(o.angle_rad);
+  if (o.refound && !o.lost) out[w.series[0]].refound_frames.push_back(f.index);
 }
 
 void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<TrackedSeries>& out,
@@ -321,8 +322,10 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
     for (const auto& [a, b] : s.lost_ranges) {
       frames += (frames.empty() ? "" : ", ") + std::to_string(a) + (a == b ? "" : "-" + std::to_string(b));
     }
-    result.warnings.push_back("track '" + s.name + "': lost at frame(s) " + frames +
-                              " (rows with empty positions)");
+    std::string refound;
+    for (int k : s.refound_frames) refound += (refound.empty() ? "" : ", ") + std::to_string(k);
+    result.warnings.push_back("track '" + s.name + "': lost at frame(s) " + frames + " (rows with empty positions)" +
+                              (refound.empty() ? "" : "; found again at frame(s) " + refound));
   }
   // The project's own marks are an independent check: a track far from them has followed
   // something else (an edge sliding along itself, a look-alike) even where its score held.

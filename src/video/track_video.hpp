@@ -61,6 +61,9 @@ struct TrackedSeries {
   std::vector<double> angle_rad;       ///< per row: pattern rotation / ellipse orientation
   int tracked = 0;                     ///< rows with a position
   std::vector<std::pair<int, int>> lost_ranges;  ///< [first, last] frames lost, inclusive
+  /// Frames where the point was found again after more than max_gap_frames lost in a row
+  /// (its motion model restarted there); empty for an ellipse.
+  std::vector<int> refound_frames;
   double median_score = 0;
   std::optional<HumanComparison> vs_human;
 };

@@ -33,7 +33,9 @@ io::TrkWriteSpec trk_spec(const TrackVideoResult& result, const std::string& trk
   io::TrkWriteSpec spec;
   // world metres = image_to_world(key with scales / metres_per_unit): the project is written
   // in metres whatever unit the input project used (px for an uncalibrated video)
-  spec.coords = in.calibration.coords;
+  // (and in Tracker's image positions, half a pixel from OpenCV's: kTrackerPixelOffset)
+  spec.coords.clear();
+  for (const auto& c : in.calibration.coords) spec.coords.push_back(to_tracker_pixels(c));
   for (auto& c : spec.coords) {
     c.xscale /= in.calibration.metres_per_unit;
     c.yscale /= in.calibration.metres_per_unit;
