@@ -3,6 +3,7 @@
 #pragma once
 
 #include "app/bounce_options.hpp"
+#include "app/bounce_truth_law.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -15,5 +16,9 @@ inline void add_ball_options(CLI::App* cmd, app::BallOptions& ball) { add_ball_o
 /// --model --K --n --D --restitution [--mu] --friction --slip-scale --k-t --c-t --tol; without
 /// `with_mu` the command owns --mu itself (e.g. a sweep axis).
 void add_law_options(CLI::App* cmd, app::LawOptions& law, bool with_mu = true);
+
+/// --model --K --n --D --restitution --mu --friction --slip-scale of the synthetic generators
+/// (`bounce synth-video`, `synth-table`, `render`).
+void add_truth_law_options(CLI::App* cmd, app::TruthLawOptions& law);
 
 }  // namespace tribolab::cli

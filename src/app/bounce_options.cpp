@@ -9,6 +9,21 @@ namespace tribolab::app {
 
 using namespace tribolab::bounce;
 
+NormalModel parsed_model(const std::string& name) {
+  const auto m = parse_normal_model(name);
+  if (!m) {
+    throw InputError("--model", "unknown model '" + name +
+                                    "' (hooke, hertz, hunt-crossley, flores, lankarani-nikravesh, gonthier)");
+  }
+  return *m;
+}
+
+FrictionKind parsed_friction(const std::string& name) {
+  const auto k = parse_friction_kind(name);
+  if (!k) throw InputError("--friction", "unknown friction model '" + name + "' (coulomb, regularized, spring)");
+  return *k;
+}
+
 void check_finite(double v, const char* option) {
   if (!std::isfinite(v)) throw InputError(option, "must be a finite number");
 }
@@ -35,36 +50,31 @@ Ball checked_ball(const Ball& ball) {
 }
 
 NormalLawSpec LawOptions::law() const {
-  const auto m = parse_normal_model(model);
-  if (!m) {
-    throw InputError("--model", "unknown model '" + model +
-                                    "' (hooke, hertz, hunt-crossley, flores, lankarani-nikravesh, gonthier)");
-  }
+  const NormalModel m = parsed_model(model);
   if (D && restitution) throw InputError("--D", "give either --D or --restitution, not both");
   if (K) check_finite(*K, "--K");
   if (n) check_finite(*n, "--n");
   if (D) check_finite(*D, "--D");
   if (restitution) check_finite(*restitution, "--restitution");
-  if (*m == NormalModel::hooke && n && *n != 1) throw InputError("--n", "the hooke law is linear (n = 1)");
+  if (m == NormalModel::hooke && n && *n != 1) throw InputError("--n", "the hooke law is linear (n = 1)");
   NormalLawSpec s;
-  s.model = *m;
+  s.model = m;
   s.K = K.value_or(101054);
-  s.n = n.value_or(*m == NormalModel::hertz ? 1.5 : (*m == NormalModel::hooke ? 1.0 : 1.51));
-  s.D = D.value_or((*m == NormalModel::hertz || *m == NormalModel::hooke) ? 0.0 : 60423);
+  s.n = n.value_or(m == NormalModel::hertz ? 1.5 : (m == NormalModel::hooke ? 1.0 : 1.51));
+  s.D = D.value_or((m == NormalModel::hertz || m == NormalModel::hooke) ? 0.0 : 60423);
   s.restitution = restitution;
   if (auto e = s.validate(); !e.empty()) invalid(e);
   return s;
 }
 
 FrictionModel LawOptions::friction_model(double mu_value) const {
-  const auto k = parse_friction_kind(friction);
-  if (!k) throw InputError("--friction", "unknown friction model '" + friction + "' (coulomb, regularized, spring)");
+  const FrictionKind k = parsed_friction(friction);
   check_finite(mu_value, "--mu");
   check_finite(slip_scale, "--slip-scale");
   check_finite(k_t, "--k-t");
   check_finite(c_t, "--c-t");
   FrictionModel f;
-  f.kind = *k;
+  f.kind = k;
   f.mu = mu_value;
   f.slip_scale = slip_scale;
   f.k_t = k_t;

@@ -16,6 +16,12 @@
 
 namespace tribolab::app {
 
+/// The normal law named `name`; InputError naming --model with the list of laws otherwise.
+bounce::NormalModel parsed_model(const std::string& name);
+
+/// The friction law named `name`; InputError naming --friction with the list otherwise.
+bounce::FrictionKind parsed_friction(const std::string& name);
+
 /// Throws InputError naming `option` unless v is finite.
 void check_finite(double v, const char* option);
 
