@@ -106,8 +106,15 @@ void run_sweep(app::BounceSweepOptions o, const SweepText& t) {
     }
     if (!t.omega.empty()) o.omega = parse_axis(t.omega, sweep::Quantity::omega, "--omega");
     if (!t.ratio.empty()) o.ratio = parse_axis(t.ratio, sweep::Quantity::ratio, "--ratio");
-    if (!t.speed.empty()) o.speed = parse_value_or_axis(t.speed, sweep::Quantity::speed, "--speed");
-    if (!t.mu.empty()) o.mu = parse_value_or_axis(t.mu, sweep::Quantity::mu, "--mu");
+    // A range keeps the default value as the grid's fixed value (recorded in the file header).
+    auto value_or_axis = [](const std::string& text, sweep::Quantity q, const char* option, app::ValueOrAxis& to) {
+      if (text.empty()) return;
+      const app::ValueOrAxis v = parse_value_or_axis(text, q, option);
+      if (v.axis) to.axis = v.axis;
+      else to.value = v.value;
+    };
+    value_or_axis(t.speed, sweep::Quantity::speed, "--speed", o.speed);
+    value_or_axis(t.mu, sweep::Quantity::mu, "--mu", o.mu);
     if (!t.shard.empty()) o.shard = parse_shard(t.shard, "--shard");
     InterruptGuard guard;
     ProgressLine line;

@@ -19,7 +19,7 @@ namespace tribolab::app {
 
 /// A quantity that is either one value or an axis lo:hi:count (--speed, --mu).
 struct ValueOrAxis {
-  double value = 0;                 ///< used when axis is empty
+  double value = 0;                 ///< the value, or the grid's fixed value when swept (file header)
   std::optional<sweep::Axis> axis;  ///< its quantity is set by the workflow
 };
 
