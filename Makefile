@@ -91,10 +91,10 @@ asan: deps
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
 
-# The MPI sweep (-DTRIBOLAB_MPI=ON): io tests, including one run with 2 ranks under mpirun.
+# The MPI sweep (-DTRIBOLAB_MPI=ON): app tests, including one run with 2 ranks under mpirun.
 test-mpi: deps
 	cmake -S . -B $(MPI_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_MPI=ON -DTRIBOLAB_BENCH=OFF
-	cmake --build $(MPI_BUILD) -j $(JOBS) --target io_tests
+	cmake --build $(MPI_BUILD) -j $(JOBS) --target app_tests
 	ctest --test-dir $(MPI_BUILD) --output-on-failure -R 'sweep_mpi|Sweep' -E '^SweepMpi[.]'
 
 test-fast: build

@@ -1,9 +1,11 @@
 // Benchmarks of the bounce engine (docs/benchmarks.md#bounce): one contact per normal law and
 // per friction mode, the first-contact search, and the seed's own method — explicit steps of
 // 1 microsecond (seed 001, 實驗四 (二)) — as the baseline at equal accuracy.
+#include "app/bounce_cell.hpp"
 #include "bounce/contact.hpp"
 #include "bounce/flight.hpp"
 #include "bounce/seed_method.hpp"
+#include "numerics/units.hpp"
 #include "sweep/runner.hpp"
 
 #include <benchmark/benchmark.h>
@@ -20,7 +22,7 @@ using namespace tribolab::bounce;
 // 0.5 m/s forward, 40 rad/s).
 BodyState reference_touch() {
   BodyState s;
-  s.theta = 30 * std::acos(-1.0) / 180;
+  s.theta = tribolab::to_rad(30);
   s.vx = 0.5;
   s.vy = -4;
   s.omega = 40;
@@ -48,7 +50,7 @@ NormalLaw law_for(NormalModel m) {
 /// positions (symplectic Euler), until the penetration returns to zero
 /// (src/bounce/seed_method.cpp, the tight loop of issue 15; Hunt–Crossley law only).
 ContactResult seed_euler(const Ball& ball, const NormalLaw& law, double mu, const BodyState& in, double dt,
-                         double g = 9.8) {
+                         double g = tribolab::kDefaultG) {
   seed::SeedParams p;
   p.a = ball.a;
   p.b = ball.b;
@@ -173,8 +175,9 @@ BENCHMARK(BM_FirstContact)->Arg(0)->Arg(40)->Arg(500)->Unit(benchmark::kMicrosec
 // ---- The seed's full phase diagram (docs/benchmarks.md#bounce-sweep-phase-diagram) ----
 // Collision angle 100..170 deg (71 values) x spin 30..50 rad/s (21 values) at vy = -4 m/s,
 // vx = 0, mu = 0.5, the seed's fitted law: the grid of its figure 53 at 1 deg x 1 rad/s.
-// Each cell is exactly what `bounce sweep` computes (cli/bounce_sweep_cmd.cpp; its default
-// tolerance is 1e-6, the loosest with no cell less accurate than the seed's method).
+// Each cell is the library's bounce cell model (app/bounce_cell.hpp, the model of `bounce
+// sweep`; its default tolerance is 1e-6, the loosest with no cell less accurate than the
+// seed's method), first contact phase only: the phase the seed's method integrates.
 
 tribolab::sweep::GridSpec seed_map_grid() {
   tribolab::sweep::GridSpec g;
@@ -193,17 +196,16 @@ BodyState seed_map_touch(const tribolab::sweep::CellInput& in) {
   return s;
 }
 
-/// Outgoing vx, vy, b*omega of a cell (velocities, m/s) by our solver at `tol`.
+/// Outgoing vx, vy, omega, e of a cell (first contact phase) by our solver at `tol`.
 tribolab::sweep::CellModel seed_map_model(double tol) {
-  tribolab::sweep::CellModel m;
-  m.output_names = {"vx", "vy", "omega_out", "e"};
-  const ContactOptions o = contact_options_with_tolerance(tol);
-  NormalLawSpec spec;  // the seed's fit
-  m.evaluate = [o, spec](const tribolab::sweep::CellInput& in) {
-    const ContactResult r = simulate_contact(Ball{}, spec, FrictionModel{}, seed_map_touch(in), o);
-    return tribolab::sweep::CellOutputs{r.out.vx, r.out.vy, r.out.omega * Ball{}.b, r.restitution};
-  };
-  return m;
+  tribolab::app::BounceCellOptions o;  // the seed's ball and fitted law, Coulomb, g = kDefaultG
+  o.law.tol = tol;
+  return tribolab::app::bounce_cell_model(tribolab::app::make_bounce_cell(o, tribolab::app::BounceCellKind::contact));
+}
+
+/// Map column k as a velocity, m/s: vx, vy and b * omega.
+double as_velocity(const std::vector<double>& map, std::size_t c, std::size_t k) {
+  return map[4 * c + k] * (k == 2 ? Ball{}.b : 1.0);
 }
 
 const std::vector<double>& seed_map_reference() {
@@ -225,7 +227,7 @@ MapError seed_map_error(const std::vector<double>& map) {
   MapError e;
   for (std::size_t c = 0; c < ref.size() / 4; ++c) {
     double err = 0;
-    for (std::size_t k = 0; k < 3; ++k) err = std::max(err, std::abs(map[4 * c + k] - ref[4 * c + k]));
+    for (std::size_t k = 0; k < 3; ++k) err = std::max(err, std::abs(as_velocity(map, c, k) - as_velocity(ref, c, k)));
     e.max = std::max(e.max, err);
     e.flips += err > 1e-3;
   }
@@ -241,7 +243,7 @@ std::vector<double> seed_map_seed_euler() {
     const ContactResult r = seed_euler(Ball{}, law, 0.5, seed_map_touch(g.cell(i)), 1e-6);
     map[4 * i] = r.out.vx;
     map[4 * i + 1] = r.out.vy;
-    map[4 * i + 2] = r.out.omega * Ball{}.b;
+    map[4 * i + 2] = r.out.omega;
     map[4 * i + 3] = r.out.vy / 4;
   }
   return map;
@@ -255,8 +257,8 @@ int cells_worse_than_seed(const std::vector<double>& map) {
   for (std::size_t c = 0; c < ref.size() / 4; ++c) {
     double ours = 0, theirs = 0;
     for (std::size_t k = 0; k < 3; ++k) {
-      ours = std::max(ours, std::abs(map[4 * c + k] - ref[4 * c + k]));
-      theirs = std::max(theirs, std::abs(seed[4 * c + k] - ref[4 * c + k]));
+      ours = std::max(ours, std::abs(as_velocity(map, c, k) - as_velocity(ref, c, k)));
+      theirs = std::max(theirs, std::abs(as_velocity(seed, c, k) - as_velocity(ref, c, k)));
     }
     worse += ours > theirs;
   }

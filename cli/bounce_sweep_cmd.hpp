@@ -6,8 +6,8 @@
 
 namespace tribolab::cli {
 
-/// Adds `sweep` and `merge` under the `bounce` area command, each cell one
-/// bounce::simulate_contact from first touch.
+/// Adds `sweep` and `merge` under the `bounce` area command (app::bounce_sweep and
+/// app::bounce_merge), each cell one whole impact from first touch (app/bounce_cell.hpp).
 void register_bounce_sweep(CLI::App& bounce_area);
 
 }  // namespace tribolab::cli

@@ -1,38 +1,27 @@
-// `tribolab bounce sweep` and `tribolab bounce merge`: the sweep options (grid, shard,
-// threads, resume, derived maps) are parsed here; the physics (ball, contact law,
-// friction) comes from the bounce commands through SweepPhysics. See docs/cli.md.
+// The command-line text of a sweep: axis ranges "lo:hi:count", "value or range", shards
+// "i/N", and the progress line on a terminal. The workflow itself is app::bounce_sweep
+// (src/app/bounce_sweep.hpp). docs/cli.md#bounce-sweep.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
-#include <functional>
+#include <optional>
+#include <ostream>
 #include <string>
+#include <string_view>
 
+#include "app/bounce_sweep.hpp"
+#include "sweep/grid.hpp"
 #include "sweep/runner.hpp"
 
 namespace tribolab::cli {
 
-/// What the bounce commands supply to `bounce sweep`.
-struct SweepPhysics {
-  /// Adds the physical options of `bounce simulate` (ball, --model, --K/--n/--D or
-  /// --restitution, --friction, --slip-scale, --g, --vx, ...) to the sweep command, bound
-  /// to state that make_model reads. Must not add the options the sweep owns: --theta-deg,
-  /// --omega, --ratio, --speed, --mu, --out, --shard, --threads, --restart, --contour,
-  /// --threshold, --contour-tol, --report, --json.
-  std::function<void(CLI::App& sweep_command)> add_options;
-  /// Builds the cell model after parsing (called once per run); throws InputError naming
-  /// the option for invalid values. Per cell, CellInput carries theta_deg, omega, the
-  /// incoming speed |vy| (vy = -speed) and mu, swept or fixed.
-  std::function<sweep::CellModel()> make_model;
-  /// Rebuilds the cell model from the physics description recorded in a sweep file's header
-  /// (CellModel::description), for `bounce merge --report`, which has no physical options.
-  /// Throws InputError when the description is not one this physics wrote.
-  std::function<sweep::CellModel(const std::string& description)> model_from_description;
-  double default_mu = 0.5;     ///< --mu when not given (SPEC section 3 default)
-  double default_speed = 4.0;  ///< --speed when not given, m/s (seed 001 figure 53)
-};
+/// "lo:hi:count" -> Axis of quantity q; errors name `option`.
+sweep::Axis parse_axis(std::string_view text, sweep::Quantity q, const std::string& option);
+/// A single number ("4") or a range ("4:8:3"): the value, or the axis.
+app::ValueOrAxis parse_value_or_axis(std::string_view text, sweep::Quantity q, const std::string& option);
+/// "i/N" -> Shard; errors name `option`.
+sweep::Shard parse_shard(std::string_view text, const std::string& option);
 
-/// Registers `sweep` and `merge` under the `bounce` area command.
-void register_sweep_commands(CLI::App& bounce_area, SweepPhysics physics);
+/// One progress line: "\rsweep: done/total cells (pct%)  rate cells/s  elapsed s  ETA s".
+void print_progress(std::ostream& out, const sweep::Progress& p);
 
 }  // namespace tribolab::cli

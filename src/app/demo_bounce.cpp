@@ -2,6 +2,7 @@
 // formula), table 4 (contact times), figures 45-48 (one contact), a drop that rises above its
 // release height, and the heat maps of figures 53-56 with the e = 1 boundary.
 #include "app/demo.hpp"
+#include "app/bounce_cell.hpp"
 #include "app/report_bounce.hpp"
 #include "app/report_sweep.hpp"
 #include "app/report_util.hpp"
@@ -11,6 +12,7 @@
 #include "bounce/flight.hpp"
 #include "bounce/geometry.hpp"
 #include "bounce/impact.hpp"
+#include "numerics/units.hpp"
 #include "report/format.hpp"
 #include "sweep/contour.hpp"
 #include "sweep/grid.hpp"
@@ -28,8 +30,6 @@ namespace {
 using namespace tribolab::bounce;
 using report::format_value;
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
-constexpr double kG = 9.8;
 
 /// The seed's fitted law (研究方法 六): N = 101054 d^1.51 + 60423 d^1.51 d'.
 NormalLawSpec seed_law() { return NormalLawSpec{}; }
@@ -57,26 +57,18 @@ BodyState impact(const Ball& ball, double collision_angle_deg, double spin, doub
   return s;
 }
 
-sweep::CellModel contact_model(const Ball& ball, const NormalLawSpec& law, const std::string& name) {
-  sweep::CellModel m;
-  m.output_names = {"vx", "vy", "omega_out", "e"};
-  m.evaluate = [ball, law](const sweep::CellInput& in) {
-    const BodyState s = impact(ball, in.theta_deg, in.omega, in.speed);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    if (!(contact_point_velocity(ball, s.theta, s.vx, s.vy, s.omega).vy < 0))
-      return sweep::CellOutputs{nan, nan, nan, nan};  // the contact point moves away: no impact
-    FrictionModel f;
-    f.mu = in.mu;
-    // The whole impact: every contact until the ball flies free to its apex (docs/theory.md#sweeps).
-    ImpactOptions io;
-    io.contact = contact_options_with_tolerance(1e-8);
-    const ImpactResult r = simulate_impact(ball, law, f, s, io);
-    if (r.status != ImpactStatus::free_flight) return sweep::CellOutputs{nan, nan, nan, nan};
-    return sweep::CellOutputs{r.whole.out.vx, r.whole.out.vy, r.whole.out.omega, r.whole.restitution};
-  };
+/// The maps' cell: the one bounce cell model of `bounce sweep` (app/bounce_cell.hpp), the whole
+/// impact from first touch with the demo's convention (impact(): collision angle, ball moving to
+/// +x, clockwise spin), the given law and tolerance 1e-8.
+sweep::CellModel contact_model(const NormalLawSpec& law, const std::string& name) {
+  BounceCellOptions o;
+  o.law.K = law.K;
+  o.law.n = law.n;
+  o.law.D = law.D;
+  o.law.tol = 1e-8;
+  o.spin_sign = -1;
+  sweep::CellModel m = bounce_cell_model(make_bounce_cell(o));
   m.description = name;
-  m.mass = ball.mass;
-  m.inertia = ball.inertia;
   return m;
 }
 
@@ -98,7 +90,7 @@ void add_geometry(report::Section& s) {
   ok.color = "#1f77b4";
   brute.color = "black";
   for (int i = 0; i <= 180; ++i) {
-    const double th = i / kDeg, c = std::cos(th), sn = std::sin(th);
+    const double th = i / kDegPerRad, c = std::cos(th), sn = std::sin(th);
     ok.x.push_back(i);
     ok.y.push_back(support_depth(ball, th));
     seed.x.push_back(i);
@@ -139,7 +131,7 @@ void add_table4(report::Section& s, std::ostream& log) {
   for (const Row& r : rows) {
     const double cw = first_contact_from_apex(ball, r.H, -r.spin, r.angle).t_contact;
     const double ccw = first_contact_from_apex(ball, r.H, r.spin, r.angle).t_contact;
-    const double latest = std::sqrt(2 * (r.H - ball.b) / kG);
+    const double latest = std::sqrt(2 * (r.H - ball.b) / kDefaultG);
     t.rows.push_back({v4(r.H), v4(r.spin), v4(r.angle), format_value(r.predicted, 3), format_value(r.measured, 3),
                       v4(cw), v4(ccw), v4(latest)});
     log << "    " << r.H << "  " << r.predicted << "  " << r.measured << "  " << v4(cw) << "  " << v4(ccw)
@@ -159,7 +151,7 @@ void add_one_contact(report::Section& s, std::ostream& log) {
   const ContactResult seed = simulate_contact(ball, seed_law(), friction, touch, {}, &h_seed);
   const ContactResult low = simulate_contact(ball, low_damping_law(), friction, touch, {}, &h_low);
   add_contact_equations(s, seed.law);
-  s.add_paragraph("A representative impact: collision angle " + v4(angle) + " deg (θ = " + v4(touch.theta * kDeg) +
+  s.add_paragraph("A representative impact: collision angle " + v4(angle) + " deg (θ = " + v4(touch.theta * kDegPerRad) +
                   " deg), v_y = −" + v4(speed) + " m/s, ω = −" + v4(spin) + " rad/s (clockwise), v_x = 0, Coulomb "
                   "friction μ = 0.5. Solid: the seed's fitted law (e = " + v4(seed.restitution) + ", contact " +
                   v4(1e3 * seed.contact_duration) + " ms); dashed: the same K and n with D = 6000 (e = " +
@@ -181,7 +173,7 @@ void add_drop(report::Section& s, std::ostream& log) {
   const Ball ball;
   DropRelease rel;
   rel.height = 0.8;
-  rel.theta = 30 / kDeg;
+  rel.theta = 30 / kDegPerRad;
   rel.omega = -45;
   DropOptions o;
   o.max_bounces = 3;
@@ -265,7 +257,7 @@ void add_maps(report::Section& s, std::ostream& log) {
   co.x_tol_rel = 1e-6;  // boundary to a millionth of the grid spacing: far below the pixel size
   for (const auto& [law, name] : {std::pair{seed_law(), std::string("seed's fitted law (D = 60423)")},
                                   std::pair{low_damping_law(), std::string("low damping (D = 6000)")}}) {
-    const sweep::CellModel model = contact_model(ball, law, name);
+    const sweep::CellModel model = contact_model(law, name);
     const std::vector<double> values = sweep::evaluate_grid(grid, model);
     const sweep::ContourResult contour = sweep::trace_contour(grid, model, values, co);
     const std::size_t n_out = model.output_names.size();
@@ -291,7 +283,7 @@ void add_maps(report::Section& s, std::ostream& log) {
   ratio.axes = {{sweep::Quantity::theta_deg, 100, 170, 36}, {sweep::Quantity::ratio, 5, 15, 11}};
   ratio.fixed_speed = 4;
   ratio.fixed_mu = 0.5;
-  const sweep::CellModel model = contact_model(ball, low_damping_law(), "low damping (D = 6000)");
+  const sweep::CellModel model = contact_model(low_damping_law(), "low damping (D = 6000)");
   const std::vector<double> values = sweep::evaluate_grid(ratio, model);
   const sweep::ContourResult contour = sweep::trace_contour(ratio, model, values, co);
   report::Figure f = heat_map("As seed figure 55: e over spin/speed ratio, v_y = −4 m/s, low damping (D = 6000)", ratio,

@@ -216,29 +216,6 @@ report::Figure sweep_heat_map(const sweep::GridSpec& grid, const std::vector<dou
   return f;
 }
 
-SweepReportData sweep_report_data(const std::string& path, const sweep::CellModel& model,
-                                  const sweep::ContourOptions& options, const std::string& command) {
-  SweepReportData d;
-  const io::SweepFileScan scan = io::scan_sweep_file(path, &d.values);
-  d.header = scan.header;
-  if (scan.header.shard.count > 1) {
-    throw InputError(path, "--report: needs the whole grid, not shard " + std::to_string(scan.header.shard.index) +
-                               "/" + std::to_string(scan.header.shard.count));
-  }
-  if (scan.complete_cells != scan.expected_cells || scan.torn_tail) {
-    throw InputError(path, "--report: the sweep file is incomplete (" + std::to_string(scan.complete_cells) + " of " +
-                               std::to_string(scan.expected_cells) + " cells)");
-  }
-  if (model.output_index(options.output) < 0) {
-    throw InputError("--report: the cell model has no output '" + options.output + "'");
-  }
-  d.boundary = sweep::trace_contour(d.header.grid, model, d.values, options);
-  d.thresholds = sweep::spin_thresholds(d.header.grid, model, d.values, options);
-  d.contour_tol = options.x_tol_rel;
-  d.command = command;
-  return d;
-}
-
 report::Report sweep_report(const SweepReportData& d) {
   const sweep::GridSpec& grid = d.header.grid;
   const std::size_t n_out = d.header.outputs.size();

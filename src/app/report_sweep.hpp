@@ -46,7 +46,8 @@ report::Figure sweep_heat_map(const sweep::GridSpec& grid, const std::vector<dou
 inline constexpr std::int64_t kReportMaxSlices = 6;    ///< slices drawn as maps
 inline constexpr std::int64_t kReportMaxSide = 201;    ///< grid values per map axis
 
-/// Everything a sweep report shows, computed from a complete sweep file.
+/// Everything a sweep report shows: a complete sweep file read back and the boundary and
+/// thresholds the sweep traced (the report builder traces nothing itself).
 struct SweepReportData {
   io::SweepHeader header;     ///< grid, outputs and physics of the file (shard 0/1)
   std::vector<double> values;  ///< cell_count x outputs
@@ -55,13 +56,6 @@ struct SweepReportData {
   double contour_tol = 1e-9;  ///< ContourOptions::x_tol_rel used
   std::string command;        ///< "bounce sweep" or "bounce merge", for the subtitle
 };
-
-/// Reads the complete sweep file `path` (whole grid) and traces its boundary and
-/// thresholds with `model` (the cell function refines them: same points as --contour and
-/// --threshold with the same options). Throws InputError for an incomplete or sharded
-/// file or a model without output "e".
-SweepReportData sweep_report_data(const std::string& path, const sweep::CellModel& model,
-                                  const sweep::ContourOptions& options, const std::string& command);
 
 /// The report: parameters, summary numbers, e (and omega_out when present) maps of up to
 /// kReportMaxSlices slices with the boundary, the threshold curve and energy ratio.

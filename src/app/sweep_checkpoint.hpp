@@ -9,13 +9,13 @@
 
 #include "io/sweep_file.hpp"
 
-namespace tribolab::io {
+namespace tribolab::app {
 
 struct SweepCommandOptions;
 
 /// Which parts of two sweep headers differ ("grid, physical options"), for messages; the
 /// shard index is compared only when with_shard_index.
-std::string header_difference(const SweepHeader& a, const SweepHeader& b, bool with_shard_index);
+std::string header_difference(const io::SweepHeader& a, const io::SweepHeader& b, bool with_shard_index);
 
 class SweepCheckpoint {
  public:
@@ -24,7 +24,7 @@ class SweepCheckpoint {
   /// FILE.partial (exclusively locked): a checkpoint of this sweep is verified and resumed
   /// (a torn last line dropped), one of another sweep -> InputError, none (or one cut
   /// inside its first two lines) -> created with header and column lines.
-  SweepCheckpoint(const SweepCommandOptions& options, const SweepHeader& header);
+  SweepCheckpoint(const SweepCommandOptions& options, const io::SweepHeader& header);
   SweepCheckpoint(const SweepCheckpoint&) = delete;
   SweepCheckpoint& operator=(const SweepCheckpoint&) = delete;
   ~SweepCheckpoint();
@@ -48,4 +48,4 @@ class SweepCheckpoint {
   std::chrono::steady_clock::time_point last_sync_;
 };
 
-}  // namespace tribolab::io
+}  // namespace tribolab::app

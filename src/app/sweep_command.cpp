@@ -1,4 +1,4 @@
-#include "io/sweep_command.hpp"
+#include "app/sweep_command.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -8,12 +8,13 @@
 
 
 #include "io/atomic_file.hpp"
-#include "io/sweep_checkpoint.hpp"
+#include "app/sweep_checkpoint.hpp"
 #include "io/sweep_file.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 
-namespace tribolab::io {
+namespace tribolab::app {
+using namespace ::tribolab::io;
 namespace {
 
 namespace fs = std::filesystem;
@@ -41,14 +42,6 @@ std::string with_option_names(const std::string& message) {
   return message;
 }
 
-std::string strip_name(const std::string& message) {
-  const auto colon = message.find(": ");
-  if (colon != std::string::npos && sweep::quantity_from_name(std::string_view(message).substr(0, colon))) {
-    return message.substr(colon + 2);
-  }
-  return message;
-}
-
 std::string header_line_of(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
@@ -62,40 +55,46 @@ std::string header_line_of(const std::string& path) {
 
 void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& model,
                         SweepCommandResult& r) {
-  if (o.contour_out.empty() && o.threshold_out.empty()) return;
+  const bool boundary = !o.contour_out.empty() || o.keep_derived;
+  const bool thresholds = !o.threshold_out.empty() || o.keep_derived;
+  if (!boundary && !thresholds && !o.keep_values) return;
   std::vector<double> values;
   scan_sweep_file(o.out, &values);
   sweep::ContourOptions co = o.contour;
   co.threads = o.threads;
-  if (!o.contour_out.empty()) {
-    AtomicFile file(o.contour_out);
-    const sweep::ContourResult c = sweep::trace_contour(o.grid, model, values, co);
-    write_contour_csv(file.stream(), c);
-    file.commit();
+  if (boundary) {
+    sweep::ContourResult c = sweep::trace_contour(o.grid, model, values, co);
+    if (!o.contour_out.empty()) {
+      AtomicFile file(o.contour_out);
+      write_contour_csv(file.stream(), c);
+      file.commit();
+    }
     r.contour_lines = static_cast<std::int64_t>(c.lines.size());
     for (const auto& l : c.lines) r.contour_points += static_cast<std::int64_t>(l.points.size());
     r.contour_evaluations = c.evaluations;
+    if (o.keep_derived) r.boundary = std::move(c);
   }
-  if (!o.threshold_out.empty()) {
-    AtomicFile file(o.threshold_out);
-    const std::vector<sweep::Threshold> rows = sweep::spin_thresholds(o.grid, model, values, co);
-    write_threshold_csv(file.stream(), o.grid, rows);
-    file.commit();
+  if (thresholds) {
+    std::vector<sweep::Threshold> rows = sweep::spin_thresholds(o.grid, model, values, co);
+    if (!o.threshold_out.empty()) {
+      AtomicFile file(o.threshold_out);
+      write_threshold_csv(file.stream(), o.grid, rows);
+      file.commit();
+    }
     for (const auto& t : rows) r.thresholds_found += t.status == sweep::Threshold::Status::found;
+    if (o.keep_derived) r.thresholds = std::move(rows);
   }
+  if (o.keep_values) r.values = std::move(values);
 }
 
-
-void print_progress(std::ostream& out, const sweep::Progress& p) {
-  const double pct =
-      p.total > 0 ? 100.0 * static_cast<double>(p.done) / static_cast<double>(p.total) : 100;
-  const double left = p.rate > 0 ? static_cast<double>(p.total - p.done) / p.rate : 0;
-  char buf[160];
-  std::snprintf(buf, sizeof buf,
-                "\rsweep: %lld/%lld cells (%5.1f%%)  %.4g cells/s  %.1f s  ETA %.0f s   ",
-                static_cast<long long>(p.done), static_cast<long long>(p.total), pct, p.rate,
-                p.elapsed_s, left);
-  out << buf << std::flush;
+std::string to_string(SweepStatus s) {
+  switch (s) {
+    case SweepStatus::completed: return "completed";
+    case SweepStatus::reused: return "reused";
+    case SweepStatus::cancelled: return "cancelled";
+    case SweepStatus::worker: return "worker";
+  }
+  return "completed";
 }
 
 std::string SweepCommandOptions::validate() const {
@@ -124,10 +123,10 @@ std::string SweepCommandOptions::validate() const {
 }
 
 SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::CellModel& model,
-                                     std::ostream* progress, const std::atomic<bool>* cancel) {
+                                     const SweepProgressCallback& progress, const std::atomic<bool>* cancel) {
   if (auto e = o.validate(); !e.empty()) throw InputError(e);
   if (auto e = model.validate(); !e.empty()) throw InputError("cell model: " + e);
-  if ((!o.contour_out.empty() || !o.threshold_out.empty()) &&
+  if ((!o.contour_out.empty() || !o.threshold_out.empty() || o.keep_derived) &&
       model.output_index(o.contour.output) < 0) {
     throw InputError("--contour: the cell model has no output '" + o.contour.output + "'");
   }
@@ -145,7 +144,7 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
   r.threads = sweep::resolve_threads(o.threads);
   SweepCheckpoint file(o, header);
   if (file.reused()) {
-    r.status = "reused";
+    r.status = SweepStatus::reused;
     r.cells_resumed = r.cells_shard;
     write_derived_maps(o, model, r);
     return r;
@@ -163,22 +162,15 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
   ro.threads = o.threads;
   ro.chunk_cells = o.chunk_cells;
   ro.cancel = cancel;
-  bool printed = false;
-  if (progress != nullptr) {
-    ro.progress = [&](const sweep::Progress& p) {
-      print_progress(*progress, p);
-      printed = true;
-    };
-  }
+  ro.progress = progress;
   const sweep::RunSummary s = sweep::run_cells(o.grid, model, o.shard, file.first_local(), ro, sink);
-  if (printed) *progress << '\n' << std::flush;
   r.cells_computed = s.cells_computed;
   r.seconds = s.seconds;
   r.threads = s.threads;
   const bool complete = s.status == sweep::RunSummary::Status::completed;
   file.finish(complete);
   if (!complete) {
-    r.status = "cancelled";
+    r.status = SweepStatus::cancelled;
     r.out = file.partial_path();
     return r;
   }
@@ -271,57 +263,9 @@ MergeResult run_merge_command(const std::vector<std::string>& inputs, const std:
   return MergeResult{out, n, total};
 }
 
-sweep::Axis parse_axis(std::string_view text, sweep::Quantity q, const std::string& option) {
-  const std::vector<std::string> p = split(trim(text), ':');
-  if (p.size() != 3) {
-    throw InputError(option, "expected a range lo:hi:count (e.g. 100:170:71), got '" +
-                                 std::string(text.substr(0, 40)) + "'");
-  }
-  sweep::Axis a;
-  a.quantity = q;
-  a.lo = parse_double(p[0], option);
-  a.hi = parse_double(p[1], option);
-  const std::string_view c = trim(p[2]);
-  const auto [ptr, ec] = std::from_chars(c.data(), c.data() + c.size(), a.count);
-  if (c.empty() || ec != std::errc() || ptr != c.data() + c.size()) {
-    throw InputError(option, "count must be a whole number >= 1, got '" + std::string(c.substr(0, 40)) + "'");
-  }
-  if (auto e = a.validate(); !e.empty()) throw InputError(option, strip_name(e));
-  return a;
-}
-
-ValueOrAxis parse_value_or_axis(std::string_view text, sweep::Quantity q, const std::string& option) {
-  ValueOrAxis r;
-  if (text.find(':') != std::string_view::npos) {
-    r.axis = parse_axis(text, q, option);
-    return r;
-  }
-  r.value = parse_double(text, option);
-  sweep::Axis single{q, r.value, r.value, 1};
-  if (auto e = single.validate(); !e.empty()) throw InputError(option, strip_name(e));
-  return r;
-}
-
-sweep::Shard parse_shard(std::string_view text, const std::string& option) {
-  const std::string_view t = trim(text);
-  const auto slash = t.find('/');
-  sweep::Shard s;
-  auto parse = [&](std::string_view f, std::int64_t& v) {
-    const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
-    return !f.empty() && ec == std::errc() && ptr == f.data() + f.size();
-  };
-  if (slash == std::string_view::npos || !parse(t.substr(0, slash), s.index) ||
-      !parse(t.substr(slash + 1), s.count)) {
-    throw InputError(option, "expected i/N with whole numbers 0 <= i < N (e.g. 0/4), got '" +
-                                 std::string(text.substr(0, 40)) + "'");
-  }
-  if (auto e = s.validate(); !e.empty()) throw InputError(option, e);
-  return s;
-}
-
 nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommandOptions& o) {
   nlohmann::json j;
-  j["status"] = r.status;
+  j["status"] = to_string(r.status);
   j["out"] = r.out;
   j["cells_grid"] = r.cells_grid;
   j["cells_shard"] = r.cells_shard;
@@ -396,4 +340,4 @@ void write_threshold_csv(std::ostream& out, const sweep::GridSpec& grid,
   out << s;
 }
 
-}  // namespace tribolab::io
+}  // namespace tribolab::app

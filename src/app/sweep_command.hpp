@@ -1,15 +1,16 @@
-// What `bounce sweep` and `bounce merge` do, independent of the command-line parser:
-// checkpointed, resumable, shardable sweeps written to the sweep file format
-// (io/sweep_file.hpp), the merge of shard files, and the derived maps. The CLI layer only
-// parses options into SweepCommandOptions and builds the CellModel. See docs/cli.md.
+// The application of a sweep, for any cell model and any front end: checkpointed,
+// resumable, shardable sweeps written to the sweep file format (io/sweep_file.hpp), the
+// merge of shard files, and the derived maps. No command-line text is parsed here and
+// nothing is printed: progress goes to a callback. The bounce workflow on top of it is
+// app/bounce_sweep.hpp. See docs/design.md "Application layer: sweeps".
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <cstdint>
 #include <optional>
 #include <ostream>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,7 +19,7 @@
 #include "sweep/grid.hpp"
 #include "sweep/runner.hpp"
 
-namespace tribolab::io {
+namespace tribolab::app {
 
 struct SweepCommandOptions {
   sweep::GridSpec grid;      ///< axes and fixed values
@@ -32,12 +33,30 @@ struct SweepCommandOptions {
   std::string contour_out;    ///< --contour FILE.csv: the e = level polylines ("" = none)
   std::string threshold_out;  ///< --threshold FILE.csv: spin threshold per angle ("" = none)
   sweep::ContourOptions contour;  ///< output, level, tolerance of the derived maps
+  /// Keep the finished file's values in the result (read back once: cells x outputs doubles).
+  bool keep_values = false;
+  /// Trace the boundary and thresholds (once, with `contour`) and keep them in the result,
+  /// e.g. for a report, whether or not their CSV files are asked for.
+  bool keep_derived = false;
   /// Empty when valid; messages name the command-line option.
   std::string validate() const;
 };
 
+/// How a sweep run ended.
+enum class SweepStatus {
+  completed,  ///< every cell of the shard is in the output file
+  reused,     ///< the output file already held this complete sweep: nothing recomputed
+  cancelled,  ///< stopped by the cancel flag; the cells done are saved in the checkpoint
+  worker,     ///< an MPI rank other than 0: rank 0 owns the files and the result
+};
+/// "completed", "reused", "cancelled", "worker" (the JSON "status" of `bounce sweep`).
+std::string to_string(SweepStatus s);
+
+/// Called with the progress of a running sweep (from the calling thread); may be empty.
+using SweepProgressCallback = std::function<void(const sweep::Progress&)>;
+
 struct SweepCommandResult {
-  std::string status = "completed";  ///< "completed", "reused" (output already complete) or "cancelled"
+  SweepStatus status = SweepStatus::completed;
   std::string out;                   ///< the output file (or its checkpoint when cancelled)
   std::int64_t cells_grid = 0;       ///< cells in the whole grid
   std::int64_t cells_shard = 0;      ///< cells in this shard
@@ -47,6 +66,10 @@ struct SweepCommandResult {
   double seconds = 0;                ///< wall time of the computation, s
   std::int64_t contour_lines = 0, contour_points = 0, contour_evaluations = 0;
   std::int64_t thresholds_found = 0;
+  // Kept when asked (SweepCommandOptions::keep_values, keep_derived) for a finished sweep:
+  std::vector<double> values;  ///< cell_count x outputs, row-major, as in the file
+  std::optional<sweep::ContourResult> boundary;             ///< the output = level polylines
+  std::optional<std::vector<sweep::Threshold>> thresholds;  ///< per slice and angle
 };
 
 /// Runs (or resumes, or reuses) a sweep. Writes FILE.partial as it goes - complete lines
@@ -54,10 +77,10 @@ struct SweepCommandResult {
 /// is done, so killing the process at any moment loses only unwritten cells and an
 /// interrupted + resumed run gives the same bytes as an uninterrupted one. A FILE that
 /// already holds this complete sweep is reused (status "reused"; only the derived maps are
-/// computed); one holding another sweep is an error unless restart. Progress lines go to
-/// `progress` when it is not null. Throws InputError for invalid options or files.
+/// computed); one holding another sweep is an error unless restart. `progress` (when not
+/// empty) is called as chunks complete. Throws InputError for invalid options or files.
 SweepCommandResult run_sweep_command(const SweepCommandOptions& options, const sweep::CellModel& model,
-                                     std::ostream* progress,
+                                     const SweepProgressCallback& progress,
                                      const std::atomic<bool>* cancel = nullptr);
 
 struct MergeResult {
@@ -71,24 +94,11 @@ struct MergeResult {
 /// different sweeps, missing/duplicate shards, incomplete or corrupt files.
 MergeResult run_merge_command(const std::vector<std::string>& inputs, const std::string& out);
 
-/// "lo:hi:count" -> Axis of quantity q; errors name `option`.
-sweep::Axis parse_axis(std::string_view text, sweep::Quantity q, const std::string& option);
-/// A single number ("4") or a range ("4:8:3"): nullopt axis and the value, or the axis.
-struct ValueOrAxis {
-  std::optional<sweep::Axis> axis;
-  double value = 0;
-};
-ValueOrAxis parse_value_or_axis(std::string_view text, sweep::Quantity q, const std::string& option);
-/// "i/N" -> Shard; errors name `option`.
-sweep::Shard parse_shard(std::string_view text, const std::string& option);
-
-/// Writes the --contour / --threshold files of a finished sweep (reads o.out) and counts
-/// their contents into r. Needs the whole grid.
+/// Writes the --contour / --threshold files of a finished sweep (reads o.out once) and
+/// counts their contents into r; keeps values, boundary and thresholds in r when o asks.
+/// Each map is traced once. Needs the whole grid.
 void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& model,
                         SweepCommandResult& r);
-
-/// One progress line: "\rsweep: done/total cells (pct%)  rate cells/s  elapsed s  ETA s".
-void print_progress(std::ostream& out, const sweep::Progress& p);
 
 /// The JSON result of `bounce sweep` (keys documented in docs/cli.md#bounce-sweep).
 nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommandOptions& o);
@@ -99,4 +109,4 @@ void write_contour_csv(std::ostream& out, const sweep::ContourResult& contour);
 void write_threshold_csv(std::ostream& out, const sweep::GridSpec& grid,
                          const std::vector<sweep::Threshold>& rows);
 
-}  // namespace tribolab::io
+}  // namespace tribolab::app

@@ -1,4 +1,4 @@
-#include "io/sweep_mpi.hpp"
+#include "app/sweep_mpi.hpp"
 
 #include <cstdlib>
 
@@ -9,12 +9,12 @@
 #include <memory>
 #include <vector>
 
-#include "io/sweep_checkpoint.hpp"
+#include "app/sweep_checkpoint.hpp"
 #include "io/sweep_file.hpp"
 #include "numerics/error.hpp"
 #endif
 
-namespace tribolab::io {
+namespace tribolab::app {
 
 bool launched_by_mpi_launcher() {
   return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_SIZE") != nullptr ||
@@ -22,6 +22,8 @@ bool launched_by_mpi_launcher() {
 }
 
 #if TRIBOLAB_WITH_MPI
+
+using namespace ::tribolab::io;
 
 namespace {
 
@@ -66,7 +68,7 @@ MpiSession::~MpiSession() {
 }
 
 SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const sweep::CellModel& model,
-                                         std::ostream* progress, const std::atomic<bool>* cancel) {
+                                         const SweepProgressCallback& progress, const std::atomic<bool>* cancel) {
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
@@ -87,7 +89,7 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
   std::string message;
   if (rank == 0) {
     try {
-      if ((!o.contour_out.empty() || !o.threshold_out.empty()) &&
+      if ((!o.contour_out.empty() || !o.threshold_out.empty() || o.keep_derived) &&
           model.output_index(o.contour.output) < 0) {
         throw InputError("--contour: the cell model has no output '" + o.contour.output + "'");
       }
@@ -101,10 +103,10 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
   }
   if (agree(decision, message) == kReused) {
     if (rank != 0) {
-      r.status = "worker";
+      r.status = SweepStatus::worker;
       return r;
     }
-    r.status = "reused";
+    r.status = SweepStatus::reused;
     r.cells_resumed = r.cells_shard;
     write_derived_maps(o, model, r);
     return r;
@@ -126,7 +128,6 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
   std::vector<int> lengths(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size));
   std::vector<int> infos(2 * static_cast<std::size_t>(size));
   std::vector<char> all;
-  bool printed = false;
   long long a = first;
   bool stopped = false;
   while (a < n_local) {
@@ -175,14 +176,13 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
         decision = kError;
         message = e.what();
       }
-      if (progress != nullptr) {
+      if (progress) {
         sweep::Progress p;
         p.done = b;
         p.total = n_local;
         p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         p.rate = p.elapsed_s > 0 ? static_cast<double>(b - first) / p.elapsed_s : 0;
-        print_progress(*progress, p);
-        printed = true;
+        progress(p);
       }
     }
     try {
@@ -197,16 +197,15 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
       break;
     }
   }
-  if (printed) *progress << '\n' << std::flush;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (rank != 0) {
-    r.status = "worker";
+    r.status = SweepStatus::worker;
     return r;
   }
   r.cells_computed = a - first;
   file->finish(!stopped);
   if (stopped) {
-    r.status = "cancelled";
+    r.status = SweepStatus::cancelled;
     r.out = file->partial_path();
     return r;
   }
@@ -216,4 +215,4 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
 
 #endif
 
-}  // namespace tribolab::io
+}  // namespace tribolab::app

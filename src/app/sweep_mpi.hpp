@@ -7,9 +7,9 @@
 #include <atomic>
 #include <ostream>
 
-#include "io/sweep_command.hpp"
+#include "app/sweep_command.hpp"
 
-namespace tribolab::io {
+namespace tribolab::app {
 
 /// True when the process was started by an MPI launcher (mpirun/mpiexec/srun sets
 /// OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_RANK) - whether or not this build has MPI.
@@ -40,12 +40,13 @@ class MpiSession {
 /// to the checkpoint, then broadcasts continue / stop (cancel, checked on rank 0 only) /
 /// error. Checkpoint, resume, rename and derived maps are rank 0's, exactly as in
 /// run_sweep_command, so the file is byte-identical to a one-process run. Returns the
-/// result on rank 0; other ranks get status "worker". An error on any rank is rethrown on
+/// result on rank 0; other ranks get SweepStatus::worker. An error on any rank is rethrown on
 /// every rank.
 SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& options,
-                                         const sweep::CellModel& model, std::ostream* progress,
+                                         const sweep::CellModel& model,
+                                         const SweepProgressCallback& progress,
                                          const std::atomic<bool>* cancel = nullptr);
 
 #endif
 
-}  // namespace tribolab::io
+}  // namespace tribolab::app

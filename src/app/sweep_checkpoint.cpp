@@ -1,4 +1,4 @@
-#include "io/sweep_checkpoint.hpp"
+#include "app/sweep_checkpoint.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -11,10 +11,11 @@
 #include <sys/file.h>
 #include <unistd.h>
 
-#include "io/sweep_command.hpp"
+#include "app/sweep_command.hpp"
 #include "numerics/error.hpp"
 
-namespace tribolab::io {
+namespace tribolab::app {
+using namespace ::tribolab::io;
 namespace {
 
 namespace fs = std::filesystem;
@@ -203,4 +204,4 @@ void SweepCheckpoint::finish(bool complete) {
   sync_directory_of(out_);
 }
 
-}  // namespace tribolab::io
+}  // namespace tribolab::app

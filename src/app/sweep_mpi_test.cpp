@@ -1,6 +1,6 @@
 // Run by CTest under `mpirun -np 2` (test sweep_mpi_2ranks, built with -DTRIBOLAB_MPI=ON);
 // skipped when the test program is started without an MPI launcher.
-#include "io/sweep_mpi.hpp"
+#include "app/sweep_mpi.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +15,8 @@
 #include "numerics/error.hpp"
 #include "sweep/synthetic.hpp"
 
-namespace tribolab::io {
+namespace tribolab::app {
+using namespace ::tribolab::io;
 namespace {
 
 namespace fs = std::filesystem;
@@ -68,12 +69,12 @@ TEST(SweepMpi, RanksWriteTheSameBytesAsOneProcessAndResume) {
   o.contour_out = dir + "/mpi_contour.csv";
   const SweepCommandResult r = run_sweep_command_mpi(o, model, nullptr);
   if (rank == 0) {
-    EXPECT_EQ(r.status, "completed");
+    EXPECT_EQ(r.status, SweepStatus::completed);
     EXPECT_EQ(r.cells_computed, r.cells_shard);
     EXPECT_EQ(read_file(o.out), reference);
     EXPECT_EQ(read_file(o.contour_out), read_file(dir + "/one_contour.csv"));
   } else {
-    EXPECT_EQ(r.status, "worker");
+    EXPECT_EQ(r.status, SweepStatus::worker);
   }
   MPI_Barrier(MPI_COMM_WORLD);
 
@@ -100,12 +101,12 @@ TEST(SweepMpi, RanksWriteTheSameBytesAsOneProcessAndResume) {
   };
   const SweepCommandResult rs = run_sweep_command_mpi(stop, counting, nullptr, &cancel);
   if (rank == 0) {
-    EXPECT_EQ(rs.status, "cancelled");
+    EXPECT_EQ(rs.status, SweepStatus::cancelled);
     EXPECT_FALSE(fs::exists(stop.out));
   }
   const SweepCommandResult rs2 = run_sweep_command_mpi(stop, model, nullptr);
   if (rank == 0) {
-    EXPECT_EQ(rs2.status, "completed");
+    EXPECT_EQ(rs2.status, SweepStatus::completed);
     EXPECT_EQ(read_file(stop.out), reference);
   }
   MPI_Barrier(MPI_COMM_WORLD);
@@ -141,5 +142,5 @@ TEST(SweepMpi, AnErrorOnAnyRankReachesEveryRank) {
 }
 
 }  // namespace
-}  // namespace tribolab::io
+}  // namespace tribolab::app
 #endif

@@ -1,4 +1,4 @@
-#include "io/sweep_command.hpp"
+#include "app/sweep_command.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,8 @@
 #include "numerics/error.hpp"
 #include "sweep/synthetic.hpp"
 
-namespace tribolab::io {
+namespace tribolab::app {
+using namespace ::tribolab::io;
 namespace {
 
 namespace fs = std::filesystem;
@@ -66,7 +67,7 @@ TEST(SweepCommand, ThreadCountsGiveByteIdenticalFilesEqualToCellsOneByOne) {
     o.threads = threads;
     o.chunk_cells = 0;
     const SweepCommandResult r = run_sweep_command(o, m, nullptr);
-    EXPECT_EQ(r.status, "completed");
+    EXPECT_EQ(r.status, SweepStatus::completed);
     EXPECT_EQ(r.cells_computed, 2 * 15 * 9);
     EXPECT_FALSE(fs::exists(o.out + ".partial"));
     const std::string text = read_file(o.out);
@@ -173,7 +174,7 @@ TEST(SweepCommand, ResumeAfterTruncationAtRandomPointsEqualsAnUninterruptedRun) 
     SweepCommandOptions o = options_for(out);
     o.threads = 1 + static_cast<int>(cut % 3);
     const SweepCommandResult r = run_sweep_command(o, m, nullptr);
-    EXPECT_EQ(r.status, "completed");
+    EXPECT_EQ(r.status, SweepStatus::completed);
     EXPECT_EQ(r.cells_resumed + r.cells_computed, r.cells_shard) << "cut at " << cut;
     ASSERT_EQ(read_file(out), full) << "cut at byte " << cut;
     EXPECT_FALSE(fs::exists(out + ".partial"));
@@ -198,7 +199,7 @@ TEST(SweepCommand, ResumeAfterCancellationEqualsAnUninterruptedRun) {
     cancel = false;
     const SweepCommandResult r = run_sweep_command(options_for(out), m, nullptr, &cancel);
     if (stop_after < 1000) {
-      EXPECT_EQ(r.status, "cancelled");
+      EXPECT_EQ(r.status, SweepStatus::cancelled);
       EXPECT_EQ(r.out, out + ".partial");
       EXPECT_FALSE(fs::exists(out));  // never a partial file under the final name
       const SweepFileScan scan = scan_sweep_file(out + ".partial");
@@ -206,7 +207,7 @@ TEST(SweepCommand, ResumeAfterCancellationEqualsAnUninterruptedRun) {
       EXPECT_GT(scan.complete_cells, resumed_before);
       resumed_before = scan.complete_cells;
     } else {
-      EXPECT_EQ(r.status, "completed");
+      EXPECT_EQ(r.status, SweepStatus::completed);
       EXPECT_EQ(r.cells_resumed, resumed_before);
     }
   }
@@ -220,7 +221,7 @@ TEST(SweepCommand, ReusesAFinishedOutputAndRefusesAnotherSweepsFiles) {
   run_sweep_command(o, m, nullptr);
   const std::string first = read_file(o.out);
   const SweepCommandResult again = run_sweep_command(o, m, nullptr);
-  EXPECT_EQ(again.status, "reused");
+  EXPECT_EQ(again.status, SweepStatus::reused);
   EXPECT_EQ(again.cells_computed, 0);
   EXPECT_EQ(read_file(o.out), first);
 
@@ -231,7 +232,7 @@ TEST(SweepCommand, ReusesAFinishedOutputAndRefusesAnotherSweepsFiles) {
             std::string::npos);
   EXPECT_EQ(read_file(o.out), first);  // untouched
   other.restart = true;
-  EXPECT_EQ(run_sweep_command(other, m, nullptr).status, "completed");
+  EXPECT_EQ(run_sweep_command(other, m, nullptr).status, SweepStatus::completed);
   EXPECT_NE(read_file(o.out), first);
 
   write_text(dir + "/notes.csv", "my precious notes\n");
@@ -246,7 +247,7 @@ TEST(SweepCommand, RefusesTheCheckpointOfADifferentSweep) {
   const sweep::CellModel m = sweep::synthetic::wave_model();
   std::atomic<bool> cancel{true};  // stop at once: leaves a checkpoint with no cells
   const SweepCommandOptions o = options_for(dir + "/map.csv");
-  EXPECT_EQ(run_sweep_command(o, m, nullptr, &cancel).status, "cancelled");
+  EXPECT_EQ(run_sweep_command(o, m, nullptr, &cancel).status, SweepStatus::cancelled);
   sweep::CellModel other = m;
   other.description = "different K";
   EXPECT_NE(message_of([&] { run_sweep_command(o, other, nullptr); })
@@ -255,7 +256,7 @@ TEST(SweepCommand, RefusesTheCheckpointOfADifferentSweep) {
             std::string::npos);
   SweepCommandOptions restart = o;
   restart.restart = true;
-  EXPECT_EQ(run_sweep_command(restart, other, nullptr).status, "completed");
+  EXPECT_EQ(run_sweep_command(restart, other, nullptr).status, SweepStatus::completed);
 }
 
 TEST(SweepCommand, RefusesACheckpointLockedByAnotherRun) {
@@ -307,16 +308,22 @@ TEST(SweepCommand, WritesContourAndThresholdMaps) {
   }
   // The maps of a reused output are the same.
   const std::string first = read_file(o.contour_out);
-  EXPECT_EQ(run_sweep_command(o, m, nullptr).status, "reused");
+  EXPECT_EQ(run_sweep_command(o, m, nullptr).status, SweepStatus::reused);
   EXPECT_EQ(read_file(o.contour_out), first);
 }
 
-TEST(SweepCommand, ProgressGoesToTheGivenStreamOnly) {
+TEST(SweepCommand, ProgressGoesToTheGivenCallbackOnly) {
   const std::string dir = temp_dir("progress");
-  std::ostringstream progress;
+  sweep::Progress last;
+  int calls = 0;
   SweepCommandOptions o = options_for(dir + "/map.csv");
-  run_sweep_command(o, sweep::synthetic::wave_model(), &progress);
-  EXPECT_NE(progress.str().find("sweep: 270/270 cells (100.0%)"), std::string::npos) << progress.str();
+  run_sweep_command(o, sweep::synthetic::wave_model(), [&](const sweep::Progress& p) {
+    last = p;
+    ++calls;
+  });
+  EXPECT_GE(calls, 1);
+  EXPECT_EQ(last.done, 270);
+  EXPECT_EQ(last.total, 270);
 }
 
 TEST(SweepCommand, InvalidOptionsNameTheOptionAndWriteNothing) {
@@ -348,41 +355,11 @@ TEST(SweepCommand, InvalidOptionsNameTheOptionAndWriteNothing) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
-TEST(SweepOptionsParsing, AxesRangesAndShards) {
-  const sweep::Axis a = parse_axis("100:170:71", sweep::Quantity::theta_deg, "--theta-deg");
-  EXPECT_EQ(a, (sweep::Axis{sweep::Quantity::theta_deg, 100, 170, 71}));
-  EXPECT_EQ(parse_axis("4:4:1", sweep::Quantity::speed, "--speed").count, 1);
-  auto err = [](std::string_view text) {
-    return message_of([&] { parse_axis(text, sweep::Quantity::omega, "--omega"); });
-  };
-  EXPECT_EQ(err("30:50"), "--omega: expected a range lo:hi:count (e.g. 100:170:71), got '30:50'");
-  EXPECT_EQ(err("30:x:5"), "--omega: malformed number 'x'");
-  EXPECT_EQ(err("30:50:0"), "--omega: count must be at least 1, got 0");
-  EXPECT_EQ(err("30:50:2.5"), "--omega: count must be a whole number >= 1, got '2.5'");
-  EXPECT_EQ(err("30:50:1"), "--omega: a single value (count 1) needs lo = hi, got 30 and 50");
-  EXPECT_EQ(err("30:nan:3"), "--omega: number must be finite, got 'nan'");
-  EXPECT_EQ(message_of([&] { parse_axis("0:8:3", sweep::Quantity::speed, "--speed"); }),
-            "--speed: the incoming speed must be > 0 m/s");
-
-  const ValueOrAxis fixed = parse_value_or_axis("8", sweep::Quantity::speed, "--speed");
-  EXPECT_FALSE(fixed.axis.has_value());
-  EXPECT_EQ(fixed.value, 8);
-  EXPECT_TRUE(parse_value_or_axis("0.2:0.8:4", sweep::Quantity::mu, "--mu").axis.has_value());
-  EXPECT_EQ(message_of([&] { parse_value_or_axis("-0.1", sweep::Quantity::mu, "--mu"); }),
-            "--mu: mu must be >= 0");
-
-  EXPECT_EQ(parse_shard("2/5", "--shard"), (sweep::Shard{2, 5}));
-  EXPECT_EQ(message_of([&] { parse_shard("5/5", "--shard"); }),
-            "--shard: shard index must be in 0..4, got 5");
-  EXPECT_EQ(message_of([&] { parse_shard("1", "--shard"); }),
-            "--shard: expected i/N with whole numbers 0 <= i < N (e.g. 0/4), got '1'");
-  EXPECT_NE(message_of([&] { parse_shard("0/0", "--shard"); }).find("at least 1"), std::string::npos);
-}
-
 }  // namespace
-}  // namespace tribolab::io
+}  // namespace tribolab::app
 
-namespace tribolab::io {
+namespace tribolab::app {
+using namespace ::tribolab::io;
 namespace {
 
 TEST(SweepCommand, JsonResultHasTheDocumentedKeys) {
@@ -402,4 +379,4 @@ TEST(SweepCommand, JsonResultHasTheDocumentedKeys) {
 }
 
 }  // namespace
-}  // namespace tribolab::io
+}  // namespace tribolab::app

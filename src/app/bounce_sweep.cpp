@@ -1,0 +1,197 @@
+#include "app/bounce_sweep.hpp"
+
+#include "app/report_sweep.hpp"
+#include "app/sweep_mpi.hpp"
+#include "io/sweep_file.hpp"
+#include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
+#include "report/html.hpp"
+
+#include <fstream>
+#include <utility>
+
+namespace tribolab::app {
+namespace {
+
+/// The axis of `option` with its quantity set (the caller may leave it at its default).
+sweep::Axis axis_of(sweep::Axis a, sweep::Quantity q) {
+  a.quantity = q;
+  return a;
+}
+
+/// The grid and run options of the sweep, checked; messages name the option.
+SweepCommandOptions to_run_options(const BounceSweepOptions& a) {
+  SweepCommandOptions o;
+  if (!a.theta_deg) throw InputError("--theta-deg is required");
+  o.grid.axes.push_back(axis_of(*a.theta_deg, sweep::Quantity::theta_deg));
+  if (a.omega.has_value() == a.ratio.has_value()) {
+    throw InputError("give exactly one of --omega (spin range) and --ratio (spin/speed range)");
+  }
+  if (a.omega) o.grid.axes.push_back(axis_of(*a.omega, sweep::Quantity::omega));
+  if (a.ratio) o.grid.axes.push_back(axis_of(*a.ratio, sweep::Quantity::ratio));
+  o.grid.fixed_speed = a.speed.value;
+  o.grid.fixed_mu = a.mu.value;
+  if (a.speed.axis) o.grid.axes.push_back(axis_of(*a.speed.axis, sweep::Quantity::speed));
+  if (a.mu.axis) o.grid.axes.push_back(axis_of(*a.mu.axis, sweep::Quantity::mu));
+  // Physical ranges of the swept quantities (numerics/physical_range.hpp, docs/cli.md#physical-ranges).
+  for (const sweep::Axis& ax : o.grid.axes) {
+    const char* option = ax.quantity == sweep::Quantity::speed   ? "--speed"
+                         : ax.quantity == sweep::Quantity::mu    ? "--mu"
+                         : ax.quantity == sweep::Quantity::omega ? "--omega"
+                         : ax.quantity == sweep::Quantity::ratio ? "--ratio"
+                                                                 : nullptr;
+    const PhysicalRange r = ax.quantity == sweep::Quantity::speed   ? ranges::speed
+                            : ax.quantity == sweep::Quantity::mu    ? ranges::friction
+                            : ax.quantity == sweep::Quantity::ratio ? PhysicalRange{-1e5, 1e5, "rad/m"}
+                                                                    : ranges::spin;
+    if (option) for (double v : {ax.lo, ax.hi}) check_range(v, r, option);
+  }
+  check_range(o.grid.fixed_speed, ranges::speed, "--speed");
+  check_range(o.grid.fixed_mu, ranges::friction, "--mu");
+  sweep::sort_axes(o.grid.axes);
+  o.shard = a.shard;
+  o.out = a.out;
+  o.threads = a.threads;
+  o.restart = a.restart;
+  o.contour_out = a.contour;
+  o.threshold_out = a.threshold;
+  if (!(a.contour_tol > 0 && a.contour_tol < 1)) {
+    throw InputError("--contour-tol", "must be in (0, 1) (a fraction of the grid spacing)");
+  }
+  o.contour.x_tol_rel = a.contour_tol;
+  if (auto e = o.validate(); !e.empty()) throw InputError(e);
+  if (!a.report.empty()) {
+    // A shard holds every N-th cell of the grid: no map to draw. Checked before any work.
+    if (o.shard.count > 1) {
+      throw InputError("--report", "needs the whole grid, not one shard; merge the shards with `tribolab bounce "
+                                   "merge ... --report FILE.html`");
+    }
+    for (const std::string* p : {&o.out, &o.contour_out, &o.threshold_out}) {
+      if (!p->empty() && (a.report == *p || a.report == *p + ".partial")) {
+        throw InputError("--report", "must not be the same file as --out, --contour or --threshold");
+      }
+    }
+  }
+  o.keep_values = !a.report.empty() || a.return_map;
+  o.keep_derived = !a.report.empty();
+  return o;
+}
+
+/// The collision angle is defined on [0, 180] deg: checks the swept range once.
+void check_theta_range(const BounceCell& cell, const sweep::Axis& theta) {
+  if (cell.convention != AngleConvention::collision) return;
+  for (double v : {theta.lo, theta.hi}) {
+    if (!(v >= 0 && v <= 180)) {
+      throw InputError("--theta-deg", "a collision angle lies in 0..180 deg, got " + io::format_number_exact(v) +
+                                          " (use --angle orientation for the orientation at impact)");
+    }
+  }
+}
+
+SweepMap map_of(const sweep::GridSpec& grid, const sweep::CellModel& model, const std::vector<double>& values) {
+  SweepMap m;
+  for (const sweep::Axis& ax : grid.axes) {
+    m.axis_names.emplace_back(sweep::quantity_name(ax.quantity));
+    std::vector<double> v(static_cast<std::size_t>(ax.count));
+    for (std::int64_t i = 0; i < ax.count; ++i) v[static_cast<std::size_t>(i)] = ax.value(i);
+    m.axis_values.push_back(std::move(v));
+  }
+  m.output_names = model.output_names;
+  const std::size_t n = model.output_names.size(), cells = n == 0 ? 0 : values.size() / n;
+  m.outputs.assign(n, std::vector<double>(cells));
+  for (std::size_t c = 0; c < cells; ++c) {
+    for (std::size_t j = 0; j < n; ++j) m.outputs[j][c] = values[c * n + j];
+  }
+  return m;
+}
+
+/// The cell model that wrote the sweep file `path` (its header's physics description).
+sweep::CellModel model_of_sweep_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "no such file");
+  std::string line;
+  if (!std::getline(in, line) || in.eof()) {
+    throw InputError(path + ":1", "not a tribolab sweep file (no complete header line)");
+  }
+  const io::SweepHeader h = io::parse_header(line, path + ":1");
+  return bounce_cell_model_from_description(h.model);
+}
+
+}  // namespace
+
+BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
+  const SweepCommandOptions o = to_run_options(a);
+  const BounceCell cell = make_bounce_cell(a.cell);
+  check_theta_range(cell, *a.theta_deg);
+  const sweep::CellModel model = bounce_cell_model(cell);
+  BounceSweepResult result;
+  if (a.mpi) {
+#if TRIBOLAB_WITH_MPI
+    result.run = run_sweep_command_mpi(o, model, a.progress, a.cancel);
+#else
+    throw InputError("this tribolab was built without MPI (cmake -DTRIBOLAB_MPI=ON); run it "
+                     "without mpirun, or split the grid with --shard");
+#endif
+  } else {
+    result.run = run_sweep_command(o, model, a.progress, a.cancel);
+  }
+  SweepCommandResult& r = result.run;
+  if (r.status == SweepStatus::worker) {
+    result.is_reporting_rank = false;
+    return result;
+  }
+  if (r.status == SweepStatus::cancelled) {
+    throw InputError("interrupted: " + std::to_string(r.cells_resumed + r.cells_computed) + " of " +
+                     std::to_string(r.cells_shard) + " cells saved in " + r.out +
+                     "; run the same command again to resume");
+  }
+  // Built from the completed file read back and the boundary and thresholds the sweep traced
+  // (the same points as --contour/--threshold): the same report for a fresh, resumed or
+  // reused sweep.
+  if (!a.report.empty()) {
+    SweepReportData d;
+    d.header = io::SweepHeader{o.grid, sweep::Shard{}, model.output_names, model.description};
+    d.values = r.values;
+    d.boundary = r.boundary.value_or(sweep::ContourResult{});
+    d.thresholds = r.thresholds.value_or(std::vector<sweep::Threshold>{});
+    d.contour_tol = o.contour.x_tol_rel;
+    d.command = "bounce sweep";
+    report::write_html(sweep_report(d), a.report);
+  }
+  if (a.return_map) result.map = map_of(o.grid, model, r.values);
+  r.values = {};
+  r.boundary.reset();
+  r.thresholds.reset();
+  result.json = sweep_result_json(r, o);
+  return result;
+}
+
+BounceMergeResult bounce_merge(const BounceMergeOptions& a) {
+  // The physics is rebuilt from the first shard's header before anything is written, so a
+  // file this tribolab cannot report on fails without output.
+  std::optional<sweep::CellModel> model;
+  if (!a.report.empty()) {
+    if (a.report == a.out) throw InputError("--report", "must not be the same file as --out");
+    if (!a.files.empty()) model = model_of_sweep_file(a.files.front());
+  }
+  const MergeResult r = run_merge_command(a.files, a.out);
+  if (model) {
+    SweepReportData d;
+    const io::SweepFileScan scan = io::scan_sweep_file(r.out, &d.values);
+    d.header = scan.header;
+    const sweep::ContourOptions co;
+    if (model->output_index(co.output) < 0) {
+      throw InputError("--report: the cell model has no output '" + co.output + "'");
+    }
+    d.boundary = sweep::trace_contour(d.header.grid, *model, d.values, co);
+    d.thresholds = sweep::spin_thresholds(d.header.grid, *model, d.values, co);
+    d.contour_tol = co.x_tol_rel;
+    d.command = "bounce merge";
+    report::write_html(sweep_report(d), a.report);
+  }
+  BounceMergeResult result;
+  result.json = nlohmann::json{{"out", r.out}, {"shards", r.shards}, {"cells", r.cells}};
+  return result;
+}
+
+}  // namespace tribolab::app
