@@ -1,0 +1,37 @@
+// `tribolab track kinematics` (docs/cli.md#track): velocities and accelerations of one track,
+// Tracker's stencils or Savitzky-Golay with standard errors, never across impacts
+// (docs/theory.md#kinematics).
+#pragma once
+
+#include "app/track_import.hpp"
+#include "track/kinematics.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace tribolab::app {
+
+struct TrackKinematicsOptions {
+  TrackInputOptions input;
+  std::string track;             ///< track to differentiate; empty: the file's only track
+  std::string method = "tracker";  ///< tracker (Tracker's finite differences) or savgol
+  int window = 7;                ///< savgol: points per local fit
+  int order = 2;                 ///< savgol: polynomial degree 1..6
+  std::string impacts = "auto";  ///< auto: never difference across detected impacts; none: straight through
+  std::string out;               ///< CSV t,x,y,vx,vy,ax,ay (+ sigmas for savgol); required
+  std::string report;            ///< HTML report; empty: not written
+};
+
+struct TrackKinematicsResult {
+  nlohmann::json json;           ///< what `track kinematics --json` prints
+  /// Per point: frame, t (s), x, y (m), vx, vy (m/s), ax, ay (m/s^2) and their standard errors
+  /// (savgol; NaN for tracker and where a derivative is undefined), the impacts.
+  track::Kinematics kinematics;
+};
+
+/// Validates (InputError naming --method, --window/--order, --impacts, --out or the file),
+/// differentiates, writes the CSV (and the report when asked) and summarises.
+TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options);
+
+}  // namespace tribolab::app

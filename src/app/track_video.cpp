@@ -1,0 +1,187 @@
+#include "app/track_video.hpp"
+
+#include "app/report_track_video.hpp"
+#include "app/track_import.hpp"
+#include "io/atomic_file.hpp"
+#include "io/text.hpp"
+#include "io/tracker_trk.hpp"
+#include "numerics/error.hpp"
+#include "report/html.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <memory>
+
+namespace tribolab::app {
+
+namespace {
+
+std::vector<double> numbers(const std::string& text, std::size_t count, const std::string& where) {
+  const auto parts = io::split(text, ',');
+  if (parts.size() != count) {
+    throw InputError(where, "expected " + std::to_string(count) + " comma-separated numbers, got '" +
+                                text.substr(0, 60) + "'");
+  }
+  std::vector<double> v;
+  for (const auto& p : parts) v.push_back(io::parse_double(p, where));
+  return v;
+}
+
+/// NAME=X,Y[@FRAME]
+video::Target parse_target(const std::string& text, video::Target::Kind kind, const std::string& opt) {
+  const auto eq = text.find('=');
+  const std::string where = opt + " " + text.substr(0, 60);
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError(where, "expected NAME=X,Y or NAME=X,Y@FRAME (pixels: x right, y down)");
+  }
+  video::Target t;
+  t.kind = kind;
+  t.name = text.substr(0, eq);
+  std::string pos = text.substr(eq + 1);
+  if (const auto at = pos.find('@'); at != std::string::npos) {
+    const double f = io::parse_double(pos.substr(at + 1), where + " (frame)");
+    if (f != std::floor(f) || f < 0 || f > 1e8) {
+      throw InputError(where, "the frame after @ must be a whole number from 0");
+    }
+    t.frame = static_cast<int>(f);
+    pos = pos.substr(0, at);
+  }
+  const auto xy = numbers(pos, 2, where);
+  t.x_px = xy[0];
+  t.y_px = xy[1];
+  return t;
+}
+
+bool ends_with_trk(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string e = path.substr(path.size() - 4);
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e == ".trk";
+}
+
+video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
+  video::TrackVideoOptions o;
+  o.source.scale_m_per_px = a.scale.value_or(0);
+  o.source.axes_deg = a.axes_deg;
+  o.source.fps = a.fps.value_or(0);
+  o.source.time_scale = a.time_scale;
+  o.source.zip_entry = a.entry;
+  o.point.min_score = a.min_score;
+  o.point.patch_px = a.patch;
+  o.point.search_px = a.search.value_or(0);
+  o.point.max_turn_deg = a.max_turn_deg;
+  o.point.max_gap_frames = a.max_gap;
+  o.ellipse.min_score = a.ellipse_min_score;
+  o.ellipse.max_gap_frames = a.max_gap;
+  o.progress = a.progress;
+  if (a.report.empty()) o.thumbnails = 0;
+  for (const auto& s : a.start) o.targets.push_back(parse_target(s, video::Target::Kind::point, "--start"));
+  for (const auto& s : a.ellipse) o.targets.push_back(parse_target(s, video::Target::Kind::ellipse, "--ellipse"));
+  for (const auto& name : a.from_track) {
+    video::Target t;
+    t.name = name;
+    t.from_track = name;
+    o.targets.push_back(t);
+  }
+  if (!a.calibrate.empty()) {
+    const auto v = numbers(a.calibrate, 5, "--calibrate");
+    o.source.calibrate_points = std::make_pair(cv::Point2d(v[0], v[1]), cv::Point2d(v[2], v[3]));
+    o.source.calibrate_length_m = v[4];
+  }
+  if (!a.origin.empty()) {
+    const auto v = numbers(a.origin, 2, "--origin");
+    o.source.origin_px = cv::Point2d(v[0], v[1]);
+  }
+  if (!a.write_trk.empty() && !ends_with_trk(a.write_trk)) {
+    throw InputError("--write-trk " + a.write_trk, "the project file must end in .trk");
+  }
+  if (const auto err = o.validate(); !err.empty()) throw InputError(err);
+  return o;
+}
+
+nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions& a) {
+  const video::VideoInput& in = r.input;
+  nlohmann::json j;
+  j["input"] = in.input;
+  j["video"] = {{"path", in.project_video.empty() ? in.input : in.project_video},
+                {"width", in.info.width},
+                {"height", in.info.height},
+                {"frame_count", in.info.frame_count},
+                {"fps", json_number(in.info.fps)},
+                {"codec", in.info.codec}};
+  j["clip"] = {{"start_frame", in.clip.start_frame},
+               {"step_size", in.clip.step_size},
+               {"step_count", in.clip.step_count}};
+  j["frames"] = r.frames;
+  j["fps"] = 1 / in.time.frame_duration_s;
+  j["time_base"] = {{"start_frame", in.time.start_frame},
+                    {"start_time", in.time.start_time_s},
+                    {"frame_duration", in.time.frame_duration_s},
+                    {"time_scale", in.time.time_scale}};
+  const io::TrkCoordFrame& c = in.calibration.coords.front();
+  j["calibration"] = {
+      {"calibrated", in.calibration.calibrated},
+      {"unit", in.calibration.calibrated ? "m" : "px"},
+      {"m_per_px", in.calibration.calibrated ? json_number(in.calibration.metres_per_unit / c.xscale)
+                                             : nlohmann::json(nullptr)},
+      {"origin_px", {c.origin_x, c.origin_y}},
+      {"axes_deg", c.angle_deg},
+      {"key_frames", in.calibration.coords.size()}};
+  nlohmann::json tracks = nlohmann::json::object();
+  nlohmann::json names = nlohmann::json::array();
+  for (const auto& s : r.series) {
+    names.push_back(s.name);
+    nlohmann::json lost = nlohmann::json::array();
+    int lost_rows = 0;
+    for (const auto& [f0, f1] : s.lost_ranges) lost.push_back({f0, f1});
+    for (const auto& row : s.rows) lost_rows += row.lost;
+    nlohmann::json t = {{"kind", s.kind == video::Target::Kind::ellipse ? "ellipse" : "point"},
+                        {"start_frame", s.rows.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.rows.front().frame)},
+                        {"rows", s.rows.size()},
+                        {"tracked", s.tracked},
+                        {"lost", lost_rows},
+                        {"lost_ranges", lost},
+                        {"median_score", s.median_score}};
+    if (s.vs_human) {
+      t["vs_human"] = {{"frames", s.vs_human->frames},
+                       {"median_px", s.vs_human->median_px},
+                       {"max_px", s.vs_human->max_px}};
+    } else {
+      t["vs_human"] = nullptr;
+    }
+    tracks[s.name] = t;
+  }
+  j["track_names"] = names;
+  j["tracks"] = tracks;
+  j["warnings"] = r.warnings;
+  j["out"] = a.out;
+  j["write_trk"] = a.write_trk.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.write_trk);
+  j["report"] = a.report.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.report);
+  return j;
+}
+
+}  // namespace
+
+TrackVideoResult track_video(const TrackVideoOptions& options) {
+  const video::TrackVideoOptions o = build_options(options);
+  if (options.out.empty()) throw InputError("--out", "the output CSV is required");
+  // open the outputs first: a bad output path fails before minutes of decoding
+  io::AtomicFile csv(options.out);
+  std::unique_ptr<io::AtomicFile> trk;
+  if (!options.write_trk.empty()) trk = std::make_unique<io::AtomicFile>(options.write_trk);
+  video::TrackVideoResult r = video::track_video(options.input, o);
+  video::write_csv(csv.stream(), r);
+  if (trk) {
+    const io::TrkWriteSpec spec = video::trk_spec(r, options.write_trk, r.warnings);
+    trk->stream() << io::write_trk(video::to_track_set(r).tracks, spec);
+  }
+  if (!options.report.empty()) report::write_html(track_video_report(r), options.report);
+  csv.commit();
+  if (trk) trk->commit();
+  TrackVideoResult result;
+  result.json = summary(r, options);
+  result.series = std::move(r.series);
+  return result;
+}
+
+}  // namespace tribolab::app

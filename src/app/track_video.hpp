@@ -1,0 +1,55 @@
+// `tribolab track video` (docs/cli.md#track-video): follow points and balls through a video or
+// a Tracker project's video; write the table track,frame,t,x,y,x_px,y_px,score, optionally a
+// Tracker project and a report. Options in the CLI's text form (NAME=X,Y[@FRAME], X1,Y1,...)
+// are parsed here, so every front end accepts the same words.
+#pragma once
+
+#include "video/track_video.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribolab::app {
+
+struct TrackVideoOptions {
+  std::string input;                   ///< video file or Tracker project .trk/.trz
+  std::string out;                     ///< CSV track,frame,t,x,y,x_px,y_px,score; required
+  std::vector<std::string> start;      ///< points: NAME=X,Y[@FRAME], image px (x right, y down)
+  std::vector<std::string> ellipse;    ///< balls/discs: NAME=X,Y[@FRAME] inside the object, px
+  std::vector<std::string> from_track; ///< Tracker project tracks to follow from their first mark
+  std::optional<double> scale;         ///< plain video: metres per pixel
+  std::string calibrate;               ///< plain video: X1,Y1,X2,Y2,LENGTH (px, px, px, px, m)
+  std::string origin;                  ///< world origin in the image, X,Y px; empty: bottom-left pixel
+  double axes_deg = video::SourceOptions{}.axes_deg;     ///< world x-axis from image x-axis, ccw, degrees
+  std::optional<double> fps;           ///< frames per second, overriding the container's/project's, 1/s
+  double time_scale = video::SourceOptions{}.time_scale;  ///< real s per video s (slow motion)
+  std::string entry;                   ///< .trz: the .trk inside to use; empty: the first
+  double min_score = video::PointTrackerOptions{}.min_score;  ///< points: lost below this match score (0..1)
+  int patch = video::PointTrackerOptions{}.patch_px;          ///< points: template side, px, odd
+  std::optional<int> search;           ///< points: search half-width around the prediction, px; unset: automatic
+  double max_turn_deg = video::PointTrackerOptions{}.max_turn_deg;  ///< points: largest rotation per frame, degrees
+  double ellipse_min_score = video::EllipseTrackerOptions{}.min_score;  ///< ellipses: lost below this fit quality (0..1)
+  int max_gap = video::PointTrackerOptions{}.max_gap_frames;  ///< frames the motion model may bridge
+  std::string write_trk;               ///< also a Tracker project (.trk); empty: not written
+  std::string report;                  ///< HTML report; empty: not written
+  /// Called after each frame with (frames done, frames expected); may be empty.
+  std::function<void(int, int)> progress;
+};
+
+struct TrackVideoResult {
+  nlohmann::json json;                 ///< what `track video --json` prints
+  /// Per output track: name, kind and rows (frame, t (s), x, y (m, px uncalibrated), x_px,
+  /// y_px (px), score, lost), the pattern/ellipse angle (rad), lost ranges.
+  std::vector<video::TrackedSeries> series;
+};
+
+/// Parses and validates the options (InputError naming --start, --calibrate, --origin,
+/// --write-trk, --fps, ...), opens the outputs, tracks, writes CSV, project and report
+/// (all or nothing) and summarises.
+TrackVideoResult track_video(const TrackVideoOptions& options);
+
+}  // namespace tribolab::app
