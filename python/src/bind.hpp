@@ -39,18 +39,25 @@ py::array_t<double> array_1d(const std::vector<double>& v);
 /// A copy of `v` (row-major, v.size() == rows * cols) as a 2-D float64 array (rows, cols).
 py::array_t<double> array_2d(const std::vector<double>& v, std::size_t rows, std::size_t cols);
 
-/// A table of samples as a dict of 1-D float64 arrays, one per named field:
-/// columns(trajectory, {{"t", &State::t}, {"x", &State::x}}) -> {"t": array, "x": array}.
-template <class S>
-py::dict columns(const std::vector<S>& samples,
-                 std::initializer_list<std::pair<const char*, double S::*>> fields) {
+/// A field of a sample struct to make a column of: field("t", &State::t).
+template <class S, class M>
+std::pair<const char*, M S::*> field(const char* name, M S::*member) { return {name, member}; }
+
+/// One column of a table of samples as a 1-D array of the field's type (float64, int, bool).
+template <class S, class M>
+py::array_t<M> column(const std::vector<S>& samples, M S::*member) {
+  py::array_t<M> a(static_cast<py::ssize_t>(samples.size()));
+  auto out = a.template mutable_unchecked<1>();
+  for (std::size_t i = 0; i < samples.size(); ++i) out(static_cast<py::ssize_t>(i)) = samples[i].*member;
+  return a;
+}
+
+/// A table of samples as a dict of 1-D arrays, one per named field:
+/// columns(trajectory, field("t", &State::t), field("x", &State::x)) -> {"t": array, "x": array}.
+template <class S, class... M>
+py::dict columns(const std::vector<S>& samples, std::pair<const char*, M S::*>... fields) {
   py::dict d;
-  for (const auto& [name, member] : fields) {
-    py::array_t<double> a(static_cast<py::ssize_t>(samples.size()));
-    auto out = a.template mutable_unchecked<1>();
-    for (std::size_t i = 0; i < samples.size(); ++i) out(static_cast<py::ssize_t>(i)) = samples[i].*member;
-    d[name] = std::move(a);
-  }
+  ((d[fields.first] = column(samples, fields.second)), ...);
   return d;
 }
 

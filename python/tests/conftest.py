@@ -53,13 +53,17 @@ def json_part(result, cli_json):
 
 
 def assert_same_as_cli(result, cli_json):
-    """Exactly the CLI's JSON (every number to the last digit) plus only numpy arrays or dicts
-    of them beside it."""
+    """Exactly the CLI's JSON (every number to the last digit) plus only numpy arrays (or dicts
+    of them, nested) beside it."""
     import numpy as np
 
     assert json_part(result, cli_json) == cli_json
     assert set(cli_json) <= set(result)
+
+    def only_arrays(v):
+        if isinstance(v, dict):
+            return all(only_arrays(x) for x in v.values())
+        return isinstance(v, np.ndarray)
+
     for k in set(result) - set(cli_json):
-        v = result[k]
-        arrays = v.values() if isinstance(v, dict) else [v]
-        assert all(isinstance(a, np.ndarray) for a in arrays), k
+        assert only_arrays(result[k]), k
