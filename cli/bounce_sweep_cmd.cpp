@@ -41,11 +41,11 @@ enum class AngleConvention {
 /// The physical options of `bounce simulate` except --mu (owned by the sweep, sweepable).
 /// Defaults equal those of `bounce simulate` (docs/cli.md#bounce-simulate).
 struct BouncePhysicsOptions {
-  BallOptions ball;
+  app::BallOptions ball;
   /// Integrator tolerance 1e-6: the loosest power of ten at which no cell of the seed's map
   /// (figure 53, 1491 cells) is less accurate than the seed's 1-microsecond stepping, against
   /// a 1e-12 reference (docs/benchmarks.md#bounce-sweep-phase-diagram).
-  LawOptions law{1e-6};
+  app::LawOptions law{1e-6};
   double g = 9.8;
   double vx = 0;     ///< horizontal centre velocity at first touch, m/s
   std::string angle = "collision";
@@ -57,8 +57,8 @@ struct BouncePhysicsOptions {
                    "meaning of --theta-deg: collision (the seed's collision angle, 0..180 deg) | "
                    "orientation (major axis from the horizontal at first touch) (default collision)");
     cmd.add_option("--vx", vx, "horizontal centre velocity at first touch, m/s (default 0)");
-    ball.add(&cmd);
-    law.add(&cmd, /*with_mu=*/false);  // --mu belongs to the sweep (sweepable)
+    add_ball_options(&cmd, ball);
+    add_law_options(&cmd, law, /*with_mu=*/false);  // --mu belongs to the sweep (sweepable)
     cmd.add_option("--g", g, "gravitational acceleration, m/s^2 (default 9.8)");
   }
 
@@ -175,7 +175,7 @@ sweep::CellModel build_model(const BouncePhysicsOptions& opts, const std::string
   cell.ball = opts.ball.get();
   cell.law = opts.law.law();
   cell.friction = opts.law.friction_model(0.5);  // each cell sets its own mu
-  cell.options = opts.law.contact(checked_g(opts.g, /*zero_allowed=*/true));  // cells start at touch
+  cell.options = opts.law.contact(app::checked_g(opts.g, /*zero_allowed=*/true));  // cells start at touch
   cell.convention = opts.convention();
   opts.check_theta_range(cell.convention);
   check_range(opts.vx, ranges::velocity, "--vx");  // docs/cli.md#physical-ranges

@@ -1,6 +1,7 @@
 #include "app/report_bounce.hpp"
 #include "app/report_util.hpp"
 
+#include "numerics/units.hpp"
 #include "report/format.hpp"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ using report::Figure;
 using report::Series;
 using report::Table;
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kDeg = kDegPerRad;
 
 std::string v4(double x) { return report::format_value(x, 4); }
 
@@ -251,8 +252,8 @@ report::Report bounce_drop_report(const bounce::Ball& ball, const bounce::Fricti
   return rep;
 }
 
-report::Report bounce_contact_time_report(const bounce::Ball& ball, const bounce::BodyState& apex,
-                                          double g, int direction, const bounce::FlightResult& r) {
+report::Report bounce_contact_time_report(const bounce::Ball& ball, const bounce::BodyState& apex, int direction,
+                                          const bounce::FlightResult& r, const std::vector<FlightSample>& samples) {
   report::Report rep;
   rep.title = "tribolab bounce contact-time";
   rep.subtitle = "First contact after release from an apex (seed 001, experiment 3, table 4)";
@@ -285,14 +286,11 @@ report::Report bounce_contact_time_report(const bounce::Ball& ball, const bounce
   ori.y_axis.title = "θ (deg), wrapped to (−180, 180]";
   Series gs = named("y − Y(θ)"), os = named("θ"), mark = named("first contact");
   gs.mode = os.mode = report::Mode::Lines;
-  const int n = 800;
-  for (int i = 0; i <= n; ++i) {
-    const double t = r.t_contact * i / n;
-    const bounce::BodyState st = bounce::free_flight(apex, g, t);
-    gs.x.push_back(t);
-    gs.y.push_back(1e3 * (st.y - bounce::support_depth(ball, st.theta)));
-    os.x.push_back(t);
-    os.y.push_back(bounce::wrap_angle(st.theta) * kDeg);
+  for (const FlightSample& p : samples) {
+    gs.x.push_back(p.t);
+    gs.y.push_back(1e3 * p.gap);
+    os.x.push_back(p.t);
+    os.y.push_back(to_deg(bounce::wrap_angle(p.state.theta)));
   }
   mark.x = {r.t_contact};
   mark.y = {0.0};

@@ -2,6 +2,7 @@
 // contact-history figures the demo's bounce case study shares with them.
 #pragma once
 
+#include "app/bounce_simulate.hpp"
 #include "bounce/contact.hpp"
 #include "bounce/drop.hpp"
 #include "bounce/flight.hpp"
@@ -51,8 +52,8 @@ report::Report bounce_drop_report(const bounce::Ball& ball, const bounce::Fricti
                                   const bounce::DropRelease& release, const bounce::DropResult& r);
 
 /// `bounce contact-time --report`: the gap y - Y(theta) from release to the first contact and
-/// the orientation over the same time.
-report::Report bounce_contact_time_report(const bounce::Ball& ball, const bounce::BodyState& apex,
-                                          double g, int direction, const bounce::FlightResult& r);
+/// the orientation over the same time, as the workflow sampled them (bounce_contact_time).
+report::Report bounce_contact_time_report(const bounce::Ball& ball, const bounce::BodyState& apex, int direction,
+                                          const bounce::FlightResult& r, const std::vector<FlightSample>& samples);
 
 }  // namespace tribolab::app

@@ -5,6 +5,7 @@
 
 #include "bounce/geometry.hpp"
 #include "bounce/normal_law.hpp"
+#include "numerics/units.hpp"
 #include "report/format.hpp"
 
 #include <algorithm>
@@ -24,7 +25,7 @@ using report::format_value;
 using report::Series;
 using report::Table;
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kDeg = kDegPerRad;
 
 std::string v4(double x) { return format_value(x, 4); }
 

@@ -1,0 +1,88 @@
+#include "app/bounce_synth.hpp"
+
+#include "bounce/geometry.hpp"
+#include "io/atomic_file.hpp"
+#include "io/tracker_export.hpp"
+#include "numerics/error.hpp"
+#include "numerics/units.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace tribolab::app {
+
+using nlohmann::json;
+
+BounceSynthVideoResult bounce_synth_video(const BounceSynthVideoOptions& opts) {
+  analysis::SynthVideoOptions o;
+  o.ball = opts.ball.ball;
+  checked_ball(o.ball);
+  opts.law.apply(o.law, o.friction);
+  o.height = opts.height;
+  o.theta_deg = opts.theta_deg;
+  o.omega = opts.omega;
+  o.vx = opts.vx;
+  o.vy = opts.vy;
+  o.after = opts.after;
+  o.fps = opts.fps;
+  o.noise = opts.noise;
+  o.time_factor = opts.time_factor;
+  o.seed = opts.seed;
+  BounceSynthVideoResult res;
+  res.video = analysis::synth_video(o);
+  const auto& v = res.video;
+  io::AtomicFile file(opts.out);
+  file.stream() << io::write_export_text({v.tip_a, v.tip_b});
+  file.commit();
+  const auto& t = v.truth;
+  res.json = {{"out", opts.out}, {"frames", v.tip_a.points.size()},
+              {"t_touch", t.t_touch}, {"t_separation", t.t_separation},
+              {"vx_in", t.touch.vx}, {"vy_in", t.touch.vy}, {"omega_in", t.touch.omega},
+              {"theta_touch_deg", to_deg(bounce::wrap_angle(t.touch.theta))},
+              {"vx_out", t.separation.vx}, {"vy_out", t.separation.vy}, {"omega_out", t.separation.omega},
+              {"release_apex", t.release_apex}, {"post_apex", t.post_apex},
+              {"e_height", std::sqrt(t.post_apex / t.release_apex)}};
+  return res;
+}
+
+BounceSynthTableResult bounce_synth_table(const BounceSynthTableOptions& opts) {
+  analysis::SynthTableOptions o;
+  o.ball = opts.ball.ball;
+  checked_ball(o.ball);
+  opts.law.apply(o.law, o.friction);
+  o.rows = opts.rows;
+  o.speed_min = opts.speed_min;
+  o.speed_max = opts.speed_max;
+  o.vx_max = opts.vx_max;
+  o.omega_max = opts.omega_max;
+  o.noise_v = opts.noise_v;
+  o.noise_omega = opts.noise_omega;
+  o.outlier_fraction = opts.outlier_fraction;
+  o.outlier_v = opts.outlier_v;
+  o.seed = opts.seed;
+  for (auto [v, name] : {std::pair{o.speed_min, "--speed-min"}, {o.speed_max, "--speed-max"}, {o.vx_max, "--vx-max"},
+                         {o.omega_max, "--omega-max"}, {o.noise_v, "--noise-v"}, {o.noise_omega, "--noise-omega"},
+                         {o.outlier_fraction, "--outlier-fraction"}, {o.outlier_v, "--outlier-v"}})
+    check_finite(v, name);
+  BounceSynthTableResult res;
+  res.rows = analysis::synth_table(o);
+  io::AtomicFile file(opts.out);
+  file.stream() << io::write_bounce_table(res.rows);
+  file.commit();
+  // The truth `bounce fit` should recover, with the keys it prints (K, n, D, mu).
+  json truth = {{"model", std::string(bounce::to_string(o.law.model))},
+                {"K", o.law.K},
+                {"n", o.law.n},
+                {"D", o.law.restitution ? json(nullptr) : json(o.law.D)},
+                {"restitution", o.law.restitution ? json(*o.law.restitution) : json(nullptr)},
+                {"friction", std::string(bounce::to_string(o.friction.kind))},
+                {"mu", o.friction.mu},
+                {"a", o.ball.a}, {"b", o.ball.b}, {"mass", o.ball.mass}, {"inertia", o.ball.inertia},
+                {"noise_v", o.noise_v}, {"noise_omega", o.noise_omega},
+                {"outlier_fraction", o.outlier_fraction}};
+  if (o.friction.kind == bounce::FrictionKind::regularized) truth["slip_scale"] = o.friction.slip_scale;
+  res.json = {{"out", opts.out}, {"rows", res.rows.size()}, {"truth", truth}};
+  return res;
+}
+
+}  // namespace tribolab::app
