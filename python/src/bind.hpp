@@ -52,6 +52,15 @@ py::array_t<M> column(const std::vector<S>& samples, M S::*member) {
   return a;
 }
 
+/// One computed column: of_each(samples, [](const S& s) { return s.state.x; }) as float64.
+template <class S, class F>
+py::array_t<double> of_each(const std::vector<S>& samples, F value) {
+  py::array_t<double> a(static_cast<py::ssize_t>(samples.size()));
+  auto out = a.template mutable_unchecked<1>();
+  for (std::size_t i = 0; i < samples.size(); ++i) out(static_cast<py::ssize_t>(i)) = value(samples[i]);
+  return a;
+}
+
 /// A table of samples as a dict of 1-D arrays, one per named field:
 /// columns(trajectory, field("t", &State::t), field("x", &State::x)) -> {"t": array, "x": array}.
 template <class S, class... M>
