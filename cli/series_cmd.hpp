@@ -16,6 +16,7 @@
 #pragma once
 
 #include "analysis/series.hpp"
+#include "app/series_json.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -41,24 +42,8 @@ std::vector<analysis::RunOutcome<Result>> run_files(const std::vector<std::strin
   return analysis::run_series<Result>(files, std::forward<Run>(run), cli_series_options());
 }
 
-/// The `runs` array of the JSON: per outcome, {"file": source} followed by the keys of
-/// `to_json(result)` (the single-file object), or {"file": source, "error": message}.
-template <class Result, class ToJson>
-nlohmann::json series_rows(const std::vector<analysis::RunOutcome<Result>>& runs, ToJson&& to_json) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : runs) {
-    nlohmann::json row;
-    row["file"] = r.source;
-    if (r.ok()) {
-      const nlohmann::json single = to_json(*r.result);  // a named object: items() refers to it
-      for (const auto& [k, v] : single.items()) row[k] = v;
-    } else {
-      row["error"] = r.located_error();
-    }
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
+using app::series_rows;  // the series JSON is the application layer's (app/series_json.hpp)
+using app::series_counts;
 
 /// Prints a series: with `as_json` one line {"runs": rows, "summary": summary}; else a table
 /// of the runs (a column per entry of `columns`, each a key or a JSON pointer such as
@@ -67,26 +52,13 @@ nlohmann::json series_rows(const std::vector<analysis::RunOutcome<Result>>& runs
 void print_series(const nlohmann::json& rows, const nlohmann::json& summary, bool as_json,
                   const std::vector<std::string>& columns);
 
-/// The keys every series summary starts with: n_runs, n_ok, n_failed, failed (the files).
-template <class Result>
-nlohmann::json series_counts(const std::vector<analysis::RunOutcome<Result>>& runs) {
-  nlohmann::json failed = nlohmann::json::array();
-  for (const auto& r : runs)
-    if (!r.ok()) failed.push_back(r.source);
-  return {{"n_runs", runs.size()}, {"n_ok", runs.size() - failed.size()}, {"n_failed", failed.size()},
-          {"failed", failed}};
-}
-
 /// After the output: throws InputError ("2 of 8 runs failed: b.csv: ...; see their rows")
 /// when any run failed, so the command exits non-zero with one line on stderr.
 void finish_series(std::size_t n_runs, const std::vector<std::string>& errors);
 
 template <class Result>
 void finish_series(const std::vector<analysis::RunOutcome<Result>>& runs) {
-  std::vector<std::string> errors;
-  for (const auto& r : runs)
-    if (!r.ok()) errors.push_back(r.located_error());
-  finish_series(runs.size(), errors);
+  finish_series(runs.size(), app::series_errors(runs));
 }
 
 }  // namespace tribolab::cli

@@ -1,6 +1,7 @@
 // The incline case study of the demo (seed 000): table 1, figures 二, 四, 五, 六, 七 and 八 and
 // the printed-number checks, each next to what tribolab computes (incline::seed000_case_study,
 // the closed form, the numerical model and the families API).
+#include "numerics/units.hpp"
 #include "app/demo.hpp"
 #include "app/report_incline.hpp"
 #include "app/report_util.hpp"
@@ -26,9 +27,9 @@ constexpr int kSamples = 240;  ///< samples per curve: smooth at report size, sm
 Parameters setup(double mu, double phi_deg, double v0) {
   Parameters p;
   p.mu = mu;
-  p.phi = incline::deg_to_rad(phi_deg);
+  p.phi = to_rad(phi_deg);
   p.v0 = v0;
-  p.g = 9.8;  // the seed's value
+  p.g = kDefaultG;  // the seed's value
   return p;
 }
 
@@ -82,7 +83,7 @@ int add_family(report::Section& s, const std::string& title, const Parameters& b
   const bool phi = vary == incline::FamilyParameter::phi;
   for (const auto& m : f.members) {
     const std::string unit = phi ? " deg" : (vary == incline::FamilyParameter::v0 ? " m/s" : "");
-    const double shown = phi ? incline::rad_to_deg(m.value) : m.value;
+    const double shown = phi ? to_deg(m.value) : m.value;
     curves.push_back(incline_curve(std::string(phi ? "φ" : (vary == incline::FamilyParameter::v0 ? "v0" : "μ")) + " = " +
                           format_value(shown, 4) + unit + " (" + incline::to_string(m.prediction.regime) + ")",
                       m.trajectory));
@@ -199,10 +200,10 @@ void add_incline_case_study(report::Report& r, std::ostream& log) {
              incline::FamilyParameter::v0, {1.0, 1.5, 2.0, 2.62, 3.0}, "t_f ∝ v0, x_f and y_f ∝ v0^2 (figure 八).");
   add_family(f5, "Figure 六 (over φ; v0 2.620 m/s, μ 0.634)", setup(0.634, 20.96, 2.62),
              incline::FamilyParameter::phi,
-             {incline::deg_to_rad(10.0), incline::deg_to_rad(20.96), std::atan(0.634), incline::deg_to_rad(40.0)},
+             {to_rad(10.0), to_rad(20.96), std::atan(0.634), to_rad(40.0)},
              "φ = atan 0.634 = 32.37 deg is the k = 1 boundary.");
   add_family(f5, "Figure 七 (over μ; φ 20.96 deg, v0 2.620 m/s)", setup(0.634, 20.96, 2.62),
-             incline::FamilyParameter::mu, {0.0, 0.2, std::tan(incline::deg_to_rad(20.96)), 0.5, 0.634},
+             incline::FamilyParameter::mu, {0.0, 0.2, std::tan(to_rad(20.96)), 0.5, 0.634},
              "μ = tan 20.96 deg = 0.383 is the k = 1 boundary; μ = 0 is the smooth incline.");
 
   auto& f8 = r.add_section("Incline: figure 八, scaling of the stop with v0");

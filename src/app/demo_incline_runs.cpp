@@ -5,6 +5,7 @@
 // truth the script used.
 #include "app/demo.hpp"
 #include "app/demo_data.hpp"
+#include "app/incline_analysis.hpp"
 #include "app/report_incline_analysis.hpp"
 
 #include "analysis/incline_diagnostics.hpp"
@@ -73,13 +74,13 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
               "v_0 fit", "v_0 truth in 95 % interval", "f_N/m truth (m/s^2)", "f_N/m fit (model A)",
               "verdict: normal friction"};
   std::vector<analysis::InclineAnalysis> analyses;
-  std::vector<analysis::ThetaCPoint> nft;
-  std::string nft_files, nft_angles;
+  InclineNormalFrictionTestOptions nft;  // what `incline normal-friction-test` is given
+  std::vector<std::string> nft_sources, nft_angle_text;  // as the demo folder's command line says
   log << "  runs: file  model  mu(fit +- sigma)  truth in CI  verdict\n";
   for (const DemoRun& run : kRuns) {
     const std::string path = write_demo_file(std::string("incline/") + run.file, data_dir);
     analysis::InclineFitOptions o;
-    o.phi = incline::deg_to_rad(std::stod(run.phi_deg));
+    o.phi = to_rad(std::stod(run.phi_deg));
     const track::Track track = read_run(path);
     analysis::InclineAnalysis a = analysis::analyze_incline_run(track, o);
     // The parameters of the model the verdict accepts: A when normal friction is present.
@@ -97,16 +98,11 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
     std::snprintf(line, sizeof line, "    %-24s %s  %.4f +- %.4f  %s  %s\n", run.file, use_a ? "A" : "B", mu.value,
                   mu.sigma, holds(mu, run.mu) ? "yes" : "no", a.verdict.c_str());
     log << line;
-    if (run.normal_accel == 0) {
-      // As `incline normal-friction-test` does: model B only, theta_c of each run.
-      analysis::InclineFitOptions ob = o;
-      ob.fit_model_a = false;
-      const analysis::InclineAnalysis ab = analysis::analyze_incline_run(track, ob);
-      if (ab.theta_c) {  // the command would refuse a run without one; the demo's runs all have it
-        nft.push_back({o.phi, ab.theta_c->cos_theta_c, ab.theta_c->sigma_cos_theta_c, data_path(run)});
-        nft_files += " " + data_path(run);
-        nft_angles += std::string(nft_angles.empty() ? "" : ",") + run.phi_deg;
-      }
+    if (run.normal_accel == 0) {  // the model B runs go to the test across angles
+      nft.files.push_back(path);
+      nft.phi_deg.push_back(std::stod(run.phi_deg));
+      nft_sources.push_back(data_path(run));
+      nft_angle_text.push_back(run.phi_deg);
     }
     analyses.push_back(std::move(a));
   }
@@ -143,10 +139,17 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
        "deceleration): model B leaves structured residuals, model A's interval excludes 0 and the F-test is "
        "significant, so the verdict is 'present'.");
 
+  std::string nft_files, nft_angles;
+  for (std::size_t i = 0; i < nft_sources.size(); ++i) {
+    nft_files += " " + nft_sources[i];
+    nft_angles += (i ? "," : "") + nft_angle_text[i];
+  }
   auto& ns = r.add_section("Incline runs: normal-friction test across angles (eq c)");
   ns.add_paragraph("θ_c of each model B run, located at its v_y extremum, against tan φ. Repeat with: "
                    "tribolab incline normal-friction-test" + nft_files + " --phi-deg " + nft_angles);
-  const analysis::NormalFrictionTest test = analysis::normal_friction_test(nft);
+  // The command's own workflow; each point then named as from the demo folder.
+  analysis::NormalFrictionTest test = incline_normal_friction_test(nft).test;
+  for (std::size_t i = 0; i < test.points.size(); ++i) test.points[i].source = nft_sources[i];
   add_normal_friction_fit(ns, "Across angles", test, 0.634);
   log << "  normal-friction-test: mu = " << format_uncertain(test.mu, test.sigma_mu) << " (truth 0.634), verdict "
       << test.verdict << '\n';
@@ -157,7 +160,7 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
                    "line (made by tribolab incline synth " + std::string(kSlide.synth) + "). Repeat with: "
                    "tribolab incline mu-from-slide " + data_path(kSlide) + " --phi-deg " + kSlide.phi_deg);
   analysis::SlideOptions so;
-  so.phi = incline::deg_to_rad(std::stod(kSlide.phi_deg));
+  so.phi = to_rad(std::stod(kSlide.phi_deg));
   const analysis::SlideResult slide = analysis::mu_from_slide(read_run(slide_path), so);
   add_slide_analysis(ss, "Slide", slide, so, kSlide.mu);
   log << "  slide: mu = " << format_uncertain(*slide.mu, *slide.sigma_mu) << " (truth 0.634)\n";

@@ -4,6 +4,7 @@
 // does (analysis::run_series, summarize_incline_series), with the truth the script used beside
 // every result: first the seven discs at one angle (figure 八's stop-point scaling), then all
 // ten discs at four angles (the cos(theta_c)-tan(phi) test).
+#include "numerics/units.hpp"
 #include "app/demo.hpp"
 #include "app/demo_data.hpp"
 #include "app/report_incline_series.hpp"
@@ -62,7 +63,7 @@ Analysed analyse(const std::vector<std::string>& paths, std::size_t n) {
   const std::vector<std::string> files(paths.begin(), paths.begin() + static_cast<std::ptrdiff_t>(n));
   a.runs = analysis::run_series<analysis::InclineAnalysis>(files, [](std::size_t i, const std::string& f) {
     analysis::InclineFitOptions o;
-    o.phi = incline::deg_to_rad(std::stod(kDiscs[i].phi_deg));
+    o.phi = to_rad(std::stod(kDiscs[i].phi_deg));
     return analysis::analyze_incline_run(io::read_tracks(f).tracks.front(), o);
   });
   std::vector<analysis::InclineRunPoint> points;
@@ -70,7 +71,7 @@ Analysed analyse(const std::vector<std::string>& paths, std::size_t n) {
     const auto& r = a.runs[i];
     if (r.ok()) points.push_back(analysis::incline_run_point(*r.result, data_path(kDiscs[i])));
     a.report_runs.push_back({data_path(kDiscs[i]), r.ok() ? &*r.result : nullptr,
-                             incline::deg_to_rad(std::stod(kDiscs[i].phi_deg)), r.located_error()});
+                             to_rad(std::stod(kDiscs[i].phi_deg)), r.located_error()});
   }
   a.summary = analysis::summarize_incline_series(points);
   return a;
@@ -106,7 +107,7 @@ void add_incline_series_case_study(report::Report& r, std::ostream& log, const s
 
   // Seven discs at one angle: weighted mu and figure 八's slopes, against the truth.
   const Analysed one = analyse(paths, kOneAngle);
-  const double phi = incline::deg_to_rad(10.37);
+  const double phi = to_rad(10.37);
   auto& t1 = r.add_section("Incline series: seven discs at 10.37°, truth beside the result");
   std::string files;
   for (std::size_t i = 0; i < kOneAngle; ++i) files += " " + data_path(kDiscs[i]);
@@ -119,7 +120,7 @@ void add_incline_series_case_study(report::Report& r, std::ostream& log, const s
                         "[" + format_value(m.mean - 1.96 * m.sigma, 5) + ", " + format_value(m.mean + 1.96 * m.sigma, 5) + "]",
                         yes_no(std::abs(m.mean - kMuTruth) <= 1.96 * m.sigma)});
   for (const auto& sc : one.summary.scaling) {
-    const double slope_truth = *analysis::stop_slope(sc.relation, kMuTruth, phi, 9.8);
+    const double slope_truth = *analysis::stop_slope(sc.relation, kMuTruth, phi, kDefaultG);
     truth.rows.push_back({"slope " + analysis::stop_relation_key(sc.relation), format_value(slope_truth, 5),
                           format_uncertain(sc.fit.slope, sc.fit.sigma),
                           "[" + format_value(sc.fit.ci_low, 5) + ", " + format_value(sc.fit.ci_high, 5) + "]",

@@ -1,5 +1,6 @@
 #include "app/incline_series.hpp"
 
+#include "numerics/units.hpp"
 #include "incline/params.hpp"
 
 #include <cmath>
@@ -41,7 +42,7 @@ json incline_series_json(const analysis::InclineSeriesSummary& s, std::size_t n_
   add_weighted_mean(j, s.mu, "mu");
   j["mu_pulls"] = pulls_by_run(s.mu, s.mu_index, n_runs, run_of_point);
   j["outliers"] = s.outliers;
-  j["phi_deg"] = s.common_phi ? json(incline::rad_to_deg(*s.common_phi)) : json(nullptr);
+  j["phi_deg"] = s.common_phi ? json(to_deg(*s.common_phi)) : json(nullptr);
   if (s.scaling.empty()) {
     j["stop_scaling"] = nullptr;
   } else {

@@ -1,6 +1,6 @@
 #include "app/report_incline.hpp"
 
-#include "incline/numeric.hpp"
+#include "numerics/units.hpp"
 #include "report/format.hpp"
 
 #include <algorithm>
@@ -16,7 +16,7 @@ using report::Series;
 using report::Table;
 using incline::State;
 
-std::string deg(double rad) { return report::format_value(incline::rad_to_deg(rad), 4); }
+std::string deg(double rad) { return report::format_value(to_deg(rad), 4); }
 
 Series series_of(const InclineCurve& c, const std::function<double(const State&)>& fx,
                  const std::function<double(const State&)>& fy) {
@@ -38,13 +38,6 @@ std::string optional_number(const std::optional<double>& v, const std::string& u
   return v ? report::format_value(*v, 5) + unit : "—";
 }
 
-/// Samples 0..t_end evenly (n + 1 points).
-std::vector<double> even_times(double t_end, int n) {
-  std::vector<double> t(static_cast<std::size_t>(n) + 1);
-  for (int i = 0; i <= n; ++i) t[static_cast<std::size_t>(i)] = t_end * i / n;
-  return t;
-}
-
 /// At most `n` + 1 evenly chosen samples (first and last kept): a report stays a few MB
 /// even for a 10^7-row CSV.
 std::vector<State> thin(const std::vector<State>& states, std::size_t n = 2000) {
@@ -56,6 +49,12 @@ std::vector<State> thin(const std::vector<State>& states, std::size_t n = 2000) 
 }
 
 }  // namespace
+
+std::vector<double> incline_report_times(const std::vector<incline::State>& states) {
+  std::vector<double> times;
+  for (const State& st : thin(states)) times.push_back(st.t);
+  return times;
+}
 
 int add_incline_kinematics(report::Section& s, const std::string& title,
                            const std::vector<InclineCurve>& curves, const std::string& caption) {
@@ -124,7 +123,9 @@ report::Table incline_parameter_table(const incline::Parameters& p) {
 
 report::Report incline_simulate_report(const incline::Parameters& p, bool model_a,
                                        const std::string& method,
-                                       const std::vector<incline::State>& all_states) {
+                                       const std::vector<incline::State>& all_states,
+                                       const std::vector<incline::State>& comparison,
+                                       const std::string& comparison_name) {
   const std::vector<State> states = thin(all_states);
   report::Report r;
   r.title = "tribolab incline simulate";
@@ -140,33 +141,16 @@ report::Report incline_simulate_report(const incline::Parameters& p, bool model_
   }
   std::vector<InclineCurve> curves{{method == "analytic" ? "closed form (model B)" : "numeric",
                                     states, report::Mode::Lines, report::Dash::Solid, "#1f77b4"}};
-  std::vector<double> times;
-  for (const State& st : states) times.push_back(st.t);
-  if (!model_a && !times.empty()) {
-    // The other method on the same times: both are cheap (closed form; one ODE solve).
-    std::vector<State> other;
-    std::string other_name;
-    if (method == "analytic") {
-      const incline::NumericResult n = incline::simulate(p, times);
-      if (n.status != incline::NumericStatus::failed) {
-        other = n.samples;
-        other_name = "numeric (Dormand–Prince 5(4))";
-      }
-    } else {
-      other = incline::ClosedForm(p).trajectory(times);
-      other_name = "closed form (model B)";
+  if (!model_a && !comparison.empty() && comparison.size() == states.size()) {
+    curves.push_back(incline_curve(comparison_name, comparison, report::Dash::Dash, "#d62728"));
+    double max_dx = 0, max_dy = 0;
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      max_dx = std::max(max_dx, std::abs(states[i].x - comparison[i].x));
+      max_dy = std::max(max_dy, std::abs(states[i].y - comparison[i].y));
     }
-    if (other.size() == states.size()) {
-      curves.push_back(incline_curve(other_name, other, report::Dash::Dash, "#d62728"));
-      double max_dx = 0, max_dy = 0;
-      for (std::size_t i = 0; i < states.size(); ++i) {
-        max_dx = std::max(max_dx, std::abs(states[i].x - other[i].x));
-        max_dy = std::max(max_dy, std::abs(states[i].y - other[i].y));
-      }
-      s.add_paragraph("Closed form and numerical integration overlaid (dashed): the largest "
-                      "difference over the samples is " + report::format_value(max_dx, 3) +
-                      " m in x and " + report::format_value(max_dy, 3) + " m in y.");
-    }
+    s.add_paragraph("Closed form and numerical integration overlaid (dashed): the largest "
+                    "difference over the samples is " + report::format_value(max_dx, 3) +
+                    " m in x and " + report::format_value(max_dy, 3) + " m in y.");
   }
   add_incline_kinematics(s, "Launch", curves);
   return r;
@@ -187,7 +171,7 @@ report::Report incline_families_report(const incline::FamilyOptions& options,
   stops.header = {phi ? "φ (deg)" : name, "k", "regime", "t_stop (s)", "x_stop (m)", "y_stop (m)"};
   std::vector<InclineCurve> curves;
   for (const auto& m : family.members) {
-    const std::string shown = report::format_value(phi ? incline::rad_to_deg(m.value) : m.value, 4);
+    const std::string shown = report::format_value(phi ? to_deg(m.value) : m.value, 4);
     curves.push_back(incline_curve(name + " = " + shown, thin(m.trajectory)));
     stops.rows.push_back({shown, report::format_value(m.prediction.k, 4),
                           incline::to_string(m.prediction.regime),
@@ -205,7 +189,8 @@ report::Report incline_families_report(const incline::FamilyOptions& options,
   return r;
 }
 
-report::Report incline_predict_report(const incline::Parameters& p, const incline::Prediction& pr) {
+report::Report incline_predict_report(const incline::Parameters& p, const incline::Prediction& pr,
+                                      const std::vector<incline::State>& trajectory) {
   report::Report r;
   r.title = "tribolab incline predict";
   r.subtitle = "Closed-form model B prediction (seed 000)";
@@ -226,10 +211,8 @@ report::Report incline_predict_report(const incline::Parameters& p, const inclin
                report::format_value(pr.a_x_final, 4) + ", " + report::format_value(pr.a_y_final, 4)},
               {"a disc at rest stays", pr.stays_at_rest ? "yes" : "no"}};
   s.add_table(std::move(key));
-  const double t_end = incline::default_duration(p);
-  if (std::isfinite(t_end) && t_end > 0) {
-    const auto states = incline::ClosedForm(p).trajectory(even_times(t_end, 400));
-    add_incline_kinematics(s, "Trajectory", {incline_curve("closed form (model B)", states)},
+  if (!trajectory.empty()) {
+    add_incline_kinematics(s, "Trajectory", {incline_curve("closed form (model B)", trajectory)},
                            pr.t_stop ? "Up to 1.25 t_stop: the disc rests after the stop."
                                      : "Over 2 v0/α: the disc does not stop.");
   } else {

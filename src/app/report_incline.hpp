@@ -39,20 +39,26 @@ void add_model_b_equations(report::Section& s);
 /// A two-column table of the launch parameters (mu, phi, v0, g, k, regime).
 report::Table incline_parameter_table(const incline::Parameters& p);
 
-/// `incline simulate --report`: the trajectory sampled as the CSV, and for model B the closed
-/// form and the numerical integration overlaid (both are computed here, cheaply, on the same
-/// sample times) with their difference. At most 2001 evenly chosen samples are drawn, so the
-/// report stays small for any --dt.
+/// The sample times a simulate report draws: at most 2001 evenly chosen among `states`
+/// (first and last kept), so the report stays small for any --dt.
+std::vector<double> incline_report_times(const std::vector<incline::State>& states);
+
+/// `incline simulate --report`: the trajectory sampled as the CSV (thinned to
+/// incline_report_times), and for model B the other method as the workflow computed it on
+/// those times (`comparison`, named `comparison_name`; empty = not drawn) with the difference.
 report::Report incline_simulate_report(const incline::Parameters& p, bool model_a,
                                        const std::string& method,
-                                       const std::vector<incline::State>& states);
+                                       const std::vector<incline::State>& states,
+                                       const std::vector<incline::State>& comparison = {},
+                                       const std::string& comparison_name = {});
 
 /// `incline families --report`: the family's curves (seed figures 五–七) and stop table.
 report::Report incline_families_report(const incline::FamilyOptions& options,
                                        const incline::Family& family);
 
-/// `incline predict --report`: the trajectory to the stop (or over the default duration) and
-/// the key numbers.
-report::Report incline_predict_report(const incline::Parameters& p, const incline::Prediction& pr);
+/// `incline predict --report`: the key numbers and `trajectory` as the workflow computed it
+/// (to 1.25 t_stop, or over 2 v0/alpha; empty = not drawn: no finite duration).
+report::Report incline_predict_report(const incline::Parameters& p, const incline::Prediction& pr,
+                                      const std::vector<incline::State>& trajectory);
 
 }  // namespace tribolab::app

@@ -1,5 +1,6 @@
 #include "app/report_incline_analysis.hpp"
 
+#include "numerics/units.hpp"
 #include "incline/closed_form.hpp"
 #include "incline/params.hpp"
 #include "report/format.hpp"
@@ -176,12 +177,12 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
   Table key;
   key.caption = title + ": derived numbers";
   key.header = {"quantity", "value"};
-  key.rows = {{"φ (deg)", format_value(incline::rad_to_deg(a.phi), 5)},
+  key.rows = {{"φ (deg)", format_value(to_deg(a.phi), 5)},
               {"k = tan φ / μ", format_value(std::tan(a.phi) / b.mu.value, 5)},
               {"camera frame rotation ψ (deg)",
                b.frame_rotation.sigma > 0
-                   ? format_uncertain(incline::rad_to_deg(b.frame_rotation.value),
-                                      incline::rad_to_deg(b.frame_rotation.sigma))
+                   ? format_uncertain(to_deg(b.frame_rotation.value),
+                                      to_deg(b.frame_rotation.sigma))
                    : "0 (not fitted)"},
               {"rms residual, model B (m)", format_value(b.rms_residual, 4)},
               {"t_stop (s)", b.t_stop ? format_value(*b.t_stop, 5) : "—"},
@@ -268,7 +269,7 @@ int add_normal_friction_fit(report::Section& s, const std::string& title, const 
   runs.caption = title + ": runs";
   runs.header = {"source", "φ (deg)", "tan φ", "cos θ_c"};
   for (const auto& p : r.points)
-    runs.rows.push_back({p.source, format_value(incline::rad_to_deg(p.phi), 5), format_value(std::tan(p.phi), 5),
+    runs.rows.push_back({p.source, format_value(to_deg(p.phi), 5), format_value(std::tan(p.phi), 5),
                          p.sigma_cos_theta_c > 0 ? format_uncertain(p.cos_theta_c, p.sigma_cos_theta_c)
                                                  : format_value(p.cos_theta_c, 5)});
   s.add_table(std::move(runs));
@@ -311,8 +312,8 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
             {"a from the v–t line (m/s^2), seed's method", format_uncertain(r.a_velocity_line, r.sigma_a_velocity_line)},
             {"μ (eq a)", r.mu ? format_uncertain(*r.mu, *r.sigma_mu) : "— (needs --phi-deg)"},
             {"φ (deg)", !o.phi                ? "—"
-                        : o.sigma_phi > 0 ? format_uncertain(incline::rad_to_deg(*o.phi), incline::rad_to_deg(o.sigma_phi))
-                                          : format_value(incline::rad_to_deg(*o.phi), 6)},
+                        : o.sigma_phi > 0 ? format_uncertain(to_deg(*o.phi), to_deg(o.sigma_phi))
+                                          : format_value(to_deg(*o.phi), 6)},
             {"R^2 of the parabola", format_value(r.r_squared, 6)},
             {"moving points used", std::to_string(r.n_points)},
             {"direction of motion (deg)", format_value(r.direction_deg, 4)},
@@ -395,8 +396,8 @@ report::Report incline_stop_report(const incline::StopMeasurement& m, const incl
   Table in;
   in.caption = "Inputs";
   in.header = {"quantity", "value"};
-  in.rows = {{"φ (deg)", has_sigma ? format_uncertain(incline::rad_to_deg(m.phi), incline::rad_to_deg(m.sigma_phi))
-                                   : format_value(incline::rad_to_deg(m.phi), 6)},
+  in.rows = {{"φ (deg)", has_sigma ? format_uncertain(to_deg(m.phi), to_deg(m.sigma_phi))
+                                   : format_value(to_deg(m.phi), 6)},
              {"x_stop (m)", has_sigma ? format_uncertain(m.x_stop, m.sigma_pos) : format_value(m.x_stop, 6)},
              {"y_stop (m)", has_sigma ? format_uncertain(m.y_stop, m.sigma_pos) : format_value(m.y_stop, 6)},
              {"g (m/s^2)", format_value(m.g, 5)}};
@@ -412,7 +413,7 @@ report::Report incline_stop_report(const incline::StopMeasurement& m, const incl
                format_value(res.dmu_dphi, 4) + ", " + format_value(res.dmu_dx, 4) + ", " + format_value(res.dmu_dy, 4)}};
   if (advice) {
     out.rows.push_back({"best angle for the same v_0 and uncertainties (deg)",
-                        format_value(incline::rad_to_deg(advice->phi), 4) +
+                        format_value(to_deg(advice->phi), 4) +
                             (advice->at_boundary ? " (the largest angle whose stop fits the plate)" : "")});
     out.rows.push_back({"σ_μ at the best angle", format_value(advice->sigma_mu, 3)});
   }

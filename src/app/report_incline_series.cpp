@@ -1,5 +1,6 @@
 #include "app/report_incline_series.hpp"
 
+#include "numerics/units.hpp"
 #include "incline/params.hpp"
 #include "report/format.hpp"
 #include "report/html.hpp"
@@ -116,7 +117,7 @@ int add_scaling(report::Section& s, const std::string& title, const analysis::In
   }
   s.add_paragraph("Each run's stop (time and point after the launch, from its model B fit) against its launch "
                   "speed, as seed 000's figure 八: lines through the origin fitted over the runs at φ = " +
-                  format_value(incline::rad_to_deg(*sum.common_phi), 5) +
+                  format_value(to_deg(*sum.common_phi), 5) +
                   " deg, and the μ each slope implies (eqs 七–十 solved for μ at that angle; the interval is the "
                   "slope's 95 % interval mapped through the same relation, — where it leaves the range where the "
                   "disc stops)." + (sum.scaling_note.empty() ? std::string() : " " + sum.scaling_note + "."));
@@ -213,7 +214,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
     const bool is_outlier = contains(sum.outliers, run.source);
     outlier.push_back(is_outlier);
     if (!run.analysis) {
-      t.rows.push_back({run.source, format_value(incline::rad_to_deg(run.phi), 5), "—", "—", "—", "—", "—", "—", "—", "—",
+      t.rows.push_back({run.source, format_value(to_deg(run.phi), 5), "—", "—", "—", "—", "—", "—", "—", "—",
                         "error: " + run.error});
       for (auto* v : {&mu, &smu, &fn, &sfn}) v->push_back(kNaN);
       t.links.push_back({});
@@ -225,7 +226,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
     smu.push_back(p.sigma_mu);
     fn.push_back(p.normal_accel.value_or(kNaN));
     sfn.push_back(p.sigma_normal_accel.value_or(kNaN));
-    t.rows.push_back({run.source, format_value(incline::rad_to_deg(run.phi), 5), format_uncertain(p.mu, p.sigma_mu),
+    t.rows.push_back({run.source, format_value(to_deg(run.phi), 5), format_uncertain(p.mu, p.sigma_mu),
                       std::isfinite(pull) ? format_value(pull, 3) : "—", format_uncertain(p.v0, p.sigma_v0),
                       opt_value(p.t_stop), opt_value(p.x_stop), opt_value(p.y_stop),
                       p.normal_accel ? format_uncertain(*p.normal_accel, *p.sigma_normal_accel) : "—", p.verdict,
@@ -325,7 +326,7 @@ report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& ru
   std::size_t k = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const auto& run = runs[i];
-    const std::string phi = run.options.phi ? format_value(incline::rad_to_deg(*run.options.phi), 5) : "—";
+    const std::string phi = run.options.phi ? format_value(to_deg(*run.options.phi), 5) : "—";
     const bool is_outlier = contains(sum.outliers, run.source);
     outlier.push_back(is_outlier);
     t.links.push_back(links[i]);

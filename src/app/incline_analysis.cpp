@@ -1,0 +1,157 @@
+#include "app/incline_analysis.hpp"
+
+#include "app/incline_launch.hpp"
+#include "app/report_incline_analysis.hpp"
+#include "io/atomic_file.hpp"
+#include "io/text.hpp"
+#include "io/theta_c_table.hpp"
+#include "io/track_csv.hpp"
+#include "io/track_import.hpp"
+#include "io/tracker_export.hpp"
+#include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
+#include "report/html.hpp"
+
+#include <cmath>
+
+namespace tribolab::app {
+
+using nlohmann::json;
+
+track::Track read_incline_track(const std::string& file, const InclineTrackInput& in) {
+  io::ImportOptions o;
+  o.time_scale = check_range(in.time_scale, ranges::time_scale, "--time-scale");
+  if (!in.track.empty()) o.tracks = {in.track};
+  const track::TrackSet set = io::read_tracks(file, o);
+  if (!in.track.empty()) return set.find(in.track);
+  std::vector<const track::Track*> with_points;
+  for (const auto& t : set.tracks)
+    if (!t.points.empty()) with_points.push_back(&t);
+  if (with_points.size() == 1) return *with_points.front();
+  std::string names;
+  for (const auto* t : with_points) names += (names.empty() ? "'" : ", '") + t->name + "'";
+  throw InputError(set.source, "the file holds " + std::to_string(with_points.size()) + " tracks (" +
+                                   names + "); choose one with --track");
+}
+
+// ---- synth ----------------------------------------------------------------------------
+
+InclineSynthResult incline_synth(const InclineSynthOptions& s) {
+  auto need = [](const std::optional<double>& v, const char* option) {
+    if (!v) throw InputError(option, "is required");
+    return *v;
+  };
+  analysis::InclineSynthOptions o;
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  o.params.mu = check_range(need(s.mu, "--mu"), ranges::friction, "--mu");
+  if (!(o.params.mu > 0)) throw InputError("--mu", "must be > 0, got " + io::format_number(o.params.mu));
+  o.params.phi = to_rad(check_incline_angle_deg(need(s.phi_deg, "--phi-deg"), "--phi-deg", true));
+  o.params.v0 = check_range(need(s.v0, "--v0"), ranges::speed, "--v0");
+  o.params.g = check_range(s.g, ranges::gravity, "--g");
+  o.params.normal_accel = check_range(s.normal_accel, ranges::accel, "--normal-accel");
+  o.fps = check_range(s.fps, ranges::frame_rate, "--fps");
+  o.noise = check_range(s.noise, ranges::noise, "--noise");
+  if (!(std::abs(s.frame_rotation_deg) <= 20))
+    throw InputError("--frame-rotation-deg",
+                     "must be within [-20, 20] deg, got " + io::format_number(s.frame_rotation_deg));
+  o.frame_rotation = to_rad(s.frame_rotation_deg);
+  if (s.seed > 9007199254740992ULL) throw InputError("--seed", "must be an integer >= 0, got " + std::to_string(s.seed));
+  o.seed = s.seed;
+  o.t_launch = check_range(s.t_offset, ranges::duration, "--t-offset");
+  o.x0 = check_range(s.x0, ranges::position, "--x0");
+  o.y0 = check_range(s.y0, ranges::position, "--y0");
+  o.duration = s.duration ? check_range(*s.duration, ranges::duration, "--duration") : 0.0;
+  if (s.format != "export" && s.format != "csv")
+    throw InputError("--format", "must be export or csv, got '" + s.format + "'");
+  if (s.track_name.empty() || s.track_name.find_first_of(",\t;\n\"") != std::string::npos)
+    throw InputError("--track-name", "must be a non-empty name without , ; tab or quotes");
+  o.track_name = s.track_name;
+  if (const std::string e = o.validate(); !e.empty()) throw InputError("incline synth", e);
+  InclineSynthResult res;
+  const analysis::InclineSynthRun& run = res.run = analysis::synthesize_incline_run(o);
+
+  if (!s.out.empty()) {
+    io::AtomicFile file(s.out);
+    if (s.format == "csv") {
+      track::TrackSet set;
+      set.tracks.push_back(run.track);
+      io::write_tidy_csv(file.stream(), set);
+    } else {
+      file.stream() << io::write_export_text({run.track});
+    }
+    file.commit();
+  }
+  json& j = res.json;
+  j["points"] = run.track.points.size();
+  j["t_launch"] = o.t_launch;
+  j["t_stop"] = json_or_null(run.t_stop);
+  j["x_stop"] = run.t_stop ? json(run.truth.back().x) : json(nullptr);
+  j["y_stop"] = run.t_stop ? json(run.truth.back().y) : json(nullptr);
+  j["model"] = o.params.normal_accel != 0 ? "A" : "B";
+  j["format"] = s.format;
+  j["track"] = o.track_name;
+  j["out"] = s.out.empty() ? json(nullptr) : json(s.out);
+  return res;
+}
+
+// ---- normal-friction-test -------------------------------------------------------------
+
+InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormalFrictionTestOptions& s) {
+  std::vector<analysis::ThetaCPoint> pts;
+  if (!s.table.empty()) {
+    if (!s.files.empty() || !s.phi_deg.empty())
+      throw InputError("--table", "give either --table or tracked files with --phi-deg, not both");
+    pts = io::read_theta_c_table(s.table);
+  } else {
+    if (s.files.empty()) throw InputError("normal-friction-test", "give tracked files with --phi-deg, or --table");
+    if (s.phi_deg.empty()) throw InputError("--phi-deg", "is required with tracked files (one angle per file)");
+    if (s.phi_deg.size() != s.files.size())
+      throw InputError("--phi-deg", "gives " + std::to_string(s.phi_deg.size()) + " angles for " +
+                                        std::to_string(s.files.size()) + " files");
+    const double g = check_range(s.g, ranges::gravity, "--g");
+    for (std::size_t i = 0; i < s.files.size(); ++i) {
+      // Model B only: theta_c of each run, at its v_y extremum (seed 000, 圖三-2).
+      analysis::InclineFitOptions o;
+      o.phi = to_rad(check_incline_angle_deg(s.phi_deg[i], "--phi-deg", false));
+      o.g = g;
+      o.fit_model_a = false;
+      const track::Track t = read_incline_track(s.files[i], s.input);
+      const analysis::InclineAnalysis a = analysis::analyze_incline_run(t, o);
+      if (!a.theta_c)
+        throw InputError(s.files[i], "no v_y extremum found (" +
+                                         (a.notes.empty() ? std::string("the disc does not stop") : a.notes.back()) + ")");
+      pts.push_back({o.phi, a.theta_c->cos_theta_c, a.theta_c->sigma_cos_theta_c, s.files[i]});
+    }
+  }
+  InclineNormalFrictionTestResult res;
+  const analysis::NormalFrictionTest& r = res.test = analysis::normal_friction_test(pts);
+  json runs = json::array();
+  for (const auto& p : r.points) {
+    res.tan_phi.push_back(std::tan(p.phi));
+    res.cos_theta_c.push_back(p.cos_theta_c);
+    runs.push_back({{"source", p.source},
+                    {"phi_deg", to_deg(p.phi)},
+                    {"tan_phi", std::tan(p.phi)},
+                    {"cos_theta_c", p.cos_theta_c},
+                    {"sigma_cos_theta_c", p.sigma_cos_theta_c > 0 ? json(p.sigma_cos_theta_c) : json(nullptr)}});
+  }
+  json& j = res.json;
+  j["mu"] = r.mu;
+  j["sigma_mu"] = r.sigma_mu;
+  j["slope"] = r.slope;
+  j["sigma_slope"] = r.sigma_slope;
+  j["intercept"] = r.intercept;
+  j["sigma_intercept"] = r.sigma_intercept;
+  j["intercept_ci95"] = json::array({r.intercept_ci_low, r.intercept_ci_high});
+  j["r_squared"] = r.line.r_squared;
+  j["verdict"] = r.verdict;
+  j["test_size"] = 0.05;
+  j["meaning"] = "present when the 95 % interval of the intercept of cos(theta_c) against tan(phi) excludes 0 "
+                 "(eq c): about one series in twenty without normal friction is called present";
+  j["n_runs"] = r.points.size();
+  j["runs"] = runs;
+  if (!s.report.empty()) report::write_html(incline_normal_test_report(r), s.report);
+  return res;
+}
+
+}  // namespace tribolab::app

@@ -1,0 +1,38 @@
+#include "app/incline_launch.hpp"
+
+#include "io/text.hpp"
+#include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
+
+namespace tribolab::app {
+
+double check_incline_angle_deg(double deg, const std::string& option, bool allow_zero) {
+  if (!(deg >= 0 && deg < 90) || (!allow_zero && deg == 0))
+    throw InputError(option, std::string("must be in ") + (allow_zero ? "[0, 90)" : "(0, 90)") +
+                                 " degrees, got " + io::format_number(deg));
+  return deg;
+}
+
+incline::Parameters incline_launch_parameters(const InclineLaunchOptions& o, const std::string& skip) {
+  incline::Parameters p;
+  auto need = [&](const std::optional<double>& v, const std::string& option) {
+    if (!v) {
+      if (option == skip) return 0.0;
+      throw InputError(option, "is required");
+    }
+    return *v;
+  };
+  // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
+  p.mu = check_range(need(o.mu, "--mu"), ranges::friction, "--mu");
+  const double phi_deg = need(o.phi_deg, "--phi-deg");
+  if (!(phi_deg >= 0 && phi_deg < 90))
+    throw InputError("--phi-deg", "must be in [0, 90), got " + io::format_number(phi_deg));
+  p.phi = to_rad(phi_deg);
+  p.v0 = check_range(need(o.v0, "--v0"), ranges::speed, "--v0");
+  p.g = check_range(o.g, ranges::gravity, "--g");
+  if (o.mu_static) p.mu_static = check_range(*o.mu_static, ranges::friction, "--mu-static");
+  p.check();
+  return p;
+}
+
+}  // namespace tribolab::app
