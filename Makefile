@@ -3,6 +3,7 @@
 #   make test   install what is needed, build, run every test (plus an ASan+UBSan build,
 #               a bounded libFuzzer run of the file parsers and the 2-rank MPI sweep)
 #   make bench  build and run the benchmarks in bench/
+#   make install  install the Python module tribolab for /usr/bin/python3 (docs/python.md)
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
 MPI_BUILD  ?= build-mpi
@@ -18,6 +19,7 @@ DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
   libboost-dev libeigen3-dev libceres-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
   libpugixml-dev libzip-dev libopencv-dev clang libclang-rt-14-dev \
   libopenmpi-dev openmpi-bin \
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib \
   chromium fonts-liberation fonts-wqy-microhei
 
 # Plotly.js for the HTML reports, from the npm registry at the exact version and sha512 hash
@@ -28,7 +30,7 @@ PLOTLY_JS := $(VENDOR)/node_modules/plotly.js-dist-min/plotly.min.js
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 
-.PHONY: deps vendor build test test-fast test-mpi asan fuzz demo bench clean
+.PHONY: deps vendor build install test test-fast test-mpi asan fuzz demo bench clean
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do \
@@ -54,6 +56,10 @@ $(PLOTLY_JS): $(VENDOR)/package.json $(VENDOR)/package-lock.json
 build: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
+
+# The Python module into the platlib of Debian's /usr/bin/python3 (/usr/local/lib/python3.X/dist-packages).
+install: build
+	$(SUDO) cmake --install $(BUILD)
 
 # Every test through CTest, then the same tests built with AddressSanitizer + UBSan, then
 # the parsers fuzzed for a bounded time, and the MPI sweep with 2 ranks.

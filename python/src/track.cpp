@@ -1,0 +1,140 @@
+// tribolab._tribolab.track: the `tribolab track` commands of the application layer
+// (src/app/track_*.hpp) through the mechanism of bind.hpp.
+#include "bind.hpp"
+
+#include "app/track_import.hpp"
+#include "app/track_kinematics.hpp"
+#include "app/track_rigid_body.hpp"
+#include "app/track_video.hpp"
+
+namespace tribolab::python {
+namespace {
+
+/// FILE, --time-scale, --length-unit, --entry.
+template <class C>
+void input_options(C& c) {
+  TRIBOLAB_ARG(c, input.file);
+  TRIBOLAB_OPT(c, input.time_scale);
+  TRIBOLAB_OPT(c, input.length_unit);
+  TRIBOLAB_OPT(c, input.entry);
+}
+
+}  // namespace
+
+void bind_track(py::module_& m) {
+  using track::TrackPoint;
+  {
+    Command<app::TrackImportOptions> c(m, "load",
+        "Reads tracked points (`tribolab track import`): a Tracker .trk/.trz, Tracker's exported "
+        "data text or a CSV table; lengths in m, times in s after the time scale.");
+    input_options(c);
+    TRIBOLAB_OPT(c, track);
+    TRIBOLAB_OPT(c, out);
+    c.def(&app::track_import,
+          [](const app::TrackImportResult& r, py::dict& d) {
+            py::dict tracks;
+            for (const auto& t : r.tracks) {
+              tracks[py::str(t.name)] = columns(t.points, field("frame", &TrackPoint::frame),
+                                                field("t", &TrackPoint::t), field("x", &TrackPoint::x),
+                                                field("y", &TrackPoint::y));
+            }
+            d["points"] = tracks;
+          },
+          "points: dict track name -> dict of arrays frame (int), t (s), x, y (m, y up)");
+  }
+  {
+    using track::KinematicsRow;
+    Command<app::TrackKinematicsOptions> c(m, "kinematics",
+        "Velocities and accelerations of one track (`tribolab track kinematics`): Tracker's "
+        "finite differences or Savitzky-Golay with standard errors, never across impacts.");
+    input_options(c);
+    TRIBOLAB_OPT(c, track);
+    TRIBOLAB_OPT(c, method);
+    TRIBOLAB_OPT(c, window);
+    TRIBOLAB_OPT(c, order);
+    TRIBOLAB_OPT(c, impacts);
+    TRIBOLAB_OPT(c, out);
+    TRIBOLAB_OPT(c, report);
+    c.def(&app::track_kinematics,
+          [](const app::TrackKinematicsResult& r, py::dict& d) {
+            const auto& k = r.kinematics.rows;
+            d["rows"] = columns(k, field("frame", &KinematicsRow::frame), field("t", &KinematicsRow::t),
+                                field("x", &KinematicsRow::x), field("y", &KinematicsRow::y),
+                                field("vx", &KinematicsRow::vx), field("vy", &KinematicsRow::vy),
+                                field("ax", &KinematicsRow::ax), field("ay", &KinematicsRow::ay),
+                                field("sigma_vx", &KinematicsRow::sigma_vx),
+                                field("sigma_vy", &KinematicsRow::sigma_vy),
+                                field("sigma_ax", &KinematicsRow::sigma_ax),
+                                field("sigma_ay", &KinematicsRow::sigma_ay),
+                                field("segment", &KinematicsRow::segment));
+          },
+          "rows: dict of arrays frame, t (s), x, y (m), vx, vy (m/s), ax, ay (m/s^2), their "
+          "sigma_* (NaN for tracker), segment (int)");
+  }
+  {
+    using track::RigidBodyRow;
+    Command<app::TrackRigidBodyOptions> c(m, "rigid_body",
+        "The planar motion of a body from two tracked points on it (`tribolab track rigid-body`): "
+        "centre, orientation and spin with standard errors, and the A-B distance check.");
+    input_options(c);
+    TRIBOLAB_OPT(c, track_a);
+    TRIBOLAB_OPT(c, track_b);
+    TRIBOLAB_OPT(c, window);
+    TRIBOLAB_OPT(c, max_drift);
+    TRIBOLAB_OPT(c, out);
+    TRIBOLAB_OPT(c, report);
+    c.def(&app::track_rigid_body,
+          [](const app::TrackRigidBodyResult& r, py::dict& d) {
+            d["rows"] = columns(r.body.rows, field("frame", &RigidBodyRow::frame), field("t", &RigidBodyRow::t),
+                                field("xc", &RigidBodyRow::xc), field("yc", &RigidBodyRow::yc),
+                                field("theta", &RigidBodyRow::theta), field("length", &RigidBodyRow::length),
+                                field("omega", &RigidBodyRow::omega),
+                                field("sigma_omega", &RigidBodyRow::sigma_omega));
+          },
+          "rows: dict of arrays frame, t (s), xc, yc (m), theta (rad, unwrapped), length (m), "
+          "omega, sigma_omega (rad/s; NaN where the window does not fit)");
+  }
+  {
+    using video::TrackedRow;
+    Command<app::TrackVideoOptions> c(m, "video",
+        "Follows points and balls through a video or a Tracker project's video (`tribolab track "
+        "video`); writes the table to `out` (required).");
+    TRIBOLAB_ARG(c, input);
+    TRIBOLAB_OPT(c, out);
+    TRIBOLAB_OPT(c, start);
+    TRIBOLAB_OPT(c, ellipse);
+    TRIBOLAB_OPT(c, from_track);
+    TRIBOLAB_OPT(c, scale);
+    TRIBOLAB_OPT(c, calibrate);
+    TRIBOLAB_OPT(c, origin);
+    TRIBOLAB_OPT(c, axes_deg);
+    TRIBOLAB_OPT(c, fps);
+    TRIBOLAB_OPT(c, time_scale);
+    TRIBOLAB_OPT(c, entry);
+    TRIBOLAB_OPT(c, min_score);
+    TRIBOLAB_OPT(c, patch);
+    TRIBOLAB_OPT(c, search);
+    TRIBOLAB_OPT(c, max_turn_deg);
+    TRIBOLAB_OPT(c, ellipse_min_score);
+    TRIBOLAB_OPT(c, max_gap);
+    TRIBOLAB_OPT(c, write_trk);
+    TRIBOLAB_OPT(c, report);
+    c.def(&app::track_video,
+          [](const app::TrackVideoResult& r, py::dict& d) {
+            py::dict tracks;
+            for (const auto& s : r.series) {
+              py::dict t = columns(s.rows, field("frame", &TrackedRow::frame), field("t", &TrackedRow::t),
+                                   field("x", &TrackedRow::x), field("y", &TrackedRow::y),
+                                   field("x_px", &TrackedRow::x_px), field("y_px", &TrackedRow::y_px),
+                                   field("score", &TrackedRow::score), field("lost", &TrackedRow::lost));
+              t["angle_rad"] = array_1d(s.angle_rad);
+              tracks[py::str(s.name)] = t;
+            }
+            d["rows"] = tracks;
+          },
+          "rows: dict track name -> dict of arrays frame, t (s), x, y (m; px uncalibrated), x_px, "
+          "y_px (px), score (0..1), lost (bool), angle_rad (rad)");
+  }
+}
+
+}  // namespace tribolab::python

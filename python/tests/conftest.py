@@ -1,0 +1,69 @@
+"""Fixtures of the Python tests: the tribolab binary (TRIBOLAB_BINARY, set by CTest) run as a
+user would, to compare every function with the command line's --json output."""
+import json
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+SOURCE_DIR = pathlib.Path(os.environ.get("TRIBOLAB_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+
+
+def _binary():
+    b = os.environ.get("TRIBOLAB_BINARY")
+    if not b:
+        pytest.fail("TRIBOLAB_BINARY is not set (run the tests through ctest)")
+    return b
+
+
+class Cli:
+    """`cli("incline", "predict", "--mu", "0.6", ...)` -> json.loads of its --json output;
+    `cli.error(...)` -> the message after "tribolab: error: " (exit code must be 1)."""
+
+    def __call__(self, *args, cwd=None):
+        p = subprocess.run([_binary(), *map(str, args), "--json"], capture_output=True, text=True, cwd=cwd)
+        assert p.returncode == 0, p.stderr
+        return json.loads(p.stdout)
+
+    def error(self, *args, cwd=None):
+        p = subprocess.run([_binary(), *map(str, args), "--json"], capture_output=True, text=True, cwd=cwd)
+        assert p.returncode == 1, (p.returncode, p.stdout, p.stderr)
+        assert p.stdout == ""
+        prefix = "tribolab: error: "
+        lines = [line for line in p.stderr.splitlines() if line.startswith(prefix)]
+        assert len(lines) == 1, p.stderr
+        return lines[0][len(prefix):]
+
+
+@pytest.fixture
+def cli():
+    return Cli()
+
+
+@pytest.fixture
+def demo():
+    """The shipped demo data (data/demo)."""
+    return SOURCE_DIR / "data" / "demo"
+
+
+def json_part(result, cli_json):
+    """The keys of `result` that the command line prints (the rest are the arrays)."""
+    return {k: v for k, v in result.items() if k in cli_json}
+
+
+def assert_same_as_cli(result, cli_json):
+    """Exactly the CLI's JSON (every number to the last digit) plus only numpy arrays (or dicts
+    of them, nested) beside it."""
+    import numpy as np
+
+    assert json_part(result, cli_json) == cli_json
+    assert set(cli_json) <= set(result)
+
+    def only_arrays(v):
+        if isinstance(v, dict):
+            return all(only_arrays(x) for x in v.values())
+        return isinstance(v, np.ndarray)
+
+    for k in set(result) - set(cli_json):
+        assert only_arrays(result[k]), k

@@ -1,0 +1,77 @@
+"""tribolab.track against `tribolab track ... --json` on the shipped demo data: the same dict to
+the last digit, arrays of the right shape, the CLI's error messages."""
+import numpy as np
+import pytest
+
+from conftest import assert_same_as_cli
+import tribolab
+
+THROW = "data/demo/bounce/ordinary.txt"  # Tracker export, tracks A and B (tips of the ball), 165 frames
+
+
+@pytest.fixture(autouse=True)
+def in_source_dir(monkeypatch):
+    from conftest import SOURCE_DIR
+    monkeypatch.chdir(SOURCE_DIR)  # paths in the JSON are as given, relative
+
+
+def test_load_equals_cli():
+    r = tribolab.track.load(THROW, time_scale=0.125)
+    cli_json = __import__("conftest").Cli()("track", "import", THROW, "--time-scale", "0.125")
+    assert_same_as_cli(r, cli_json)
+    a = r["points"]["A"]
+    assert a["t"].shape == a["x"].shape == (cli_json["tracks"]["A"]["points"],)
+    assert a["frame"].dtype.kind == "i"
+    assert a["t"].min() == cli_json["tracks"]["A"]["t_min"]  # s, after the time scale
+
+
+def test_kinematics_equals_cli(tmp_path):
+    out = str(tmp_path / "k.csv")
+    for method in ("tracker", "savgol"):
+        r = tribolab.track.kinematics(THROW, track="A", method=method, out=out)
+        cli_json = __import__("conftest").Cli()("track", "kinematics", THROW, "--track", "A",
+                                               "--method", method, "--out", out)
+        assert_same_as_cli(r, cli_json)
+        rows = r["rows"]
+        assert rows["vx"].shape == (cli_json["points"],)
+        # Tracker's stencils give no standard errors (NaN), Savitzky-Golay does.
+        assert np.isnan(rows["sigma_vx"]).all() == (method == "tracker")
+
+
+def test_rigid_body_equals_cli():
+    r = tribolab.track.rigid_body(THROW, track_a="A", track_b="B", time_scale=0.125)
+    cli_json = __import__("conftest").Cli()("track", "rigid-body", THROW, "--track-a", "A",
+                                           "--track-b", "B", "--time-scale", "0.125")
+    assert_same_as_cli(r, cli_json)
+    rows = r["rows"]
+    assert rows["theta"].shape == (cli_json["frames"],)
+    assert np.allclose(rows["length"].mean(), cli_json["length_mean"], rtol=1e-12, atol=0)  # same sum, m
+
+
+def test_bad_input_is_value_error_with_the_cli_message(tmp_path, cli):
+    out = str(tmp_path / "k.csv")
+    with pytest.raises(ValueError) as e:
+        tribolab.track.kinematics(THROW, track="A", method="savgol", window=2, out=out)
+    assert str(e.value) == cli.error("track", "kinematics", THROW, "--track", "A", "--method", "savgol",
+                                     "--window", "2", "--out", out)
+    with pytest.raises(ValueError) as e:
+        tribolab.track.rigid_body(THROW, track_a="A", track_b="nope")
+    assert str(e.value) == cli.error("track", "rigid-body", THROW, "--track-a", "A", "--track-b", "nope")
+    missing = str(tmp_path / "missing.avi")
+    with pytest.raises(ValueError) as e:
+        tribolab.track.video(missing, out=out, start=["p=10,10"])
+    assert str(e.value) == cli.error("track", "video", missing, "--out", out, "--start", "p=10,10")
+
+
+def test_unknown_keyword_is_type_error():
+    for f in (tribolab.track.load, tribolab.track.kinematics, tribolab.track.rigid_body, tribolab.track.video):
+        with pytest.raises(TypeError, match="unexpected keyword argument 'time_scal'"):
+            f(THROW, time_scal=1)
+
+
+def test_defaults_are_the_cli_defaults():
+    import inspect
+    p = inspect.signature(tribolab.track.kinematics).parameters
+    assert (p["method"].default, p["window"].default, p["order"].default, p["impacts"].default) == \
+        ("tracker", 7, 2, "auto")
+    assert inspect.signature(tribolab.track.load).parameters["time_scale"].default == 1.0

@@ -1,0 +1,9 @@
+"""Tracked data (Tracker files, kinematics, video): the `tribolab track` commands.
+
+Each function takes the command line's options as keywords (snake_case, the same defaults)
+and returns the command's --json object as a dict, with numpy arrays beside it.
+"""
+from . import _commands
+from ._tribolab import track as _ext
+
+_commands.export(_ext, globals())
