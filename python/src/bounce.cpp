@@ -2,7 +2,53 @@
 // (src/app/bounce_*.hpp) through the mechanism of bind.hpp.
 #include "bind.hpp"
 
+#include "app/bounce_analyze.hpp"
 #include "app/bounce_simulate.hpp"
+#include "app/bounce_sweep.hpp"
+
+// A sweep axis from Python: (lo, hi, count), as the command line's LO:HI:N; a quantity that is
+// one value or an axis (speed, mu): a number or (lo, hi, count).
+namespace pybind11::detail {
+template <>
+struct type_caster<tribolab::sweep::Axis> {
+  PYBIND11_TYPE_CASTER(tribolab::sweep::Axis, const_name("tuple[float, float, int]"));
+  bool load(handle src, bool) {
+    if (!isinstance<sequence>(src) || isinstance<str>(src)) return false;
+    const auto seq = reinterpret_borrow<sequence>(src);
+    if (seq.size() != 3) return false;
+    try {
+      value.lo = seq[0].cast<double>();
+      value.hi = seq[1].cast<double>();
+      value.count = seq[2].cast<std::int64_t>();
+    } catch (const cast_error&) {
+      return false;
+    }
+    return true;
+  }
+  static handle cast(const tribolab::sweep::Axis& a, return_value_policy, handle) {
+    return make_tuple(a.lo, a.hi, a.count).release();
+  }
+};
+template <>
+struct type_caster<tribolab::app::ValueOrAxis> {
+  PYBIND11_TYPE_CASTER(tribolab::app::ValueOrAxis, const_name("float or tuple[float, float, int]"));
+  bool load(handle src, bool convert) {
+    if (isinstance<float_>(src) || isinstance<int_>(src)) {
+      value.value = src.cast<double>();
+      value.axis.reset();
+      return true;
+    }
+    make_caster<tribolab::sweep::Axis> axis;
+    if (!axis.load(src, convert)) return false;
+    value.axis = cast_op<tribolab::sweep::Axis>(axis);
+    return true;
+  }
+  static handle cast(const tribolab::app::ValueOrAxis& v, return_value_policy p, handle h) {
+    if (v.axis) return make_caster<tribolab::sweep::Axis>::cast(*v.axis, p, h);
+    return float_(v.value).release();
+  }
+};
+}  // namespace pybind11::detail
 
 namespace tribolab::python {
 namespace {
@@ -120,6 +166,144 @@ void bind_bounce(py::module_& m) {
           std::string("samples: dict of arrays ") + kStates +
               " (empty unless trajectory, report or keep_trajectory)");
   }
+  {
+    Command<app::BounceAnalyzeOptions> c(m, "analyze",
+        "One tracked bounce from the two tips of the ball (`tribolab bounce analyze`, seed 001 "
+        "experiment 1): velocities, spin, e and energies before and after, with uncertainties.");
+    TRIBOLAB_ARG(c, file);
+    TRIBOLAB_OPT(c, track_a);
+    TRIBOLAB_OPT(c, track_b);
+    TRIBOLAB_OPT(c, time_scale);
+    TRIBOLAB_OPT(c, length_unit);
+    ball_options(c);
+    TRIBOLAB_OPT(c, floor_y);
+    TRIBOLAB_OPT(c, sigma_floor_y);
+    TRIBOLAB_OPT(c, contact_duration);
+    TRIBOLAB_OPT(c, exclude);
+    TRIBOLAB_OPT(c, impact);
+    TRIBOLAB_OPT(c, bounces_out);
+    TRIBOLAB_OPT(c, report);
+    c.def(&app::bounce_analyze,
+          [](const app::BounceAnalyzeResult& r, py::dict& d) {
+            using track::RigidBodyRow;
+            const auto& rows = r.analysis.body.rows;
+            py::dict body;
+            body["t"] = of_each(rows, [](const RigidBodyRow& b) { return b.t; });
+            body["x"] = of_each(rows, [](const RigidBodyRow& b) { return b.xc; });
+            body["y"] = of_each(rows, [](const RigidBodyRow& b) { return b.yc; });
+            body["theta"] = of_each(rows, [](const RigidBodyRow& b) { return b.theta; });
+            body["length"] = of_each(rows, [](const RigidBodyRow& b) { return b.length; });
+            body["omega"] = of_each(rows, [](const RigidBodyRow& b) { return b.omega; });
+            body["sigma_omega"] = of_each(rows, [](const RigidBodyRow& b) { return b.sigma_omega; });
+            d["body"] = body;
+            for (const auto& [name, seg] : {std::pair{"flight_pre", &r.analysis.pre}, {"flight_post", &r.analysis.post}}) {
+              py::dict f;
+              f["t"] = array_1d(seg->grid_t);
+              f["x"] = array_1d(seg->grid_x);
+              f["y"] = array_1d(seg->grid_y);
+              f["theta"] = array_1d(seg->grid_theta);
+              d[name] = f;
+            }
+          },
+          "body: dict of arrays t (s), x, y (m, centre), theta (rad, A to B, unwrapped), length (m, "
+          "A-B), omega, sigma_omega (rad/s, local spin); flight_pre, flight_post: the fitted flights "
+          "sampled over their spans, dicts of arrays t (s), x, y (m), theta (rad)");
+  }
+  {
+    Command<app::BounceFitOptions> c(m, "fit",
+        "The contact law (K, n, D or e, mu) fitted to a table of measured bounces (`tribolab bounce fit`).");
+    TRIBOLAB_ARG(c, file);
+    TRIBOLAB_OPT(c, model);
+    TRIBOLAB_OPT(c, restitution);
+    TRIBOLAB_OPT(c, friction);
+    TRIBOLAB_OPT(c, slip_scale);
+    ball_options(c);
+    TRIBOLAB_OPT(c, fix);
+    TRIBOLAB_OPT(c, loss);
+    TRIBOLAB_OPT(c, loss_scale);
+    TRIBOLAB_OPT(c, K0);
+    TRIBOLAB_OPT(c, n0);
+    TRIBOLAB_OPT(c, D0);
+    TRIBOLAB_OPT(c, e0);
+    TRIBOLAB_OPT(c, mu0);
+    TRIBOLAB_OPT(c, report);
+    c.def(&app::bounce_fit,
+          [](const app::BounceFitResult& r, py::dict& d) {
+            using analysis::BounceRow;
+            using analysis::BounceFitRow;
+            py::dict t = columns(r.rows, field("theta_deg", &BounceRow::theta_deg), field("vx_in", &BounceRow::vx_in),
+                                 field("vy_in", &BounceRow::vy_in), field("omega_in", &BounceRow::omega_in),
+                                 field("vx_out", &BounceRow::vx_out), field("vy_out", &BounceRow::vy_out),
+                                 field("omega_out", &BounceRow::omega_out));
+            const auto& f = r.fit.rows;
+            t["vx_pred"] = column(f, &BounceFitRow::vx_pred);
+            t["vy_pred"] = column(f, &BounceFitRow::vy_pred);
+            t["omega_pred"] = column(f, &BounceFitRow::omega_pred);
+            d["table"] = t;
+          },
+          "table: dict of arrays, the bounces as read (theta_deg, vx_in, vy_in, omega_in, vx_out, "
+          "vy_out, omega_out; deg, m/s, rad/s) and the fitted law's predictions vx_pred, vy_pred, "
+          "omega_pred");
+  }
+  {
+    Command<app::BounceSweepOptions> c(m, "sweep",
+        "The rebound over a grid of impact angle x spin (and speed, mu) (`tribolab bounce sweep`, "
+        "seed 001 figure 53): the map as arrays shaped by the axes, resumable, in parallel.");
+    TRIBOLAB_OPT(c, theta_deg);
+    TRIBOLAB_OPT(c, omega);
+    TRIBOLAB_OPT(c, ratio);
+    TRIBOLAB_OPT(c, speed);
+    TRIBOLAB_OPT(c, mu);
+    TRIBOLAB_OPT(c, out);
+    TRIBOLAB_OPT(c, threads);
+    TRIBOLAB_OPT(c, restart);
+    TRIBOLAB_OPT(c, contour);
+    TRIBOLAB_OPT(c, threshold);
+    TRIBOLAB_OPT(c, contour_tol);
+    TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, cell.ball.ball.a);
+    TRIBOLAB_OPT(c, cell.ball.ball.b);
+    TRIBOLAB_OPT(c, cell.ball.ball.mass);
+    TRIBOLAB_OPT(c, cell.ball.ball.inertia);
+    TRIBOLAB_OPT(c, cell.law.model);
+    TRIBOLAB_OPT(c, cell.law.K);
+    TRIBOLAB_OPT(c, cell.law.n);
+    TRIBOLAB_OPT(c, cell.law.D);
+    TRIBOLAB_OPT(c, cell.law.restitution);
+    TRIBOLAB_OPT(c, cell.law.friction);
+    TRIBOLAB_OPT(c, cell.law.slip_scale);
+    TRIBOLAB_OPT(c, cell.law.k_t);
+    TRIBOLAB_OPT(c, cell.law.c_t);
+    TRIBOLAB_OPT(c, cell.law.tol);
+    TRIBOLAB_OPT(c, cell.g);
+    TRIBOLAB_OPT(c, cell.vx);
+    TRIBOLAB_OPT(c, cell.angle);
+    c.def(+[](const app::BounceSweepOptions& o) {
+            app::BounceSweepOptions with_map = o;
+            with_map.return_map = true;  // a notebook wants the arrays
+            return app::bounce_sweep(with_map);
+          },
+          [](const app::BounceSweepResult& r, py::dict& d) {
+            if (!r.map) return;
+            const app::SweepMap& m = *r.map;
+            std::vector<py::ssize_t> shape;
+            py::dict axes;
+            for (std::size_t k = 0; k < m.axis_names.size(); ++k) {
+              axes[py::str(m.axis_names[k])] = array_1d(m.axis_values[k]);
+              shape.push_back(static_cast<py::ssize_t>(m.axis_values[k].size()));
+            }
+            py::dict maps;
+            for (std::size_t j = 0; j < m.output_names.size(); ++j) {
+              maps[py::str(m.output_names[j])] = array_1d(m.outputs[j]).attr("reshape")(py::tuple(py::cast(shape)));
+            }
+            d["axes"] = axes;
+            d["map"] = maps;
+          },
+          "axes: dict of 1-D arrays, the values of each swept quantity (grid order); map: dict of "
+          "arrays, one per output of a cell (e, vx_out, vy_out, omega_out, ...), shaped by the axes "
+          "(the last axis fastest, as in the CSV)");
+  }
+
 }
 
 }  // namespace tribolab::python

@@ -2,6 +2,7 @@
 // (src/app/incline_*.hpp) through the mechanism of bind.hpp.
 #include "bind.hpp"
 
+#include "app/incline_analyze.hpp"
 #include "app/incline_forward.hpp"
 #include "app/incline_stop.hpp"
 
@@ -91,6 +92,77 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, plate_size);
     TRIBOLAB_OPT(c, report);
     c.def(&app::incline_mu_from_stop, [](const app::InclineMuFromStopResult&, py::dict&) {}, "");
+  }
+  {
+    Command<app::InclineAnalyzeOptions> c(m, "analyze",
+        "Models B and A fitted to tracked runs of the disc (`tribolab incline analyze`, seed 000 "
+        "eqs a-c): mu, v0, the normal-friction test with its p-value; several files: a series "
+        "with a summary.");
+    TRIBOLAB_ARG(c, files);
+    TRIBOLAB_OPT(c, phi_deg);
+    TRIBOLAB_OPT(c, g);
+    TRIBOLAB_OPT(c, block);
+    TRIBOLAB_OPT(c, no_model_a);
+    TRIBOLAB_OPT(c, frame_rotation);
+    TRIBOLAB_OPT(c, input.track);
+    TRIBOLAB_OPT(c, input.time_scale);
+    TRIBOLAB_OPT(c, series.threads);
+    TRIBOLAB_OPT(c, report);
+    c.def(&app::incline_analyze,
+          [](const app::InclineAnalyzeResult& r, py::dict& d) {
+            py::list fits;
+            for (const auto& run : r.runs) {
+              if (!run.analysis) {
+                fits.append(py::none());
+                continue;
+              }
+              const auto& a = *run.analysis;
+              py::dict f;
+              f["data"] = columns(a.data, field("t", &track::TrackPoint::t), field("x", &track::TrackPoint::x),
+                                  field("y", &track::TrackPoint::y));
+              f["model_b"] = states(a.model_b_fine);
+              f["model_a"] = states(a.model_a_fine);
+              f["residual_x_b"] = array_1d(a.residual_x_b);
+              f["residual_y_b"] = array_1d(a.residual_y_b);
+              fits.append(f);
+            }
+            d["fits"] = fits;
+          },
+          std::string("fits: one per file (None where it failed), dicts of the measured points "
+                      "data (t, x, y; s, m), the fitted models model_b and model_a on a fine grid (") +
+              kStates + "), residual_x_b, residual_y_b (m)");
+  }
+  {
+    Command<app::InclineMuFromSlideOptions> c(m, "mu_from_slide",
+        "The friction coefficient from a straight slide down the incline (`tribolab incline "
+        "mu-from-slide`, seed 000 eq a).");
+    TRIBOLAB_ARG(c, files);
+    TRIBOLAB_OPT(c, phi_deg);
+    TRIBOLAB_OPT(c, sigma_phi_deg);
+    TRIBOLAB_OPT(c, g);
+    TRIBOLAB_OPT(c, input.track);
+    TRIBOLAB_OPT(c, input.time_scale);
+    TRIBOLAB_OPT(c, series.threads);
+    TRIBOLAB_OPT(c, report);
+    c.def(&app::incline_mu_from_slide,
+          [](const app::InclineMuFromSlideResult& r, py::dict& d) {
+            py::list slides;
+            for (const auto& run : r.runs) {
+              if (!run.result) {
+                slides.append(py::none());
+                continue;
+              }
+              py::dict f;
+              f["t"] = array_1d(run.result->t);
+              f["s"] = array_1d(run.result->s);
+              f["v_t"] = array_1d(run.result->v_t);
+              f["v"] = array_1d(run.result->v);
+              slides.append(f);
+            }
+            d["slides"] = slides;
+          },
+          "slides: one per file (None where it failed), dicts of arrays t (s), s (m, along the "
+          "path), v_t, v (m/s, speeds along the path)");
   }
 }
 

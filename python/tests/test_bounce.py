@@ -59,3 +59,58 @@ def test_help_lists_the_law_with_units():
     assert p["model"].default == "hunt-crossley" and p["K"].default is None and p["a"].default == 0.145
     doc = tribolab.bounce.simulate.__doc__
     assert "a : float, default 0.145" in doc and "semi-major axis, m" in doc
+
+
+def test_analyze_equals_cli(cli, demo):
+    f = demo / "bounce" / "ordinary.txt"
+    kw = dict(track_a="A", track_b="B", time_scale=0.125)
+    r = tribolab.bounce.analyze(str(f), **kw)
+    c = cli("bounce", "analyze", f, "--track-a", "A", "--track-b", "B", "--time-scale", 0.125)
+    assert_same_as_cli(r, c)
+    b = r["body"]
+    assert b["t"].shape == b["theta"].shape == b["omega"].shape and len(b["t"]) > 20
+    # The tips are one rigid body: their distance is the ball's length 2a within the marking
+    # noise (0.29 m for the default ball; 5 mm allows a few pixels of clicking).
+    assert np.median(b["length"]) == pytest.approx(0.29, abs=5e-3)
+    pre, post = r["flight_pre"], r["flight_post"]
+    assert pre["t"].max() <= post["t"].min()  # the fitted flights lie on either side of the impact
+    with pytest.raises(ValueError) as e:
+        tribolab.bounce.analyze(str(f), track_a="A", track_b="Q", time_scale=0.125)
+    assert str(e.value) == cli.error("bounce", "analyze", f, "--track-a", "A", "--track-b", "Q", "--time-scale", 0.125)
+
+
+def test_fit_equals_cli(cli, demo):
+    f = demo / "bounce" / "table.csv"
+    r = tribolab.bounce.fit(str(f), fix=["n=1.5"])
+    c = cli("bounce", "fit", f, "--fix", "n=1.5")
+    assert_same_as_cli(r, c)
+    t = r["table"]
+    assert t["vx_in"].shape == t["vx_pred"].shape == t["omega_pred"].shape and len(t["vx_in"]) > 3
+
+
+def test_sweep_map_is_shaped_by_its_axes(cli, tmp_path):
+    kw = dict(theta_deg=(100, 160, 4), omega=(30, 50, 3), threads=1)
+    r = tribolab.bounce.sweep(out=str(tmp_path / "py.csv"), **kw)
+    c = cli("bounce", "sweep", "--theta-deg", "100:160:4", "--omega", "30:50:3", "--threads", 1,
+            "--out", tmp_path / "cli.csv")
+    assert without_paths(r) == without_paths(c)
+    assert list(r["axes"]) == ["theta_deg", "omega"]
+    assert r["axes"]["theta_deg"].tolist() == [100, 120, 140, 160]
+    e = r["map"]["e"]
+    assert e.shape == (4, 3)
+    # The map is the command's CSV, cell for cell (the last axis fastest).
+    import csv
+    rows = list(csv.DictReader(line for line in open(tmp_path / "cli.csv") if not line.startswith("#")))
+    assert [float(x["e"]) for x in rows] == e.ravel().tolist()
+    with pytest.raises(ValueError) as err:
+        tribolab.bounce.sweep(out=str(tmp_path / "bad.csv"), theta_deg=(100, 160, 0), omega=(30, 50, 3))
+    assert str(err.value) == cli.error("bounce", "sweep", "--theta-deg", "100:160:0", "--omega", "30:50:3",
+                                       "--out", tmp_path / "bad.csv")
+    with pytest.raises(TypeError):
+        tribolab.bounce.sweep(out=str(tmp_path / "x.csv"), theta_deg="100:160:4", omega=(30, 50, 3))
+
+
+def without_paths(j):
+    """A sweep's JSON without the arrays, the key naming its output file and its timing (they
+    differ by design)."""
+    return {k: v for k, v in j.items() if k not in ("out", "axes", "map", "seconds", "cells_per_second")}

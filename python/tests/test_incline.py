@@ -1,5 +1,6 @@
 """tribolab.incline against `tribolab incline ... --json`: the same dict to the last digit, arrays
 of the right shapes, the CLI's error messages."""
+import numpy as np
 import pytest
 
 from conftest import assert_same_as_cli
@@ -46,3 +47,29 @@ def test_bad_input_is_value_error_with_the_cli_message(cli):
 def test_unknown_keyword_is_type_error():
     with pytest.raises(TypeError, match="unexpected keyword argument 'phi'"):
         tribolab.incline.predict(mu=0.6, phi=20, v0=1)
+
+
+def test_analyze_equals_cli(cli, demo):
+    f = demo / "incline" / "run_20.96deg.txt"
+    r = tribolab.incline.analyze([str(f)], phi_deg=[20.96])
+    c = cli("incline", "analyze", f, "--phi-deg", 20.96)
+    assert_same_as_cli(r, c)
+    (fit,) = r["fits"]
+    assert fit["data"]["t"].shape == (c["n_points"],)
+    # Model B's residuals are the data minus the fit: their rms is the reported rms residual
+    # (m; the fit's own number, computed over x and y together).
+    rms = np.sqrt(np.mean(np.concatenate([fit["residual_x_b"], fit["residual_y_b"]]) ** 2))
+    assert rms == pytest.approx(c["rms_residual"], rel=1e-6)
+    with pytest.raises(ValueError) as e:
+        tribolab.incline.analyze([str(f)], phi_deg=[95.0])
+    assert str(e.value) == cli.error("incline", "analyze", f, "--phi-deg", 95)
+
+
+def test_mu_from_slide_equals_cli(cli, demo):
+    f = demo / "incline" / "slide_41.09deg.txt"
+    r = tribolab.incline.mu_from_slide([str(f)], phi_deg=[41.09])
+    c = cli("incline", "mu-from-slide", f, "--phi-deg", 41.09)
+    assert_same_as_cli(r, c)
+    (s,) = r["slides"]
+    # Positions at every moving point; speeds by central differences, so two fewer (the ends).
+    assert s["t"].shape == s["s"].shape and s["v"].shape == s["v_t"].shape == (len(s["t"]) - 2,)

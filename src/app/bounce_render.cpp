@@ -8,6 +8,7 @@
 #include "io/tracker_trk.hpp"
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
+#include "video/source.hpp"
 
 #include <fmt/format.h>
 
@@ -56,7 +57,7 @@ io::TrkWriteSpec trk_spec(const video::ThrowFilm& film, const std::string& video
   c.origin_x = film.view.origin_x_px;
   c.origin_y = film.view.origin_y_px;
   c.xscale = c.yscale = 1 / film.view.scale_m_per_px;
-  spec.coords = {c};
+  spec.coords = {video::to_tracker_pixels(c)};  // Tracker's pixel centres are at +0.5 px
   spec.step_count = film.frames;
   spec.frame_duration_ms = 1000 / film.render.fps;
   spec.length_unit = "m";
