@@ -13,18 +13,6 @@
 #include <new>
 
 namespace tribolab::cli {
-namespace {
-
-/// One line, whatever the message holds: newlines would break "one clear line".
-std::string one_line(std::string s) {
-  for (char& c : s) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
-
-}  // namespace
 
 void print_result(const nlohmann::json& result, bool as_json) {
   // Data that contradict the physics are said on stderr too, whatever the output format.

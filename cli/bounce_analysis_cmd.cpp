@@ -173,15 +173,7 @@ void add_synth_video(CLI::App* area) {
   auto& o = opts->o;
   auto* cmd = area->add_subcommand("synth-video", "write a synthetic Tracker export of one bounce (tips A and B) with known truth");
   cmd->add_option("--out", o.out, "output file (Tracker Export Data text)")->required();
-  add_ball_options(cmd, o.ball);
-  add_truth_law_options(cmd, o.law);
-  cmd->add_option("--height", o.height, "centre height at release, m");
-  cmd->add_option("--theta-deg", o.theta_deg, "orientation at release, deg");
-  cmd->add_option("--omega", o.omega, "spin at release, rad/s");
-  cmd->add_option("--vx", o.vx, "horizontal speed, m/s");
-  cmd->add_option("--vy", o.vy, "vertical speed at release, m/s");
-  cmd->add_option("--after", o.after, "seconds of video after the separation");
-  cmd->add_option("--fps", o.fps, "camera frame rate, 1/s");
+  add_throw_options(cmd, o);
   cmd->add_option("--noise", o.noise, "position noise sd of each tip coordinate, m");
   cmd->add_option("--time-factor", o.time_factor, "file time = real time x this (8: 240 fps shown at 30)");
   cmd->add_option("--seed", o.seed, "random seed");

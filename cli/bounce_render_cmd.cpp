@@ -24,15 +24,7 @@ void register_bounce_render(CLI::App* area) {
   cmd->add_option("--truth", o.truth, "CSV of the true tracks ball, ball.A, ball.B (track,frame,t,x,y; m, s)");
   cmd->add_option("--write-trk", o.write_trk,
                   "a Tracker project (.trk): the video, its clip, time base, calibration and the truth as tracks truth, truth.A, truth.B");
-  add_ball_options(cmd, o.ball);
-  add_truth_law_options(cmd, o.law);
-  cmd->add_option("--height", o.height, "centre height at release, m");
-  cmd->add_option("--theta-deg", o.theta_deg, "orientation at release, deg");
-  cmd->add_option("--omega", o.omega, "spin at release, rad/s");
-  cmd->add_option("--vx", o.vx, "horizontal speed, m/s");
-  cmd->add_option("--vy", o.vy, "vertical speed at release, m/s");
-  cmd->add_option("--after", o.after, "seconds of video after the separation");
-  cmd->add_option("--fps", o.fps, "camera frame rate, 1/s");
+  add_throw_options(cmd, o);
   cmd->add_option("--size", o.size, "image size WIDTHxHEIGHT, px");
   cmd->add_option("--scale", o.scale, "metres per pixel, as `track video --scale` takes it; unset: fit the throw in view");
   cmd->add_option("--background", o.background, "plain|gradient|texture");

@@ -67,18 +67,6 @@ void add_spec(py::module_& m, const py::dict& spec) {
 
 }  // namespace detail
 
-namespace {
-
-/// The message as the command line prints it after "tribolab: error: " (cli/app.cpp): one line.
-std::string one_line(std::string s) {
-  for (char& c : s) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
-
-}  // namespace
 
 }  // namespace tribolab::python
 
@@ -92,8 +80,10 @@ PYBIND11_MODULE(_tribolab, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
-    } catch (const tribolab::InputError& e) {
-      PyErr_SetString(PyExc_ValueError, tp::one_line(e.what()).c_str());
+    } catch (const tribolab::InputError& e) {  // the input: the caller changes it
+      PyErr_SetString(PyExc_ValueError, tribolab::one_line(e.what()).c_str());
+    } catch (const tribolab::SolverError& e) {  // a solver gave up on valid input (docs/design.md)
+      PyErr_SetString(PyExc_RuntimeError, tribolab::one_line(e.what()).c_str());
     }
   });
   auto selftest = m.def_submodule("_selftest", "Checks of the binding mechanism itself (python/tests).");

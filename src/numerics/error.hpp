@@ -54,6 +54,16 @@ class SolverError : public Error {
   using Error::Error;
 };
 
+/// A message on one line, as the front ends print it ("tribolab: error: ..." and Python's
+/// ValueError): line breaks become spaces, trailing spaces go.
+inline std::string one_line(std::string s) {
+  for (char& c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
 /// Throws InputError("<name> must be finite, got <value>") when value is NaN or infinite.
 inline double require_finite(double value, std::string_view name) {
   if (!std::isfinite(value)) {
