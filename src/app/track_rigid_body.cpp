@@ -129,6 +129,22 @@ TrackRigidBodyResult track_rigid_body(const TrackRigidBodyOptions& options) {
     wmin = std::isfinite(wmin) ? std::min(wmin, r.omega) : r.omega;
     wmax = std::isfinite(wmax) ? std::max(wmax, r.omega) : r.omega;
   }
+  // One spin for the whole record is meaningful only if the body turns steadily: local spins
+  // that disagree with it beyond their noise (an impact, a torque, a hand) make it a mixture.
+  std::size_t n_local = 0, n_off = 0;
+  for (const auto& r : rows) {
+    if (!std::isfinite(r.omega) || !std::isfinite(r.sigma_omega)) continue;
+    ++n_local;
+    // 5 standard errors of the local fit, and 2 % of the spin for noise-free records.
+    n_off += std::abs(r.omega - body.spin.omega) > 5 * r.sigma_omega + 0.02 * std::abs(body.spin.omega);
+  }
+  if (n_local > 0 && n_off > n_local / 10) {
+    warnings.push_back(fmt::format("the spin is not steady: in {} of {} frames the local spin (from {:.4g} to {:.4g} "
+                                   "rad/s) differs from the one fitted to the whole record ({:.4g} rad/s) beyond its "
+                                   "noise; that one spin mixes parts (an impact or a torque between them): analyse "
+                                   "each part on its own (a bounce: bounce analyze)",
+                                   n_off, n_local, wmin, wmax, body.spin.omega));
+  }
   nlohmann::json j;
   j["source"] = set.source;
   j["track_a"] = a.name;
