@@ -101,6 +101,17 @@ constexpr const char* kRender = R"JS(
 })();
 )JS";
 
+/// A unit in the report's notation: "^(...)" groups become "^{...}" ("N s/m^(n+1)").
+std::string unit_notation(std::string u) {
+  for (std::size_t p = 0; (p = u.find("^(", p)) != std::string::npos;) {
+    const std::size_t close = u.find(')', p);
+    if (close == std::string::npos) break;
+    u[p + 1] = '{';
+    u[close] = '}';
+  }
+  return u;
+}
+
 /// A cell holding a number, or a number with uncertainty ("0.634 ± 0.012", "(6.0 ± 1.2)×10⁵").
 bool looks_numeric(const std::string& cell) {
   if (cell.empty()) return false;
@@ -268,7 +279,8 @@ class Writer {
         if (c == 0 && !href.empty()) {
           out_ += "<a href=\"" + html_escape(href) + "\">" + html_escape(row[c]) + "</a></td>";
         } else {
-          out_ += html_escape(row[c]) + "</td>";
+          // A unit column's exponents as superscripts: "m/s^2", "N s/m^(n+1)" -> m^{n+1}.
+          out_ += (c == 1 && &t == &with_units ? notation_html(unit_notation(row[c])) : html_escape(row[c])) + "</td>";
         }
       }
       out_ += "</tr>\n";
