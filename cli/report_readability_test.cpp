@@ -12,6 +12,8 @@
 #include <cmath>
 #include <filesystem>
 #include <regex>
+#include <utility>
+#include <vector>
 
 namespace tribolab::cli::testing {
 namespace {
@@ -27,7 +29,27 @@ const std::string& demo_dir() {
   return dir;
 }
 
-std::vector<std::string> reports() { return {demo_dir() + "/report.html", demo_dir() + "/film_tracking.html"}; }
+/// The demo's two reports and those of commands the demo does not run as such.
+std::vector<std::string> reports() {
+  static const std::vector<std::string> all = [] {
+    std::vector<std::string> r = {demo_dir() + "/report.html", demo_dir() + "/film_tracking.html"};
+    const std::string d = demo_dir();
+    for (const auto& [name, cmd] : std::vector<std::pair<std::string, std::string>>{
+             {"bounce_simulate", "bounce simulate --vy -4 --omega 40"},
+             {"bounce_drop", "bounce drop --height 1 --omega 20"},
+             {"incline_mu_from_stop", "incline mu-from-stop --phi-deg 10.37 --x-stop 0.214 --y-stop -0.036 "
+                                      "--sigma-phi-deg 0.1 --sigma-pos 0.002"},
+             {"incline_simulate", "incline simulate --mu 0.634 --phi-deg 20.96 --v0 2.62 --out '" + d + "/s.csv'"},
+             {"bounce_sweep", "bounce sweep --theta-deg 100:170:8 --omega 30:50:5 --D 3000 --out '" + d + "/m.csv'"}}) {
+      const std::string path = d + "/" + name + ".html";
+      const auto res = run_tribolab(cmd + " --report '" + path + "' --plotly file");
+      EXPECT_EQ(res.exit_code, 0) << cmd << "\n" << res.err;
+      r.push_back(path);
+    }
+    return r;
+  }();
+  return all;
+}
 
 std::string strip_tags(const std::string& html) {
   return std::regex_replace(html, std::regex("<[^>]*>"), "");

@@ -30,7 +30,7 @@ const std::map<std::string, std::string, std::less<>>& symbol_units() {
       {"slip_scale", "m/s"}, {"k_t", "N/m"}, {"c_t", "N s/m"}, {"f_N/m", "m/s^2"}, {"c_0", "1"}, {"c_1", "1"},
       // Slopes of the stop point against the launch speed (seed 000, figure 八): t_stop/v0 is
       // s/(m/s), x_stop/v0² and y_stop/v0² are m/(m/s)², y_stop/x_stop is a pure number.
-      {"t_stop_v0", "s^2/m"}, {"x_stop_v0sq", "s^2/m"}, {"y_stop_v0sq", "s^2/m"}, {"y_stop_x_stop", "1"},
+      {"t_stop_v0", "s^2/m"}, {"x_stop_v0sq", "s^2/m"}, {"y_stop_v0sq", "s^2/m"}, {"y_stop_x_stop", "1"}, {"r", "1"},
   };
   return m;
 }
@@ -41,7 +41,7 @@ bool names_a_pure_number(std::string_view label) {
   for (const char* w : {"tolerance", "fraction", "ratio", "count", "number of", "iterations", "degrees of freedom",
                         "runs", "rows", "frames", "points", "cells", "samples", "coefficient", "restitution",
                         "score", "factor", "consistency", "correlation", "statistic", "p value", "p-value",
-                        "χ^2", "χ²", "scale", "after / before"})
+                        "χ^2", "χ²", "scale", "after / before", "angles with"})
     if (has(label, w)) return true;
   return false;
 }
@@ -137,7 +137,8 @@ std::pair<std::string, std::string> split_unit(const std::string& label_in) {
   std::string rest = label, symbol;
   for (;;) {
     symbol = rest.substr(0, rest.find_first_of(" ,("));
-    const bool qualifier = symbol == "slope" || symbol == "intercept" || symbol == "weighted" || symbol == "truth";
+    const bool qualifier = symbol == "slope" || symbol == "intercept" || symbol == "weighted" || symbol == "truth" ||
+                           symbol == "largest" || symbol == "smallest";
     if (!qualifier || rest.size() <= symbol.size() + 1 || rest[symbol.size()] != ' ') break;
     rest = rest.substr(symbol.size() + 1);
   }

@@ -32,6 +32,8 @@ TEST(Units, LabelsGiveTheirWrittenUnitOrTheirSymbolsUnit) {
   EXPECT_EQ(split_unit("weighted f_N/m (m/s^2) (inverse-variance)").second, "m/s^2");
   EXPECT_EQ(split_unit("truth μ (make.sh)").second, kDimensionless);
   EXPECT_EQ(split_unit("p value").second, kDimensionless);
+  EXPECT_EQ(split_unit("largest e of the first contact phase alone").second, kDimensionless);
+  EXPECT_EQ(split_unit("r = |x_stop / y_stop|").second, kDimensionless);
   // A note in parentheses is not a unit.
   EXPECT_FALSE(looks_like_unit("fraction of the grid spacing"));
   EXPECT_TRUE(looks_like_unit("m/s^2"));
