@@ -75,7 +75,7 @@ void analyze_series(const AnalyzeOpts& opts, const std::vector<BounceAnalyzeOpti
       write_bounces_out(shared.bounces_out, points, files);
       summary["bounces_out"] = shared.bounces_out;
     }
-    write_report_if_requested(shared.report, [&] {
+    write_report_if_requested(shared.report, shared.plotly, [&] {
       std::vector<BounceSeriesRun> report_runs;
       for (const auto& run : runs)
         report_runs.push_back({run.source, run.ok() ? &run.result->analysis : nullptr,
@@ -88,7 +88,7 @@ void analyze_series(const AnalyzeOpts& opts, const std::vector<BounceAnalyzeOpti
       if (shared.sigma_floor_y > 0) command += " --sigma-floor-y " + io::format_number(shared.sigma_floor_y);
       if (!opts.contact_duration.empty()) command += " --contact-duration " + opts.contact_duration;
       return bounce_analyze_series_report(command, checked.front().ball, report_runs, points, *sum, so, shared.report,
-                                          [&](std::size_t i) { return bounce_analyze_command(per[i]); });
+                                          [&](std::size_t i) { return bounce_analyze_command(per[i]); }, shared.plotly);
     });
   }
   print_series(series_rows(runs, [](const BounceAnalyzeResult& r) { return r.json; }),
@@ -114,7 +114,7 @@ void add_analyze(CLI::App* area) {
   cmd->add_option("--exclude", o.exclude, "points always dropped on each side of the impact (contact frames are dropped automatically)");
   cmd->add_option("--impact", o.impact, "which detected impact to analyse");
   cmd->add_option("--bounces-out", o.bounces_out, "also write the analysed bounces as a `bounce fit` table (CSV)")->type_name("FILE.csv");
-  add_report_option(*cmd, o.report);
+  add_report_option(*cmd, o.report, o.plotly);
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     const std::size_t n = opts->files.size();
@@ -155,7 +155,7 @@ void add_fit(CLI::App* area) {
   cmd->add_option("--D0", o.D0, "starting D");
   cmd->add_option("--e0", o.e0, "starting e");
   cmd->add_option("--mu0", o.mu0, "starting mu");
-  add_report_option(*cmd, o.report);
+  add_report_option(*cmd, o.report, o.plotly);
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
     json j = bounce_fit(opts->o).json;

@@ -35,7 +35,7 @@ void add_contact_time(CLI::App* area) {
   cmd->add_option("--g", o.g, "gravitational acceleration, m/s^2");
   add_ball_options(cmd, o.ball);
   add_json_flag(*cmd, b->json);
-  add_report_option(*cmd, o.report);
+  add_report_option(*cmd, o.report, o.plotly);
   cmd->callback([b] { print_result(bounce_contact_time(b->o).json, b->json); });
 }
 
@@ -53,7 +53,7 @@ void add_simulate(CLI::App* area) {
   add_ball_options(cmd, o.ball);
   add_law_options(cmd, o.law);
   add_json_flag(*cmd, b->json);
-  add_report_option(*cmd, o.report);
+  add_report_option(*cmd, o.report, o.plotly);
   cmd->callback([b] { print_result(bounce_simulate(b->o).json, b->json); });
 }
 
@@ -74,7 +74,7 @@ void add_drop(CLI::App* area) {
   add_ball_options(cmd, o.ball);
   add_law_options(cmd, o.law);
   add_json_flag(*cmd, b->json);
-  add_report_option(*cmd, o.report);
+  add_report_option(*cmd, o.report, o.plotly);
   cmd->callback([b] { print_result(bounce_drop(b->o).json, b->json); });
 }
 

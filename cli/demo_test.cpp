@@ -1,6 +1,8 @@
 // Golden tests of `tribolab demo`: the report appears where asked, is self-contained, and a
 // folder that cannot be created is one error line.
 #include "cli_test_util.hpp"
+#include "report/embedded.hpp"
+#include "report/plotly_script.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -28,9 +30,14 @@ TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
   const std::string html = slurp(path);
   EXPECT_NE(html.find("<div id=\"tribolab-status\" hidden>pending</div>"), std::string::npos);
   EXPECT_NE(html.find("window.onerror"), std::string::npos);
-  EXPECT_NE(html.find("* plotly.js v"), std::string::npos);  // the library is embedded
-  EXPECT_EQ(html.find("<script src"), std::string::npos);
+  // The demo's reports share one Plotly.js beside them (--plotly file): offline, written once.
+  const std::string script = report::plotly_file_name();
+  EXPECT_EQ(html.find("* plotly.js v"), std::string::npos);  // not embedded
+  EXPECT_NE(html.find("<script src=\"" + script + "\"></script>"), std::string::npos);
+  EXPECT_EQ(slurp(dir + "/" + script), std::string(report::plotly_js()));
+  EXPECT_NE(slurp(dir + "/film_tracking.html").find("<script src=\"" + script + "\"></script>"), std::string::npos);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
+  EXPECT_NE(html.find(script + " beside them"), std::string::npos);  // the index says so
   EXPECT_NE(html.find("About this report"), std::string::npos);
   for (const char* heading : {"Incline (seed 000): table 1", "Incline runs: tracked launches analysed",
                               "Bounce: table 4", "Errata found in the seeds"})

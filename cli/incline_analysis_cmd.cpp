@@ -109,7 +109,7 @@ void add_mu_from_slide(CLI::App* area) {
   add_track_input(cmd, s->input);
   add_json_flag(*cmd, *as_json);
   set_types(cmd);
-  add_report_option(*cmd, s->report);
+  add_report_option(*cmd, s->report, s->plotly);
   cmd->callback([s, as_json] {
     s->series = series_control();
     const InclineMuFromSlideResult r = incline_mu_from_slide(*s);
@@ -140,7 +140,7 @@ void add_analyze(CLI::App* area) {
   add_json_flag(*cmd, *as_json);
   set_types(cmd);
   cmd->get_option("--frame-rotation")->type_name("fit|none");
-  add_report_option(*cmd, s->report);
+  add_report_option(*cmd, s->report, s->plotly);
   cmd->callback([s, as_json] {
     s->series = series_control();
     const InclineAnalyzeResult r = incline_analyze(*s);
@@ -164,7 +164,7 @@ void add_normal_friction_test(CLI::App* area) {
   add_track_input(cmd, s->input);
   add_json_flag(*cmd, *as_json);
   set_types(cmd);
-  add_report_option(*cmd, s->report);
+  add_report_option(*cmd, s->report, s->plotly);
   cmd->get_option("--phi-deg")->type_name("NUM[,NUM...]");
   cmd->callback([s, as_json] { print_result(incline_normal_friction_test(*s).json, *as_json); });
 }

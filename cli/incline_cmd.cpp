@@ -39,7 +39,7 @@ void add_command(CLI::App* area, const std::string& name, const std::string& hel
   bind(*cmd, *o);
   add_json_flag(*cmd, *as_json);
   name_option_types(cmd);
-  add_report_option(*cmd, o->report);
+  add_report_option(*cmd, o->report, o->plotly);
   cmd->callback([o, as_json, run] { print_result(run(*o).json, *as_json); });
 }
 

@@ -39,7 +39,13 @@ std::pair<json, std::string> json_and_report(const std::string& command, std::si
 std::string row_value(const std::string& html, const std::string& label) {
   const auto p = html.find(">" + label + "</td>");
   if (p == std::string::npos) return "<no row " + label + ">";
-  const auto open = html.find('>', p + label.size() + 7);  // end of the next <td ...>
+  std::size_t after = p + label.size() + 6;  // just after the label's </td>
+  // A quantity table has a unit column after the label (report/units.hpp): skip it.
+  const auto table = html.rfind("<table>", p);
+  const auto unit_header = html.find("<th>unit</th>", table);
+  if (table != std::string::npos && unit_header != std::string::npos && unit_header < p)
+    after = html.find("</td>", after) + 5;
+  const auto open = html.find('>', after);  // end of the next <td ...>
   const auto close = html.find("</td>", open);
   return html.substr(open + 1, close - open - 1);
 }

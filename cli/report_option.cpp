@@ -21,7 +21,15 @@ std::string check_report_path(const std::string& path) {
   return {};
 }
 
-CLI::Option* add_report_option(CLI::App& cmd, std::string& path) {
+CLI::Option* add_report_option(CLI::App& cmd, std::string& path, report::PlotlyMode& plotly) {
+  cmd.add_option_function<std::string>(
+         "--plotly", [&plotly](const std::string& text) { plotly = report::parse_plotly_mode(text); },
+         "How the --report page gets Plotly.js: embed (inside the page, offline), cdn (a link to the "
+         "pinned version on jsDelivr; needs the network), file (plotly-VERSION.min.js written once "
+         "beside the report and shared by every report in that folder)")
+      ->type_name("MODE")
+      ->check(CLI::IsMember({"embed", "cdn", "file"}))
+      ->default_str(std::string(report::to_string(plotly)));
   return cmd
       .add_option("--report", path,
                   "Also write an interactive, offline HTML report to this file (.html)")
@@ -39,16 +47,10 @@ CLI::Option* add_report_option(CLI::App& cmd, std::string& path) {
           "", "report path"));
 }
 
-bool write_report_if_requested(const std::string& path,
+bool write_report_if_requested(const std::string& path, report::PlotlyMode plotly,
                                const std::function<report::Report()>& build) {
   if (path.empty()) return false;
-  report::write_html(build(), path);
-  return true;
-}
-
-bool write_report_if_requested(const std::string& path, const report::Report& report) {
-  if (path.empty()) return false;
-  report::write_html(report, path);
+  report::write_html(build(), path, plotly);
   return true;
 }
 

@@ -12,10 +12,12 @@
 namespace tribolab::cli::testing {
 namespace {
 
-/// Parses `args` for a command that has only --report; returns CLI11's error or "".
-std::string parse(const std::vector<std::string>& args, std::string& path) {
+/// Parses `args` for a command that has only --report (and --plotly); returns CLI11's error or "".
+std::string parse(const std::vector<std::string>& args, std::string& path,
+                  report::PlotlyMode* plotly_out = nullptr) {
   CLI::App app{"test"};
-  add_report_option(app, path);
+  report::PlotlyMode plotly = report::PlotlyMode::embed;
+  add_report_option(app, path, plotly);
   std::vector<std::string> reversed(args.rbegin(), args.rend());
   try {
     app.parse(reversed);
@@ -24,6 +26,7 @@ std::string parse(const std::vector<std::string>& args, std::string& path) {
   } catch (const InputError& e) {
     return e.what();  // a file-system problem (exit 1), as for every output
   }
+  if (plotly_out) *plotly_out = plotly;
   return {};
 }
 
@@ -40,7 +43,7 @@ TEST(ReportOption, AcceptsAnHtmlFileInAnExistingFolder) {
   EXPECT_EQ(parse({"--report", dir + "/r.html"}, path), "");
   EXPECT_EQ(path, dir + "/r.html");
   int built = 0;
-  EXPECT_TRUE(write_report_if_requested(path, [&] {
+  EXPECT_TRUE(write_report_if_requested(path, report::PlotlyMode::embed, [&] {
     ++built;
     return small_report();
   }));
@@ -52,12 +55,11 @@ TEST(ReportOption, NotRequestedMeansNotBuiltAndNoFile) {
   std::string path;
   EXPECT_EQ(parse({}, path), "");
   int built = 0;
-  EXPECT_FALSE(write_report_if_requested(path, [&] {
+  EXPECT_FALSE(write_report_if_requested(path, report::PlotlyMode::file, [&] {
     ++built;
     return small_report();
   }));
   EXPECT_EQ(built, 0);
-  EXPECT_FALSE(write_report_if_requested(path, small_report()));
 }
 
 TEST(ReportOption, BadPathsFailWhileParsingWithTheReason) {
@@ -71,6 +73,19 @@ TEST(ReportOption, BadPathsFailWhileParsingWithTheReason) {
   EXPECT_NE(parse({"--report", dir + "/folder.html"}, path).find("is a directory"),
             std::string::npos);
   EXPECT_EQ(check_report_path(dir + "/R.HTM"), "");
+}
+
+TEST(ReportOption, PlotlyModeIsParsedBesideTheReportAndDefaultsToEmbed) {
+  const std::string dir = temp_dir("report_option_plotly");
+  std::string path;
+  report::PlotlyMode mode = report::PlotlyMode::file;
+  EXPECT_EQ(parse({"--report", dir + "/r.html"}, path, &mode), "");
+  EXPECT_EQ(mode, report::PlotlyMode::embed);
+  EXPECT_EQ(parse({"--report", dir + "/r.html", "--plotly", "cdn"}, path, &mode), "");
+  EXPECT_EQ(mode, report::PlotlyMode::cdn);
+  EXPECT_EQ(parse({"--report", dir + "/r.html", "--plotly", "file"}, path, &mode), "");
+  EXPECT_EQ(mode, report::PlotlyMode::file);
+  EXPECT_NE(parse({"--plotly", "web"}, path), "");  // a malformed command line (exit 2)
 }
 
 }  // namespace

@@ -92,7 +92,11 @@ TEST(SweepReportCli, DrawsTheContourPointsAndAllFigures) {
   // e map, omega_out map, spin threshold, energy ratio.
   EXPECT_EQ(count(html, "class=\"tribolab-plot\""), 4u);
   EXPECT_EQ(html.find("<script src"), std::string::npos);
-  EXPECT_NE(html.find("<td>D</td><td>3000</td>"), std::string::npos) << "the physics from the header, shown as parameters";
+  // The physics from the header, shown as parameters with the unit of D from the law.
+  const auto d_row = html.find("<tr><td>D</td><td>N s/m");
+  ASSERT_NE(d_row, std::string::npos) << "the physics from the header, shown as parameters";
+  const auto value = html.find(">3000</td></tr>", d_row);
+  EXPECT_TRUE(value != std::string::npos && value < html.find("</tr>", d_row)) << html.substr(d_row, 120);
   const auto csv = contour_points(dir + "/c.csv");
   ASSERT_GE(csv.size(), 2u);
   // Both maps draw the boundary; the e map's points are exactly the CSV's (same doubles:

@@ -1,6 +1,7 @@
 #include "text_listing.hpp"
 
 #include "report/format.hpp"
+#include "report/units.hpp"
 
 #include <fmt/format.h>
 
@@ -273,39 +274,8 @@ class Listing {
 
 }  // namespace
 
-std::string unit_of(const std::string& key_in, const std::string& parent) {
-  std::string key = key_in;
-  if (starts(key, "sigma_")) key = key.substr(6);
-  if (ends(key, "_ci95")) key = key.substr(0, key.size() - 5);
-  if (has(key, "_over_")) return "";  // a ratio of quantities (t_stop_over_v0): units in docs/cli.md
-  if (ends(key, "_deg")) return "deg";
-  if (ends(key, "_px")) return "px";
-  static const std::set<std::string, std::less<>> statistic = {"mean", "sd", "sigma", "sigma_scaled", "median", "min", "max"};
-  if (statistic.count(key_in) && !parent.empty()) return unit_of(parent);  // mean_normal_force.mean is in N
-  if (ends(key, "ratio") || has(key, "_ratio") || ends(key, "factor") || has(key, "_factor") || ends(key, "scale") ||
-      ends(key, "score") || ends(key, "fraction") ||
-      starts(key, "n_") || starts(key, "cos_") || starts(key, "tan_") || key == "e" || starts(key, "e_") || key == "mu" ||
-      starts(key, "mu_") || key == "k" || has(key, "p_value") || has(key, "statistic") || has(key, "correlation") ||
-      has(key, "count") || key == "frame" || key == "frames")
-    return "";
-  if (has(parent, "energy")) return "J";  // translational_x, rotational, total of an energy breakdown
-  if (has(key, "energy") || starts(key, "work_") || starts(key, "dissipated_")) return "J";
-  if (has(key, "impulse")) return "N s";
-  if (has(key, "force") || key == "N" || key == "f") return "N";
-  if (starts(key, "omega")) return "rad/s";
-  if (has(key, "accel") || key == "g" || key == "ax" || key == "ay" || starts(key, "a_x") || starts(key, "a_y") ||
-      starts(key, "ax_") || starts(key, "ay_"))
-    return "m/s^2";
-  if (key == "v" || key == "v0" || key == "vx" || key == "vy" || starts(key, "v_") || starts(key, "vx_") ||
-      starts(key, "vy_") || has(key, "velocity") || has(key, "speed"))
-    return "m/s";
-  if (key == "t" || key == "t0" || starts(key, "t_") || ends(key, "_duration") || ends(key, "_time"))
-    return "s";
-  if (key == "x" || key == "y" || key == "x0" || key == "y0" || starts(key, "x_") || starts(key, "y_") ||
-      has(key, "height") || has(key, "penetration") || has(key, "distance") || has(key, "length") ||
-      key == "contact_point" || ends(key, "_apex"))
-    return "m";
-  return "";
+std::string unit_of(const std::string& key, const std::string& parent) {
+  return report::unit_of_key(key, parent);  // one set of rules for the listing and the reports
 }
 
 std::string text_listing(const json& result) {

@@ -69,7 +69,7 @@ void register_track(CLI::App& root) {
                     "auto: detect impacts and never difference across them; none: differentiate "
                     "straight through, exactly as Tracker does");
     cmd->add_option("--out", o->out, "Output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)")->required();
-    add_report_option(*cmd, o->report);
+    add_report_option(*cmd, o->report, o->plotly);
     bind(*cmd, o, std::make_shared<bool>(false), track_kinematics);
   }
 
@@ -87,7 +87,7 @@ void register_track(CLI::App& root) {
                     "Warn when the A-B distance drifts or scatters by more than this fraction of its mean "
                     "(a rigid body keeps it; more means a wrong calibration or a mislabelled track)");
     cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,omega,sigma_omega,length (s, m, rad, rad/s)");
-    add_report_option(*cmd, o->report);
+    add_report_option(*cmd, o->report, o->plotly);
     bind(*cmd, o, std::make_shared<bool>(false), track_rigid_body);
   }
 }

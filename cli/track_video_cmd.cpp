@@ -83,7 +83,7 @@ void register_track_video(CLI::App& track_area) {
   cmd->add_option("--write-trk", o->write_trk,
                   "Also write the tracks as a Tracker project (opens in Tracker with its video)");
   add_json_flag(*cmd, *as_json);
-  add_report_option(*cmd, o->report);
+  add_report_option(*cmd, o->report, o->plotly);
   cmd->callback([o, as_json] {
     Progress progress;
     TrackVideoOptions options = *o;

@@ -9,6 +9,8 @@
 // of the option structs, collected at build time by python/option_help.py).
 #pragma once
 
+#include "report/plotly_script.hpp"
+
 #include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -23,6 +25,23 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+// `plotly="embed"|"cdn"|"file"` (report::PlotlyMode, --plotly): a str in Python; another
+// string is a ValueError with the command line's message.
+namespace pybind11::detail {
+template <>
+struct type_caster<tribolab::report::PlotlyMode> {
+  PYBIND11_TYPE_CASTER(tribolab::report::PlotlyMode, const_name("str"));
+  bool load(handle src, bool) {
+    if (!isinstance<str>(src)) return false;
+    value = tribolab::report::parse_plotly_mode(src.cast<std::string>());  // InputError -> ValueError
+    return true;
+  }
+  static handle cast(tribolab::report::PlotlyMode m, return_value_policy, handle) {
+    return str(std::string(tribolab::report::to_string(m))).release();
+  }
+};
+}  // namespace pybind11::detail
 
 namespace tribolab::python {
 
@@ -108,6 +127,7 @@ template <> struct TypeName<unsigned long> { static std::string get() { return "
 template <> struct TypeName<long long> { static std::string get() { return "int"; } };
 template <> struct TypeName<unsigned long long> { static std::string get() { return "int"; } };
 template <> struct TypeName<std::string> { static std::string get() { return "str"; } };
+template <> struct TypeName<report::PlotlyMode> { static std::string get() { return "str"; } };
 template <class T> struct TypeName<std::optional<T>> {
   static std::string get() { return TypeName<T>::get() + " or None"; }
 };

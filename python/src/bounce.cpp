@@ -108,6 +108,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, direction);
     TRIBOLAB_OPT(c, g);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::bounce_contact_time,
           [](const app::BounceContactTimeResult& r, py::dict& d) {
             py::dict f = body_states(r.samples);
@@ -130,6 +131,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, g);
     TRIBOLAB_OPT(c, history);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::bounce_simulate,
           [](const app::BounceSimulateResult& r, py::dict& d) {
             py::dict h = body_states(r.history);
@@ -160,6 +162,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, trajectory);
     TRIBOLAB_OPT(c, sample_dt);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     TRIBOLAB_OPT(c, keep_trajectory);
     c.def(&app::bounce_drop,
           [](const app::BounceDropResult& r, py::dict& d) { d["samples"] = body_states(r.trajectory); },
@@ -183,6 +186,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, impact);
     TRIBOLAB_OPT(c, bounces_out);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::bounce_analyze,
           [](const app::BounceAnalyzeResult& r, py::dict& d) {
             using track::RigidBodyRow;
@@ -227,6 +231,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, e0);
     TRIBOLAB_OPT(c, mu0);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::bounce_fit,
           [](const app::BounceFitResult& r, py::dict& d) {
             using analysis::BounceRow;
@@ -261,6 +266,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, threshold);
     TRIBOLAB_OPT(c, contour_tol);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     TRIBOLAB_OPT(c, cell.ball.ball.a);
     TRIBOLAB_OPT(c, cell.ball.ball.b);
     TRIBOLAB_OPT(c, cell.ball.ball.mass);

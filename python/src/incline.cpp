@@ -40,6 +40,7 @@ void bind_incline(py::module_& m) {
         "eqs 七-九): regime, stop point and time, accelerations.");
     launch_options(c);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::incline_predict,
           [](const app::InclinePredictResult& r, py::dict& d) { d["trajectory"] = states(r.trajectory); },
           std::string("trajectory: dict of arrays ") + kStates + ", 401 samples (none if the duration is infinite)");
@@ -55,6 +56,7 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, t_end);
     TRIBOLAB_OPT(c, out);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::incline_simulate,
           [](const app::InclineSimulateResult& r, py::dict& d) { d["trajectory"] = states(r.trajectory); },
           std::string("trajectory: dict of arrays ") + kStates);
@@ -69,6 +71,7 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, t_end);
     TRIBOLAB_OPT(c, out);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::incline_families,
           [](const app::InclineFamiliesResult& r, py::dict& d) {
             const auto& members = r.family.members;
@@ -91,6 +94,7 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, g);
     TRIBOLAB_OPT(c, plate_size);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::incline_mu_from_stop, [](const app::InclineMuFromStopResult&, py::dict&) {}, "");
   }
   {
@@ -108,6 +112,7 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, input.time_scale);
     TRIBOLAB_OPT(c, series.threads);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::incline_analyze,
           [](const app::InclineAnalyzeResult& r, py::dict& d) {
             py::list fits;
@@ -144,6 +149,7 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, input.time_scale);
     TRIBOLAB_OPT(c, series.threads);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::incline_mu_from_slide,
           [](const app::InclineMuFromSlideResult& r, py::dict& d) {
             py::list slides;

@@ -55,6 +55,7 @@ void bind_track(py::module_& m) {
     TRIBOLAB_OPT(c, impacts);
     TRIBOLAB_OPT(c, out);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::track_kinematics,
           [](const app::TrackKinematicsResult& r, py::dict& d) {
             const auto& k = r.kinematics.rows;
@@ -83,6 +84,7 @@ void bind_track(py::module_& m) {
     TRIBOLAB_OPT(c, max_drift);
     TRIBOLAB_OPT(c, out);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::track_rigid_body,
           [](const app::TrackRigidBodyResult& r, py::dict& d) {
             d["rows"] = columns(r.body.rows, field("frame", &RigidBodyRow::frame), field("t", &RigidBodyRow::t),
@@ -119,6 +121,7 @@ void bind_track(py::module_& m) {
     TRIBOLAB_OPT(c, max_gap);
     TRIBOLAB_OPT(c, write_trk);
     TRIBOLAB_OPT(c, report);
+    TRIBOLAB_OPT(c, plotly);
     c.def(&app::track_video,
           [](const app::TrackVideoResult& r, py::dict& d) {
             py::dict tracks;

@@ -73,3 +73,19 @@ def test_mu_from_slide_equals_cli(cli, demo):
     (s,) = r["slides"]
     # Positions at every moving point; speeds by central differences, so two fewer (the ends).
     assert s["t"].shape == s["s"].shape and s["v"].shape == s["v_t"].shape == (len(s["t"]) - 2,)
+
+
+def test_report_plotly_keyword(tmp_path):
+    # plotly="file": the page links plotly-<version>.min.js written once beside it (as --plotly file).
+    page = tmp_path / "p.html"
+    tribolab.incline.predict(**LAUNCH, report=str(page), plotly="file")
+    scripts = list(tmp_path.glob("plotly-*.min.js"))
+    assert len(scripts) == 1
+    assert f'<script src="{scripts[0].name}"></script>' in page.read_text(encoding="utf-8")
+    assert page.stat().st_size < 200_000 < scripts[0].stat().st_size
+    cdn = tmp_path / "c.html"
+    tribolab.incline.predict(**LAUNCH, report=str(cdn), plotly="cdn")
+    assert 'integrity="sha384-' in cdn.read_text(encoding="utf-8")
+    with pytest.raises(ValueError, match="--plotly"):
+        tribolab.incline.predict(**LAUNCH, report=str(tmp_path / "x.html"), plotly="web")
+    assert not (tmp_path / "x.html").exists()

@@ -175,7 +175,7 @@ BounceAnalyzeResult bounce_analyze(const BounceAnalyzeOptions& opts) {
     res.json["bounces_out"] = opts.bounces_out;
   }
   if (!opts.report.empty())
-    report::write_html(bounce_analyze_report(bounce_analyze_command(opts), o.ball, res.analysis), opts.report);
+    report::write_html(bounce_analyze_report(bounce_analyze_command(opts), o.ball, res.analysis), opts.report, opts.plotly);
   return res;
 }
 
@@ -239,7 +239,7 @@ BounceFitResult bounce_fit(const BounceFitOptions& opts) {
     std::string command = "tribolab bounce fit " + opts.file + " --model " + opts.model + " --friction " + opts.friction;
     if (o.restitution_model) command += " --restitution";
     for (const auto& f : opts.fix) command += " --fix " + f;
-    report::write_html(bounce_fit_report(command, res.rows, o, res.fit), opts.report);
+    report::write_html(bounce_fit_report(command, res.rows, o, res.fit), opts.report, opts.plotly);
   }
   return res;
 }

@@ -10,6 +10,7 @@
 #include "analysis/bounce_fit.hpp"
 #include "analysis/bounce_series.hpp"
 #include "track/track.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +35,7 @@ struct BounceAnalyzeOptions {
   int impact = analysis::BounceAnalyzeOptions{}.impact;    ///< which detected impact to analyse (1 = first)
   std::string bounces_out;   ///< `bounce fit` table (CSV) of the analysed bounce; empty = none
   std::string report;        ///< HTML report path; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 
   /// The core's options after checking every field (InputError naming the option).
   analysis::BounceAnalyzeOptions checked() const;
@@ -84,6 +86,7 @@ struct BounceFitOptions {
   double e0 = analysis::BounceFitOptions{}.e0;    ///< starting e
   double mu0 = analysis::BounceFitOptions{}.mu0;  ///< starting mu
   std::string report;                  ///< HTML report path; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct BounceFitResult {

@@ -13,6 +13,7 @@
 #include "bounce/flight.hpp"
 #include "bounce/impact.hpp"
 #include "numerics/units.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -30,6 +31,7 @@ struct BounceContactTimeOptions {
   int direction = 1;         ///< direction of motion for the collision angle: 1 (+x) or -1
   double g = kDefaultG;      ///< gravitational acceleration, m/s^2
   std::string report;        ///< HTML report path; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 /// One sample of the free flight from the apex to the first contact.
@@ -58,6 +60,7 @@ struct BounceSimulateOptions {
   double g = kDefaultG;      ///< gravitational acceleration, m/s^2
   std::string history;       ///< CSV path of the time history; empty = none
   std::string report;        ///< HTML report path; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct BounceSimulateResult {
@@ -83,6 +86,7 @@ struct BounceDropOptions {
   std::string trajectory;     ///< CSV path of the sampled trajectory; empty = none
   double sample_dt = 1e-3;    ///< flight sampling step of the trajectory, s
   std::string report;         ///< HTML report path; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   /// Sample the trajectory even without a trajectory file or report (for a notebook).
   bool keep_trajectory = false;
 };

@@ -6,6 +6,7 @@
 
 #include "app/bounce_cell.hpp"
 #include "app/sweep_command.hpp"
+#include "report/plotly_script.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -39,6 +40,7 @@ struct BounceSweepOptions {
   /// --contour-tol: root tolerance of boundary points, fraction of the grid spacing
   double contour_tol = 1e-9;
   std::string report;      ///< --report: HTML report ("" = none)
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   BounceCellOptions cell;  ///< the physics of a cell (--angle --vx ball, law, --g)
 
   // Not command-line options:
@@ -77,6 +79,7 @@ struct BounceMergeOptions {
   std::vector<std::string> files;  ///< shard files, every shard i/N exactly once, any order
   std::string out;                 ///< --out: merged output CSV
   std::string report;              ///< --report: HTML report ("" = none)
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct BounceMergeResult {

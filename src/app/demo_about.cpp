@@ -1,6 +1,7 @@
 // The first section of the demo report: what tribolab is, where the two studies come from,
 // and the conventions every later section uses (docs/theory.md).
 #include "app/demo.hpp"
+#include "report/plotly_script.hpp"
 
 namespace tribolab::app {
 
@@ -70,8 +71,10 @@ void add_about_section(report::Report& r, std::ostream& log) {
       "the value to the same decimal place.",
       "Every plot is interactive: hover for values, drag to zoom, double-click to reset, "
       "click a legend entry to hide a curve; the camera icon saves the plot as a PNG.",
-      "The file is self-contained: the plotting library (Plotly.js) is embedded, so the "
-      "report opens without a network connection and can be sent as a single file.",
+      "The demo's reports (this one and film_tracking.html) share the plotting library, "
+      "Plotly.js, in the file " + report::plotly_file_name() + " beside them: they open without a "
+      "network connection as long as the folder stays together (the commands' --plotly file). "
+      "A command's --report embeds the library by default (--plotly embed): one file to send.",
       "Equations cite their source: the seed and its equation number, or docs/theory.md in "
       "the project for derivations and corrections.",
   });

@@ -269,11 +269,11 @@ void add_maps(report::Section& s, std::ostream& log) {
                                       v4(speed) + " m/s: " + name,
                                   grid, values, n_out, e, slice, contour, "spin |ω| (rad/s), clockwise");
       const bool seeds = law.D == seed_law().D;
-      f.caption = "Largest e on the map: " + v4(emax) +
-                  (emax >= 1 ? "; the black curve is the e = 1 boundary."
-                   : seeds   ? ". No cell reaches e = 1, so there is no boundary: the seed's maps cannot come "
-                               "from its fitted law as printed (errata)."
-                             : ". No cell reaches e = 1 at this speed with this law either.");
+      // The computed description (describe_heat_map), and what it means for the seed.
+      if (emax < 1)
+        f.caption += seeds ? " No cell reaches e = 1, so there is no boundary: the seed's maps cannot come "
+                             "from its fitted law as printed (errata)."
+                           : " No cell reaches e = 1 at this speed with this law either.";
       s.add_figure(std::move(f));
       log << "  map v_y = -" << speed << " m/s, " << name << ": largest e = " << v4(emax) << '\n';
     }
@@ -289,7 +289,7 @@ void add_maps(report::Section& s, std::ostream& log) {
   report::Figure f = heat_map("As seed figure 55: e over spin/speed ratio, v_y = −4 m/s, low damping (D = 6000)", ratio,
                               values, model.output_names.size(), model.output_index("e"), 0, contour,
                               "|ω| / |v_y| (rad/m)");
-  f.caption = "The same e over the ratio of spin to incoming speed (ω = ratio × 4 m/s).";
+  f.caption = "The same e over the ratio of spin to incoming speed (ω = ratio × 4 m/s). " + f.caption;
   s.add_figure(std::move(f));
 }
 

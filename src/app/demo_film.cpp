@@ -143,7 +143,7 @@ FilmCase run_film_case(const std::string& out_dir, const video::ThrowFilmOptions
     video::write_csv(f.stream(), c.tracked);
     f.commit();
   }
-  report::write_html(track_video_report(c.tracked), c.tracking_report);
+  report::write_html(track_video_report(c.tracked), c.tracking_report, report::PlotlyMode::file);  // as report.html
 
   // The truth in the video's time: frame k is at k / fps, t0 after the release.
   c.truth = c.film.motion.truth;

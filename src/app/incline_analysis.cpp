@@ -150,7 +150,7 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
                  "(eq c): about one series in twenty without normal friction is called present";
   j["n_runs"] = r.points.size();
   j["runs"] = runs;
-  if (!s.report.empty()) report::write_html(incline_normal_test_report(r), s.report);
+  if (!s.report.empty()) report::write_html(incline_normal_test_report(r), s.report, s.plotly);
   return res;
 }
 

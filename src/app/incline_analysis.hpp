@@ -8,6 +8,7 @@
 #include "analysis/incline_synthetic.hpp"
 #include "numerics/units.hpp"
 #include "track/track.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -69,6 +70,7 @@ struct InclineNormalFrictionTestOptions {
   double g = kDefaultG;            ///< gravitational acceleration, m/s^2
   InclineTrackInput input;         ///< --track, --time-scale
   std::string report;              ///< HTML report to write; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct InclineNormalFrictionTestResult {

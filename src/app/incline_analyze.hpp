@@ -9,6 +9,7 @@
 #include "analysis/incline_slide.hpp"
 #include "analysis/series.hpp"
 #include "app/incline_analysis.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -40,6 +41,7 @@ struct InclineAnalyzeOptions {
   std::string frame_rotation = "fit";
   InclineTrackInput input;         ///< --track, --time-scale
   std::string report;              ///< HTML report to write; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   InclineSeriesControl series;     ///< several files only
 };
 
@@ -73,6 +75,7 @@ struct InclineMuFromSlideOptions {
   double g = kDefaultG;            ///< gravitational acceleration, m/s^2
   InclineTrackInput input;         ///< --track, --time-scale
   std::string report;              ///< HTML report to write; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   InclineSeriesControl series;     ///< several files only
 };
 

@@ -7,6 +7,7 @@
 #include "app/incline_launch.hpp"
 #include "incline/closed_form.hpp"
 #include "incline/families.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +22,7 @@ namespace tribolab::app {
 struct InclinePredictOptions {
   InclineLaunchOptions launch;  ///< --mu, --phi-deg, --v0 (required), --g, --mu-static
   std::string report;           ///< HTML report to write; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct InclinePredictResult {
@@ -49,6 +51,7 @@ struct InclineSimulateOptions {
   std::optional<double> t_end;
   std::string out;                   ///< CSV t,x,y,vx,vy,ax,ay to write; empty = none
   std::string report;                ///< HTML report to write; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct InclineSimulateResult {
@@ -75,6 +78,7 @@ struct InclineFamiliesOptions {
   std::optional<double> t_end;
   std::string out;              ///< CSV <vary>,t,x,y,vx,vy,ax,ay to write; empty = none
   std::string report;           ///< HTML report to write; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct InclineFamiliesResult {

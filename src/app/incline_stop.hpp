@@ -4,6 +4,7 @@
 
 #include "incline/inverse.hpp"
 #include "numerics/units.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,7 @@ struct InclineMuFromStopOptions {
   /// Largest usable stop distance, m: enables the best-angle advice; unset = no advice.
   std::optional<double> plate_size;
   std::string report;               ///< HTML report to write; empty = none
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct InclineMuFromStopResult {

@@ -256,7 +256,8 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
                                             const BounceSeriesSummary& summary,
                                             const analysis::BounceSeriesOptions& options,
                                             const std::string& report_path,
-                                            const std::function<std::string(std::size_t)>& run_command) {
+                                            const std::function<std::string(std::size_t)>& run_command,
+                                            report::PlotlyMode plotly) {
   std::vector<std::string> links(runs.size());
   if (!report_path.empty()) {
     const std::string folder = series_runs_folder(report_path);
@@ -265,7 +266,8 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!runs[i].analysis) continue;
       const std::string name = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), folder + "/" + name);
+      report::write_html(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), folder + "/" + name, plotly,
+                         std::filesystem::absolute(report_path).parent_path().string());
       links[i] = folder_name + "/" + name;
     }
   }

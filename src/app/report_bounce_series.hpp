@@ -8,6 +8,7 @@
 
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_series.hpp"
+#include "report/plotly_script.hpp"
 #include "report/report.hpp"
 
 #include <functional>
@@ -41,6 +42,7 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
                                             const analysis::BounceSeriesSummary& summary,
                                             const analysis::BounceSeriesOptions& options,
                                             const std::string& report_path,
-                                            const std::function<std::string(std::size_t)>& run_command);
+                                            const std::function<std::string(std::size_t)>& run_command,
+                                            report::PlotlyMode plotly = report::PlotlyMode::embed);
 
 }  // namespace tribolab::app

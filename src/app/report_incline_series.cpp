@@ -274,7 +274,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
 
 report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>& runs,
                                              const analysis::InclineSeriesSummary& summary,
-                                             const std::string& report_path) {
+                                             const std::string& report_path, report::PlotlyMode plotly) {
   std::vector<std::string> links(runs.size());
   if (!report_path.empty()) {
     const std::string folder = series_runs_folder(report_path);
@@ -282,7 +282,8 @@ report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!runs[i].analysis) continue;
       const std::string file = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(incline_analyze_report(runs[i].source, *runs[i].analysis), (fs::path(folder) / file).string());
+      report::write_html(incline_analyze_report(runs[i].source, *runs[i].analysis), (fs::path(folder) / file).string(),
+                         plotly, fs::absolute(report_path).parent_path().string());
       links[i] = run_link(report_path, i, runs[i].source, runs.size());
     }
   }
@@ -294,7 +295,8 @@ report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>
 }
 
 report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& runs,
-                                           const analysis::SlideSeriesSummary& sum, const std::string& report_path) {
+                                           const analysis::SlideSeriesSummary& sum, const std::string& report_path,
+                                           report::PlotlyMode plotly) {
   std::vector<std::string> links(runs.size());
   if (!report_path.empty()) {
     const std::string folder = series_runs_folder(report_path);
@@ -303,7 +305,7 @@ report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& ru
       if (!runs[i].result) continue;
       const std::string file = series_run_file(i, runs[i].source, runs.size());
       report::write_html(incline_slide_report(runs[i].source, *runs[i].result, runs[i].options),
-                         (fs::path(folder) / file).string());
+                         (fs::path(folder) / file).string(), plotly, fs::absolute(report_path).parent_path().string());
       links[i] = run_link(report_path, i, runs[i].source, runs.size());
     }
   }

@@ -8,6 +8,7 @@
 #include "analysis/incline_fit.hpp"
 #include "analysis/incline_series.hpp"
 #include "analysis/incline_slide.hpp"
+#include "report/plotly_script.hpp"
 #include "report/report.hpp"
 
 #include <string>
@@ -42,10 +43,12 @@ std::string series_run_file(std::size_t index, const std::string& source, std::s
 /// `incline analyze --report` over several files. Writes each analysed run's own report
 /// (incline_analyze_report) into series_runs_folder(report_path) and returns the series
 /// report linking to them. `report_path` empty: no run reports, no links (for the demo's
-/// inline use).
+/// inline use). `plotly`: how every page gets Plotly.js (with PlotlyMode::file the runs'
+/// reports share the one script beside the series report).
 report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>& runs,
                                              const analysis::InclineSeriesSummary& summary,
-                                             const std::string& report_path);
+                                             const std::string& report_path,
+                                             report::PlotlyMode plotly = report::PlotlyMode::embed);
 
 /// Adds the series content (summary, run table, figures) to `r`; `links` per run (empty
 /// strings: none). Returns the number of figures added. For the demo's case study.
@@ -55,6 +58,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
 /// `incline mu-from-slide --report` over several files (runs' own reports as above).
 report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& runs,
                                            const analysis::SlideSeriesSummary& summary,
-                                           const std::string& report_path);
+                                           const std::string& report_path,
+                                           report::PlotlyMode plotly = report::PlotlyMode::embed);
 
 }  // namespace tribolab::app

@@ -2,6 +2,7 @@
 
 #include "numerics/error.hpp"
 #include "report/format.hpp"
+#include "app/report_map_caption.hpp"
 #include "app/report_util.hpp"
 
 #include <algorithm>
@@ -144,13 +145,25 @@ report::Table parameters_table(const SweepReportData& d) {
     }
     return w;
   }();
+  // K and D take their unit from the law (docs/theory.md#bounce-normal-laws): N/m and N s/m
+  // for Hooke, N/m^n and N s/m^(n+1) for Hunt–Crossley; the other keys' units come from the
+  // report's unit column (report/units.hpp).
+  std::string law, n = "n";
+  for (const std::string& w : words) {
+    if (w.rfind("law=", 0) == 0) law = w.substr(4);
+    if (w.rfind("n=", 0) == 0) n = w.substr(2);
+  }
+  const bool hooke = law == "hooke";
   std::string other;
   for (const std::string& w : words) {
     const auto eq = w.find('=');
     if (eq == std::string::npos || eq == 0) {
       other += (other.empty() ? "" : " ") + w;
     } else {
-      t.rows.push_back({w.substr(0, eq), w.substr(eq + 1)});
+      std::string key = w.substr(0, eq);
+      if (key == "K" && !law.empty()) key += hooke ? " (N/m)" : " (N/m^" + n + ")";
+      if (key == "D" && !law.empty()) key += hooke ? " (N s/m)" : " (N s/m^(" + n + "+1))";
+      t.rows.push_back({key, w.substr(eq + 1)});
     }
   }
   if (!other.empty()) t.rows.insert(t.rows.begin(), {"cell model", other});
@@ -213,6 +226,7 @@ report::Figure sweep_heat_map(const sweep::GridSpec& grid, const std::vector<dou
     if (!b.x.empty()) f.series.push_back(std::move(b));
   }
   f.height_px = style.height_px;
+  f.caption = describe_heat_map(f, style.quantity, style.unit);
   return f;
 }
 
@@ -336,9 +350,10 @@ report::Report sweep_report(const SweepReportData& d) {
     st.max_side = kReportMaxSide;
     report::Figure f = sweep_heat_map(grid, d.values, n_out, e, slice, &d.boundary, st);
     const SliceStats ss = stats(d, e, slice * per_slice, (slice + 1) * per_slice);
-    f.caption = "Largest e " + v4(ss.e_max) + (ss.at >= 0 ? " at " + where(grid, ss.at) : "") + "; e > 1 in " +
-                percent(ss.above, ss.finite) + " of the cells with a result" +
-                (f.series.empty() ? "; no e = 1 boundary in this slice." : ".");
+    if (ss.finite > 0 && (th.count > kReportMaxSide || sp.count > kReportMaxSide))
+      f.caption += " Over the whole grid of this slice: largest e " + v4(ss.e_max) +
+                   (ss.at >= 0 ? " at " + where(grid, ss.at) : "") + "; e > 1 in " + percent(ss.above, ss.finite) +
+                   " of the cells with a result.";
     m.add_figure(std::move(f));
   }
   if (omega_out >= 0) {
@@ -352,8 +367,10 @@ report::Report sweep_report(const SweepReportData& d) {
       st.x_title = x_title;
       st.y_title = y_title;
       st.colorbar_title = "ω_out (rad/s)";
-      st.colorscale = report::ColorScale::Viridis;
-      st.z_mid.reset();
+      st.quantity = "ω_out";
+      st.unit = "rad/s";
+      st.colorscale = report::ColorScale::PuOr;  // the sign is the spin's sense: white at no spin
+      st.z_mid = 0.0;
       st.max_side = kReportMaxSide;
       o.add_figure(sweep_heat_map(grid, d.values, n_out, omega_out, slice, &d.boundary, st));
     }

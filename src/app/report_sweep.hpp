@@ -22,6 +22,8 @@ struct SweepMapStyle {
   std::string x_title;                            ///< the spin axis with its unit
   std::string y_title = "collision angle (deg)";  ///< the theta_deg axis with its unit
   std::string colorbar_title = "e";
+  std::string quantity = "e";  ///< the mapped quantity's name in the computed caption
+  std::string unit;            ///< its unit there ("" when dimensionless)
   report::ColorScale colorscale = report::ColorScale::RdBu;
   std::optional<double> z_mid = 1.0;  ///< centre of a diverging scale (restitution: 1)
   /// Draw at most this many grid values along each axis (every k-th row and column, the
@@ -37,7 +39,7 @@ report::Series boundary_series(const sweep::ContourResult& boundary, std::int64_
 /// Heat map of output `output` over spin (x) x theta_deg (y) for slice `slice` of `values`
 /// (cell_count x n_outputs, row-major, as from sweep::evaluate_grid or a sweep file), with
 /// boundary_series(*boundary, slice) drawn over it when boundary is not null and the slice
-/// has a boundary.
+/// has a boundary. The caption describes what the map shows (describe_heat_map).
 report::Figure sweep_heat_map(const sweep::GridSpec& grid, const std::vector<double>& values,
                               std::size_t n_outputs, int output, std::int64_t slice,
                               const sweep::ContourResult* boundary, const SweepMapStyle& style);

@@ -50,6 +50,45 @@ std::string row_value(const report::Table& t, const std::string& name) {
   return "(no row '" + name + "')";
 }
 
+TEST(SweepReport, MapCaptionIsComputedFromTheCellsAndTheBoundary) {
+  const sweep::GridSpec g = seed_window();
+  const SweepReportData d = data_for(g, sweep::synthetic::wave_model());
+  SweepMapStyle style;
+  style.title = "e";
+  style.x_title = "incoming spin ω (rad/s)";
+  const report::Figure f = sweep_heat_map(g, d.values, 4, 3, 0, &d.boundary, style);
+  // The extremes of the slice, recomputed here, and where they are.
+  double lo = INFINITY, hi = -INFINITY;
+  int above = 0, n = 0;
+  for (const auto& row : f.heatmap->z)
+    for (double v : row) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+      above += v > 1 ? 1 : 0;
+      ++n;
+    }
+  ASSERT_LT(lo, 1.0);
+  ASSERT_GT(hi, 1.0);
+  EXPECT_NE(f.caption.find("e runs from " + report::format_value(lo, 3) + " "), std::string::npos) << f.caption;
+  EXPECT_NE(f.caption.find(" to " + report::format_value(hi, 3) + " "), std::string::npos) << f.caption;
+  EXPECT_NE(f.caption.find("The neutral colour is e = 1; " + report::format_value(100.0 * above / n, 3) + " %"),
+            std::string::npos)
+      << f.caption;
+  // The boundary's extent along the spin axis, from the drawn series.
+  double x0 = INFINITY, x1 = -INFINITY;
+  for (double x : f.series.at(0).x)
+    if (std::isfinite(x)) x0 = std::min(x0, x), x1 = std::max(x1, x);
+  EXPECT_NE(f.caption.find("\"e = 1 boundary\""), std::string::npos) << f.caption;
+  EXPECT_NE(f.caption.find("incoming spin ω " + report::format_value(x0, 3) + "–" + report::format_value(x1, 3) + " rad/s"),
+            std::string::npos)
+      << f.caption;
+  // Every cell below 1: said so, and no blue in the scale (report/plotly_json_test.cpp).
+  std::vector<double> low = d.values;
+  for (double& v : low) v = std::min(v, 0.9);
+  const report::Figure g2 = sweep_heat_map(g, low, 4, 3, 0, nullptr, style);
+  EXPECT_NE(g2.caption.find("Every cell lies below e = 1"), std::string::npos) << g2.caption;
+}
+
 TEST(SweepReport, HeatMapHoldsTheGridValuesAndTheBoundary) {
   const sweep::GridSpec g = seed_window();
   const SweepReportData d = data_for(g, sweep::synthetic::wave_model());

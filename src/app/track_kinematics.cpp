@@ -43,7 +43,7 @@ TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options) {
   result.kinematics = track::differentiate(tr, o);
   const track::Kinematics& k = result.kinematics;
   const bool savgol = o.method == track::DerivativeMethod::savgol;
-  if (!options.report.empty()) report::write_html(track_kinematics_report(k, o, set.source), options.report);
+  if (!options.report.empty()) report::write_html(track_kinematics_report(k, o, set.source), options.report, options.plotly);
   io::AtomicFile f(options.out);
   io::write_kinematics_csv(f.stream(), k, savgol);
   f.commit();

@@ -5,6 +5,7 @@
 
 #include "app/track_import.hpp"
 #include "track/kinematics.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +22,7 @@ struct TrackKinematicsOptions {
   std::string impacts = "auto";  ///< auto: never difference across detected impacts; none: straight through
   std::string out;               ///< CSV t,x,y,vx,vy,ax,ay (+ sigmas for savgol); required
   std::string report;            ///< HTML report; empty: not written
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 struct TrackKinematicsResult {

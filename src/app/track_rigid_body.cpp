@@ -185,7 +185,7 @@ TrackRigidBodyResult track_rigid_body(const TrackRigidBodyOptions& options) {
     csv = std::make_unique<io::AtomicFile>(options.out);
     write_csv(csv->stream(), body);
   }
-  if (!options.report.empty()) report::write_html(track_rigid_body_report(result, set.source), options.report);
+  if (!options.report.empty()) report::write_html(track_rigid_body_report(result, set.source), options.report, options.plotly);
   if (csv) csv->commit();
   return result;
 }

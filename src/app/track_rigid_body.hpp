@@ -7,6 +7,7 @@
 
 #include "app/track_import.hpp"
 #include "track/rigid_body.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,7 @@ struct TrackRigidBodyOptions {
   double max_drift = 0.03;
   std::string out;               ///< CSV frame,t,x,y,theta,omega,sigma_omega,length; empty: not written
   std::string report;            ///< HTML report; empty: not written
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
 /// The A-B distance over the record: a straight-line fit length = l0 + l1 t.

@@ -176,7 +176,7 @@ TrackVideoResult track_video(const TrackVideoOptions& options) {
     const io::TrkWriteSpec spec = video::trk_spec(r, options.write_trk, r.warnings);
     trk->stream() << io::write_trk(video::to_track_set(r).tracks, spec);
   }
-  if (!options.report.empty()) report::write_html(track_video_report(r), options.report);
+  if (!options.report.empty()) report::write_html(track_video_report(r), options.report, options.plotly);
   csv.commit();
   if (trk) trk->commit();
   TrackVideoResult result;

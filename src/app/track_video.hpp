@@ -5,6 +5,7 @@
 #pragma once
 
 #include "video/track_video.hpp"
+#include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -36,6 +37,7 @@ struct TrackVideoOptions {
   int max_gap = video::PointTrackerOptions{}.max_gap_frames;  ///< frames the motion model may bridge
   std::string write_trk;               ///< also a Tracker project (.trk); empty: not written
   std::string report;                  ///< HTML report; empty: not written
+  report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   /// Called after each frame with (frames done, frames expected); may be empty.
   std::function<void(int, int)> progress;
 };

@@ -16,9 +16,12 @@ if(plotly_js MATCHES "[\"\\\\]")
 endif()
 file(READ ${TRIBOLAB_PLOTLY_DIR}/package.json plotly_package)
 string(JSON plotly_version GET ${plotly_package} version)
+# The SHA-384 of the vendored file, for the integrity attribute of `--plotly cdn` (html.cpp
+# turns the hex digest into base64): computed here, never typed by hand.
+file(SHA384 ${plotly_js} plotly_sha384)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
-             ${TRIBOLAB_PLOTLY_DIR}/package.json ${TRIBOLAB_VENDOR_DIR}/package-lock.json)
+             ${TRIBOLAB_PLOTLY_DIR}/package.json ${TRIBOLAB_VENDOR_DIR}/package-lock.json ${plotly_js})
 set_source_files_properties(${CMAKE_SOURCE_DIR}/src/report/embedded.cpp PROPERTIES
   OBJECT_DEPENDS ${plotly_js}
-  COMPILE_DEFINITIONS "TRIBOLAB_PLOTLY_JS_PATH=\"${plotly_js}\";TRIBOLAB_PLOTLY_VERSION=\"${plotly_version}\";TRIBOLAB_VERSION=\"${PROJECT_VERSION}\"")
+  COMPILE_DEFINITIONS "TRIBOLAB_PLOTLY_JS_PATH=\"${plotly_js}\";TRIBOLAB_PLOTLY_VERSION=\"${plotly_version}\";TRIBOLAB_PLOTLY_SHA384=\"${plotly_sha384}\";TRIBOLAB_VERSION=\"${PROJECT_VERSION}\"")
 message(STATUS "Report: embedding Plotly.js ${plotly_version} from ${plotly_js}")

@@ -2,6 +2,7 @@
 
 // The build defines these from report/vendor (see src/report/embed_plotly.cmake).
 #if !defined(TRIBOLAB_PLOTLY_JS_PATH) || !defined(TRIBOLAB_PLOTLY_VERSION) || \
+    !defined(TRIBOLAB_PLOTLY_SHA384) || \
     !defined(TRIBOLAB_VERSION)
 #error "build through CMake: src/report/embed_plotly.cmake defines the vendored Plotly.js path"
 #endif
@@ -31,6 +32,8 @@ std::string_view plotly_js() {
 }
 
 std::string_view plotly_version() { return TRIBOLAB_PLOTLY_VERSION; }
+
+std::string_view plotly_sha384_hex() { return TRIBOLAB_PLOTLY_SHA384; }
 
 std::string_view tribolab_version() { return TRIBOLAB_VERSION; }
 

@@ -13,6 +13,10 @@ std::string_view plotly_js();
 /// Plotly.js version, from the vendored package.json (e.g. "4.1.2").
 std::string_view plotly_version();
 
+/// SHA-384 of plotly_js() as 96 lower-case hex digits, computed by CMake from the vendored
+/// file (embed_plotly.cmake); the integrity attribute of `--plotly cdn` is made from it.
+std::string_view plotly_sha384_hex();
+
 /// tribolab version (the CMake project version, e.g. "0.1.0").
 std::string_view tribolab_version();
 

@@ -4,7 +4,9 @@
 #include "report/embedded.hpp"
 #include "report/format.hpp"
 #include "report/plotly_json.hpp"
+#include "report/units.hpp"
 
+#include <filesystem>
 #include <set>
 #include <stdexcept>
 #include <variant>
@@ -99,6 +101,17 @@ constexpr const char* kRender = R"JS(
 })();
 )JS";
 
+/// A unit in the report's notation: "^(...)" groups become "^{...}" ("N s/m^(n+1)").
+std::string unit_notation(std::string u) {
+  for (std::size_t p = 0; (p = u.find("^(", p)) != std::string::npos;) {
+    const std::size_t close = u.find(')', p);
+    if (close == std::string::npos) break;
+    u[p + 1] = '{';
+    u[close] = '}';
+  }
+  return u;
+}
+
 /// A cell holding a number, or a number with uncertainty ("0.634 ± 0.012", "(6.0 ± 1.2)×10⁵").
 bool looks_numeric(const std::string& cell) {
   if (cell.empty()) return false;
@@ -125,9 +138,23 @@ std::vector<bool> numeric_columns(const Table& t) {
   return numeric;
 }
 
+/// Where the page's plots come from, for the footer.
+std::string plotly_origin(PlotlyMode mode, const std::string& src) {
+  const std::string v = "Plotly.js " + std::string(plotly_version()) + " (MIT licence)";
+  switch (mode) {
+    case PlotlyMode::embed: return v + ", embedded in this file: the report works offline.";
+    case PlotlyMode::cdn:
+      return v + ", loaded from " + plotly_cdn_url() + ": the plots need a network connection.";
+    case PlotlyMode::file:
+      return v + ", read from the file " + src + " next to this one: keep them together; no network is needed.";
+  }
+  return v;
+}
+
 class Writer {
  public:
-  explicit Writer(std::string& out) : out_(out) {}
+  Writer(std::string& out, PlotlyMode plotly, std::string script_src)
+      : out_(out), plotly_(plotly), script_src_(std::move(script_src)) {}
 
   void write(const Report& r) {
     out_ += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -137,13 +164,15 @@ class Writer {
     out_ += "<title>" + html_escape(r.title) + "</title>\n";
     out_ += "<style>" + std::string(kStyle) + "</style>\n";
     out_ += "<script>" + std::string(kErrorCapture) + "</script>\n";
-    out_ += "<script>/* Plotly.js " + std::string(plotly_version()) +
-            ", MIT licence, embedded so this report needs no network */\n";
-    out_ += script_safe(plotly_js());
-    out_ += "\n</script>\n</head>\n<body>\n";
+    write_plotly_script_tag();
+    out_ += "</head>\n<body>\n";
 
     out_ += "<header>\n<h1>" + html_escape(r.title) + "</h1>\n";
     if (!r.subtitle.empty()) out_ += "<p class=\"subtitle\">" + html_escape(r.subtitle) + "</p>\n";
+    if (plotly_ != PlotlyMode::embed) {
+      out_ += "<p class=\"subtitle\" id=\"tribolab-plotly-note\">Plots: " +
+              html_escape(plotly_origin(plotly_, script_src_)) + "</p>\n";
+    }
     out_ += "</header>\n";
 
     std::vector<std::string> ids;
@@ -168,8 +197,7 @@ class Writer {
     out_ += "</main>\n";
 
     out_ += "<footer>\n<p>Written by tribolab " + std::string(tribolab_version()) +
-            ". Plots are drawn by Plotly.js " + std::string(plotly_version()) +
-            " (MIT licence), embedded in this file: the report works offline. Hover over a "
+            ". Plots are drawn by " + html_escape(plotly_origin(plotly_, script_src_)) + " Hover over a "
             "plot for values, drag to zoom, double-click to reset; the camera icon saves a "
             "PNG. ± values are one standard uncertainty, rounded to two significant "
             "digits.</p>\n</footer>\n";
@@ -181,6 +209,24 @@ class Writer {
   }
 
  private:
+  void write_plotly_script_tag() {
+    switch (plotly_) {
+      case PlotlyMode::embed:
+        out_ += "<script>/* Plotly.js " + std::string(plotly_version()) +
+                ", MIT licence, embedded so this report needs no network */\n";
+        out_ += script_safe(plotly_js());
+        out_ += "\n</script>\n";
+        return;
+      case PlotlyMode::cdn:
+        out_ += "<script src=\"" + html_escape(plotly_cdn_url()) + "\" integrity=\"" + plotly_integrity() +
+                "\" crossorigin=\"anonymous\"></script>\n";
+        return;
+      case PlotlyMode::file:
+        out_ += "<script src=\"" + html_escape(script_src_) + "\"></script>\n";
+        return;
+    }
+  }
+
   void write_section(const Section& s, const std::string& id) {
     out_ += "<section id=\"" + id + "\">\n<h2>" + html_escape(s.heading) + "</h2>\n";
     for (const Block& b : s.blocks) std::visit([this](const auto& x) { block(x); }, b);
@@ -205,7 +251,19 @@ class Writer {
     out_ += "</div>\n";
   }
 
-  void block(const Table& t) {
+  void block(const Table& table) {
+    // Every quantity/parameter table shows its units in a column of their own (units.hpp).
+    Table with_units;
+    if (is_parameter_table(table.header)) {
+      with_units = table;
+      with_units.header.insert(with_units.header.begin() + 1, "unit");
+      for (auto& row : with_units.rows) {
+        auto [label, unit] = split_unit(row[0]);
+        row[0] = std::move(label);
+        row.insert(row.begin() + 1, std::move(unit));
+      }
+    }
+    const Table& t = is_parameter_table(table.header) ? with_units : table;
     out_ += "<table>\n";
     if (!t.caption.empty()) out_ += "<caption>" + html_escape(t.caption) + "</caption>\n";
     out_ += "<thead><tr>";
@@ -221,7 +279,8 @@ class Writer {
         if (c == 0 && !href.empty()) {
           out_ += "<a href=\"" + html_escape(href) + "\">" + html_escape(row[c]) + "</a></td>";
         } else {
-          out_ += html_escape(row[c]) + "</td>";
+          // A unit column's exponents as superscripts: "m/s^2", "N s/m^(n+1)" -> m^{n+1}.
+          out_ += (c == 1 && &t == &with_units ? notation_html(unit_notation(row[c])) : html_escape(row[c])) + "</td>";
         }
       }
       out_ += "</tr>\n";
@@ -259,24 +318,40 @@ class Writer {
   }
 
   std::string& out_;
+  PlotlyMode plotly_;
+  std::string script_src_;
   nlohmann::json figures_ = nlohmann::json::array();
   int figure_number_ = 0;
 };
 
 }  // namespace
 
-std::string to_html(const Report& report) {
+std::string to_html(const Report& report, PlotlyMode plotly, const std::string& script_src) {
   if (auto e = report.validate(); !e.empty()) {
     throw std::invalid_argument("report '" + report.title + "': " + e);
   }
+  const std::string src = script_src.empty() ? plotly_file_name() : script_src;
+  if (plotly == PlotlyMode::file && !is_relative_link(src)) {
+    throw std::invalid_argument("report '" + report.title + "': script '" + src + "' is not a relative path");
+  }
   std::string out;
-  out.reserve(plotly_js().size() + (1 << 16));
-  Writer(out).write(report);
+  out.reserve((plotly == PlotlyMode::embed ? plotly_js().size() : 0) + (1 << 16));
+  Writer(out, plotly, src).write(report);
   return out;
 }
 
-void write_html(const Report& report, const std::string& path) {
-  const std::string page = to_html(report);  // before opening: a bad report leaves no file
+void write_html(const Report& report, const std::string& path, PlotlyMode plotly, const std::string& script_dir) {
+  namespace fs = std::filesystem;
+  std::string src;
+  if (plotly == PlotlyMode::file) {
+    const fs::path page_dir = fs::absolute(fs::path(path)).parent_path().lexically_normal();
+    const fs::path dir = script_dir.empty() ? page_dir : fs::absolute(fs::path(script_dir)).lexically_normal();
+    src = (dir / plotly_file_name()).lexically_relative(page_dir).generic_string();
+  }
+  const std::string page = to_html(report, plotly, src);  // before opening: a bad report leaves no file
+  if (plotly == PlotlyMode::file) {
+    write_plotly_script(script_dir.empty() ? fs::path(path).parent_path().string() : script_dir);
+  }
   io::AtomicFile file(path);
   file.stream().write(page.data(), static_cast<std::streamsize>(page.size()));
   file.commit();

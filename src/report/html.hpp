@@ -9,6 +9,7 @@
 // Chromium.
 #pragma once
 
+#include "report/plotly_script.hpp"
 #include "report/report.hpp"
 
 #include <ostream>
@@ -21,11 +22,18 @@ inline constexpr const char* kStatusId = "tribolab-status";
 inline constexpr const char* kFiguresId = "tribolab-figures";
 
 /// The whole page. Throws std::invalid_argument with Report::validate()'s message when the
-/// report is malformed (a programming error in the code that built it).
-std::string to_html(const Report& report);
+/// report is malformed (a programming error in the code that built it). `plotly` says how the
+/// page gets Plotly.js (plotly_script.hpp); for PlotlyMode::file, `script_src` is the relative
+/// URL of the shared script (default: plotly_file_name(), beside the page).
+std::string to_html(const Report& report, PlotlyMode plotly = PlotlyMode::embed,
+                    const std::string& script_src = {});
 
 /// Writes the page to `path` through io::AtomicFile: the file appears whole or not at all.
-/// Throws InputError naming the path when it cannot be written.
-void write_html(const Report& report, const std::string& path);
+/// Throws InputError naming the path when it cannot be written. With PlotlyMode::file the
+/// shared script is written (once, write_plotly_script) into `script_dir`, default the
+/// page's own folder, and the page links to it by a relative path (e.g. "../plotly-X.min.js"
+/// for the run reports of a series in a sub-folder).
+void write_html(const Report& report, const std::string& path, PlotlyMode plotly = PlotlyMode::embed,
+                const std::string& script_dir = {});
 
 }  // namespace tribolab::report

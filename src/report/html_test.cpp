@@ -157,8 +157,18 @@ TEST(Html, HeatMapWithOverlaySerialisesGridAndBoundary) {
   EXPECT_EQ(heat["z"][0], nlohmann::json({0.5, 0.9, 1.1}));
   EXPECT_TRUE(heat["z"][1][0].is_null());
   EXPECT_EQ(heat["z"][1][2].get<double>(), 1.2);
-  EXPECT_EQ(heat["zmid"].get<double>(), 1.0);
-  EXPECT_EQ(heat["colorscale"], "RdBu");
+  // Diverging scale over the data's range 0.5..1.2 (not made symmetric about 1: Plotly's
+  // zmid would run the colour bar to 1.5), with the neutral white exactly at e = 1.
+  EXPECT_FALSE(heat.contains("zmid"));
+  EXPECT_EQ(heat["zmin"].get<double>(), 0.5);
+  EXPECT_EQ(heat["zmax"].get<double>(), 1.2);
+  const double at_one = (1.0 - 0.5) / (1.2 - 0.5);
+  bool neutral_at_one = false;
+  for (const auto& stop : heat["colorscale"])
+    neutral_at_one |= stop[1] == "rgb(247,247,247)" && std::abs(stop[0].get<double>() - at_one) < 1e-12;
+  EXPECT_TRUE(neutral_at_one) << heat["colorscale"].dump();  // 1e-12: rounding of two divisions
+  EXPECT_EQ(heat["colorscale"].front()[1], "rgb(103,0,31)");  // e = 0.5 is the far side: deepest red
+  EXPECT_EQ(heat["colorscale"].back()[0].get<double>(), 1.0);
   EXPECT_EQ(heat["colorbar"]["title"]["text"], "e");
   const auto& line = fig["data"][1];
   EXPECT_EQ(line["mode"], "lines");

@@ -81,7 +81,8 @@ struct Series {
 enum class ColorScale {
   Viridis,  ///< perceptually uniform, the default
   Cividis,  ///< uniform and readable with colour-vision deficiency
-  RdBu,     ///< diverging red–blue; combine with HeatMap::z_mid (e.g. 1 for restitution)
+  RdBu,     ///< diverging red (low) – white – blue (high); with HeatMap::z_mid (1 for restitution)
+  PuOr,     ///< diverging orange (low) – white – purple (high), e.g. a signed spin with z_mid 0
 };
 
 /// A heat map z(x, y) on a rectangular grid: z[i][j] is the value at (x[j], y[i]), so z has
@@ -91,7 +92,10 @@ struct HeatMap {
   std::vector<std::vector<double>> z;
   std::string colorbar_title;  ///< with unit, e.g. "e" or "v_y,out (m/s)"
   ColorScale colorscale = ColorScale::Viridis;
-  std::optional<double> z_mid;  ///< value at the centre of a diverging scale
+  /// Value at the neutral (white) colour of a diverging scale. The colour bar spans the data
+  /// (min to max of z), not a range made symmetric about z_mid: one unit of z is the same
+  /// step of colour on both sides, and a side the data do not reach is not drawn.
+  std::optional<double> z_mid;
 };
 
 /// One axis: title with its unit, e.g. "t (s)", and linear or logarithmic scale.

@@ -3,7 +3,8 @@
 # that every plot rendered without a script error: the page's hidden status element
 # (<div id="tribolab-status">) must read "ok N", N = the number of plot elements in the file
 # (and = EXPECTED when given). Name resolution is disabled, so a report that needed the
-# network would fail. Saves a screenshot to SCREENSHOT.PNG.
+# network would fail; a script may only come from a relative path that exists (`--plotly
+# file`). Saves a screenshot to SCREENSHOT.PNG.
 #
 #   sh tests/browser/check_report.sh REPORT.html SCREENSHOT.png [EXPECTED_PLOTS]
 set -eu
@@ -28,9 +29,17 @@ plots=$(grep -o 'class="tribolab-plot"' "$html" | wc -l | tr -d ' ')
 if [ -n "$expected" ] && [ "$plots" -ne "$expected" ]; then
   fail "the file has $plots plot elements, expected $expected"
 fi
-if grep -Eiq '<script[^>]*[[:space:]]src=|<link[^>]*[[:space:]]href=' "$html"; then
-  fail "the report loads an external script or stylesheet"
+# Offline: no stylesheet link, and a script only from a relative path that exists beside the
+# report (`--plotly file`: plotly-VERSION.min.js shared by the reports of a folder).
+if grep -Eiq '<link[^>]*[[:space:]]href=' "$html"; then
+  fail "the report loads an external stylesheet"
 fi
+for src in $(grep -Eio '<script[^>]*[[:space:]]src="[^"]*"' "$html" | sed 's/.*src="//; s/"$//'); do
+  case $src in
+    *:* | /* | '') fail "the report loads the script '$src' from outside its folder" ;;
+  esac
+  [ -s "$(dirname "$html")/$src" ] || fail "the script '$src' is missing beside the report"
+done
 
 profile=$(mktemp -d)
 log=$(mktemp)
