@@ -480,6 +480,15 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
                          "If lengths and angle are right, the file's times must be multiplied by " +
                          fmt(c.time_factor, 3) + " (e.g. --time-scale " + fmt(c.time_factor, 3) +
                          " times the one used; slow motion analysed as real time gives 1/8 at 240 fps played at 30)");
+  } else if (a.gravity && std::abs(a.gravity->g.value - o.g) > 3 * a.gravity->g.sigma + 0.03) {
+    // Not gross but significant (3 sd, and beyond the 9.78-9.83 m/s^2 of the Earth's
+    // surface): a frame rate off by k % moves g by 2k % and mu with it, by more than its
+    // stated uncertainty (docs/theory.md#plausibility-checks).
+    const GravityCheck& c = *a.gravity;
+    a.warnings.push_back("the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " +
+                         fmt(o.g) + ": check the frame rate (--time-scale; an error of k % in it changes g by 2k %), "
+                         "the length calibration and the incline angle; mu and v0 are fitted with g = " + fmt(o.g) +
+                         " and are off by more than their uncertainties until this is fixed");
   }
   if (b.mu.value > 2) {
     a.warnings.push_back("the fitted friction coefficient mu = " + fmt(b.mu.value) +

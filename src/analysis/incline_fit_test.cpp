@@ -318,3 +318,40 @@ TEST(VerdictSource, TextIsTheJsonValue) {
 
 }  // namespace
 }  // namespace tribolab::analysis
+
+namespace tribolab::analysis {
+namespace {
+
+bool warns(const InclineAnalysis& a, const std::string& text) {
+  for (const auto& w : a.warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+
+// A frame rate off by 2 % (times 2 % short: g seen 4 % high) moves mu by several of its own
+// sds with a confident verdict; the gross-error check (|g/9.8 - 1| > 25 %) is silent there.
+// The significance warning must fire, and must not on the honest runs (3 sd + 0.03 m/s^2:
+// ~4 sd here, a false alarm once in ~10^4 runs). Model A skipped: speed, and it does not
+// enter the gravity check. Before this warning the 2 % runs printed mu off by ~3 sd silently.
+TEST(InclineGravity, AFrameRateTwoPercentOffIsWarnedNotPrintedConfidently) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    auto s = seed_run(seed);
+    auto run = synthesize_incline_run(s);
+    InclineFitOptions o = fit_options(s);
+    o.fit_model_a = false;
+    const InclineAnalysis honest = analyze_incline_run(run.track, o);
+    EXPECT_FALSE(warns(honest, "check the frame rate")) << seed << ": " << honest.gravity->g.value;
+    for (auto& p : run.track.points) p.t /= 1.02;
+    const InclineAnalysis off = analyze_incline_run(run.track, o);
+    const double shift = std::abs(off.model_b.mu.value - s.params.mu);
+    // Either the number is still right within its interval or the tool says why it is not.
+    EXPECT_TRUE(shift <= 2 * off.model_b.mu.sigma || warns(off, "check the frame rate"))
+        << seed << ": mu " << off.model_b.mu.value << " +- " << off.model_b.mu.sigma;
+    EXPECT_TRUE(warns(off, "check the frame rate")) << seed << ": g " << off.gravity->g.value;
+    std::printf("seed %d: mu shift %.4f = %.1f sd, g %.3f +- %.3f\n", static_cast<int>(seed), shift,
+                shift / off.model_b.mu.sigma, off.gravity->g.value, off.gravity->g.sigma);
+  }
+}
+
+}  // namespace
+}  // namespace tribolab::analysis
