@@ -490,6 +490,31 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
                          "the length calibration and the incline angle; mu and v0 are fitted with g = " + fmt(o.g) +
                          " and are off by more than their uncertainties until this is fixed");
   }
+  // Wild frames (a hand in the picture, the tracker jumping): model B misses them by far
+  // more than the noise; they pull mu and can flip the verdict. 8 robust noise sds + 2 mm, as
+  // for bounce analyze (docs/theory.md#plausibility-checks).
+  {
+    // Model A's residuals when it was fitted (it nests B: a real normal friction is no wild frame).
+    const bool with_a = a.residual_x_a.size() == a.residual_x_b.size();
+    const auto& rx = with_a ? a.residual_x_a : a.residual_x_b;
+    const auto& ry = with_a ? a.residual_y_a : a.residual_y_b;
+    const double noise = std::max(a.kinematics.noise_x, a.kinematics.noise_y);
+    const double limit = 8 * noise + 2e-3;
+    std::size_t n_wild = 0;
+    double worst = 0, t_first = 0;
+    for (std::size_t i = 0; i < rx.size(); ++i) {
+      const double d = std::hypot(rx[i], ry[i]);
+      if (d > limit) {
+        if (n_wild++ == 0) t_first = track.points[i].t;
+        worst = std::max(worst, d);
+      }
+    }
+    if (n_wild > 0)
+      a.warnings.push_back(std::to_string(n_wild) + " frame(s) from t = " + fmt(t_first) + " s lie far from the fitted slide (up to " +
+                           fmt(1e3 * worst, 3) + " mm; the noise is " + fmt(1e3 * noise, 2) +
+                           " mm): something else was tracked there (a hand, a shadow) or the tracker jumped; mu, the "
+                           "verdict and its tests are pulled by them. Correct or delete those points and analyse again");
+  }
   if (b.mu.value > 2) {
     a.warnings.push_back("the fitted friction coefficient mu = " + fmt(b.mu.value) +
                          " is far above any sliding contact (mu < 2): check the time scale, the length unit and the incline angle");
