@@ -509,7 +509,9 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
         worst = std::max(worst, d);
       }
     }
-    if (n_wild > 0)
+    // A few frames only (a fifth at most): when the fit misses most of them the model or the
+    // time scale is wrong, which the gravity check says, not wild frames.
+    if (n_wild > 0 && 5 * n_wild <= rx.size())
       a.warnings.push_back(std::to_string(n_wild) + " frame(s) from t = " + fmt(t_first) + " s lie far from the fitted slide (up to " +
                            fmt(1e3 * worst, 3) + " mm; the noise is " + fmt(1e3 * noise, 2) +
                            " mm): something else was tracked there (a hand, a shadow) or the tracker jumped; mu, the "
