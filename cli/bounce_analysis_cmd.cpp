@@ -16,6 +16,7 @@
 #include "app/report_bounce_series.hpp"
 
 #include "analysis/bounce_series.hpp"
+#include "analysis/series_plausibility.hpp"
 #include "io/text.hpp"
 
 #include <memory>
@@ -49,6 +50,18 @@ json summary_for_text(json summary) {
   return summary;
 }
 
+/// Runs that stand apart from the series (another time scale or length calibration).
+template <class Runs>
+std::vector<std::string> bounce_series_run_warnings(const Runs& runs) {
+  std::vector<const analysis::BounceAnalysis*> analyses;
+  std::vector<std::string> sources;
+  for (const auto& run : runs) {
+    analyses.push_back(run.ok() ? &run.result->analysis : nullptr);
+    sources.push_back(run.source);
+  }
+  return analysis::bounce_series_warnings(analyses, sources);
+}
+
 /// `bounce analyze` over several files (docs/cli.md#bounce-analyze): each file as the
 /// single-file workflow reads and analyses it (app::bounce_analyze_run).
 void analyze_series(const AnalyzeOpts& opts, const std::vector<BounceAnalyzeOptions>& per) {
@@ -71,6 +84,7 @@ void analyze_series(const AnalyzeOpts& opts, const std::vector<BounceAnalyzeOpti
   if (!points.empty()) {
     sum = analysis::summarize_bounce_series(points, so);
     summary.update(bounce_series_json(*sum, points, files, so));
+    summary["warnings"] = bounce_series_run_warnings(runs);  // docs/theory.md#plausibility-checks
     if (!shared.bounces_out.empty()) {
       write_bounces_out(shared.bounces_out, points, files);
       summary["bounces_out"] = shared.bounces_out;

@@ -79,6 +79,15 @@ inline nlohmann::json run_json(const std::string& args) {
   if (j.is_object() && j.contains("warnings") && j["warnings"].is_array()) {
     for (const auto& w : j["warnings"]) expected_err += "tribolab: warning: " + w.get<std::string>() + "\n";
   }
+  // A series: each run's warnings prefixed by its file, then the summary's.
+  if (j.is_object() && j.contains("runs") && j.contains("summary")) {
+    for (const auto& run : j["runs"])
+      if (run.contains("warnings"))
+        for (const auto& w : run["warnings"])
+          expected_err += "tribolab: warning: " + run.value("file", "") + ": " + w.get<std::string>() + "\n";
+    if (j["summary"].contains("warnings"))
+      for (const auto& w : j["summary"]["warnings"]) expected_err += "tribolab: warning: " + w.get<std::string>() + "\n";
+  }
   EXPECT_EQ(r.err, expected_err) << args;
   return j;
 }

@@ -48,7 +48,17 @@ analysis::SeriesOptions cli_series_options(const std::string& what) {
 
 void print_series(const nlohmann::json& rows, const nlohmann::json& summary, bool as_json,
                   const std::vector<std::string>& columns) {
+  // Each run's warnings on stderr with its file, whatever the output format; the summary's
+  // own below (print_result, or here for --json).
+  for (const auto& row : rows)
+    if (row.is_object() && row.contains("warnings") && row["warnings"].is_array())
+      for (const auto& w : row["warnings"])
+        if (w.is_string())
+          std::cerr << "tribolab: warning: " << row.value("file", "") << ": " << one_line(w.get<std::string>()) << '\n';
   if (as_json) {
+    if (summary.is_object() && summary.contains("warnings") && summary["warnings"].is_array())
+      for (const auto& w : summary["warnings"])
+        if (w.is_string()) std::cerr << "tribolab: warning: " << one_line(w.get<std::string>()) << '\n';
     std::cout << nlohmann::json{{"runs", rows}, {"summary", summary}}.dump() << '\n';
     return;
   }

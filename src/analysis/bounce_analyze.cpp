@@ -1,6 +1,8 @@
 // Seed 001 experiment 1, automated. docs/theory.md#bounce-analysis.
 #include "analysis/bounce_analyze.hpp"
 
+#include "analysis/bounce_glitch.hpp"
+#include "analysis/bounce_plausibility.hpp"
 #include "analysis/bounce_touch.hpp"
 
 #include "numerics/error.hpp"
@@ -458,14 +460,18 @@ void require_plausible_floor(int pre_trimmed, int post_trimmed, const BounceAnal
 
 }  // namespace
 
-BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
+BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip_b,
                               const BounceAnalyzeOptions& options) {
   if (auto e = options.validate(); !e.empty()) {
     const auto colon = e.find(':');
     throw InputError("--" + e.substr(0, colon), colon == std::string::npos ? e : e.substr(colon + 2));
   }
   BounceAnalysis r;
-  require_common_frames(a, b);
+  require_common_frames(tip_a, tip_b);
+  // Wild frames the impact detector would take for impacts (a hand in the picture) are left
+  // out first and named below (docs/theory.md#plausibility-checks).
+  track::Track a = tip_a, b = tip_b;
+  const Glitches glitches = drop_glitches(a, b, options.impacts);
   r.body = track::rigid_body_from_points(a, b);
   r.centre = track::centre_track(r.body);
   const track::Impact& imp = choose_impact(a, b, options, r);
@@ -488,6 +494,16 @@ BounceAnalysis analyze_bounce(const track::Track& a, const track::Track& b,
   }
   require_plausible_floor(pre_trimmed, post_trimmed, r);
   check_gravity(rows, r);
+  check_bounce_plausibility(options.ball, r);  // docs/theory.md#plausibility-checks
+  if (!glitches.times.empty()) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "%zu frame(s) between t = %.4g and %.4g s lie far from the flight (up to %.1f mm) while the frames on "
+                  "both sides follow one flight: something else was tracked there (a hand, a shadow) or the tracker "
+                  "jumped; they were left out of the analysis. Check those frames in the video",
+                  glitches.times.size(), glitches.times.front(), glitches.times.back(), 1e3 * glitches.worst);
+    r.warnings.insert(r.warnings.begin(), buf);
+  }
   return r;
 }
 

@@ -1,5 +1,6 @@
 // docs/theory.md#bounce-fit.
 #include "analysis/bounce_fit.hpp"
+#include "analysis/bounce_plausibility.hpp"
 
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
@@ -202,6 +203,16 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   const char* shown[] = {"K", "n", o.restitution_model ? "e" : "D", "mu"};
   for (int k = 0; k < 4; ++k)
     if (!params[k].fixed) out.free_parameters.push_back(shown[k]);
+  std::vector<std::string> names;
+  std::vector<double> lower, upper;
+  std::vector<bool> free;
+  for (int k = 0; k < 4; ++k) {
+    names.push_back(shown[k]);
+    lower.push_back(params[k].lower.value_or(-HUGE_VAL));
+    upper.push_back(params[k].upper.value_or(HUGE_VAL));
+    free.push_back(!params[k].fixed);
+  }
+  out.warnings = bound_warnings(names, v, lower, upper, free);  // docs/theory.md#plausibility-checks
   return out;
 }
 

@@ -55,6 +55,8 @@ struct BounceFitResult {
   double e = 0, sigma_e = 0;         ///< target restitution; NaN unless restitution_model
   double mu = 0, sigma_mu = 0;
   double rms = 0;                    ///< m/s over all 3 N residuals
+  /// Plain-language warnings: free parameters at a bound of the search (docs/theory.md#plausibility-checks).
+  std::vector<std::string> warnings;
   std::vector<BounceFitRow> rows;
   std::vector<std::string> free_parameters;
 };

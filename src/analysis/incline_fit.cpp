@@ -480,6 +480,42 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
                          "If lengths and angle are right, the file's times must be multiplied by " +
                          fmt(c.time_factor, 3) + " (e.g. --time-scale " + fmt(c.time_factor, 3) +
                          " times the one used; slow motion analysed as real time gives 1/8 at 240 fps played at 30)");
+  } else if (a.gravity && std::abs(a.gravity->g.value - o.g) > 3 * a.gravity->g.sigma + 0.03) {
+    // Not gross but significant (3 sd, and beyond the 9.78-9.83 m/s^2 of the Earth's
+    // surface): a frame rate off by k % moves g by 2k % and mu with it, by more than its
+    // stated uncertainty (docs/theory.md#plausibility-checks).
+    const GravityCheck& c = *a.gravity;
+    a.warnings.push_back("the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " +
+                         fmt(o.g) + ": check the frame rate (--time-scale; an error of k % in it changes g by 2k %), "
+                         "the length calibration and the incline angle; mu and v0 are fitted with g = " + fmt(o.g) +
+                         " and are off by more than their uncertainties until this is fixed");
+  }
+  // Wild frames (a hand in the picture, the tracker jumping): model B misses them by far
+  // more than the noise; they pull mu and can flip the verdict. 8 robust noise sds + 2 mm, as
+  // for bounce analyze (docs/theory.md#plausibility-checks).
+  {
+    // Model A's residuals when it was fitted (it nests B: a real normal friction is no wild frame).
+    const bool with_a = a.residual_x_a.size() == a.residual_x_b.size();
+    const auto& rx = with_a ? a.residual_x_a : a.residual_x_b;
+    const auto& ry = with_a ? a.residual_y_a : a.residual_y_b;
+    const double noise = std::max(a.kinematics.noise_x, a.kinematics.noise_y);
+    const double limit = 8 * noise + 2e-3;
+    std::size_t n_wild = 0;
+    double worst = 0, t_first = 0;
+    for (std::size_t i = 0; i < rx.size(); ++i) {
+      const double d = std::hypot(rx[i], ry[i]);
+      if (d > limit) {
+        if (n_wild++ == 0) t_first = track.points[i].t;
+        worst = std::max(worst, d);
+      }
+    }
+    // A few frames only (a fifth at most): when the fit misses most of them the model or the
+    // time scale is wrong, which the gravity check says, not wild frames.
+    if (n_wild > 0 && 5 * n_wild <= rx.size())
+      a.warnings.push_back(std::to_string(n_wild) + " frame(s) from t = " + fmt(t_first) + " s lie far from the fitted slide (up to " +
+                           fmt(1e3 * worst, 3) + " mm; the noise is " + fmt(1e3 * noise, 2) +
+                           " mm): something else was tracked there (a hand, a shadow) or the tracker jumped; mu, the "
+                           "verdict and its tests are pulled by them. Correct or delete those points and analyse again");
   }
   if (b.mu.value > 2) {
     a.warnings.push_back("the fitted friction coefficient mu = " + fmt(b.mu.value) +

@@ -138,6 +138,8 @@ BounceAnalyzeResult bounce_analyze_run(const BounceAnalyzeOptions& opts, const a
   res.tip_a = set.find(opts.track_a);
   res.tip_b = set.find(opts.track_b);
   res.analysis = analysis::analyze_bounce(res.tip_a, res.tip_b, o);
+  // What the importer left out (lost frames, marks off the clip's steps) is said first.
+  res.analysis.warnings.insert(res.analysis.warnings.begin(), set.warnings.begin(), set.warnings.end());
   res.json = bounce_analysis_json(res.analysis);
   return res;
 }
@@ -234,6 +236,7 @@ BounceFitResult bounce_fit(const BounceFitOptions& opts) {
     j["sigma_e"] = r.sigma_e;
   }
   j["residuals"] = residuals;
+  j["warnings"] = r.warnings;  // parameters at a bound (docs/theory.md#plausibility-checks)
   res.json = std::move(j);
   if (!opts.report.empty()) {
     std::string command = "tribolab bounce fit " + opts.file + " --model " + opts.model + " --friction " + opts.friction;

@@ -1,5 +1,7 @@
 #include "app/incline_series.hpp"
 
+#include "analysis/series_plausibility.hpp"
+
 #include "numerics/units.hpp"
 #include "incline/params.hpp"
 
@@ -24,6 +26,17 @@ json pulls_by_run(const std::optional<analysis::WeightedMean>& m, const std::vec
 }
 
 }  // namespace
+
+std::vector<std::string> series_warnings(const std::optional<analysis::WeightedMean>& mu,
+                                         const std::vector<std::string>& outliers) {
+  std::vector<std::string> w;
+  if (mu) {
+    // One surface has one mu: runs that disagree beyond their uncertainties are said
+    // (docs/theory.md#plausibility-checks).
+    if (auto x = analysis::disagreement_warning(*mu, "mu", outliers); !x.empty()) w.push_back(x);
+  }
+  return w;
+}
 
 void add_weighted_mean(json& j, const std::optional<analysis::WeightedMean>& m, const std::string& name) {
   j[name] = m ? json(m->mean) : json(nullptr);
@@ -88,6 +101,7 @@ json incline_series_json(const analysis::InclineSeriesSummary& s, std::size_t n_
     j["normal_friction"] = nullptr;
   }
   j["normal_friction_note"] = s.normal_friction_note;
+  j["warnings"] = series_warnings(s.mu, s.outliers);
   return j;
 }
 
@@ -98,6 +112,7 @@ json slide_series_json(const analysis::SlideSeriesSummary& s, std::size_t n_runs
   j["mu_pulls"] = pulls_by_run(s.mu, s.mu_index, n_runs, run_of_point);
   j["outliers"] = s.outliers;
   j["note"] = s.note;
+  j["warnings"] = series_warnings(s.mu, s.outliers);
   return j;
 }
 

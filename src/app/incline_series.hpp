@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace tribolab::app {
@@ -25,5 +27,10 @@ nlohmann::json slide_series_json(const analysis::SlideSeriesSummary& s, std::siz
 
 /// The weighted-mean keys of `m` under names "<prefix>", "sigma_<prefix>", ... as used by both.
 void add_weighted_mean(nlohmann::json& j, const std::optional<analysis::WeightedMean>& m, const std::string& name);
+
+/// The series' plausibility warnings (the JSON key "warnings" of its summary): runs that
+/// contradict each other on mu (docs/theory.md#plausibility-checks).
+std::vector<std::string> series_warnings(const std::optional<analysis::WeightedMean>& mu,
+                                         const std::vector<std::string>& outliers);
 
 }  // namespace tribolab::app

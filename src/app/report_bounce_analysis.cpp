@@ -473,6 +473,11 @@ report::Report bounce_fit_report(const std::string& command, const std::vector<a
                   " friction) and compared with the measured outgoing state (seed 001, 研究方法 六: the seed "
                   "fitted K, n and D to its measurements the same way).");
   s.add_table(bounce_fit_parameters_table(o, r));
+  if (!r.warnings.empty()) {  // docs/theory.md#plausibility-checks
+    std::vector<std::string> w;
+    for (const auto& x : r.warnings) w.push_back("Warning: " + x);
+    s.add_list(w);
+  }
   add_bounce_fit_figures(s, "Fit", rows, r);
   auto& eq = rep.add_section("Ball and equations");
   eq.add_table(ball_table(o.ball));

@@ -1,5 +1,7 @@
 #include "app/report_bounce_series.hpp"
 
+#include "analysis/series_plausibility.hpp"
+
 #include "app/report_bounce.hpp"
 #include "app/report_bounce_analysis.hpp"
 #include "app/report_incline_series.hpp"  // series_runs_folder, series_run_file
@@ -275,6 +277,13 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
   rep.title = "tribolab bounce analyze: a series of " + std::to_string(runs.size()) + " bounces";
   rep.subtitle = command;
   add_bounce_series(rep, "", runs, points, summary, options, links);
+  std::vector<const analysis::BounceAnalysis*> analyses;
+  std::vector<std::string> sources;
+  for (const auto& run : runs) analyses.push_back(run.analysis), sources.push_back(run.source);
+  if (const auto w = analysis::bounce_series_warnings(analyses, sources); !w.empty()) {
+    auto& ws = rep.add_section("Warnings");  // docs/theory.md#plausibility-checks
+    ws.add_list(w);
+  }
   auto& b = rep.add_section("Ball");
   b.add_table(ball_table(ball));
   return rep;

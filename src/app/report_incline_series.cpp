@@ -6,6 +6,7 @@
 #include "report/html.hpp"
 #include "app/report_incline_analysis.hpp"
 #include "app/report_util.hpp"
+#include "app/incline_series.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -192,6 +193,11 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
   else st.rows.push_back({"weighted μ (inverse-variance)", "— (no run analysed)"});
   st.rows.push_back({"outliers (|pull| > 3)", sum.outliers.empty() ? "none" : std::to_string(sum.outliers.size())});
   s.add_table(std::move(st));
+  if (const auto w = series_warnings(sum.mu, sum.outliers); !w.empty()) {  // docs/theory.md#plausibility-checks
+    std::vector<std::string> items;
+    for (const auto& x : w) items.push_back("Warning: " + x);
+    s.add_list(std::move(items));
+  }
   s.add_equation("μ̄ = Σ w_i μ_i / Σ w_i,  w_i = 1/σ_i^2,  σ_{μ̄} = 1/√(Σ w_i),  χ^2 = Σ w_i (μ_i − μ̄)^2 (n − 1 dof)",
                  "docs/theory.md#series-of-runs", "pull of run i: (μ_i − μ̄)/√(σ_i² − σ² of the mean)");
   if (!sum.outliers.empty()) {
@@ -320,6 +326,11 @@ report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& ru
   else st.rows.push_back({"weighted μ (inverse-variance)", "— (" + sum.note + ")"});
   st.rows.push_back({"outliers (|pull| > 3)", sum.outliers.empty() ? "none" : std::to_string(sum.outliers.size())});
   s.add_table(std::move(st));
+  if (const auto w = series_warnings(sum.mu, sum.outliers); !w.empty()) {  // docs/theory.md#plausibility-checks
+    std::vector<std::string> items;
+    for (const auto& x : w) items.push_back("Warning: " + x);
+    s.add_list(std::move(items));
+  }
   Table t;
   t.caption = "slides";
   t.header = {"run", "φ (deg)", "a (m/s^2)", "μ", "pull", "R^2", "note"};

@@ -44,7 +44,10 @@ std::string unit_of(sweep::Quantity q) {
 }
 
 std::string spin_title(sweep::Quantity q) {
-  return q == sweep::Quantity::ratio ? "spin/speed ω/|v_y| (rad/m)" : "incoming spin ω (rad/s)";
+  // The sign is said: the seed's figures 53-56 use clockwise spin for a ball moving to +x
+  // (negative here; docs/theory.md, errata 討論 四), as the demo's maps do.
+  return q == sweep::Quantity::ratio ? "spin/speed ω/|v_y| (rad/m, counter-clockwise positive)"
+                                     : "incoming spin ω (rad/s, counter-clockwise positive)";
 }
 
 /// The theta axis title from the physics description ("angle=collision" of the bounce cell,

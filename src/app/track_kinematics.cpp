@@ -75,6 +75,7 @@ TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options) {
   j["residual_sigma_x"] = json_number(k.residual_sigma_x);
   j["residual_sigma_y"] = json_number(k.residual_sigma_y);
   j["time_scale"] = set.time_scale;
+  j["warnings"] = set.warnings;  // what the importer left out (lost frames, marks off the clip's steps)
   j["out"] = options.out;
   return result;
 }
