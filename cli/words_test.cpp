@@ -12,6 +12,7 @@
 
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 namespace tribolab::cli {
 namespace {
@@ -159,20 +160,25 @@ const std::string& demo_html() {
   return html;
 }
 
-TEST(Words, EveryChineseNumeralInTheDemoReportHasItsReading) {
-  std::string text;  // the HTML without its tags
+/// The demo report's text: its HTML without tags.
+std::string demo_text() {
+  std::string text;
   bool in_tag = false;
   for (char c : demo_html()) {
     if (c == '<') in_tag = true;
     if (!in_tag) text += c;
     if (c == '>') in_tag = false;
   }
-  ASSERT_GT(text.size(), 10000u);
-  for (const auto& o : unread_cjk_numerals(text)) ADD_FAILURE() << "without its reading: " << o;
+  return text;
 }
 
 TEST(Words, TheDemoReportNamesAndCitesTheStudies) {
   const std::string& html = demo_html();
+  // "seed" is a random seed only: every other use is gone (the commands shown keep --seed).
+  const std::string text = demo_text();
+  const std::regex seed_word("(^|[^-])\\b[Ss]eed\\b");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), seed_word); it != std::sregex_iterator(); ++it)
+    ADD_FAILURE() << "seed in: " << text.substr(it->position() > 40 ? it->position() - 40 : 0, 90);
   EXPECT_EQ(html.find("seed 00"), std::string::npos);
   EXPECT_EQ(html.find("Seed 00"), std::string::npos);
   EXPECT_EQ(html.find("seed's"), std::string::npos);
@@ -186,6 +192,29 @@ TEST(Words, TheDemoReportNamesAndCitesTheStudies) {
   EXPECT_NE(html.find("2017"), std::string::npos);
   EXPECT_NE(html.find("61st"), std::string::npos);
   EXPECT_NE(html.find("2021"), std::string::npos);
+}
+
+TEST(Words, EveryChineseNumeralInTheDemoReportHasItsReading) {
+  const std::string text = demo_text();
+  ASSERT_GT(text.size(), 10000u);
+  for (const auto& o : unread_cjk_numerals(text)) ADD_FAILURE() << "without its reading: " << o;
+}
+
+TEST(Words, EachCommandReportCitesItsStudyOnce) {
+  const std::string dir = testing::temp_dir("words_reports");
+  const std::string stop = dir + "/stop.html", contact = dir + "/contact.html";
+  ASSERT_EQ(run_tribolab("incline mu-from-stop --phi-deg 10.37 --x-stop 0.214 --y-stop -0.036 --report " + stop).exit_code, 0);
+  ASSERT_EQ(run_tribolab("bounce contact-time --height 0.715 --omega -47.6 --theta-deg 11.3 --report " + contact).exit_code, 0);
+  for (const auto& [file, title, other] :
+       {std::tuple{stop, "斜面二維運動與摩擦力的探討", "有角速度之橄欖球的運動行為分析"},
+        std::tuple{contact, "有角速度之橄欖球的運動行為分析", "斜面二維運動與摩擦力的探討"}}) {
+    const std::string html = testing::slurp(file);
+    const auto at = html.find(title);
+    ASSERT_NE(at, std::string::npos) << file;
+    EXPECT_EQ(html.find(title, at + 1), std::string::npos) << file;
+    EXPECT_EQ(html.find(other), std::string::npos) << file;
+    EXPECT_NE(html.find(">Source<"), std::string::npos) << file;
+  }
 }
 
 }  // namespace

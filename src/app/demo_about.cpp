@@ -1,6 +1,7 @@
 // The first section of the demo report: what tribolab is, where the two studies come from,
 // and the conventions every later section uses (docs/theory.md).
 #include "app/demo.hpp"
+#include "app/study_citation.hpp"
 
 namespace tribolab::app {
 
@@ -23,18 +24,14 @@ void add_about_section(report::Report& r, std::ostream& log) {
       "it are the studies' own, the Chinese numerals of the papers given beside their reading, "
       "e.g. equation 10A (十A).");
   s.add_list({
-      "The incline study: 林亮昕 (advisor 吳旭峯), National Yilan Senior High School, "
-      "「斜面二維運動與摩擦力的探討」 (“Two-dimensional motion on an incline and friction”), "
-      "57th National Primary and High School Science Fair, 2017, entry 051814. A disc launched "
-      "horizontally across a rough incline: closed-form motion (its equations 1–10A (一–十A)), "
-      "stopping time and position, a test for a friction component normal to the path, "
-      "and the friction coefficient measured from the stopping point alone.",
-      "The rugby-ball study: 陳顥帆, 吳振宇, 詹仲睿 (advisor 高銘宏), The Affiliated Senior High "
-      "School of National Taiwan Normal University, 「有角速度之橄欖球的運動行為分析」 (“Analysis "
-      "of the motion of a rugby ball with angular velocity”), 61st National Primary and High "
-      "School Science Fair, 2021, entry 051804. A spinning rugby ball (an ellipse in the plane) "
-      "bouncing on a floor, sometimes higher than it was dropped from: video analysis, the first "
-      "instant of contact, a Hunt–Crossley contact model and phase diagrams of the rebound.",
+      study_citation(Study::incline) +
+          " A disc launched horizontally across a rough incline: closed-form motion (its "
+          "equations 1–10A (一–十A)), stopping time and position, a test for a friction component "
+          "normal to the path, and the friction coefficient measured from the stopping point alone.",
+      study_citation(Study::rugby_ball) +
+          " A spinning rugby ball (an ellipse in the plane) bouncing on a floor, sometimes higher "
+          "than it was dropped from: video analysis, the first instant of contact, a Hunt–Crossley "
+          "contact model and phase diagrams of the rebound.",
   });
   s.add_paragraph(
       "Both studies measured motion by clicking points in video with Tracker and analysed it "

@@ -125,7 +125,7 @@ void add_table4(report::Section& s, std::ostream& log) {
                       {0.648, 33.74, -0.231, 0.356, 0.367}};
   report::Table t;
   t.caption = "Table 4: contact time from the apex (s)";
-  t.header = {"H (m)", "spin (rad/s)", "angle (rad)", "seed predicted", "seed measured",
+  t.header = {"H (m)", "spin (rad/s)", "angle (rad)", "study predicted", "study measured",
               "tribolab, ω < 0 (CW)", "tribolab, ω > 0", "latest possible sqrt(2(H−b)/g)"};
   log << "  table 4: H  predicted  measured  tribolab(CW)  tribolab(CCW)  latest\n";
   for (const Row& r : rows) {
@@ -265,7 +265,7 @@ void add_maps(report::Section& s, std::ostream& log) {
     for (std::int64_t slice = 0; slice < 2; ++slice) {
       const double speed = slice == 0 ? 4 : 8;
       const double emax = max_of(values, n_out, e, slice * 396, (slice + 1) * 396);
-      report::Figure f = heat_map("As seed figure " + std::string(slice == 0 ? "53" : "54") + ", v_y = −" +
+      report::Figure f = heat_map("As the study's figure " + std::string(slice == 0 ? "53" : "54") + ", v_y = −" +
                                       v4(speed) + " m/s: " + name,
                                   grid, values, n_out, e, slice, contour, "spin |ω| (rad/s), clockwise");
       const bool seeds = law.D == seed_law().D;
@@ -286,7 +286,7 @@ void add_maps(report::Section& s, std::ostream& log) {
   const sweep::CellModel model = contact_model(low_damping_law(), "low damping (D = 6000)");
   const std::vector<double> values = sweep::evaluate_grid(ratio, model);
   const sweep::ContourResult contour = sweep::trace_contour(ratio, model, values, co);
-  report::Figure f = heat_map("As seed figure 55: e over spin/speed ratio, v_y = −4 m/s, low damping (D = 6000)", ratio,
+  report::Figure f = heat_map("As the study's figure 55: e over spin/speed ratio, v_y = −4 m/s, low damping (D = 6000)", ratio,
                               values, model.output_names.size(), model.output_index("e"), 0, contour,
                               "|ω| / |v_y| (rad/m)");
   f.caption = "The same e over the ratio of spin to incoming speed (ω = ratio × 4 m/s).";

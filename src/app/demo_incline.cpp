@@ -59,7 +59,7 @@ void add_table1(report::Section& s, const incline::CaseStudy& cs, std::ostream& 
     log << line;
   }
   s.add_table(std::move(t));
-  s.add_paragraph("μ_o from a straight slide (seed eq a, φ = 41.09 deg, a = 1.758 m/s^2): printed 0.634, "
+  s.add_paragraph("μ_o from a straight slide (the study's eq a, φ = 41.09 deg, a = 1.758 m/s^2): printed 0.634, "
                   "tribolab " + format_value(cs.mu_o_from_eq_a, 4) + ".");
 }
 

@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/report_bounce_series.hpp"
 
 #include "app/report_bounce.hpp"
@@ -265,7 +266,8 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!runs[i].analysis) continue;
       const std::string name = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), folder + "/" + name);
+      report::write_html(with_study_source(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), Study::rugby_ball),
+                         folder + "/" + name);
       links[i] = folder_name + "/" + name;
     }
   }

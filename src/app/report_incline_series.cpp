@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/report_incline_series.hpp"
 
 #include "numerics/units.hpp"
@@ -282,7 +283,8 @@ report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!runs[i].analysis) continue;
       const std::string file = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(incline_analyze_report(runs[i].source, *runs[i].analysis), (fs::path(folder) / file).string());
+      report::write_html(with_study_source(incline_analyze_report(runs[i].source, *runs[i].analysis), Study::incline),
+                         (fs::path(folder) / file).string());
       links[i] = run_link(report_path, i, runs[i].source, runs.size());
     }
   }
@@ -302,7 +304,7 @@ report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& ru
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!runs[i].result) continue;
       const std::string file = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(incline_slide_report(runs[i].source, *runs[i].result, runs[i].options),
+      report::write_html(with_study_source(incline_slide_report(runs[i].source, *runs[i].result, runs[i].options), Study::incline),
                          (fs::path(folder) / file).string());
       links[i] = run_link(report_path, i, runs[i].source, runs.size());
     }
