@@ -101,7 +101,7 @@ inline constexpr const char* kBounceFit =
     "exponent (1.5 for Hertz), D the damping that takes energy out, mu the friction "
     "coefficient at the contact point.\n"
     "sigma_*: standard uncertainties, robust to a few bad rows (the Huber loss); K and n are "
-    "weakly determined by outgoing velocities alone, D/K is sharp.\n"
+    "weakly determined by outgoing velocities alone, the ratio D/K well.\n"
     "rms: the typical mismatch between predicted and measured outgoing values, m/s.";
 
 }  // namespace tribolab::cli::help
