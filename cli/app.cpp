@@ -2,6 +2,7 @@
 
 #include "command_line_check.hpp"
 #include "help_placeholders.hpp"
+#include "help_wrap.hpp"
 #include "text_listing.hpp"
 
 #include "numerics/error.hpp"
@@ -45,6 +46,7 @@ int run(int argc, char** argv) {
   register_track(app);
   register_demo(app);
   tidy_placeholders(app);
+  wrap_help(app);  // after the placeholders: they read the one-line help
   try {
     // A command that needs a subcommand and got nothing else: its help is the answer.
     if (CLI::App* bare = check_command_line(app, argc, argv)) {

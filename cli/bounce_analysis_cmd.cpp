@@ -1,4 +1,4 @@
-// `tribolab bounce analyze|fit|synth-video|synth-table`: seed 001's experiment 1 on tracked
+// `tribolab bounce analyze|fit|synth-video|synth-table`: the rugby-ball study's experiment 1 on tracked
 // data, the contact-law fit to a table of bounces, and the synthetic data for both
 // (docs/cli.md#bounce-analyze). The workflows are in src/app/bounce_analyze.* and
 // src/app/bounce_synth.*; this file binds their options to flags, and runs several files of
@@ -6,6 +6,7 @@
 #include "bounce_analysis_cmd.hpp"
 
 #include "app.hpp"
+#include "help_explain.hpp"
 #include "bounce_options.hpp"
 #include "report_option.hpp"
 #include "series_cmd.hpp"
@@ -115,8 +116,9 @@ void analyze_series(const AnalyzeOpts& opts, const std::vector<BounceAnalyzeOpti
 void add_analyze(CLI::App* area) {
   auto opts = std::make_shared<AnalyzeOpts>();
   auto& o = opts->o;
-  auto* cmd = area->add_subcommand("analyze", "seed 001 experiment 1: v, omega, e and energies before/after one bounce from the two tracked tips");
-  cmd->add_option("FILE", opts->files, "Tracker .trk/.trz, Export Data text or tidy CSV; several files: a series with a summary (seed 001 experiment 2)")->required();
+  auto* cmd = area->add_subcommand("analyze", "The rugby-ball study's experiment 1: v, omega, e and energies before/after one bounce from the two tracked tips");
+  cmd->footer(help::kBounceAnalyze);
+  cmd->add_option("FILE", opts->files, "Tracker .trk/.trz, Export Data text or tidy CSV; several files: a series with a summary (the rugby-ball study's experiment 2)")->required();
   cmd->add_option("--track-a", o.track_a, "name of the track of tip A")->required();
   cmd->add_option("--track-b", o.track_b, "name of the track of tip B")->required();
   cmd->add_option("--time-scale", o.time_scale, "real seconds per file second (240 fps shown at 30: 0.125)");
@@ -155,6 +157,7 @@ void add_fit(CLI::App* area) {
   auto opts = std::make_shared<Opts>();
   auto& o = opts->o;
   auto* cmd = area->add_subcommand("fit", "fit the contact law (K, n, D or e, mu) to a table of measured bounces");
+  cmd->footer(help::kBounceFit);
   cmd->add_option("FILE", o.file, "CSV with header theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out")->required();
   cmd->add_option("--model", o.model, "normal law: hooke|hertz|hunt-crossley|flores|lankarani-nikravesh|gonthier");
   cmd->add_flag("--restitution", o.restitution, "fit the target restitution e instead of D (restitution-based law)");

@@ -1,6 +1,6 @@
-// `tribolab bounce`: the spinning-ellipse bounce of seed 001 (docs/cli.md#bounce).
-//   contact-time  first contact after release from an apex (seed's experiment 3, table 4)
-//   simulate      the impact from first touch to free flight (seed's experiment 4), every
+// `tribolab bounce`: the spinning-ellipse bounce of the rugby-ball study (docs/cli.md#bounce).
+//   contact-time  first contact after release from an apex (the study's experiment 3, table 4)
+//   simulate      the impact from first touch to free flight (the study's experiment 4), every
 //                 contact of it (docs/theory.md#bounce-contact, "whole impact")
 //   drop          release -> flight -> contact -> ... several bounces
 // The workflows are in src/app/bounce_simulate.*; this file binds their options to flags.
@@ -27,7 +27,7 @@ struct Bound {
 void add_contact_time(CLI::App* area) {
   auto b = std::make_shared<Bound<BounceContactTimeOptions>>();
   auto& o = b->o;
-  auto* cmd = area->add_subcommand("contact-time", "First contact of a ball released at an apex (seed 001, table 4)");
+  auto* cmd = area->add_subcommand("contact-time", "First contact of a ball released at an apex (rugby-ball study, table 4)");
   cmd->add_option("--height", o.height, "centre height at the apex, m")->required();
   cmd->add_option("--omega", o.omega, "spin, rad/s, counter-clockwise positive");
   cmd->add_option("--theta-deg", o.theta_deg, "major axis from the horizontal at the apex, deg");
@@ -43,7 +43,7 @@ void add_simulate(CLI::App* area) {
   auto b = std::make_shared<Bound<BounceSimulateOptions>>();
   auto& o = b->o;
   auto* cmd = area->add_subcommand("simulate", "The impact from first touch (gap 0) until the ball flies free to its apex: "
-                                               "every contact of it (seed 001, experiment 4)");
+                                               "every contact of it (rugby-ball study, experiment 4)");
   cmd->add_option("--vx", o.vx, "centre velocity at first touch, m/s");
   cmd->add_option("--vy", o.vy, "centre velocity at first touch, m/s (< 0)")->required();
   cmd->add_option("--omega", o.omega, "spin at first touch, rad/s, CCW positive");
@@ -81,7 +81,7 @@ void add_drop(CLI::App* area) {
 }  // namespace
 
 void register_bounce(CLI::App& root) {
-  auto* area = root.add_subcommand("bounce", "spinning rugby ball (ellipse) bouncing on a floor (seed 001)");
+  auto* area = root.add_subcommand("bounce", "spinning rugby ball (ellipse) bouncing on a floor (the rugby-ball study, Taiwan science fair 2021)");
   area->require_subcommand(1);
   add_contact_time(area);
   add_simulate(area);

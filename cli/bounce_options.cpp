@@ -13,9 +13,9 @@ void add_ball_options(CLI::App* cmd, bounce::Ball& ball) {
 void add_law_options(CLI::App* cmd, app::LawOptions& o, bool with_mu) {
   cmd->add_option("--model", o.model,
                   "normal law: hooke|hertz|hunt-crossley|flores|lankarani-nikravesh|gonthier");
-  cmd->add_option("--K", o.K, "stiffness, N/m^n; unset: the seed's fit, 101054");
-  cmd->add_option("--n", o.n, "exponent; unset: the seed's fit 1.51 (hertz 1.5, hooke 1)");
-  cmd->add_option("--D", o.D, "damping, N s/m^(n+1) (hooke: N s/m); unset: the seed's fit 60423 (hertz, hooke 0)");
+  cmd->add_option("--K", o.K, "stiffness, N/m^n; unset: the rugby-ball study's fit, 101054");
+  cmd->add_option("--n", o.n, "exponent; unset: the rugby-ball study's fit 1.51 (hertz 1.5, hooke 1)");
+  cmd->add_option("--D", o.D, "damping, N s/m^(n+1) (hooke: N s/m); unset: the rugby-ball study's fit 60423 (hertz, hooke 0)");
   cmd->add_option("--restitution", o.restitution, "target central-impact restitution in (0, 1], instead of --D");
   if (with_mu) cmd->add_option("--mu", o.mu, "friction coefficient");
   cmd->add_option("--friction", o.friction, "friction model: coulomb|regularized|spring");

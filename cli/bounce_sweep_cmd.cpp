@@ -165,7 +165,7 @@ void register_bounce_sweep(CLI::App& bounce_area) {
   // The physics of a cell: the options of `bounce simulate` except --mu (a sweep axis).
   app::BounceCellOptions& cell = opts->cell;
   cmd->add_option("--angle", cell.angle,
-                  "meaning of --theta-deg: collision (the seed's collision angle, 0..180 deg) | "
+                  "meaning of --theta-deg: collision (the rugby-ball study's collision angle, 0..180 deg) | "
                   "orientation (major axis from the horizontal at first touch)");
   cmd->add_option("--vx", cell.vx, "horizontal centre velocity at first touch, m/s");
   add_ball_options(cmd, cell.ball);

@@ -55,7 +55,7 @@ TEST(DemoContent, Figure8TableShowsOursAndThePrintedSlopes) {
   report::Report r;
   std::ostringstream log;
   add_incline_case_study(r, log);
-  const report::Table* t = find_table(r, "Figure 八 slopes");
+  const report::Table* t = find_table(r, "Figure 8 (八) slopes");
   ASSERT_NE(t, nullptr);
   ASSERT_EQ(t->rows.size(), 4u);
   EXPECT_EQ(t->rows[0][1], "0.2242");  // printed
@@ -67,8 +67,8 @@ TEST(DemoContent, ErrataPageListsEveryErratumOfBothSeeds) {
   report::Report r;
   std::ostringstream log;
   add_errata_section(r, log);
-  const report::Table* t0 = find_table(r, "Seed 000");
-  const report::Table* t1 = find_table(r, "Seed 001");
+  const report::Table* t0 = find_table(r, "The incline study");
+  const report::Table* t1 = find_table(r, "The rugby-ball study");
   ASSERT_NE(t0, nullptr);
   ASSERT_NE(t1, nullptr);
   EXPECT_EQ(t0->rows.size(), incline::seed000_case_study().errata.size());

@@ -39,8 +39,8 @@ TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
   EXPECT_NE(html.find(script + " beside them"), std::string::npos);  // the index says so
   EXPECT_NE(html.find("About this report"), std::string::npos);
-  for (const char* heading : {"Incline (seed 000): table 1", "Incline runs: tracked launches analysed",
-                              "Bounce: table 4", "Errata found in the seeds"})
+  for (const char* heading : {"The incline study: table 1", "Incline runs: tracked launches analysed",
+                              "Bounce: table 4", "Errata found in the two studies"})
     EXPECT_NE(html.find(heading), std::string::npos) << heading;
   EXPECT_NE(r.out.find("table 1:"), std::string::npos) << r.out;  // the summary on stdout
   // The shipped bounce data is written next to the report, for the commands the report shows.

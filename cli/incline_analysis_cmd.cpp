@@ -1,10 +1,11 @@
-// The commands on tracked incline runs (seed 000; docs/cli.md#incline-analyze): synth,
+// The commands on tracked incline runs (the incline study; docs/cli.md#incline-analyze): synth,
 // mu-from-slide, analyze, normal-friction-test. Each binds its options to the application
 // layer's struct (src/app/incline_analysis.hpp, incline_analyze.hpp), calls the workflow and
 // prints its JSON (a series: its table, then a non-zero exit if a run failed).
 #include "incline_analysis_cmd.hpp"
 
 #include "app.hpp"
+#include "help_explain.hpp"
 #include "incline_options.hpp"
 #include "app/incline_analysis.hpp"
 #include "app/incline_analyze.hpp"
@@ -54,7 +55,7 @@ void add_synth(CLI::App* area) {
       ->required();
   add_number(*cmd, "--g", s->g, "Gravitational acceleration, m/s^2");
   add_number(*cmd, "--normal-accel", s->normal_accel,
-             "Model A: normal friction / mass, m/s^2, positive left of the velocity (0 = model B)");
+             "Model A: normal friction / mass, m/s^2, positive left of the velocity (0 = model B; see incline analyze --help)");
   add_number(*cmd, "--fps", s->fps, "Frame rate, 1/s");
   add_number(*cmd, "--noise", s->noise, "Standard deviation of the position noise, m");
   add_number(*cmd, "--seed", s->seed, "Noise seed, integer >= 0");
@@ -95,7 +96,8 @@ void print_runs(const nlohmann::json& j, const std::vector<std::string>& errors,
 
 void add_mu_from_slide(CLI::App* area) {
   auto* cmd = area->add_subcommand(
-      "mu-from-slide", "Friction coefficient from a straight slide down the incline (seed 000, eq a)");
+      "mu-from-slide", "Friction coefficient from a straight slide down the incline (incline study, equation a)");
+  cmd->footer(help::kInclineMuFromSlide);
   auto s = std::make_shared<InclineMuFromSlideOptions>();
   auto as_json = std::make_shared<bool>(false);
   cmd->add_option("FILE", s->files,
@@ -122,6 +124,7 @@ void add_mu_from_slide(CLI::App* area) {
 void add_analyze(CLI::App* area) {
   auto* cmd = area->add_subcommand(
       "analyze", "Fit models B and A to a tracked 2D run; test for a normal friction component");
+  cmd->footer(std::string(help::kInclineModels) + help::kInclineAnalyze);
   auto s = std::make_shared<InclineAnalyzeOptions>();
   auto as_json = std::make_shared<bool>(false);
   cmd->add_option("FILE", s->files,
@@ -154,7 +157,8 @@ void add_analyze(CLI::App* area) {
 void add_normal_friction_test(CLI::App* area) {
   auto* cmd = area->add_subcommand(
       "normal-friction-test",
-      "cos(theta_c) against tan(phi) over runs at several angles (seed 000, eq c): slope 1/mu");
+      "cos(theta_c) against tan(phi) over runs at several angles (incline study, equation c): slope 1/mu");
+  cmd->footer(std::string(help::kInclineModels) + help::kInclineNormalFrictionTest);
   auto s = std::make_shared<InclineNormalFrictionTestOptions>();
   auto as_json = std::make_shared<bool>(false);
   cmd->add_option("FILES", s->files, "Tracked runs, one per angle (with --phi-deg)");

@@ -3,6 +3,7 @@
 // to the application layer's option struct (src/app/incline_*.hpp), calls the workflow and
 // prints its JSON; the library validates, computes and writes the files.
 #include "app.hpp"
+#include "help_explain.hpp"
 #include "incline_analysis_cmd.hpp"
 #include "incline_options.hpp"
 #include "report_option.hpp"
@@ -32,8 +33,10 @@ void name_option_types(CLI::App* cmd) {
 /// Registers `name` whose options `bind` adds to an Options struct and whose callback prints
 /// `run(options).json`.
 template <class Options, class Bind, class Run>
-void add_command(CLI::App* area, const std::string& name, const std::string& help, Bind bind, Run run) {
+void add_command(CLI::App* area, const std::string& name, const std::string& help, Bind bind, Run run,
+                 const std::string& footer = "") {
   auto* cmd = area->add_subcommand(name, help);
+  cmd->footer(footer);
   auto o = std::make_shared<Options>();
   auto as_json = std::make_shared<bool>(false);
   bind(*cmd, *o);
@@ -47,7 +50,7 @@ void add_predict(CLI::App* area) {
   add_command<InclinePredictOptions>(
       area, "predict", "Closed-form prediction of a launch (model B)",
       [](CLI::App& cmd, InclinePredictOptions& o) { add_launch_options(cmd, o.launch, true); },
-      incline_predict);
+      incline_predict, help::kInclineModels);
 }
 
 void add_simulate(CLI::App* area) {
@@ -65,12 +68,12 @@ void add_simulate(CLI::App* area) {
                    "Duration, s (unset: 1.25 t_stop if it stops, else 2 v0/(g mu cos phi), else 1)");
         cmd.add_option("--out", o.out, "Output CSV file")->required();
       },
-      incline_simulate);
+      incline_simulate, help::kInclineModels);
 }
 
 void add_mu_from_stop(CLI::App* area) {
   add_command<InclineMuFromStopOptions>(
-      area, "mu-from-stop", "Friction coefficient from the stopping point alone (seed 000, eq 十A)",
+      area, "mu-from-stop", "Friction coefficient from the stopping point alone (incline study, equation 10A (十A))",
       [](CLI::App& cmd, InclineMuFromStopOptions& o) {
         add_number(cmd, "--phi-deg", o.phi_deg, "Incline angle, degrees, in (0, 90)")->required();
         add_number(cmd, "--x-stop", o.x_stop, "Stop position across the slope, m (> 0)")->required();
@@ -81,12 +84,12 @@ void add_mu_from_stop(CLI::App* area) {
         add_number(cmd, "--plate-size", o.plate_size,
                    "Largest usable stop distance, m: enables the best-angle advice");
       },
-      incline_mu_from_stop);
+      incline_mu_from_stop, help::kInclineMuFromStop);
 }
 
 void add_families(CLI::App* area) {
   add_command<InclineFamiliesOptions>(
-      area, "families", "Closed-form curves for several values of v0, phi or mu (seed figures 五-七)",
+      area, "families", "Closed-form curves for several values of v0, phi or mu (incline study, figures 5-7 (五-七))",
       [](CLI::App& cmd, InclineFamiliesOptions& o) {
         add_launch_options(cmd, o.launch, false);
         cmd.add_option("--vary", o.vary, "Parameter to vary: v0, phi or mu")->required();
@@ -103,7 +106,7 @@ void add_families(CLI::App* area) {
 }  // namespace
 
 void register_incline(CLI::App& root) {
-  auto* area = root.add_subcommand("incline", "Disc launched across a rough incline (seed 000)");
+  auto* area = root.add_subcommand("incline", "Disc launched across a rough incline (the incline study, Taiwan science fair 2017)");
   area->require_subcommand(1);
   add_predict(area);
   add_simulate(area);

@@ -235,7 +235,7 @@ TEST(InclineSeriesReport, ShowsTheJsonNumbersAndLinksEveryRun) {
   }
   EXPECT_SHOWS(html, "error: " + j["runs"][4]["error"].get<std::string>());
   EXPECT_FALSE(fs::exists(dir + "/series_runs/5_empty.html"));
-  EXPECT_SHOWS(html, "seed 000, eqs 七, 八");
+  EXPECT_SHOWS(html, "incline study, eqs 7, 8 (七, 八)");
   EXPECT_EQ(html.find("SPEC §"), std::string::npos);  // cites docs/theory.md or the seed, never our spec
 }
 

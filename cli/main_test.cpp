@@ -84,6 +84,7 @@ std::string every_help() {
     std::string line;
     std::getline(lines, line);
     while (std::getline(lines, line)) {
+      if (line.size() < 3 || line[2] == ' ') continue;  // a wrapped description's next line
       std::istringstream words(line);
       std::string name;
       if (!(words >> name)) continue;

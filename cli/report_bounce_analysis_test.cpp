@@ -65,7 +65,7 @@ TEST(BounceAnalyzeReport, ShowsTheNumbersOfTheJson) {
                                {"energy_pre", j["energy_pre"]}, {"energy_post", j["energy_post"]}, {"impact_time", j["impact_time"]}})
     EXPECT_NE(html.find(report::format_value(v.get<double>(), 4)), std::string::npos) << key;
   // The equations cite the seed.
-  for (const char* source : {"seed 001, 實驗一 (x = vt + x_0)", "seed 001, 實驗二 (三)", "seed 001, eq 20", "seed 001, 討論"})
+  for (const char* source : {"rugby-ball study, experiment 1 (實驗一) (x = vt + x_0)", "rugby-ball study, experiment 2 (3) (實驗二 (三))", "rugby-ball study, eq 20", "rugby-ball study, discussion (討論)"})
     EXPECT_NE(html.find(source), std::string::npos) << source;
   EXPECT_NE(html.find("mean normal force"), std::string::npos);
 }

@@ -43,7 +43,7 @@ TEST(ReportCmd, InclineSimulateModelBOverlaysClosedFormAndNumeric) {
   const std::string out = temp_dir("report_sim") + "/t.csv";
   const std::string html =
       expect_report("incline_sim", "incline simulate --mu 0.634 --phi-deg 23.2 --v0 2.3 --out '" + out + "'", 7);
-  EXPECT_NE(html.find("seed 000, eq 二"), std::string::npos);
+  EXPECT_NE(html.find("incline study, eq 2 (二)"), std::string::npos);
   EXPECT_NE(html.find("numeric (Dormand"), std::string::npos);  // the overlay
   EXPECT_TRUE(fs::exists(out));
 }
@@ -73,14 +73,14 @@ TEST(ReportCmd, InclineFamilies) {
 
 TEST(ReportCmd, InclinePredict) {
   const std::string html = expect_report("incline_pred", "incline predict --mu 0.634 --phi-deg 20.96 --v0 2.62", 7);
-  EXPECT_NE(html.find("seed 000, eqs 七, 八, 九"), std::string::npos);
+  EXPECT_NE(html.find("incline study, eqs 7, 8, 9 (七, 八, 九)"), std::string::npos);
 }
 
 TEST(ReportCmd, BounceSimulateShowsHistoriesAndPhases) {
   const std::string html =
       expect_report("bounce_sim", "bounce simulate --vy -4 --omega -40 --theta-deg 20", 7);
   EXPECT_NE(html.find("Stick/slip phases"), std::string::npos);
-  EXPECT_NE(html.find("seed 001"), std::string::npos);
+  EXPECT_NE(html.find("rugby-ball study"), std::string::npos);
 }
 
 TEST(ReportCmd, BounceDrop) {

@@ -85,7 +85,7 @@ TEST(InclineAnalysisReport, AnalyzeShowsTheJsonNumbersAndElevenFigures) {
   EXPECT_SHOWS(html, format_uncertain(j["theta_c"]["cos_theta_c"], j["theta_c"]["sigma_cos_theta_c"]));
   EXPECT_EQ(row_value(html, "verdict: normal friction"), nf["verdict"].get<std::string>());
   EXPECT_SHOWS(html, "F-test of A against B is significant (p &lt; 0.05)");  // the decision rule
-  for (const char* eq : {"seed 000, eq b", "seed 000, eq c", "seed 000, eq 二", "seed 000, eqs 七, 八, 九"})
+  for (const char* eq : {"incline study, eq b", "incline study, eq c", "incline study, eq 2 (二)", "incline study, eqs 7, 8, 9 (七, 八, 九)"})
     EXPECT_SHOWS(html, eq);
   EXPECT_SHOWS(html, "a_N against sin θ");
 }
@@ -107,7 +107,7 @@ TEST(InclineAnalysisReport, MuFromSlideShowsAAndMu) {
   EXPECT_SHOWS(html, format_uncertain(j["a"], j["sigma_a"]));
   EXPECT_SHOWS(html, format_uncertain(j["mu"], j["sigma_mu"]));
   EXPECT_SHOWS(html, format_uncertain(j["a_velocity_line"], j["sigma_a_velocity_line"]));
-  EXPECT_SHOWS(html, "seed 000, eq a");
+  EXPECT_SHOWS(html, "incline study, eq a");
   // The straight slide made by `incline synth --v0 0` is what eq (a) needs: mu within 3.3 sigma.
   EXPECT_NEAR(j["mu"].get<double>(), 0.634, 3.3 * j["sigma_mu"].get<double>());
   EXPECT_NEAR(j["direction_deg"].get<double>(), -90, 0.5);
@@ -126,7 +126,7 @@ TEST(InclineAnalysisReport, NormalFrictionTestShowsSlopeAndIntercept) {
   EXPECT_SHOWS(html, interval(j["intercept_ci95"]));
   for (const auto& run : j["runs"])
     EXPECT_SHOWS(html, format_uncertain(run["cos_theta_c"], run["sigma_cos_theta_c"]));
-  EXPECT_SHOWS(html, "seed 000, eq c");
+  EXPECT_SHOWS(html, "incline study, eq c");
 }
 
 TEST(InclineAnalysisReport, NormalFrictionTestFromATableHasNoErrorBars) {
@@ -148,7 +148,7 @@ TEST(InclineAnalysisReport, MuFromStopShowsInputsResultAndTrajectory) {
   EXPECT_SHOWS(html, format_uncertain(0.6197, 0.002));
   EXPECT_SHOWS(html, format_value(j["best_phi_deg"], 4));
   EXPECT_SHOWS(html, format_value(j["best_sigma_mu"], 3));
-  EXPECT_SHOWS(html, "seed 000, eq 十A");
+  EXPECT_SHOWS(html, "incline study, eq 10A (十A)");
   EXPECT_SHOWS(html, "Trajectory to the stop");
 }
 

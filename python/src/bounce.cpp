@@ -99,7 +99,7 @@ constexpr const char* kStates = "t (s), x, y (m, centre), theta (rad), vx, vy (m
 void bind_bounce(py::module_& m) {
   {
     Command<app::BounceContactTimeOptions> c(m, "contact_time",
-        "First contact of a ball released at an apex (`tribolab bounce contact-time`, seed 001 "
+        "First contact of a ball released at an apex (`tribolab bounce contact-time`, the rugby-ball study's "
         "table 4): time, collision angle and state at the touch.");
     ball_options(c);
     TRIBOLAB_OPT(c, height);
@@ -171,7 +171,7 @@ void bind_bounce(py::module_& m) {
   }
   {
     Command<app::BounceAnalyzeOptions> c(m, "analyze",
-        "One tracked bounce from the two tips of the ball (`tribolab bounce analyze`, seed 001 "
+        "One tracked bounce from the two tips of the ball (`tribolab bounce analyze`, the rugby-ball study's "
         "experiment 1): velocities, spin, e and energies before and after, with uncertainties.");
     TRIBOLAB_ARG(c, file);
     TRIBOLAB_OPT(c, track_a);
@@ -253,7 +253,7 @@ void bind_bounce(py::module_& m) {
   {
     Command<app::BounceSweepOptions> c(m, "sweep",
         "The rebound over a grid of impact angle x spin (and speed, mu) (`tribolab bounce sweep`, "
-        "seed 001 figure 53): the map as arrays shaped by the axes, resumable, in parallel.");
+        "the rugby-ball study's figure 53): the map as arrays shaped by the axes, resumable, in parallel.");
     TRIBOLAB_OPT(c, theta_deg);
     TRIBOLAB_OPT(c, omega);
     TRIBOLAB_OPT(c, ratio);

@@ -36,8 +36,8 @@ constexpr const char* kStates =
 void bind_incline(py::module_& m) {
   {
     Command<app::InclinePredictOptions> c(m, "predict",
-        "A launch across the incline in closed form (`tribolab incline predict`, model B, seed 000 "
-        "eqs 七-九): regime, stop point and time, accelerations.");
+        "A launch across the incline in closed form (`tribolab incline predict`, model B, the incline study's "
+        "eqs 7-9 (七-九)): regime, stop point and time, accelerations.");
     launch_options(c);
     TRIBOLAB_OPT(c, report);
     TRIBOLAB_OPT(c, plotly);
@@ -85,7 +85,7 @@ void bind_incline(py::module_& m) {
   {
     Command<app::InclineMuFromStopOptions> c(m, "mu_from_stop",
         "The friction coefficient from the stopping point alone (`tribolab incline mu-from-stop`, "
-        "seed 000 eq 十A), with its uncertainty and the best-angle advice.");
+        "incline study eq 10A (十A)), with its uncertainty and the best-angle advice.");
     TRIBOLAB_OPT(c, phi_deg);
     TRIBOLAB_OPT(c, x_stop);
     TRIBOLAB_OPT(c, y_stop);
@@ -99,7 +99,7 @@ void bind_incline(py::module_& m) {
   }
   {
     Command<app::InclineAnalyzeOptions> c(m, "analyze",
-        "Models B and A fitted to tracked runs of the disc (`tribolab incline analyze`, seed 000 "
+        "Models B and A fitted to tracked runs of the disc (`tribolab incline analyze`, the incline study's "
         "eqs a-c): mu, v0, the normal-friction test with its p-value; several files: a series "
         "with a summary.");
     TRIBOLAB_ARG(c, files);
@@ -140,7 +140,7 @@ void bind_incline(py::module_& m) {
   {
     Command<app::InclineMuFromSlideOptions> c(m, "mu_from_slide",
         "The friction coefficient from a straight slide down the incline (`tribolab incline "
-        "mu-from-slide`, seed 000 eq a).");
+        "mu-from-slide`, the incline study's eq a).");
     TRIBOLAB_ARG(c, files);
     TRIBOLAB_OPT(c, phi_deg);
     TRIBOLAB_OPT(c, sigma_phi_deg);

@@ -88,9 +88,9 @@ PYBIND11_MODULE(_tribolab, m) {
   });
   auto selftest = m.def_submodule("_selftest", "Checks of the binding mechanism itself (python/tests).");
   tp::bind_selftest(selftest);
-  auto incline = m.def_submodule("incline", "The disc on a rough incline (seed 000).");
+  auto incline = m.def_submodule("incline", "The disc on a rough incline (incline study).");
   tp::bind_incline(incline);
-  auto bounce = m.def_submodule("bounce", "The spinning rugby ball bouncing on a floor (seed 001).");
+  auto bounce = m.def_submodule("bounce", "The spinning rugby ball bouncing on a floor (rugby-ball study).");
   tp::bind_bounce(bounce);
   auto track = m.def_submodule("track", "Tracked data: Tracker files, kinematics, video.");
   tp::bind_track(track);

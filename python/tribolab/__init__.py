@@ -4,7 +4,7 @@ functions returning dicts (the command's --json object) with numpy arrays beside
     import tribolab
     r = tribolab.incline.predict(mu=0.634, phi_deg=20.96, v0=2.62)
 
-Modules: tribolab.incline (seed 000, the disc on a rough incline), tribolab.bounce (seed 001,
+Modules: tribolab.incline (incline study, the disc on a rough incline), tribolab.bounce (rugby-ball study,
 the spinning rugby ball), tribolab.track (tracked data). SI units; angles in degrees where a
 name ends in _deg. Bad input raises ValueError with the command line's message; an unknown
 keyword raises TypeError. See docs/python.md.

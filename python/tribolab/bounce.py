@@ -1,4 +1,4 @@
-"""The spinning rugby ball on a floor (seed 001): the `tribolab bounce` commands.
+"""The spinning rugby ball on a floor (rugby-ball study): the `tribolab bounce` commands.
 
 Each function takes the command line's options as keywords (snake_case, the same defaults)
 and returns the command's --json object as a dict, with numpy arrays beside it.

@@ -1,4 +1,4 @@
-"""The disc on a rough incline (seed 000): the `tribolab incline` commands.
+"""The disc on a rough incline (incline study): the `tribolab incline` commands.
 
 Each function takes the command line's options as keywords (snake_case, the same defaults)
 and returns the command's --json object as a dict, with numpy arrays beside it.

@@ -168,7 +168,7 @@ InclineSeriesSummary summarize_incline_series(const std::vector<InclineRunPoint>
     r.scaling_note = "no runs were analysed";
   } else if (!r.common_phi) {
     r.scaling_note = "the runs have " + std::to_string(angles.size()) +
-                     " different angles; the stop-point slopes of eqs 七-十 depend on the angle, so they are "
+                     " different angles; the stop-point slopes of eqs 7-10 (七-十) depend on the angle, so they are "
                      "fitted only over runs at one angle";
   } else {
     std::vector<const InclineRunPoint*> stopped;

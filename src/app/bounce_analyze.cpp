@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/bounce_analyze.hpp"
 
 #include "app/report_bounce_analysis.hpp"
@@ -177,7 +178,7 @@ BounceAnalyzeResult bounce_analyze(const BounceAnalyzeOptions& opts) {
     res.json["bounces_out"] = opts.bounces_out;
   }
   if (!opts.report.empty())
-    report::write_html(bounce_analyze_report(bounce_analyze_command(opts), o.ball, res.analysis), opts.report, opts.plotly);
+    report::write_html(with_study_source(bounce_analyze_report(bounce_analyze_command(opts), o.ball, res.analysis), Study::rugby_ball), opts.report, opts.plotly);
   return res;
 }
 
@@ -242,7 +243,7 @@ BounceFitResult bounce_fit(const BounceFitOptions& opts) {
     std::string command = "tribolab bounce fit " + opts.file + " --model " + opts.model + " --friction " + opts.friction;
     if (o.restitution_model) command += " --restitution";
     for (const auto& f : opts.fix) command += " --fix " + f;
-    report::write_html(bounce_fit_report(command, res.rows, o, res.fit), opts.report, opts.plotly);
+    report::write_html(with_study_source(bounce_fit_report(command, res.rows, o, res.fit), Study::rugby_ball), opts.report, opts.plotly);
   }
   return res;
 }

@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/bounce_simulate.hpp"
 
 #include "app/report_bounce.hpp"
@@ -155,7 +156,7 @@ BounceContactTimeResult bounce_contact_time(const BounceContactTimeOptions& o) {
     const BodyState st = free_flight(apex, fo.g, t);
     res.samples.push_back({t, st, st.y - support_depth(ball, st.theta)});
   }
-  if (!o.report.empty()) report::write_html(bounce_contact_time_report(ball, apex, o.direction, r, res.samples), o.report, o.plotly);
+  if (!o.report.empty()) report::write_html(with_study_source(bounce_contact_time_report(ball, apex, o.direction, r, res.samples), Study::rugby_ball), o.report, o.plotly);
   res.json = {{"t_contact", r.t_contact},
               {"theta_contact_deg", to_deg(wrap_angle(r.state.theta))},
               {"contact_point", {r.contact_x, r.contact_y}},
@@ -198,7 +199,7 @@ BounceSimulateResult bounce_simulate(const BounceSimulateOptions& o) {
   if (r.status == ImpactStatus::failed || r.status == ImpactStatus::max_contacts)
     throw SolverError(std::string("contact simulation failed: ") + std::string(r.message));
   if (!o.report.empty())
-    report::write_html(bounce_simulate_report(ball, fr, copt.g, r.whole, res.history, r.contacts), o.report, o.plotly);
+    report::write_html(with_study_source(bounce_simulate_report(ball, fr, copt.g, r.whole, res.history, r.contacts), Study::rugby_ball), o.report, o.plotly);
   if (!o.history.empty()) write_history(o.history, res.history);
   res.json = bounce_impact_json(ball, r, spec.model);
   return res;
@@ -240,7 +241,7 @@ BounceDropResult bounce_drop(const BounceDropOptions& o) {
     bounces.push_back(drop_bounce_json(b));
     apexes.push_back(b.apex_height);
   }
-  if (!o.report.empty()) report::write_html(bounce_drop_report(ball, fr, rel, r), o.report, o.plotly);
+  if (!o.report.empty()) report::write_html(with_study_source(bounce_drop_report(ball, fr, rel, r), Study::rugby_ball), o.report, o.plotly);
   if (!o.trajectory.empty()) write_trajectory(o.trajectory, r.trajectory);
   res.trajectory = r.trajectory;
   res.json = {{"status", std::string(to_string(r.status))},

@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/bounce_sweep.hpp"
 
 #include "app/report_sweep.hpp"
@@ -156,7 +157,7 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
     d.thresholds = r.thresholds.value_or(std::vector<sweep::Threshold>{});
     d.contour_tol = o.contour.x_tol_rel;
     d.command = "bounce sweep";
-    report::write_html(sweep_report(d), a.report, a.plotly);
+    report::write_html(with_study_source(sweep_report(d), Study::rugby_ball), a.report, a.plotly);
   }
   if (a.return_map) result.map = map_of(o.grid, model, r.values);
   r.values = {};
@@ -187,7 +188,7 @@ BounceMergeResult bounce_merge(const BounceMergeOptions& a) {
     d.thresholds = sweep::spin_thresholds(d.header.grid, *model, d.values, co);
     d.contour_tol = co.x_tol_rel;
     d.command = "bounce merge";
-    report::write_html(sweep_report(d), a.report, a.plotly);
+    report::write_html(with_study_source(sweep_report(d), Study::rugby_ball), a.report, a.plotly);
   }
   BounceMergeResult result;
   result.json = nlohmann::json{{"out", r.out}, {"shards", r.shards}, {"cells", r.cells}};

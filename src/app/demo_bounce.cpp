@@ -74,15 +74,15 @@ sweep::CellModel contact_model(const NormalLawSpec& law, const std::string& name
 
 void add_geometry(report::Section& s) {
   Ball ball;
-  s.add_equation("Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ)", "seed 001, eq 20 (as Y^2); docs/theory.md#bounce-geometry",
+  s.add_equation("Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ)", "rugby-ball study, eq 20 (as Y^2); docs/theory.md#bounce-geometry",
                  "depth of the lowest point below the centre");
-  s.add_equation("Y_{seed}(θ) = |−b [cos^2 θ + (a/b)^2 sin^2 θ]|", "seed 001, 實驗三 5–7 and eq 15/18",
+  s.add_equation("Y_{printed}(θ) = |−b [cos^2 θ + (a/b)^2 sin^2 θ]|", "rugby-ball study, experiment 3 (實驗三) 5–7 and eq 15/18",
                  "as printed: wrong, it gives a^2/b instead of a at θ = 90 deg");
   report::Figure f;
-  f.title = "Depth of the lowest point Y(θ): correct vs the seed's formula";
+  f.title = "Depth of the lowest point Y(θ): correct vs the study's formula";
   f.x_axis.title = "θ (deg), major axis from the horizontal";
   f.y_axis.title = "Y (m)";
-  report::Series ok = named("tribolab: sqrt(a² sin²θ + b² cos²θ)"), seed = named("seed 001's printed formula"),
+  report::Series ok = named("tribolab: sqrt(a² sin²θ + b² cos²θ)"), seed = named("the rugby-ball study's printed formula"),
       brute = named("brute force: lowest of 3600 points on the ellipse");
   ok.mode = seed.mode = report::Mode::Lines;
   seed.dash = report::Dash::Dash;
@@ -106,7 +106,7 @@ void add_geometry(report::Section& s) {
     }
   }
   f.series = {ok, seed, brute};
-  f.caption = "Default ball a = 0.145 m, b = 0.095 m. At θ = 90 deg the seed's formula gives a²/b = " +
+  f.caption = "Default ball a = 0.145 m, b = 0.095 m. At θ = 90 deg the study's formula gives a²/b = " +
               v4(ball.a * ball.a / ball.b) + " m instead of a = " + v4(ball.a) + " m.";
   s.add_figure(std::move(f));
 }
@@ -115,17 +115,17 @@ void add_table4(report::Section& s, std::ostream& log) {
   Ball ball;
   ball.a = 0.143;  // the seed's ball length 0.286 m
   ball.b = 0.095;
-  s.add_paragraph("Ball of the seed's experiment 3: a = 0.143 m (length 0.286 m), b = 0.095 m, g = 9.8 m/s^2; "
-                  "released at the apex H with spin ω and the table's angle as θ at the apex. The seed does "
+  s.add_paragraph("Ball of the study's experiment 3: a = 0.143 m (length 0.286 m), b = 0.095 m, g = 9.8 m/s^2; "
+                  "released at the apex H with spin ω and the table's angle as θ at the apex. The study does "
                   "not state the sense of the spin, so both are computed.");
   s.add_equation("earliest and latest contact: sqrt(2(H − a)/g) ≤ t ≤ sqrt(2(H − b)/g)", "docs/theory.md#bounce-flight",
-                 "the seed prints these bounds reversed (errata)");
+                 "the study prints these bounds reversed (errata)");
   struct Row { double H, spin, angle, predicted, measured; };
   const Row rows[] = {{0.715, 47.60, 0.197, 0.350, 0.358}, {0.612, 40.64, -0.827, 0.335, 0.341},
                       {0.648, 33.74, -0.231, 0.356, 0.367}};
   report::Table t;
   t.caption = "Table 4: contact time from the apex (s)";
-  t.header = {"H (m)", "spin (rad/s)", "angle (rad)", "seed predicted", "seed measured",
+  t.header = {"H (m)", "spin (rad/s)", "angle (rad)", "study predicted", "study measured",
               "tribolab, ω < 0 (CW)", "tribolab, ω > 0", "latest possible sqrt(2(H−b)/g)"};
   log << "  table 4: H  predicted  measured  tribolab(CW)  tribolab(CCW)  latest\n";
   for (const Row& r : rows) {
@@ -153,10 +153,10 @@ void add_one_contact(report::Section& s, std::ostream& log) {
   add_contact_equations(s, seed.law);
   s.add_paragraph("A representative impact: collision angle " + v4(angle) + " deg (θ = " + v4(touch.theta * kDegPerRad) +
                   " deg), v_y = −" + v4(speed) + " m/s, ω = −" + v4(spin) + " rad/s (clockwise), v_x = 0, Coulomb "
-                  "friction μ = 0.5. Solid: the seed's fitted law (e = " + v4(seed.restitution) + ", contact " +
+                  "friction μ = 0.5. Solid: the study's fitted law (e = " + v4(seed.restitution) + ", contact " +
                   v4(1e3 * seed.contact_duration) + " ms); dashed: the same K and n with D = 6000 (e = " +
                   v4(low.restitution) + ").");
-  ContactCurve a{"seed's law (D = 60423)", h_seed, report::Dash::Solid, "#1f77b4"};
+  ContactCurve a{"the study's law (D = 60423)", h_seed, report::Dash::Solid, "#1f77b4"};
   ContactCurve b{"low damping (D = 6000)", h_low, report::Dash::Dash, "#d62728"};
   ContactPanels panels;
   panels.tangential_force = panels.penetration = panels.energy = false;
@@ -164,8 +164,8 @@ void add_one_contact(report::Section& s, std::ostream& log) {
   add_contact_figures(s, "Figures 45–48", ball, g, {a, b}, panels);
   ContactPanels energy;
   energy = {false, false, false, false, false, false, true};
-  add_contact_figures(s, "Seed's law", ball, g, {a}, energy);
-  log << "  one contact at 135 deg, 40 rad/s, 4 m/s: e = " << v4(seed.restitution) << " (seed's law), "
+  add_contact_figures(s, "The study's law", ball, g, {a}, energy);
+  log << "  one contact at 135 deg, 40 rad/s, 4 m/s: e = " << v4(seed.restitution) << " (the study's law), "
       << v4(low.restitution) << " (D = 6000)\n";
 }
 
@@ -182,8 +182,8 @@ void add_drop(report::Section& s, std::ostream& log) {
   const DropResult low = simulate_drop(ball, low_damping_law(), friction, rel, o);
   const DropResult seed = simulate_drop(ball, seed_law(), friction, rel, o);
   s.add_paragraph("Released at rest at a centre height of 0.8 m, θ = 30 deg, spinning at −45 rad/s. With the "
-                  "low-damping law the ball rebounds above its release height (the seed's 反跳變高); with the "
-                  "seed's fitted law it does not.");
+                  "low-damping law the ball rebounds above its release height (the study's 反跳變高, “the rebound grows higher”); with the "
+                  "study's fitted law it does not.");
   report::Figure f;
   f.title = "A drop: height of the centre";
   f.x_axis.title = "t (s)";
@@ -197,7 +197,7 @@ void add_drop(report::Section& s, std::ostream& log) {
   t.caption = "Apex heights after each bounce (m)";
   t.header = {"law", "bounce 1", "bounce 2", "bounce 3", "first above release"};
   for (const auto& [name, r, color] : {std::tuple{"low damping (D = 6000)", &low, "#d62728"},
-                                      std::tuple{"seed's law (D = 60423)", &seed, "#1f77b4"}}) {
+                                      std::tuple{"the study's law (D = 60423)", &seed, "#1f77b4"}}) {
     report::Series y = named(name);
     y.mode = report::Mode::Lines;
     y.color = color;
@@ -219,7 +219,7 @@ void add_drop(report::Section& s, std::ostream& log) {
   s.add_figure(std::move(f));
   s.add_table(std::move(t));
   log << "  drop from 0.8 m: first apex " << (low.bounces.empty() ? 0.0 : low.bounces[0].apex_height)
-      << " m (D = 6000), " << (seed.bounces.empty() ? 0.0 : seed.bounces[0].apex_height) << " m (seed's law)\n";
+      << " m (D = 6000), " << (seed.bounces.empty() ? 0.0 : seed.bounces[0].apex_height) << " m (the study's law)\n";
 }
 
 /// A theta x spin heat map of e for one slice with the e = 1 boundary (src/app/report_sweep.hpp).
@@ -243,19 +243,19 @@ double max_of(const std::vector<double>& values, std::size_t n_out, int idx, std
 
 void add_maps(report::Section& s, std::ostream& log) {
   const Ball ball;
-  s.add_paragraph("e = −v_y,out/v_y,in over the seed's collision angle 100–170 deg × spin 30–50 rad/s, "
+  s.add_paragraph("e = −v_y,out/v_y,in over the study's collision angle 100–170 deg × spin 30–50 rad/s, "
                   "for v_y = −4 and −8 m/s (figures 53, 54), computed with the contact solver in every cell "
                   "(36 × 11 cells per map; ball moving to +x with v_x = 0, clockwise spin, Coulomb μ = 0.5). "
                   "Blue: e > 1, the ball rebounds above the height it fell from. The black curve is the e = 1 "
                   "boundary traced by marching squares and refined by root finding on the solver itself "
-                  "(the seed's figure 56 shows the same surface against the plane z = 1).");
+                  "(the study's figure 56 shows the same surface against the plane z = 1).");
   sweep::GridSpec grid;
   grid.axes = {{sweep::Quantity::speed, 4, 8, 2}, {sweep::Quantity::theta_deg, 100, 170, 36},
                {sweep::Quantity::omega, 30, 50, 11}};
   grid.fixed_mu = 0.5;
   sweep::ContourOptions co;
   co.x_tol_rel = 1e-6;  // boundary to a millionth of the grid spacing: far below the pixel size
-  for (const auto& [law, name] : {std::pair{seed_law(), std::string("seed's fitted law (D = 60423)")},
+  for (const auto& [law, name] : {std::pair{seed_law(), std::string("the study's fitted law (D = 60423)")},
                                   std::pair{low_damping_law(), std::string("low damping (D = 6000)")}}) {
     const sweep::CellModel model = contact_model(law, name);
     const std::vector<double> values = sweep::evaluate_grid(grid, model);
@@ -265,13 +265,13 @@ void add_maps(report::Section& s, std::ostream& log) {
     for (std::int64_t slice = 0; slice < 2; ++slice) {
       const double speed = slice == 0 ? 4 : 8;
       const double emax = max_of(values, n_out, e, slice * 396, (slice + 1) * 396);
-      report::Figure f = heat_map("As seed figure " + std::string(slice == 0 ? "53" : "54") + ", v_y = −" +
+      report::Figure f = heat_map("As the study's figure " + std::string(slice == 0 ? "53" : "54") + ", v_y = −" +
                                       v4(speed) + " m/s: " + name,
                                   grid, values, n_out, e, slice, contour, "spin |ω| (rad/s), clockwise");
       const bool seeds = law.D == seed_law().D;
-      // The computed description (describe_heat_map), and what it means for the seed.
+      // The computed description (describe_heat_map), and what it means for the study.
       if (emax < 1)
-        f.caption += seeds ? " No cell reaches e = 1, so there is no boundary: the seed's maps cannot come "
+        f.caption += seeds ? " No cell reaches e = 1, so there is no boundary: the study's maps cannot come "
                              "from its fitted law as printed (errata)."
                            : " No cell reaches e = 1 at this speed with this law either.";
       s.add_figure(std::move(f));
@@ -286,7 +286,7 @@ void add_maps(report::Section& s, std::ostream& log) {
   const sweep::CellModel model = contact_model(low_damping_law(), "low damping (D = 6000)");
   const std::vector<double> values = sweep::evaluate_grid(ratio, model);
   const sweep::ContourResult contour = sweep::trace_contour(ratio, model, values, co);
-  report::Figure f = heat_map("As seed figure 55: e over spin/speed ratio, v_y = −4 m/s, low damping (D = 6000)", ratio,
+  report::Figure f = heat_map("As the study's figure 55: e over spin/speed ratio, v_y = −4 m/s, low damping (D = 6000)", ratio,
                               values, model.output_names.size(), model.output_index("e"), 0, contour,
                               "|ω| / |v_y| (rad/m)");
   f.caption = "The same e over the ratio of spin to incoming speed (ω = ratio × 4 m/s). " + f.caption;
@@ -296,7 +296,7 @@ void add_maps(report::Section& s, std::ostream& log) {
 }  // namespace
 
 void add_bounce_case_study(report::Report& r, std::ostream& log) {
-  auto& g = r.add_section("Bounce (seed 001): geometry of the lowest point");
+  auto& g = r.add_section("The rugby-ball study: geometry of the lowest point");
   g.add_paragraph("The rugby ball is a rigid ellipse in the plane (semi-axes a ≥ b) over the floor y = 0; θ is the "
                   "major axis from the horizontal, ω the spin, both counter-clockwise positive.");
   add_geometry(g);

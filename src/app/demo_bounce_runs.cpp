@@ -53,13 +53,13 @@ std::vector<Run> runs() {
   Run higher{"bounce/higher.txt", "a bounce higher than the drop",
              "Released at 0.8 m with clockwise spin (topspin for a ball moving to +x), with the "
              "low-damping law of the bounce section (D = 6000): the spin's energy lifts the ball "
-             "above its release height, the seed's headline (its experiment 1: e = 1.20).",
+             "above its release height, the study's headline (its experiment 1: e = 1.20).",
              base};
   higher.options.law.D = 6000;
   higher.options.omega = -45;
   higher.options.seed = 1;
-  Run ordinary{"bounce/ordinary.txt", "an ordinary bounce (the seed's law)",
-               "The same throw with anticlockwise spin and the seed's fitted law (D = 60423): an "
+  Run ordinary{"bounce/ordinary.txt", "an ordinary bounce (the study's law)",
+               "The same throw with anticlockwise spin and the study's fitted law (D = 60423): an "
                "ordinary bounce that loses most of its energy and turns back.",
                base};
   ordinary.options.omega = 45;
@@ -124,7 +124,7 @@ void add_run(report::Report& rep, const Run& run, const std::string& data_dir, s
   s.add_paragraph(run.story);
   s.add_paragraph("File data/" + run.file + " (" + note + "). Reproduce this analysis from the demo folder with:");
   s.add_list({command});
-  s.add_paragraph("The floor is y = 0 in the file, as the seed sets it in Tracker; the contact duration is the "
+  s.add_paragraph("The floor is y = 0 in the file, as the study sets it in Tracker; the contact duration is the "
                   "number of frames in contact (" + v4(contact * 1e3) + " ms; truth " +
                   v4(1e3 * (truth.t_separation - truth.t_touch)) + " ms).");
   s.add_table(bounce_truth_table(r, truth, run.options.ball));
@@ -150,7 +150,7 @@ void add_fit(report::Report& rep, const std::string& data_dir, std::ostream& log
 
   auto& s = rep.add_section("Bounce runs: fitting the contact law to 40 bounces");
   s.add_paragraph("A table of 40 measured bounces (incoming and outgoing v_x, v_y, ω and the orientation at "
-                  "touch), made with the seed's fitted law (K = 101054 N/m^1.51, n = 1.51, D = 60423, μ = 0.5) "
+                  "touch), made with the study's fitted law (K = 101054 N/m^1.51, n = 1.51, D = 60423, μ = 0.5) "
                   "and noise of 0.02 m/s and 0.5 rad/s on the outgoing state. File data/" + name + " (" + note +
                   "). Reproduce from the demo folder with:");
   s.add_list({"tribolab bounce fit data/" + name + " --report fit.html"});

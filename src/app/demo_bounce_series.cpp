@@ -102,9 +102,9 @@ void add_bounce_series_case_study(report::Report& rep, std::ostream& log, const 
   const analysis::BounceSeriesOptions so;
   const auto summary = analysis::summarize_bounce_series(points, so);
 
-  auto& intro = rep.add_section("Bounce series: twelve throws (seed 001, experiment 2)");
+  auto& intro = rep.add_section("Bounce series: twelve throws (rugby-ball study, experiment 2)");
   intro.add_paragraph(
-      "Seed 001 threw the ball 120 times and plotted e against the collision angle (its figure 32). Here twelve "
+      "The rugby-ball study threw the ball 120 times and plotted e against the collision angle (its figure 32). Here twelve "
       "synthetic filmed throws made by tribolab's own simulator (the low-damping law of the bounce section, "
       "D = 6000; released at 0.8 m, 1.5 m/s, orientations −50 to 50°, spin ±45 rad/s; 240 fps played at 30, "
       "1 mm noise) are analysed together. The files are in data/bounce_series/ (made by the commands of "

@@ -43,7 +43,7 @@ std::string pct(double x) { return format_value(x, 3) + " %"; }
 
 void add_table1(report::Section& s, const incline::CaseStudy& cs, std::ostream& log) {
   s.add_equation("x_f/|y_f| = 8(1 − k^2)/(k(4 − k^2)),   μ_A = tan φ / k   (the root 0 < k < 1 of this cubic in k)",
-                 "seed 000, eq 十A (appendix 10.6)",
+                 "incline study, eq 10A (十A) (appendix 10.6)",
                  "solved by bracketing the cubic's physical root; the main-text form selects the wrong root (errata)");
   report::Table t;
   t.caption = "Table 1 (表一): μ from the stopping point vs μ_o = 0.634";
@@ -59,7 +59,7 @@ void add_table1(report::Section& s, const incline::CaseStudy& cs, std::ostream& 
     log << line;
   }
   s.add_table(std::move(t));
-  s.add_paragraph("μ_o from a straight slide (seed eq a, φ = 41.09 deg, a = 1.758 m/s^2): printed 0.634, "
+  s.add_paragraph("μ_o from a straight slide (the study's eq a, φ = 41.09 deg, a = 1.758 m/s^2): printed 0.634, "
                   "tribolab " + format_value(cs.mu_o_from_eq_a, 4) + ".");
 }
 
@@ -105,13 +105,13 @@ void add_figure8(report::Section& s, std::ostream& log) {
   for (int i = 0; i <= 12; ++i) v0s.push_back(0.5 + 0.25 * i);
   struct Panel { std::string title, x_title, y_title; double ours, printed; bool squared, yx; double phi_deg; };
   const Panel panels[] = {
-      {"Figure 八-2: t_f ∝ v_0", "v_0 (m/s)", "t_f (s)", st, pt, false, false, phi_deg},
-      {"Figure 八-4: x_f ∝ v_0^2", "v_0^2 (m^2/s^2)", "x_f (m)", sx, px, true, false, phi_deg},
-      {"Figure 八-4: y_f ∝ v_0^2", "v_0^2 (m^2/s^2)", "y_f (m)", sy, py, true, false, phi_deg},
-      {"Figure 八-5: y_f vs x_f (φ 10.46 deg)", "x_f (m)", "y_f (m)", syx, pyx, false, true, phi5_deg},
+      {"Figure 8-2 (八-2): t_f ∝ v_0", "v_0 (m/s)", "t_f (s)", st, pt, false, false, phi_deg},
+      {"Figure 8-4 (八-4): x_f ∝ v_0^2", "v_0^2 (m^2/s^2)", "x_f (m)", sx, px, true, false, phi_deg},
+      {"Figure 8-4 (八-4): y_f ∝ v_0^2", "v_0^2 (m^2/s^2)", "y_f (m)", sy, py, true, false, phi_deg},
+      {"Figure 8-5 (八-5): y_f vs x_f (φ 10.46 deg)", "x_f (m)", "y_f (m)", syx, pyx, false, true, phi5_deg},
   };
   report::Table t;
-  t.caption = "Figure 八 slopes (μ = 0.585, φ = 10.37 deg; 八-5 at 10.46 deg): tribolab (closed form, eqs 七–十) vs printed";
+  t.caption = "Figure 8 (八) slopes (μ = 0.585, φ = 10.37 deg; 8-5 (八-5) at 10.46 deg): tribolab (closed form, eqs 7–10 (七–十)) vs printed";
   t.header = {"slope", "printed", "tribolab", "difference"};
   for (const Panel& p : panels) {
     report::Figure f;
@@ -120,7 +120,7 @@ void add_figure8(report::Section& s, std::ostream& log) {
     f.y_axis.title = p.y_title;
     f.height_px = 340;
     report::Series ours = named("tribolab (closed form), slope " + format_value(p.ours, 4));
-    report::Series printed = named("slope printed in the seed, " + format_value(p.printed, 4));
+    report::Series printed = named("slope printed in the study, " + format_value(p.printed, 4));
     ours.mode = report::Mode::LinesMarkers;
     printed.mode = report::Mode::Lines;
     printed.dash = report::Dash::Dash;
@@ -159,26 +159,26 @@ void add_figure8(report::Section& s, std::ostream& log) {
 void add_incline_case_study(report::Report& r, std::ostream& log) {
   const incline::CaseStudy cs = incline::seed000_case_study();
 
-  auto& t1 = r.add_section("Incline (seed 000): table 1, μ from the stopping point");
+  auto& t1 = r.add_section("The incline study: table 1, μ from the stopping point");
   t1.add_paragraph("A disc launched along +x across an incline of angle φ slides with kinetic friction μ "
-                   "opposite its velocity (model B, the seed's conclusion). x is across the slope, y up the "
-                   "slope (the disc moves to y < 0). The seed measures μ from where the disc stops alone.");
+                   "opposite its velocity (model B, the study's conclusion). x is across the slope, y up the "
+                   "slope (the disc moves to y < 0). The study measures μ from where the disc stops alone.");
   add_model_b_equations(t1);
   add_table1(t1, cs, log);
 
-  auto& f2 = r.add_section("Incline: figures 二 and 四, rough vs smooth incline and model B");
+  auto& f2 = r.add_section("Incline: figures 2 and 4 (二, 四), rough vs smooth incline and model B");
   const Parameters rough = setup(0.634, 23.20, 2.30), smooth = setup(0.0, 23.20, 2.30);
   const double t2 = incline::default_duration(rough);
-  f2.add_paragraph("Figure 二: the same launch (φ = 23.20 deg, v0 = 2.30 m/s) on the rough incline (μ = 0.634) "
+  f2.add_paragraph("Figure 2 (二): the same launch (φ = 23.20 deg, v0 = 2.30 m/s) on the rough incline (μ = 0.634) "
                    "and on a smooth one (μ = 0, a projectile on the incline: x = v0 t, y = −g sin φ t^2/2). "
                    "The rough disc stops at t = " + format_value(*incline::ClosedForm(rough).predict().t_stop, 4) +
                    " s and rests.");
-  add_incline_kinematics(f2, "Figure 二 (φ 23.20 deg, v0 2.30 m/s)",
+  add_incline_kinematics(f2, "Figure 2 (二) (φ 23.20 deg, v0 2.30 m/s)",
                          closed_form_curves({{"rough, μ = 0.634", rough}, {"smooth, μ = 0", smooth}}, t2));
   // Figure 四: model B's curves, closed form vs the independent numerical integration.
   const std::vector<double> times = even_times(t2, kSamples);
   const incline::NumericResult num = incline::simulate(rough, times);
-  std::vector<InclineCurve> model_b{incline_curve("closed form (eqs 一–九)", incline::ClosedForm(rough).trajectory(times))};
+  std::vector<InclineCurve> model_b{incline_curve("closed form (eqs 1–9 (一–九))", incline::ClosedForm(rough).trajectory(times))};
   if (num.status != incline::NumericStatus::failed) {
     model_b.push_back(incline_curve("numerical integration (Dormand–Prince 5(4))", num.samples,
                                     report::Dash::Dash, "#d62728"));
@@ -189,32 +189,32 @@ void add_incline_case_study(report::Report& r, std::ostream& log) {
       max_diff = std::max({max_diff, std::abs(model_b[0].states[i].x - model_b[1].states[i].x),
                            std::abs(model_b[0].states[i].y - model_b[1].states[i].y)});
   }
-  f2.add_paragraph("Figure 四: model B on the rough incline, the closed form and a numerical integration of the "
+  f2.add_paragraph("Figure 4 (四): model B on the rough incline, the closed form and a numerical integration of the "
                    "equations of motion overlaid; largest position difference " + format_value(max_diff, 2) + " m.");
-  add_incline_kinematics(f2, "Figure 四 (model B, μ 0.634)", model_b);
+  add_incline_kinematics(f2, "Figure 4 (四) (model B, μ 0.634)", model_b);
 
-  auto& f5 = r.add_section("Incline: figures 五, 六, 七, families of curves");
+  auto& f5 = r.add_section("Incline: figures 5, 6, 7 (五, 六, 七), families of curves");
   f5.add_paragraph("Closed-form curves over one parameter with the others fixed (incline families). k = tan φ/μ: "
                    "k < 1 stops, k = 1 tends to the terminal speed v0/2, k > 1 accelerates.");
-  add_family(f5, "Figure 五 (over v0; φ 20.96 deg, μ 0.634)", setup(0.634, 20.96, 2.62),
-             incline::FamilyParameter::v0, {1.0, 1.5, 2.0, 2.62, 3.0}, "t_f ∝ v0, x_f and y_f ∝ v0^2 (figure 八).");
-  add_family(f5, "Figure 六 (over φ; v0 2.620 m/s, μ 0.634)", setup(0.634, 20.96, 2.62),
+  add_family(f5, "Figure 5 (五) (over v0; φ 20.96 deg, μ 0.634)", setup(0.634, 20.96, 2.62),
+             incline::FamilyParameter::v0, {1.0, 1.5, 2.0, 2.62, 3.0}, "t_f ∝ v0, x_f and y_f ∝ v0^2 (figure 8 (八)).");
+  add_family(f5, "Figure 6 (六) (over φ; v0 2.620 m/s, μ 0.634)", setup(0.634, 20.96, 2.62),
              incline::FamilyParameter::phi,
              {to_rad(10.0), to_rad(20.96), std::atan(0.634), to_rad(40.0)},
              "φ = atan 0.634 = 32.37 deg is the k = 1 boundary.");
-  add_family(f5, "Figure 七 (over μ; φ 20.96 deg, v0 2.620 m/s)", setup(0.634, 20.96, 2.62),
+  add_family(f5, "Figure 7 (七) (over μ; φ 20.96 deg, v0 2.620 m/s)", setup(0.634, 20.96, 2.62),
              incline::FamilyParameter::mu, {0.0, 0.2, std::tan(to_rad(20.96)), 0.5, 0.634},
              "μ = tan 20.96 deg = 0.383 is the k = 1 boundary; μ = 0 is the smooth incline.");
 
-  auto& f8 = r.add_section("Incline: figure 八, scaling of the stop with v0");
-  f8.add_paragraph("From eqs 七–九, t_f is proportional to v0 and x_f, y_f to v0^2, so y_f/x_f depends on k "
-                   "alone (eq 十). The seed's printed theory slopes do not follow from its own equations "
+  auto& f8 = r.add_section("Incline: figure 8 (八), scaling of the stop with v0");
+  f8.add_paragraph("From eqs 7–9 (七–九), t_f is proportional to v0 and x_f, y_f to v0^2, so y_f/x_f depends on k "
+                   "alone (eq 10 (十)). The study's printed theory slopes do not follow from its own equations "
                    "(errata); the points are tribolab's closed form, the dashed lines the printed slopes.");
   add_figure8(f8, log);
 
   auto& chk = r.add_section("Incline: printed numbers checked");
   report::Table t;
-  t.caption = "Numbers printed in seed 000, recomputed independently";
+  t.caption = "Numbers printed in the incline study, recomputed independently";
   t.header = {"where", "printed", "tribolab", "agrees?", "how"};
   int agree = 0;
   for (const auto& c : cs.checks) {

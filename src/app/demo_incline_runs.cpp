@@ -57,7 +57,7 @@ bool holds(const analysis::Estimate& e, double v) { return e.ci_low <= v && v <=
 }  // namespace
 
 void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std::string& data_dir) {
-  auto& summary = r.add_section("Incline runs: tracked launches analysed (seed 000, synthetic data)");
+  auto& summary = r.add_section("Incline runs: tracked launches analysed (incline study, synthetic data)");
   summary.add_paragraph(
       "What a team films: the disc launched across the incline at five angles, one launch with a friction "
       "component normal to the path (model A), and a straight slide. The runs were made by tribolab's own "
@@ -119,7 +119,7 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
                         " " + (flagged == 1 ? "is" : "are") +
                         " flagged 'present': a test of size 5 % flags about one model B run in 20 (3.5 % over 200 "
                         "runs, docs/theory.md#incline-analysis), which is why the normal-friction test across "
-                        "angles below is the seed's second, independent check.");
+                        "angles below is the study's second, independent check.");
   add_incline_analysis_equations(summary);
 
   // The seed's run and the model A run in full.
@@ -131,8 +131,8 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
     add_incline_run_analysis(s, run.file, analyses[i],
                              InclineTruth{run.mu, run.v0, kTLaunch, kX0, kY0, run.normal_accel});
   };
-  full(2, "Incline runs: the seed's launch, φ = 20.96°",
-       "The seed's run (μ = 0.634, v_0 = 2.62 m/s) filmed at 80 fps: model B fits to the noise, model A's "
+  full(2, "Incline runs: the study's launch, φ = 20.96°",
+       "The study's run (μ = 0.634, v_0 = 2.62 m/s) filmed at 80 fps: model B fits to the noise, model A's "
        "normal component is not significant, so the verdict is 'absent'.");
   full(5, "Incline runs: a launch with normal friction (model A)",
        "The same launch with a friction component f_N/m = 0.3 m/s^2 normal to the path (5 % of the friction "
@@ -156,7 +156,7 @@ void add_incline_runs_case_study(report::Report& r, std::ostream& log, const std
 
   auto& ss = r.add_section("Incline runs: straight slide, μ from eq a");
   const std::string slide_path = write_demo_file(std::string("incline/") + kSlide.file, data_dir);
-  ss.add_paragraph("The disc released from rest at φ = 41.09° (the seed's slide, 伍-一) slides straight down the fall "
+  ss.add_paragraph("The disc released from rest at φ = 41.09° (the study's slide, section 5-1 (伍-一)) slides straight down the fall "
                    "line (made by tribolab incline synth " + std::string(kSlide.synth) + "). Repeat with: "
                    "tribolab incline mu-from-slide " + data_path(kSlide) + " --phi-deg " + kSlide.phi_deg);
   analysis::SlideOptions so;

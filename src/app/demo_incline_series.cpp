@@ -91,12 +91,12 @@ void add_incline_series_case_study(report::Report& r, std::ostream& log, const s
   std::vector<std::string> paths;
   for (const auto& d : kDiscs) paths.push_back(write_demo_file(std::string("incline_series/") + d.file, data_dir));
 
-  auto& intro = r.add_section("Incline series: many discs (seed 000, synthetic data)");
+  auto& intro = r.add_section("Incline series: many discs (incline study, synthetic data)");
   intro.add_paragraph(
-      "Seed 000 launched many discs and drew them together (table 1, figures 五A–八). This series was made by "
-      "tribolab's own simulator (data/demo/incline_series/make.sh): seven discs at the seed's figure-八 angle, "
-      "10.37°, launched at 1.2 to 2.4 m/s, and three more at 6°, 14° and 18°, all with μ = 0.585 (the seed's "
-      "figure-八 value), 1 mm noise at 120 fps. The files are written next to this report in data/incline_series/; "
+      "The incline study launched many discs and drew them together (table 1, figures 5A–8 (五A–八)). This series was made by "
+      "tribolab's own simulator (data/demo/incline_series/make.sh): seven discs at the study's figure 8 (八) angle, "
+      "10.37°, launched at 1.2 to 2.4 m/s, and three more at 6°, 14° and 18°, all with μ = 0.585 (the study's "
+      "figure 8 (八) value), 1 mm noise at 120 fps. The files are written next to this report in data/incline_series/; "
       "the analyses below are what incline analyze over several files computes, so the commands shown print the "
       "same numbers.");
   report::Table made;
@@ -149,7 +149,7 @@ void add_incline_series_case_study(report::Report& r, std::ostream& log, const s
   }
   t2.add_paragraph("Repeat with: tribolab incline analyze" + all_files + " --phi-deg " + angles +
                    " --report all.html. With several angles the stop-point slopes are not fitted (each depends on "
-                   "φ); the angles give instead the seed's cos θ_c–tan φ test (eq c').");
+                   "φ); the angles give instead the study's cos θ_c–tan φ test (eq c').");
   report::Table truth2;
   truth2.caption = "Ten discs: what the series recovers against the truth (μ = 0.585)";
   truth2.header = {"quantity", "truth", "result", "truth within 2σ"};

@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/incline_analyze.hpp"
 
 #include "app/incline_launch.hpp"
@@ -193,7 +194,7 @@ InclineAnalyzeResult incline_analyze(const InclineAnalyzeOptions& s) {
     analysis::InclineAnalysis a = analysis::analyze_incline_run(t, per.front());
     res.json = incline_analysis_json(a);
     res.json["track"] = t.name;
-    if (!s.report.empty()) report::write_html(incline_analyze_report(s.files.front(), a), s.report, s.plotly);
+    if (!s.report.empty()) report::write_html(with_study_source(incline_analyze_report(s.files.front(), a), Study::incline), s.report, s.plotly);
     res.runs.push_back({s.files.front(), std::move(a), {}});
     return res;
   }
@@ -229,7 +230,7 @@ InclineAnalyzeResult incline_analyze(const InclineAnalyzeOptions& s) {
     for (std::size_t i = 0; i < runs.size(); ++i)
       report_runs.push_back({runs[i].source, runs[i].ok() ? &runs[i].result->a : nullptr, per[i].phi,
                              runs[i].ok() ? std::string() : runs[i].located_error()});
-    report::write_html(incline_analyze_series_report(report_runs, sum, s.report, s.plotly), s.report, s.plotly);
+    report::write_html(with_study_source(incline_analyze_series_report(report_runs, sum, s.report), Study::incline), s.report, s.plotly);
   }
   res.json = {{"runs", series_rows(runs, [](const Run& r) { return r.j; })}, {"summary", summary}};
   res.errors = series_errors(runs);
@@ -260,7 +261,7 @@ InclineMuFromSlideResult incline_mu_from_slide(const InclineMuFromSlideOptions& 
     const track::Track t = read_incline_track(s.files.front(), s.input);
     analysis::SlideResult r = analysis::mu_from_slide(t, o);
     res.json = slide_json(r, t);
-    if (!s.report.empty()) report::write_html(incline_slide_report(s.files.front(), r, o), s.report, s.plotly);
+    if (!s.report.empty()) report::write_html(with_study_source(incline_slide_report(s.files.front(), r, o), Study::incline), s.report, s.plotly);
     res.runs.push_back({s.files.front(), std::move(r), {}});
     return res;
   }
@@ -293,7 +294,7 @@ InclineMuFromSlideResult incline_mu_from_slide(const InclineMuFromSlideOptions& 
     for (std::size_t i = 0; i < runs.size(); ++i)
       rows.push_back({runs[i].source, runs[i].ok() ? &runs[i].result->r : nullptr, per[i],
                       runs[i].ok() ? std::string() : runs[i].located_error()});
-    report::write_html(incline_slide_series_report(rows, sum, s.report, s.plotly), s.report, s.plotly);
+    report::write_html(with_study_source(incline_slide_series_report(rows, sum, s.report), Study::incline), s.report, s.plotly);
   }
   res.json = {{"runs", series_rows(runs, [](const Run& r) { return r.j; })}, {"summary", summary}};
   res.errors = series_errors(runs);

@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/incline_forward.hpp"
 
 #include "app/report_incline.hpp"
@@ -54,7 +55,7 @@ InclinePredictResult incline_predict(const InclinePredictOptions& o) {
   const incline::Prediction& pr = res.prediction = incline::ClosedForm(p).predict();
   const double t_end = incline::default_duration(p);
   if (std::isfinite(t_end) && t_end > 0) res.trajectory = incline::ClosedForm(p).trajectory(even_times(t_end, 400));
-  if (!o.report.empty()) report::write_html(incline_predict_report(p, pr, res.trajectory), o.report, o.plotly);
+  if (!o.report.empty()) report::write_html(with_study_source(incline_predict_report(p, pr, res.trajectory), Study::incline), o.report, o.plotly);
   json& j = res.json;
   j["k"] = finite_or_null(pr.k);
   j["regime"] = incline::to_string(pr.regime);
@@ -138,8 +139,10 @@ InclineSimulateResult incline_simulate(const InclineSimulateOptions& o) {
         res.comparison_name = "closed form (model B)";
       }
     }
-    report::write_html(incline_simulate_report(p, model_a, method, res.trajectory, res.comparison,
-                                               res.comparison_name), o.report, o.plotly);
+    report::write_html(with_study_source(incline_simulate_report(p, model_a, method, res.trajectory, res.comparison,
+                                                                 res.comparison_name),
+                                         Study::incline),
+                       o.report, o.plotly);
   }
   if (file) {
     file->stream() << "t,x,y,vx,vy,ax,ay\n";
@@ -190,7 +193,7 @@ InclineFamiliesResult incline_families(const InclineFamiliesOptions& s) {
   const incline::Family& f = res.family = incline::make_family(o);
   std::optional<io::AtomicFile> file;
   if (!s.out.empty()) file.emplace(s.out);
-  if (!s.report.empty()) report::write_html(incline_families_report(o, f), s.report, s.plotly);
+  if (!s.report.empty()) report::write_html(with_study_source(incline_families_report(o, f), Study::incline), s.report, s.plotly);
   const std::string column = phi ? "phi_deg" : s.vary;
   if (file) file->stream() << column << ",t,x,y,vx,vy,ax,ay\n";
   json members = json::array();

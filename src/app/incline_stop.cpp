@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/incline_stop.hpp"
 
 #include "app/report_incline_analysis.hpp"
@@ -50,7 +51,7 @@ InclineMuFromStopResult incline_mu_from_stop(const InclineMuFromStopOptions& s) 
     j["best_phi_deg"] = to_deg(res.advice->phi);
     j["best_sigma_mu"] = res.advice->sigma_mu;
   }
-  if (!s.report.empty()) report::write_html(incline_stop_report(m, r, has_sigma, res.advice), s.report, s.plotly);
+  if (!s.report.empty()) report::write_html(with_study_source(incline_stop_report(m, r, has_sigma, res.advice), Study::incline), s.report, s.plotly);
   return res;
 }
 

@@ -108,14 +108,14 @@ int add_contact_figures(report::Section& s, const std::string& title, const boun
 void add_contact_equations(report::Section& s, const bounce::NormalLaw& law) {
   s.add_equation("m x'' = f,   m y'' = N − m g,   I θ'' = X N + Y f", "docs/theory.md#bounce-contact",
                  "rigid ellipse; support point at (X, −Y) from the centre");
-  s.add_equation("Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ),   X = −dY/dθ", "seed 001, eq 20 (Y^2); docs/theory.md#bounce-geometry",
-                 "the seed's eqs 15/18 print a wrong Y (see the errata)");
+  s.add_equation("Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ),   X = −dY/dθ", "rugby-ball study, eq 20 (Y^2); docs/theory.md#bounce-geometry",
+                 "the study's eqs 15/18 print a wrong Y (see the errata)");
   s.add_equation("d = Y(θ) − y,   d' = −(v_y + ω X),   v_t = v_x + ω Y", "docs/theory.md#bounce-geometry");
   if (law.linear) {
     s.add_equation("N = max(0, K d + D d')", "docs/theory.md#bounce-normal-laws",
                    "K = " + v4(law.K) + " N/m, D = " + v4(law.D) + " N s/m");
   } else {
-    s.add_equation("N = max(0, K d^n (1 + (D/K) d'))", "seed 001, 研究方法 六 (Hunt & Crossley 1975)",
+    s.add_equation("N = max(0, K d^n (1 + (D/K) d'))", "rugby-ball study, research methods 6 (研究方法 六) (Hunt & Crossley 1975)",
                    "K = " + v4(law.K) + " N/m^n, n = " + v4(law.n) + ", D = " + v4(law.D) + " N s/m^(n+1)");
   }
   s.add_equation("|f| ≤ μ N (Coulomb: stick when |f| < μ N, else f = −μ N sign v_t)",
@@ -139,7 +139,7 @@ report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::Fr
                                       std::size_t contacts) {
   report::Report rep;
   rep.title = "tribolab bounce simulate";
-  rep.subtitle = "One impact of a spinning ellipse on the floor (seed 001, experiment 4)";
+  rep.subtitle = "One impact of a spinning ellipse on the floor (rugby-ball study, experiment 4)";
   auto& s = rep.add_section("Contact");
   if (contacts > 1) {
     s.add_paragraph("The ball touched the floor " + std::to_string(contacts) +
@@ -189,7 +189,7 @@ report::Report bounce_drop_report(const bounce::Ball& ball, const bounce::Fricti
                                   const bounce::DropRelease& release, const bounce::DropResult& r) {
   report::Report rep;
   rep.title = "tribolab bounce drop";
-  rep.subtitle = "Release, flight and bounces (seed 001; rebound above the release height)";
+  rep.subtitle = "Release, flight and bounces (rugby-ball study; rebound above the release height)";
   auto& s = rep.add_section("Drop");
   s.add_table(ball_table(ball));
   if (!r.bounces.empty()) add_contact_equations(s, r.bounces.front().contact.law);
@@ -256,14 +256,14 @@ report::Report bounce_contact_time_report(const bounce::Ball& ball, const bounce
                                           const bounce::FlightResult& r, const std::vector<FlightSample>& samples) {
   report::Report rep;
   rep.title = "tribolab bounce contact-time";
-  rep.subtitle = "First contact after release from an apex (seed 001, experiment 3, table 4)";
+  rep.subtitle = "First contact after release from an apex (rugby-ball study, experiment 3, table 4)";
   auto& s = rep.add_section("First contact");
   s.add_table(ball_table(ball));
-  s.add_equation("y(t) = H − g t^2/2,   θ(t) = θ_0 + ω t", "seed 001, 實驗三");
+  s.add_equation("y(t) = H − g t^2/2,   θ(t) = θ_0 + ω t", "rugby-ball study, experiment 3 (實驗三)");
   s.add_equation("gap(t) = y(t) − Y(θ(t)),   Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ)",
-                 "seed 001, eq 20; docs/theory.md#bounce-flight", "first root of the gap");
+                 "rugby-ball study, eq 20; docs/theory.md#bounce-flight", "first root of the gap");
   s.add_equation("sqrt(2(H − a)/g) ≤ t_contact ≤ sqrt(2(H − b)/g)", "docs/theory.md#bounce-flight",
-                 "the seed prints these bounds reversed (see the errata)");
+                 "the study prints these bounds reversed (see the errata)");
   Table t;
   t.caption = "Result";
   t.header = {"quantity", "value"};

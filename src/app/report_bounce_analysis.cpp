@@ -275,12 +275,12 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
   t.rows.push_back({"θ at the first touch (deg)", format_uncertain(r.theta_touch_deg, r.sigma_theta_touch_deg),
                     "pre-impact spin line at t_c"});
   t.rows.push_back({"collision angle (deg)", format_uncertain(r.collision_angle_deg, r.sigma_collision_angle_deg),
-                    "at the first touch, seed 001 figure 三十 (as bounce simulate and sweep)"});
+                    "at the first touch, the rugby-ball study's figure 30 (三十) (as bounce simulate and sweep)"});
   t.rows.push_back({"θ, collision angle at t_i (deg)", v4(r.theta_impact_deg) + ", " + v4(r.collision_angle_impact_deg),
                     "at the impact time, for comparison only"});
   t.rows.push_back({"contact point speed at touch (m/s)", format_uncertain(r.contact_point_speed, r.sigma_contact_point_speed),
                     "(v_x, v_y) = (" + v4(r.contact_point_vx) + ", " + v4(r.contact_point_vy) +
-                        "): centre velocity + ω × r_contact, seed 001 figure 52"});
+                        "): centre velocity + ω × r_contact, the rugby-ball study's figure 52"});
   const double e0 = r.pre.energy.total(), e1 = r.post.energy.total();
   t.rows.push_back({"kinetic energy before → after (J)", v4(e0) + " → " + v4(e1),
                     "change " + v4(e1 - e0) + " J (" + v4(100 * (e1 - e0) / e0) + " %)"});
@@ -304,29 +304,29 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
 
 void add_bounce_analysis_equations(report::Section& s, const BounceAnalysis& r) {
   s.add_equation("x_c = (x_A + x_B)/2,   y_c = (y_A + y_B)/2,   θ = atan2(y_B − y_A, x_B − x_A)",
-                 "seed 001, 實驗一 (一)", "centre from the two tracked tips; θ unwrapped over the frames");
-  s.add_equation("x = x_0 + v_x (t − t_i)", "seed 001, 實驗一 (x = vt + x_0)",
+                 "rugby-ball study, experiment 1 (1) (實驗一 (一))", "centre from the two tracked tips; θ unwrapped over the frames");
+  s.add_equation("x = x_0 + v_x (t − t_i)", "rugby-ball study, experiment 1 (實驗一) (x = vt + x_0)",
                  "one line per flight; v_x at the impact is the slope");
-  s.add_equation("y = y_0 + v_y (t − t_i) + a_y (t − t_i)^2 / 2", "seed 001, 實驗一 (y = at^2/2 + v_0 t + y_0)",
+  s.add_equation("y = y_0 + v_y (t − t_i) + a_y (t − t_i)^2 / 2", "rugby-ball study, experiment 1 (實驗一) (y = at^2/2 + v_0 t + y_0)",
                  "one parabola per flight; t_i where they meet (the centroid of the normal impulse)");
   s.add_equation("θ = θ_{ref} + ω (t − t_{ref})", "docs/theory.md#bounce-analysis",
-                 "the seed reads ω = 2π/T from the period; a line through every frame gives its uncertainty");
-  s.add_equation("e_v = −v_{y,after}(t_s) / v_{y,before}(t_c)", "seed 001, 實驗一 (恢復係數 e); docs/theory.md#bounce-analysis",
+                 "the study reads ω = 2π/T from the period; a line through every frame gives its uncertainty");
+  s.add_equation("e_v = −v_{y,after}(t_s) / v_{y,before}(t_c)", "rugby-ball study, experiment 1 (實驗一) (恢復係數 e, the coefficient of restitution); docs/theory.md#bounce-analysis",
                  "velocities at the first touch and at the separation, as the contact model defines e");
   s.add_equation("y_{before}(t_c) − Y(θ_{before}(t_c)) = y_{floor} = y_{after}(t_s) − Y(θ_{after}(t_s))",
                  "docs/theory.md#bounce-analysis", "first touch t_c and separation t_s on the fitted flights");
-  s.add_equation("e_h = sqrt(H'/H),   H = y_0 − v_y^2/(2 a_y) − y_{floor}", "seed 001, 實驗二 (三)",
+  s.add_equation("e_h = sqrt(H'/H),   H = y_0 − v_y^2/(2 a_y) − y_{floor}", "rugby-ball study, experiment 2 (3) (實驗二 (三))",
                  r.floor_given ? "apex heights of the centre above the given floor"
                                : "floor from the lowest point h = y − Y(θ) of the flights; see docs/theory.md#bounce-analysis");
   if (r.floor_method == analysis::FloorMethod::contact_duration) {
     s.add_equation("h_{pre}(t_c) = y_{floor} = h_{post}(t_c + T),   h = y − Y(θ),   t_i − T ≤ t_c ≤ t_i",
                    "docs/theory.md#bounce-analysis", "the floor from the flights: touch at t_c, separation T later");
   }
-  s.add_equation("Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ)", "seed 001, eq 20", "depth of the lowest point below the centre");
-  s.add_equation("E = m v_x^2/2 + m v_y^2/2 + I ω^2/2", "seed 001, 討論", "kinetic energy, translational and rotational");
+  s.add_equation("Y(θ) = sqrt(a^2 sin^2 θ + b^2 cos^2 θ)", "rugby-ball study, eq 20", "depth of the lowest point below the centre");
+  s.add_equation("E = m v_x^2/2 + m v_y^2/2 + I ω^2/2", "rugby-ball study, discussion (討論)", "kinetic energy, translational and rotational");
   if (r.mean_normal_force) {
     s.add_equation("N_{mean} = m (v_{y,after}(t_i) − v_{y,before}(t_i)) / T = m (v_y(t_s) − v_y(t_c)) / T + m g",
-                   "seed 001, 實驗一; docs/theory.md#bounce-analysis",
+                   "rugby-ball study, experiment 1 (實驗一); docs/theory.md#bounce-analysis",
                    "the impulse over the contact duration T (given, or t_s − t_c)");
   }
 }
@@ -336,7 +336,7 @@ report::Report bounce_analyze_report(const std::string& command, const bounce::B
   rep.title = "tribolab bounce analyze";
   rep.subtitle = command;
   auto& s = rep.add_section("Tracked bounce: data and fits");
-  s.add_paragraph("Seed 001 experiment 1 on the tracked tips: " + std::to_string(r.body.rows.size()) +
+  s.add_paragraph("The rugby-ball study's experiment 1 on the tracked tips: " + std::to_string(r.body.rows.size()) +
                   " frames, " + std::to_string(r.impacts.impacts.size()) + " impact(s) detected, impact " +
                   std::to_string(r.impact_used + 1) + " analysed. Frames in contact with the floor are "
                   "dropped automatically (grey); times are real seconds (after --time-scale).");
@@ -470,7 +470,7 @@ report::Report bounce_fit_report(const std::string& command, const std::vector<a
   auto& s = rep.add_section("Contact-law fit");
   s.add_paragraph("Each of the " + std::to_string(rows.size()) + " bounces is simulated from its incoming state "
                   "with the law below (" + std::string(bounce::to_string(o.friction.kind)) +
-                  " friction) and compared with the measured outgoing state (seed 001, 研究方法 六: the seed "
+                  " friction) and compared with the measured outgoing state (rugby-ball study, research methods 6 (研究方法 六): the study "
                   "fitted K, n and D to its measurements the same way).");
   s.add_table(bounce_fit_parameters_table(o, r));
   if (!r.warnings.empty()) {  // docs/theory.md#plausibility-checks

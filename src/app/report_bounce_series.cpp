@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/report_bounce_series.hpp"
 
 #include "analysis/series_plausibility.hpp"
@@ -62,7 +63,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
   auto& sum = rep.add_section(prefix + "Series summary");
   sum.add_paragraph(std::to_string(runs.size()) + " files, " + std::to_string(run_of_point.size()) + " analysed" +
                     (n_failed ? ", " + std::to_string(n_failed) + " failed (their errors are in the table of runs)" : "") +
-                    ". Each run is seed 001's experiment 1 on one tracked bounce; together they are its experiment 2 "
+                    ". Each run is the rugby-ball study's experiment 1 on one tracked bounce; together they are its experiment 2 "
                     "(figure 32) and the comparisons of its discussion (figures 49, 50, 52).");
   {
     Table t;
@@ -84,7 +85,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
       t.rows.push_back({"mean normal force, mean ± sd (N)", format_uncertain(s.force_mean, s.force_sd),
                         std::to_string(s.n_force) + " run(s) with a contact duration"});
       t.rows.push_back({"correlation of the mean force with e_v", v4(s.force_e_correlation),
-                        "Pearson r (the seed: a higher mean force gives a higher rebound)"});
+                        "Pearson r (the study: a higher mean force gives a higher rebound)"});
     }
     if (!points.empty()) {
       const auto& f = points[s.fastest_contact_run];
@@ -109,7 +110,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     sum.add_list(std::move(items));
   }
 
-  auto& e = rep.add_section(prefix + "Restitution against the collision angle (seed 001, figure 32)");
+  auto& e = rep.add_section(prefix + "Restitution against the collision angle (rugby-ball study, figure 32)");
   {
     Figure f = figure("e against the collision angle", "collision angle θ (deg)", "restitution e");
     Series ev = named("e from velocities (± 1 s.e.)"), eh = named("e from apex heights (± 1 s.e.)");
@@ -141,7 +142,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     one.x = {0, 180};
     one.y = {1, 1};
     f.series.push_back(std::move(one));
-    f.caption = "Each run at its collision angle at first touch (seed 001, figure 30: the angle at the centre between "
+    f.caption = "Each run at its collision angle at first touch (rugby-ball study, figure 30: the angle at the centre between "
                 "the contact point and the rear tip). Above the dashed line the ball rose higher than it fell.";
     e.add_figure(std::move(f));
     ++figures;
@@ -157,7 +158,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     e.add_table(std::move(t));
   }
 
-  auto& en = rep.add_section(prefix + "Energies and mean normal force per run (seed 001, figures 49, 50)");
+  auto& en = rep.add_section(prefix + "Energies and mean normal force per run (rugby-ball study, figures 49, 50)");
   {
     Figure f = figure("kinetic energy before and after each bounce", "run", "kinetic energy (J)");
     struct Kind {
@@ -176,7 +177,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
         }
         f.series.push_back(std::move(sr));
       }
-    f.caption = "E = m v_x²/2 + m v_y²/2 + I ω²/2 before at first touch, after at separation (seed 001, 討論 (一)); runs numbered as in the table "
+    f.caption = "E = m v_x²/2 + m v_y²/2 + I ω²/2 before at first touch, after at separation (rugby-ball study, discussion 1 (討論 (一))); runs numbered as in the table "
                 "of runs.";
     en.add_figure(std::move(f));
     ++figures;
@@ -191,14 +192,14 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
       sr.y_error.push_back(points[j].sigma_mean_normal_force);
     }
     f.series.push_back(std::move(sr));
-    f.caption = "Seed 001, 討論 (二): at equal contact durations a higher mean force should give a higher rebound.";
+    f.caption = "The rugby-ball study, discussion 2 (討論 (二)): at equal contact durations a higher mean force should give a higher rebound.";
     en.add_figure(std::move(f));
     ++figures;
   } else {
-    en.add_paragraph("No mean normal force: give --contact-duration to compute it (seed 001, 討論 (二)).");
+    en.add_paragraph("No mean normal force: give --contact-duration to compute it (rugby-ball study, discussion 2 (討論 (二))).");
   }
 
-  auto& cp = rep.add_section(prefix + "Contact-point speed against the collision angle (seed 001, figure 52)");
+  auto& cp = rep.add_section(prefix + "Contact-point speed against the collision angle (rugby-ball study, figure 52)");
   {
     Figure f = figure("speed of the contact point at first touch", "collision angle θ (deg)", "velocity (m/s)");
     Series sp = named("|v_p| (± 1 s.e.)"), vx = named("v_p,x (slip)"), vy = named("v_p,y");
@@ -214,8 +215,8 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     f.series.push_back(std::move(sp));
     f.series.push_back(std::move(vx));
     f.series.push_back(std::move(vy));
-    f.caption = "Velocity of the material point at the support point, v_p = v + ω × r (seed 001, figure 51-c), "
-                "at first touch, from the pre-impact flight. The seed finds it largest at 50–70° and small at "
+    f.caption = "Velocity of the material point at the support point, v_p = v + ω × r (rugby-ball study, figure 51-c), "
+                "at first touch, from the pre-impact flight. The study finds it largest at 50–70° and small at "
                 "120–125°, where the ball tends to roll.";
     cp.add_figure(std::move(f));
     ++figures;
@@ -268,8 +269,8 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!runs[i].analysis) continue;
       const std::string name = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), folder + "/" + name, plotly,
-                         std::filesystem::absolute(report_path).parent_path().string());
+      report::write_html(with_study_source(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), Study::rugby_ball),
+                         folder + "/" + name);
       links[i] = folder_name + "/" + name;
     }
   }

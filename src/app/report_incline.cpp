@@ -92,17 +92,17 @@ int add_incline_kinematics(report::Section& s, const std::string& title,
 }
 
 void add_model_b_equations(report::Section& s) {
-  s.add_equation("α = g μ cos φ,   β = g sin φ,   k = tan φ / μ = β/α", "seed 000, eqs 1.1, 1.2",
+  s.add_equation("α = g μ cos φ,   β = g sin φ,   k = tan φ / μ = β/α", "incline study, eqs 1.1, 1.2",
                  "friction deceleration, gravity along the slope and their ratio");
   s.add_equation("a_x = −α / cosh(k s),   a_y = α tanh(k s) − β,   s = −ln(v_x/v_{x0})",
-                 "seed 000, eqs 一, 四", "model B: friction opposite the velocity");
-  s.add_equation("v_y = −v_{x0} e^{−s} sinh(k s)", "seed 000, eq 五");
+                 "incline study, eqs 1, 4 (一, 四)", "model B: friction opposite the velocity");
+  s.add_equation("v_y = −v_{x0} e^{−s} sinh(k s)", "incline study, eq 5 (五)");
   s.add_equation("t = v_{x0}/(2α) [E(1+k, s) + E(1−k, s)],   E(c, s) = (1 − e^{−c s})/c",
-                 "seed 000, eq 二");
+                 "incline study, eq 2 (二)");
   s.add_equation("x = v_{x0}^2/(2α) [E(2+k, s) + E(2−k, s)],   y = v_{x0}^2/(4α) [E(2+2k, s) − E(2−2k, s)]",
-                 "seed 000, eqs 三, 六");
+                 "incline study, eqs 3, 6 (三, 六)");
   s.add_equation("t_{stop} = v_{x0}/(α(1−k^2)),   x_{stop} = 2v_{x0}^2/(α(4−k^2)),   y_{stop} = −k v_{x0}^2/(4α(1−k^2))",
-                 "seed 000, eqs 七, 八, 九", "for k < 1; k = 1 tends to a terminal speed v0/2, k > 1 accelerates");
+                 "incline study, eqs 7, 8, 9 (七, 八, 九)", "for k < 1; k = 1 tends to a terminal speed v0/2, k > 1 accelerates");
 }
 
 report::Table incline_parameter_table(const incline::Parameters& p) {
@@ -134,7 +134,7 @@ report::Report incline_simulate_report(const incline::Parameters& p, bool model_
   s.add_table(incline_parameter_table(p));
   if (model_a) {
     s.add_equation("dv/dt = −g cos φ μ v̂ + (f_N/m) n̂ − g sin φ ŷ,   dx/dt = v",
-                   "seed 000, 肆-三; docs/theory.md#numerical-model",
+                   "incline study, section 4-3 (肆-三); docs/theory.md#numerical-model",
                    "model A: a friction component f_N normal to the path (n̂ = left normal of v̂)");
   } else {
     add_model_b_equations(s);
@@ -162,7 +162,7 @@ report::Report incline_families_report(const incline::FamilyOptions& options,
   r.title = "tribolab incline families";
   const bool phi = options.vary == incline::FamilyParameter::phi;
   const std::string name = incline::to_string(options.vary);
-  r.subtitle = "Closed-form model B curves over " + name + " (seed 000, figures 五–七)";
+  r.subtitle = "Closed-form model B curves over " + name + " (incline study, figures 5–7 (五–七))";
   auto& s = r.add_section("Family over " + name);
   s.add_table(incline_parameter_table(options.base));
   add_model_b_equations(s);
@@ -193,7 +193,7 @@ report::Report incline_predict_report(const incline::Parameters& p, const inclin
                                       const std::vector<incline::State>& trajectory) {
   report::Report r;
   r.title = "tribolab incline predict";
-  r.subtitle = "Closed-form model B prediction (seed 000)";
+  r.subtitle = "Closed-form model B prediction (incline study)";
   auto& s = r.add_section("Prediction");
   s.add_table(incline_parameter_table(p));
   add_model_b_equations(s);

@@ -150,16 +150,16 @@ std::string incline_decision_rule() {
 
 void add_incline_analysis_equations(report::Section& s) {
   add_model_b_equations(s);
-  s.add_equation("dv/dt = −g cos φ μ v̂ + (f_N/m) n̂ − g sin φ ŷ", "seed 000, 肆-三; docs/theory.md#incline-analysis",
+  s.add_equation("dv/dt = −g cos φ μ v̂ + (f_N/m) n̂ − g sin φ ŷ", "incline study, section 4-3 (肆-三); docs/theory.md#incline-analysis",
                  "model A: a friction component f_N normal to the path (n̂ = left normal of v̂); f_N = 0 is model B");
   s.add_equation("F = (RSS_B − RSS_A) / (RSS_A / (2n − 7))", "docs/theory.md#incline-analysis",
                  "A against B, nested models, both with the camera frame's rotation ψ fitted (2n − 6 without it); "
                  "p = the probability that an F(1, 2n − 7) variable exceeds F");
-  s.add_equation("a_N = (a_x v_y − a_y v_x)/|v| = g sin φ sin θ − f_N/m,   sin θ = v_x/|v|", "seed 000, eq b",
+  s.add_equation("a_N = (a_x v_y − a_y v_x)/|v| = g sin φ sin θ − f_N/m,   sin θ = v_x/|v|", "incline study, eq b",
                  "sign corrected, see the errata");
-  s.add_equation("cos θ_c = tan φ/μ − f_N sin θ_c/(m g μ cos φ)", "seed 000, eq c",
+  s.add_equation("cos θ_c = tan φ/μ − f_N sin θ_c/(m g μ cos φ)", "incline study, eq c",
                  "at the extremum of the velocity down the slope (zero acceleration there); cos θ_c = |v_y| / |v|");
-  s.add_equation("cos θ_c = k = tan φ / μ", "seed 000, eq c'", "model B (f_N = 0)");
+  s.add_equation("cos θ_c = k = tan φ / μ", "incline study, eq c'", "model B (f_N = 0)");
 }
 
 int add_incline_run_analysis(report::Section& s, const std::string& title, const analysis::InclineAnalysis& a,
@@ -216,7 +216,7 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
   s.add_paragraph("Decision rule: " + incline_decision_rule());
 
   Table diag;
-  diag.caption = title + ": the seed's diagnostics (eqs b, c)";
+  diag.caption = title + ": the study's diagnostics (eqs b, c)";
   diag.header = {"quantity", "value"};
   if (a.a_n) {
     const auto& d = *a.a_n;
@@ -309,7 +309,7 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
   t.caption = title + ": acceleration and friction";
   t.header = {"quantity", "value"};
   t.rows = {{"a along the path (m/s^2), parabola", format_uncertain(r.a, r.sigma_a)},
-            {"a from the v–t line (m/s^2), seed's method", format_uncertain(r.a_velocity_line, r.sigma_a_velocity_line)},
+            {"a from the v–t line (m/s^2), the study's method", format_uncertain(r.a_velocity_line, r.sigma_a_velocity_line)},
             {"μ (eq a)", r.mu ? format_uncertain(*r.mu, *r.sigma_mu) : "— (needs --phi-deg)"},
             {"φ (deg)", !o.phi                ? "—"
                         : o.sigma_phi > 0 ? format_uncertain(to_deg(*o.phi), to_deg(o.sigma_phi))
@@ -320,7 +320,7 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
             {"rms distance from a straight path (m)", format_value(r.straightness_rms, 3)}};
   if (mu_truth) t.rows.push_back({"truth μ (make.sh)", format_value(*mu_truth, 4)});
   s.add_table(std::move(t));
-  s.add_equation("μ = (g sin φ − a) / (g cos φ)", "seed 000, eq a", "a = 2 c_2 of the parabola s = c_0 + c_1 t + c_2 t^2");
+  s.add_equation("μ = (g sin φ − a) / (g cos φ)", "incline study, eq a", "a = 2 c_2 of the parabola s = c_0 + c_1 t + c_2 t^2");
 
   Figure st = figure(title + ": distance along the slope s–t", "t (s)", "s (m), down the path", 360);
   st.caption = "The tracked points projected on their straight path, and the fitted parabola.";
@@ -345,7 +345,7 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
   rs.y = res;
   rf.series = {std::move(rs)};
   s.add_figure(std::move(rf));
-  Figure vf = figure(title + ": speed v–t (the seed's line)", "t (s)", "v (m/s)", 320);
+  Figure vf = figure(title + ": speed v–t (the study's line)", "t (s)", "v (m/s)", 320);
   Series vs = named("central differences");
   vs.x = r.v_t;
   vs.y = r.v;
@@ -359,7 +359,7 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
 report::Report incline_analyze_report(const std::string& source, const analysis::InclineAnalysis& a) {
   report::Report r;
   r.title = "tribolab incline analyze";
-  r.subtitle = "Models B and A fitted to " + source + " (seed 000, 肆)";
+  r.subtitle = "Models B and A fitted to " + source + " (incline study, section 4 (肆))";
   auto& eq = r.add_section("Models and equations");
   add_incline_analysis_equations(eq);
   auto& s = r.add_section("Analysis of " + source);
@@ -371,7 +371,7 @@ report::Report incline_slide_report(const std::string& source, const analysis::S
                                     const analysis::SlideOptions& o) {
   report::Report r;
   r.title = "tribolab incline mu-from-slide";
-  r.subtitle = "μ from a straight slide down the incline, " + source + " (seed 000, eq a)";
+  r.subtitle = "μ from a straight slide down the incline, " + source + " (incline study, eq a)";
   auto& s = r.add_section("Slide " + source);
   add_slide_analysis(s, "Slide", res, o);
   return r;
@@ -380,9 +380,9 @@ report::Report incline_slide_report(const std::string& source, const analysis::S
 report::Report incline_normal_test_report(const analysis::NormalFrictionTest& res) {
   report::Report r;
   r.title = "tribolab incline normal-friction-test";
-  r.subtitle = "cos θ_c against tan φ over " + std::to_string(res.points.size()) + " runs (seed 000, eq c, 圖三-2)";
+  r.subtitle = "cos θ_c against tan φ over " + std::to_string(res.points.size()) + " runs (incline study, eq c, figure 3-2 (圖三-2))";
   auto& s = r.add_section("Normal friction test");
-  s.add_equation("cos θ_c = tan φ/μ − f_N sin θ_c/(m g μ cos φ)", "seed 000, eq c");
+  s.add_equation("cos θ_c = tan φ/μ − f_N sin θ_c/(m g μ cos φ)", "incline study, eq c");
   add_normal_friction_fit(s, "Test", res);
   return r;
 }
@@ -391,7 +391,7 @@ report::Report incline_stop_report(const incline::StopMeasurement& m, const incl
                                    bool has_sigma, const std::optional<incline::AngleAdvice>& advice) {
   report::Report r;
   r.title = "tribolab incline mu-from-stop";
-  r.subtitle = "μ from the stopping point alone (seed 000, eq 十A)";
+  r.subtitle = "μ from the stopping point alone (incline study, eq 10A (十A))";
   auto& s = r.add_section("Stop point");
   Table in;
   in.caption = "Inputs";
@@ -418,9 +418,9 @@ report::Report incline_stop_report(const incline::StopMeasurement& m, const incl
     out.rows.push_back({"σ_μ at the best angle", format_value(advice->sigma_mu, 3)});
   }
   s.add_table(std::move(out));
-  s.add_equation("r k^3 − 8 k^2 − 4 r k + 8 = 0,   r = |x_{stop}/y_{stop}|,   μ = tan φ / k", "seed 000, eq 十A (eq 10.3)",
-                 "the unique root in (0, 1), by bracketing; eqs 八 and 九 divided");
-  s.add_equation("x_{stop} = 2v_0^2/(α(4−k^2))", "seed 000, eq 八", "gives the implied launch speed");
+  s.add_equation("r k^3 − 8 k^2 − 4 r k + 8 = 0,   r = |x_{stop}/y_{stop}|,   μ = tan φ / k", "incline study, eq 10A (十A) (eq 10.3)",
+                 "the unique root in (0, 1), by bracketing; eqs 8 and 9 (八, 九) divided");
+  s.add_equation("x_{stop} = 2v_0^2/(α(4−k^2))", "incline study, eq 8 (八)", "gives the implied launch speed");
   incline::Parameters p;
   p.mu = res.mu;
   p.phi = m.phi;

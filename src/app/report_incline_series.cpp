@@ -1,3 +1,4 @@
+#include "app/study_citation.hpp"
 #include "app/report_incline_series.hpp"
 
 #include "numerics/units.hpp"
@@ -93,10 +94,10 @@ Figure per_run_figure(const std::string& title, const std::string& y_title, cons
 
 std::string relation_title(analysis::StopRelation r) {
   switch (r) {
-    case analysis::StopRelation::t_vs_v0: return "t_stop against v_0 (eq 七)";
-    case analysis::StopRelation::x_vs_v0sq: return "x_stop against v_0^2 (eq 八)";
-    case analysis::StopRelation::y_vs_v0sq: return "y_stop against v_0^2 (eq 九)";
-    case analysis::StopRelation::y_vs_x: return "y_stop against x_stop (eq 十)";
+    case analysis::StopRelation::t_vs_v0: return "t_stop against v_0 (eq 7 (七))";
+    case analysis::StopRelation::x_vs_v0sq: return "x_stop against v_0^2 (eq 8 (八))";
+    case analysis::StopRelation::y_vs_v0sq: return "y_stop against v_0^2 (eq 9 (九))";
+    case analysis::StopRelation::y_vs_x: return "y_stop against x_stop (eq 10 (十))";
   }
   return {};
 }
@@ -117,13 +118,13 @@ int add_scaling(report::Section& s, const std::string& title, const analysis::In
     return 0;
   }
   s.add_paragraph("Each run's stop (time and point after the launch, from its model B fit) against its launch "
-                  "speed, as seed 000's figure 八: lines through the origin fitted over the runs at φ = " +
+                  "speed, as the incline study's figure 8 (八): lines through the origin fitted over the runs at φ = " +
                   format_value(to_deg(*sum.common_phi), 5) +
-                  " deg, and the μ each slope implies (eqs 七–十 solved for μ at that angle; the interval is the "
+                  " deg, and the μ each slope implies (eqs 7–10 (七–十) solved for μ at that angle; the interval is the "
                   "slope's 95 % interval mapped through the same relation, — where it leaves the range where the "
                   "disc stops)." + (sum.scaling_note.empty() ? std::string() : " " + sum.scaling_note + "."));
   Table t;
-  t.caption = title + ": stop-point slopes (figure 八)";
+  t.caption = title + ": stop-point slopes (figure 8 (八))";
   t.header = {"relation", "slope", "95 % interval", "μ implied", "95 % interval of μ", "model B slope at the weighted μ"};
   for (const auto& sc : sum.scaling)
     t.rows.push_back({relation_title(sc.relation), format_uncertain(sc.fit.slope, sc.fit.sigma),
@@ -131,9 +132,9 @@ int add_scaling(report::Section& s, const std::string& title, const analysis::In
                       "[" + opt_value(sc.mu_ci_low) + ", " + opt_value(sc.mu_ci_high) + "]", opt_value(sc.slope_model)});
   s.add_table(std::move(t));
   s.add_equation("t_{stop}/v_0 = μ cos φ / (g(μ^2 cos^2 φ − sin^2 φ)),  x_{stop}/v_0^2 = 2μ cos φ / (g(4μ^2 cos^2 φ − sin^2 φ))",
-                 "seed 000, eqs 七, 八");
+                 "incline study, eqs 7, 8 (七, 八)");
   s.add_equation("y_{stop}/v_0^2 = −sin φ / (4g(μ^2 cos^2 φ − sin^2 φ)),  y_{stop}/x_{stop} = −k(4 − k^2)/(8(1 − k^2)), k = tan φ/μ",
-                 "seed 000, eqs 九, 十");
+                 "incline study, eqs 9, 10 (九, 十)");
   int n = 0;
   for (const auto& sc : sum.scaling) {
     const auto [xt, yt] = relation_axes(sc.relation);
@@ -247,7 +248,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
     ++figures;
   }
 
-  auto& sc = r.add_section(title + ": stop point against launch speed (figure 八)");
+  auto& sc = r.add_section(title + ": stop point against launch speed (figure 8 (八))");
   figures += add_scaling(sc, title, sum);
 
   auto& tc = r.add_section(title + ": cos θ_c against tan φ (eq c')");
@@ -288,14 +289,14 @@ report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!runs[i].analysis) continue;
       const std::string file = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(incline_analyze_report(runs[i].source, *runs[i].analysis), (fs::path(folder) / file).string(),
-                         plotly, fs::absolute(report_path).parent_path().string());
+      report::write_html(with_study_source(incline_analyze_report(runs[i].source, *runs[i].analysis), Study::incline),
+                         (fs::path(folder) / file).string());
       links[i] = run_link(report_path, i, runs[i].source, runs.size());
     }
   }
   report::Report r;
   r.title = "tribolab: incline analyze, a series of " + std::to_string(runs.size()) + " runs";
-  r.subtitle = "Models B and A fitted to every run, and the series summarised as seed 000 did (table 1, figures 五A–八)";
+  r.subtitle = "Models B and A fitted to every run, and the series summarised as the incline study did (table 1, figures 5A–8 (五A–八))";
   add_incline_series(r, "Series", runs, summary, links);
   return r;
 }
@@ -310,14 +311,14 @@ report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& ru
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!runs[i].result) continue;
       const std::string file = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(incline_slide_report(runs[i].source, *runs[i].result, runs[i].options),
-                         (fs::path(folder) / file).string(), plotly, fs::absolute(report_path).parent_path().string());
+      report::write_html(with_study_source(incline_slide_report(runs[i].source, *runs[i].result, runs[i].options), Study::incline),
+                         (fs::path(folder) / file).string());
       links[i] = run_link(report_path, i, runs[i].source, runs.size());
     }
   }
   report::Report r;
   r.title = "tribolab: incline mu-from-slide, a series of " + std::to_string(runs.size()) + " slides";
-  r.subtitle = "μ from straight slides (seed 000, eq a), combined with inverse-variance weights";
+  r.subtitle = "μ from straight slides (incline study, eq a), combined with inverse-variance weights";
   auto& s = r.add_section("Series: friction coefficient over the slides");
   Table st;
   st.caption = "weighted μ";

@@ -264,9 +264,9 @@ report::Report sweep_report(const SweepReportData& d) {
                         "written before whole impacts) with incoming v_y = −speed and the cell's spin; "
                         "e = −v_y,out/v_y,in. Values as written in the sweep file (its header records the grid and "
                         "every physical option).");
-  p.add_equation("e = −v_{y,out} / v_{y,in}", "seed 001, figures 53–56; docs/theory.md#sweeps",
+  p.add_equation("e = −v_{y,out} / v_{y,in}", "rugby-ball study, figures 53–56; docs/theory.md#sweeps",
                  "e > 1: the ball rises above the height it fell from");
-  p.add_equation("E_{rot}/E_y = I ω^2 / (m v_y^2)", "seed 001 (\"must exceed 2.56\"); docs/theory.md#sweeps",
+  p.add_equation("E_{rot}/E_y = I ω^2 / (m v_y^2)", "rugby-ball study (\"must exceed 2.56\"); docs/theory.md#sweeps",
                  "rotational over vertical translational kinetic energy at the spin threshold");
   p.add_table(parameters_table(d));
 
@@ -383,7 +383,7 @@ report::Report sweep_report(const SweepReportData& d) {
   auto& t = r.add_section("Spin threshold per angle");
   t.add_paragraph("At each angle, the smallest spin at which e reaches 1, scanning the spin axis upwards (refined by "
                   "root finding between grid values; the rows of --threshold), and the energy ratio E_rot/E_y there. "
-                  "The seed says the ratio must exceed 2.56; see the errata (docs/theory.md).");
+                  "The study says the ratio must exceed 2.56; see the errata (docs/theory.md).");
   report::Figure thr, er;
   thr.title = "Spin threshold for e ≥ 1";
   thr.x_axis.title = y_title;
@@ -416,13 +416,13 @@ report::Report sweep_report(const SweepReportData& d) {
     t.add_paragraph("No angle has a spin threshold inside the grid: e never crosses 1 from below along the spin axis.");
   }
   if (any_ratio) {
-    report::Series seed = named("seed's 2.56", report::Mode::Lines);
+    report::Series seed = named("the study's 2.56", report::Mode::Lines);
     seed.dash = report::Dash::Dash;
     seed.color = "#d62728";
     seed.x = {th.value(0), th.value(th.count - 1)};
     seed.y = {kSeedEnergyRatio, kSeedEnergyRatio};
     er.series.push_back(std::move(seed));
-    er.caption = "Dashed: the ratio the seed quotes as necessary.";
+    er.caption = "Dashed: the ratio the study quotes as necessary.";
     t.add_figure(std::move(er));
   }
   return r;

@@ -51,8 +51,8 @@ TEST(CaseStudy, Table1IsReproduced) {
         << "phi = " << r.phi_deg;
     EXPECT_NEAR(r.diff_percent, 100 * (expected[i] - 0.634) / 0.634, 2e-3) << "phi = " << r.phi_deg;
   }
-  EXPECT_FALSE(find("表一 mu_A at phi = 4.82").agrees);
-  EXPECT_TRUE(find("表一 mu_A at phi = 10.37").agrees);
+  EXPECT_FALSE(find("table 1 (表一) mu_A at phi = 4.82").agrees);
+  EXPECT_TRUE(find("table 1 (表一) mu_A at phi = 10.37").agrees);
 }
 
 TEST(CaseStudy, EqAGivesTheReferenceMu) {
@@ -60,22 +60,22 @@ TEST(CaseStudy, EqAGivesTheReferenceMu) {
 }
 
 TEST(CaseStudy, PrintedNumbersThatAgree) {
-  expect_check("圖五-4X a_x0", -5.8021, true);
-  expect_check("圖五-4Y a_yf", 2.2965, true);
-  expect_check("圖七 boundary", 0.38306, true);
-  expect_check("圖三-2", 0.63508, true);
-  expect_check("伍-一-(一) mu_o", 0.63403, true);
+  expect_check("figure 5-4X (圖五-4X) a_x0", -5.8021, true);
+  expect_check("figure 5-4Y (圖五-4Y) a_yf", 2.2965, true);
+  expect_check("figure 7 (圖七) boundary", 0.38306, true);
+  expect_check("figure 3-2 (圖三-2)", 0.63508, true);
+  expect_check("section 5-1-(1) (伍-一-(一)) mu_o", 0.63403, true);
 }
 
 TEST(CaseStudy, PrintedNumbersThatAreErrata) {
-  expect_check("圖八-2 theory slope", 0.19656, false);
-  expect_check("圖八-4 theory slope x_f", 0.090886, false);
-  expect_check("圖八-4 theory slope y_f", -0.015371, false);
-  expect_check("圖八-5 theory slope", -0.17088, false);
-  expect_check("圖八-5 printed difference", 6.0763, false);
-  expect_check("伍-一-(三)-1 g sin", 3.8606, false);
-  expect_check("圖五-4Y a_y0", -3.5056, false);
-  expect_check("圖六 boundary", 32.375, false);
+  expect_check("figure 8-2 (圖八-2) theory slope", 0.19656, false);
+  expect_check("figure 8-4 (圖八-4) theory slope x_f", 0.090886, false);
+  expect_check("figure 8-4 (圖八-4) theory slope y_f", -0.015371, false);
+  expect_check("figure 8-5 (圖八-5) theory slope", -0.17088, false);
+  expect_check("figure 8-5 (圖八-5) printed difference", 6.0763, false);
+  expect_check("section 5-1-(3)-1 (伍-一-(三)-1) g sin", 3.8606, false);
+  expect_check("figure 5-4Y (圖五-4Y) a_y0", -3.5056, false);
+  expect_check("figure 6 (圖六) boundary", 32.375, false);
 }
 
 TEST(CaseStudy, AppendixIntegralA2HasTheOppositeSign) {
