@@ -148,7 +148,7 @@ void register_bounce_sweep(CLI::App& bounce_area) {
       "spin thresholds; parallel, resumable, shardable");
   cmd->add_option("--theta-deg", text->theta, "Impact angle range lo:hi:count, deg (e.g. 100:170:71)")
       ->required();
-  cmd->add_option("--omega", text->omega, "Spin range lo:hi:count, rad/s, counter-clockwise positive (e.g. 30:50:21; the seed's figure 53 spins clockwise for a ball moving to +x: -50:-30:21)");
+  cmd->add_option("--omega", text->omega, "Spin range lo:hi:count, rad/s, counter-clockwise positive (e.g. 30:50:21; the rugby-ball study's figure 53 spins clockwise for a ball moving to +x: -50:-30:21)");
   cmd->add_option("--ratio", text->ratio, "Instead of --omega: spin/speed range omega/|vy| lo:hi:count, rad/m");
   cmd->add_option("--speed", text->speed, "Incoming vertical speed |vy|, m/s: a value or a range lo:hi:count");
   cmd->add_option("--mu", text->mu, "Friction coefficient: a value or a range lo:hi:count");
