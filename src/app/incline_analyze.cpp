@@ -230,7 +230,7 @@ InclineAnalyzeResult incline_analyze(const InclineAnalyzeOptions& s) {
     for (std::size_t i = 0; i < runs.size(); ++i)
       report_runs.push_back({runs[i].source, runs[i].ok() ? &runs[i].result->a : nullptr, per[i].phi,
                              runs[i].ok() ? std::string() : runs[i].located_error()});
-    report::write_html(with_study_source(incline_analyze_series_report(report_runs, sum, s.report), Study::incline), s.report, s.plotly);
+    report::write_html(with_study_source(incline_analyze_series_report(report_runs, sum, s.report, s.plotly), Study::incline), s.report, s.plotly);
   }
   res.json = {{"runs", series_rows(runs, [](const Run& r) { return r.j; })}, {"summary", summary}};
   res.errors = series_errors(runs);
@@ -294,7 +294,7 @@ InclineMuFromSlideResult incline_mu_from_slide(const InclineMuFromSlideOptions& 
     for (std::size_t i = 0; i < runs.size(); ++i)
       rows.push_back({runs[i].source, runs[i].ok() ? &runs[i].result->r : nullptr, per[i],
                       runs[i].ok() ? std::string() : runs[i].located_error()});
-    report::write_html(with_study_source(incline_slide_series_report(rows, sum, s.report), Study::incline), s.report, s.plotly);
+    report::write_html(with_study_source(incline_slide_series_report(rows, sum, s.report, s.plotly), Study::incline), s.report, s.plotly);
   }
   res.json = {{"runs", series_rows(runs, [](const Run& r) { return r.j; })}, {"summary", summary}};
   res.errors = series_errors(runs);

@@ -270,7 +270,7 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
       if (!runs[i].analysis) continue;
       const std::string name = series_run_file(i, runs[i].source, runs.size());
       report::write_html(with_study_source(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), Study::rugby_ball),
-                         folder + "/" + name);
+                         folder + "/" + name, plotly, std::filesystem::absolute(report_path).parent_path().string());
       links[i] = folder_name + "/" + name;
     }
   }

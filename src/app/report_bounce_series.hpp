@@ -43,6 +43,6 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
                                             const analysis::BounceSeriesOptions& options,
                                             const std::string& report_path,
                                             const std::function<std::string(std::size_t)>& run_command,
-                                            report::PlotlyMode plotly = report::PlotlyMode::embed);
+                                            report::PlotlyMode plotly);
 
 }  // namespace tribolab::app

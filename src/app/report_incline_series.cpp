@@ -290,7 +290,7 @@ report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>
       if (!runs[i].analysis) continue;
       const std::string file = series_run_file(i, runs[i].source, runs.size());
       report::write_html(with_study_source(incline_analyze_report(runs[i].source, *runs[i].analysis), Study::incline),
-                         (fs::path(folder) / file).string());
+                         (fs::path(folder) / file).string(), plotly, fs::absolute(report_path).parent_path().string());
       links[i] = run_link(report_path, i, runs[i].source, runs.size());
     }
   }
@@ -312,7 +312,7 @@ report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& ru
       if (!runs[i].result) continue;
       const std::string file = series_run_file(i, runs[i].source, runs.size());
       report::write_html(with_study_source(incline_slide_report(runs[i].source, *runs[i].result, runs[i].options), Study::incline),
-                         (fs::path(folder) / file).string());
+                         (fs::path(folder) / file).string(), plotly, fs::absolute(report_path).parent_path().string());
       links[i] = run_link(report_path, i, runs[i].source, runs.size());
     }
   }

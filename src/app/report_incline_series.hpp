@@ -48,7 +48,7 @@ std::string series_run_file(std::size_t index, const std::string& source, std::s
 report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>& runs,
                                              const analysis::InclineSeriesSummary& summary,
                                              const std::string& report_path,
-                                             report::PlotlyMode plotly = report::PlotlyMode::embed);
+                                             report::PlotlyMode plotly);
 
 /// Adds the series content (summary, run table, figures) to `r`; `links` per run (empty
 /// strings: none). Returns the number of figures added. For the demo's case study.
@@ -59,6 +59,6 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
 report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& runs,
                                            const analysis::SlideSeriesSummary& summary,
                                            const std::string& report_path,
-                                           report::PlotlyMode plotly = report::PlotlyMode::embed);
+                                           report::PlotlyMode plotly);
 
 }  // namespace tribolab::app
