@@ -33,6 +33,13 @@ void add_json_flag(CLI::App& cmd, bool& flag) {
   cmd.add_flag("--json", flag, "Print the result as one JSON object on stdout");
 }
 
+std::string flag_of(std::string_view field) {
+  std::string flag = "--" + std::string(field);
+  for (char& c : flag)
+    if (c == '_') c = '-';
+  return flag;
+}
+
 int run(int argc, char** argv) {
   CLI::App app{
       "tribolab: friction and impact experiments - simulate, predict, fit, analyse tracked video.\n"
@@ -67,8 +74,11 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "tribolab: error: " << one_line(e.what()) << " (see --help)\n";
     return 2;
-  } catch (const InputError& e) {
-    std::cerr << "tribolab: error: " << one_line(e.what()) << '\n';
+  } catch (const MissingOptionError& e) {  // a required option missing: a malformed command line
+    std::cerr << "tribolab: error: " << one_line(e.message(flag_of)) << '\n';
+    return 2;
+  } catch (const Error& e) {  // InputError, SolverError: the core's fields spelled as flags
+    std::cerr << "tribolab: error: " << one_line(e.message(flag_of)) << '\n';
     return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "tribolab: error: out of memory\n";

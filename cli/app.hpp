@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <string_view>
 
 namespace tribolab::app {}  // the application layer (src/app): workflows, reports, the demo
 
@@ -31,6 +32,10 @@ void print_result(const nlohmann::json& result, bool as_json);
 
 /// Adds the `--json` flag to a command.
 void add_json_flag(CLI::App& cmd, bool& flag);
+
+/// How the command line spells a field the core names (field("time_scale") in
+/// numerics/error.hpp): "--time-scale".
+std::string flag_of(std::string_view field);
 
 /// Runs the program; returns the process exit code. Exposed for in-process tests.
 int run(int argc, char** argv);

@@ -1,27 +1,24 @@
 // `tribolab bounce analyze|fit|synth-video|synth-table`: the rugby-ball study's experiment 1 on tracked
 // data, the contact-law fit to a table of bounces, and the synthetic data for both
-// (docs/cli.md#bounce-analyze). The workflows are in src/app/bounce_analyze.* and
-// src/app/bounce_synth.*; this file binds their options to flags, and runs several files of
-// `bounce analyze` as a series (the per-file values, the parallel runs and the summary).
+// (docs/cli.md#bounce-analyze). The workflows are in src/app/bounce_analyze.*,
+// src/app/bounce_series.* (several files) and src/app/bounce_synth.*; this file binds their
+// options to flags and prints the results.
 #include "bounce_analysis_cmd.hpp"
 
 #include "app.hpp"
 #include "help_explain.hpp"
 #include "bounce_options.hpp"
+#include "incline_options.hpp"
 #include "report_option.hpp"
 #include "series_cmd.hpp"
 
 #include "app/bounce_analyze.hpp"
 #include "app/bounce_series.hpp"
 #include "app/bounce_synth.hpp"
-#include "app/report_bounce_series.hpp"
 
-#include "analysis/bounce_series.hpp"
-#include "analysis/series_plausibility.hpp"
 #include "io/text.hpp"
 
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,13 +26,6 @@ namespace tribolab::cli {
 namespace {
 
 using nlohmann::json;
-
-struct AnalyzeOpts {
-  std::vector<std::string> files;
-  BounceAnalyzeOptions o;                 ///< every field but file, floor_y, contact_duration
-  std::string floor_y, contact_duration;  ///< one value, or one per file (comma separated)
-  bool json = false;
-};
 
 /// The summary for people: the bins and outliers as dotted keys, the per-run points left out
 /// (they are the table above it).
@@ -51,101 +41,38 @@ json summary_for_text(json summary) {
   return summary;
 }
 
-/// Runs that stand apart from the series (another time scale or length calibration).
-template <class Runs>
-std::vector<std::string> bounce_series_run_warnings(const Runs& runs) {
-  std::vector<const analysis::BounceAnalysis*> analyses;
-  std::vector<std::string> sources;
-  for (const auto& run : runs) {
-    analyses.push_back(run.ok() ? &run.result->analysis : nullptr);
-    sources.push_back(run.source);
-  }
-  return analysis::bounce_series_warnings(analyses, sources);
-}
-
-/// `bounce analyze` over several files (docs/cli.md#bounce-analyze): each file as the
-/// single-file workflow reads and analyses it (app::bounce_analyze_run).
-void analyze_series(const AnalyzeOpts& opts, const std::vector<BounceAnalyzeOptions>& per) {
-  const BounceAnalyzeOptions& shared = opts.o;
-  std::vector<analysis::BounceAnalyzeOptions> checked;
-  for (const auto& p : per) checked.push_back(p.checked());
-  const auto runs = run_files<BounceAnalyzeResult>(opts.files, [&](std::size_t i, const std::string&) {
-    return bounce_analyze_run(per[i], checked[i]);
-  });
-  std::vector<analysis::BounceSeriesPoint> points;
-  std::vector<std::string> files;
-  for (const auto& run : runs) {
-    if (!run.ok()) continue;
-    points.push_back(analysis::point_of(run.result->analysis));
-    files.push_back(run.source);
-  }
-  const analysis::BounceSeriesOptions so;
-  json summary = series_counts(runs);
-  std::optional<analysis::BounceSeriesSummary> sum;
-  if (!points.empty()) {
-    sum = analysis::summarize_bounce_series(points, so);
-    summary.update(bounce_series_json(*sum, points, files, so));
-    summary["warnings"] = bounce_series_run_warnings(runs);  // docs/theory.md#plausibility-checks
-    if (!shared.bounces_out.empty()) {
-      write_bounces_out(shared.bounces_out, points, files);
-      summary["bounces_out"] = shared.bounces_out;
-    }
-    write_report_if_requested(shared.report, shared.plotly, [&] {
-      std::vector<BounceSeriesRun> report_runs;
-      for (const auto& run : runs)
-        report_runs.push_back({run.source, run.ok() ? &run.result->analysis : nullptr,
-                               run.ok() ? std::string() : run.located_error()});
-      std::string command = "tribolab bounce analyze";
-      for (const auto& f : opts.files) command += " " + f;
-      command += " --track-a " + shared.track_a + " --track-b " + shared.track_b + " --time-scale " +
-                 io::format_number(shared.time_scale);
-      if (!opts.floor_y.empty()) command += " --floor-y " + opts.floor_y;
-      if (shared.sigma_floor_y > 0) command += " --sigma-floor-y " + io::format_number(shared.sigma_floor_y);
-      if (!opts.contact_duration.empty()) command += " --contact-duration " + opts.contact_duration;
-      return bounce_analyze_series_report(command, checked.front().ball, report_runs, points, *sum, so, shared.report,
-                                          [&](std::size_t i) { return bounce_analyze_command(per[i]); }, shared.plotly);
-    });
-  }
-  print_series(series_rows(runs, [](const BounceAnalyzeResult& r) { return r.json; }),
-               opts.json ? summary : summary_for_text(summary), opts.json,
-               {"collision_angle_deg", "e_velocity", "sigma_e_velocity", "e_height", "energy_pre", "energy_post",
-                "mean_normal_force"});
-  finish_series(runs);
-}
-
 void add_analyze(CLI::App* area) {
-  auto opts = std::make_shared<AnalyzeOpts>();
-  auto& o = opts->o;
+  struct Opts {
+    BounceAnalyzeSeriesOptions o;
+    bool json = false;
+  };
+  auto opts = std::make_shared<Opts>();
+  auto& s = opts->o;
+  auto& o = s.each;
   auto* cmd = area->add_subcommand("analyze", "The rugby-ball study's experiment 1: v, omega, e and energies before/after one bounce from the two tracked tips");
   cmd->footer(help::kBounceAnalyze);
-  cmd->add_option("FILE", opts->files, "Tracker .trk/.trz, Export Data text or tidy CSV; several files: a series with a summary (the rugby-ball study's experiment 2)")->required();
+  cmd->add_option("FILE", s.files, "Tracker .trk/.trz, Export Data text or tidy CSV; several files: a series with a summary (the rugby-ball study's experiment 2)")->required();
   cmd->add_option("--track-a", o.track_a, "name of the track of tip A")->required();
   cmd->add_option("--track-b", o.track_b, "name of the track of tip B")->required();
   cmd->add_option("--time-scale", o.time_scale, "real seconds per file second (240 fps shown at 30: 0.125)");
   cmd->add_option("--length-unit", o.length_unit, "unit of the file's lengths, overriding the file (m, cm, mm, ...)");
   add_ball_options(cmd, o.ball);
-  cmd->add_option("--floor-y", opts->floor_y, "floor height in the file's frame, m; unset: from the flights and --contact-duration (needed for e_height without it); one, or one per file (comma separated)");
+  add_number(*cmd, "--floor-y", s.floor_y, "floor height in the file's frame, m; unset: from the flights and --contact-duration (needed for e_height without it); one, or one per file (comma separated)")->type_name("NUM[,NUM...]");
   cmd->add_option("--sigma-floor-y", o.sigma_floor_y, "standard uncertainty of --floor-y, m (the same for every file)");
-  cmd->add_option("--contact-duration", opts->contact_duration, "contact duration, s (to half a frame): enables mean_normal_force, and locates the floor when --floor-y is not given; one, or one per file (comma separated)");
+  add_number(*cmd, "--contact-duration", s.contact_duration, "contact duration, s (to half a frame): enables mean_normal_force, and locates the floor when --floor-y is not given; one, or one per file (comma separated)")->type_name("NUM[,NUM...]");
   cmd->add_option("--exclude", o.exclude, "points always dropped on each side of the impact (contact frames are dropped automatically)");
   cmd->add_option("--impact", o.impact, "which detected impact to analyse");
   cmd->add_option("--bounces-out", o.bounces_out, "also write the analysed bounces as a `bounce fit` table (CSV)")->type_name("FILE.csv");
   add_report_option(*cmd, o.report, o.plotly);
   add_json_flag(*cmd, opts->json);
   cmd->callback([opts] {
-    const std::size_t n = opts->files.size();
-    opts->o.checked();  // the shared options first, as one file would check them
-    const auto floor_text = per_file_values(opts->floor_y, n, "--floor-y");
-    const auto duration_text = per_file_values(opts->contact_duration, n, "--contact-duration");
-    std::vector<BounceAnalyzeOptions> per(n, opts->o);
-    for (std::size_t i = 0; i < n; ++i) {
-      per[i].file = opts->files[i];
-      if (!floor_text[i].empty()) per[i].floor_y = io::parse_double(floor_text[i], "--floor-y");
-      if (!duration_text[i].empty()) per[i].contact_duration = io::parse_double(duration_text[i], "--contact-duration");
-      per[i].checked();  // every file's values before any work
-    }
-    if (n > 1) return analyze_series(*opts, per);
-    print_result(bounce_analyze(per.front()).json, opts->json);
+    opts->o.series = cli_series_options();
+    const BounceAnalyzeSeriesResult r = bounce_analyze_series(opts->o);
+    if (opts->o.files.size() == 1) return print_result(r.json, opts->json);
+    print_series(r.json["runs"], opts->json ? r.json["summary"] : summary_for_text(r.json["summary"]), opts->json,
+                 {"collision_angle_deg", "e_velocity", "sigma_e_velocity", "e_height", "energy_pre", "energy_post",
+                  "mean_normal_force"});
+    finish_series(opts->o.files.size(), r.errors);
   });
 }
 

@@ -101,9 +101,6 @@ void run_sweep(app::BounceSweepOptions o, const SweepText& t) {
 #endif
   try {
     o.theta_deg = parse_axis(t.theta, sweep::Quantity::theta_deg, "--theta-deg");
-    if (t.omega.empty() == t.ratio.empty()) {
-      throw InputError("give exactly one of --omega (spin range) and --ratio (spin/speed range)");
-    }
     if (!t.omega.empty()) o.omega = parse_axis(t.omega, sweep::Quantity::omega, "--omega");
     if (!t.ratio.empty()) o.ratio = parse_axis(t.ratio, sweep::Quantity::ratio, "--ratio");
     // A range keeps the default value as the grid's fixed value (recorded in the file header).

@@ -1,5 +1,9 @@
 #include "command_line_check.hpp"
 
+#include "app.hpp"
+#include "app/output_paths.hpp"
+#include "numerics/error.hpp"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdlib>
@@ -51,31 +55,11 @@ std::string suggestion(const std::string& word, const std::vector<std::string>& 
   return near.empty() ? std::string() : "; did you mean '" + near + "'?";
 }
 
-struct NamedFile {
-  std::string option;  ///< "--out", or "input" for a positional argument
-  std::string path;
-};
-
 /// Two outputs into one file (or an output over an input) would leave one of them holding
-/// the other's tail after an error, against "no partial output": refuse them up front.
-void check_distinct_files(const std::vector<NamedFile>& files) {
-  namespace fs = std::filesystem;
-  const auto same = [](const std::string& a, const std::string& b) {
-    std::error_code ea, eb;
-    const fs::path pa = fs::weakly_canonical(a, ea), pb = fs::weakly_canonical(b, eb);
-    return ea || eb ? a == b : pa == pb;
-  };
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    for (std::size_t j = i + 1; j < files.size(); ++j) {
-      if (files[i].option == "input" && files[j].option == "input") continue;  // a series may repeat
-      if (!same(files[i].path, files[j].path)) continue;
-      const bool over_input = files[i].option == "input" || files[j].option == "input";
-      const std::string& out = files[i].option == "input" ? files[j].option : files[i].option;
-      throw UsageError(over_input ? out + ": '" + files[j].path + "' is also the input file; choose another name"
-                                  : files[i].option + " and " + files[j].option + " name the same file '" +
-                                        files[j].path + "'; choose two names");
-    }
-  }
+/// the other's tail after an error, against "no partial output": refuse them up front, as
+/// the application layer does (app/output_paths.hpp), as a malformed command line.
+void check_distinct_files(const std::vector<app::OutputPath>& files) {
+  if (auto e = app::same_file_problem(files); !e.empty()) throw UsageError(spell_fields(e, flag_of));
 }
 
 }  // namespace
@@ -115,7 +99,7 @@ std::string nearest_name(const std::string& word, const std::vector<std::string>
 CLI::App* check_command_line(CLI::App& root, int argc, char** argv) {
   CLI::App* level = &root;
   bool option_given = false;  // at the current level
-  std::vector<NamedFile> files;  // file-valued options and positional inputs
+  std::vector<app::OutputPath> files;  // file-valued options (by field) and positional inputs ("")
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--") break;
@@ -136,7 +120,7 @@ CLI::App* check_command_line(CLI::App& root, int argc, char** argv) {
         value = argv[++i];
       }
       if (opt->get_type_name().rfind("FILE", 0) == 0 && !value.empty()) {
-        files.push_back({name, value});
+        files.push_back({name.substr(2), value});  // "--bounces-out" -> "bounces-out" (flag_of spells it back)
       }
       continue;
     }
@@ -146,7 +130,7 @@ CLI::App* check_command_line(CLI::App& root, int argc, char** argv) {
     }
     // A positional argument: a subcommand name where the level has subcommands.
     if (level->get_subcommands({}).empty()) {
-      files.push_back({"input", arg});
+      files.push_back({"", arg});
       continue;
     }
     CLI::App* sub = nullptr;

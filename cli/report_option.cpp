@@ -1,25 +1,13 @@
 #include "report_option.hpp"
 
+#include "app/output_paths.hpp"
 #include "numerics/error.hpp"
 #include "report/html.hpp"
 
-#include <cctype>
-#include <filesystem>
 
 namespace tribolab::cli {
 
-std::string check_report_path(const std::string& path) {
-  namespace fs = std::filesystem;
-  const fs::path p(path);
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".html" && ext != ".htm") return "'" + path + "' must end in .html or .htm";
-  std::error_code ec;
-  if (fs::is_directory(p, ec)) return "'" + path + "' is a directory";
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir, ec)) return "folder '" + dir.string() + "' does not exist";
-  return {};
-}
+std::string check_report_path(const std::string& path) { return app::report_path_problem(path); }
 
 CLI::Option* add_report_option(CLI::App& cmd, std::string& path, report::PlotlyMode& plotly) {
   cmd.add_option_function<std::string>(
@@ -36,12 +24,11 @@ CLI::Option* add_report_option(CLI::App& cmd, std::string& path, report::PlotlyM
       ->type_name("FILE.html")
       ->check(CLI::Validator(
           [](std::string& value) {
-            std::string problem = check_report_path(value);
+            bool malformed = false;
+            std::string problem = app::report_path_problem(value, &malformed);
             // A wrong extension is a malformed command line (exit 2); a folder that does not
             // exist is a file-system problem like a missing --out folder (exit 1).
-            if (problem.find("folder") != std::string::npos || problem.find("directory") != std::string::npos) {
-              throw InputError("--report", problem);
-            }
+            if (!problem.empty() && !malformed) throw InputError("--report", problem);
             return problem;
           },
           "", "report path"));

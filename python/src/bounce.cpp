@@ -3,6 +3,7 @@
 #include "bind.hpp"
 
 #include "app/bounce_analyze.hpp"
+#include "app/bounce_series.hpp"
 #include "app/bounce_simulate.hpp"
 #include "app/bounce_sweep.hpp"
 
@@ -170,48 +171,64 @@ void bind_bounce(py::module_& m) {
               " (empty unless trajectory, report or keep_trajectory)");
   }
   {
-    Command<app::BounceAnalyzeOptions> c(m, "analyze",
-        "One tracked bounce from the two tips of the ball (`tribolab bounce analyze`, the rugby-ball study's "
-        "experiment 1): velocities, spin, e and energies before and after, with uncertainties.");
-    TRIBOLAB_ARG(c, file);
-    TRIBOLAB_OPT(c, track_a);
-    TRIBOLAB_OPT(c, track_b);
-    TRIBOLAB_OPT(c, time_scale);
-    TRIBOLAB_OPT(c, length_unit);
-    ball_options(c);
+    Command<app::BounceAnalyzeSeriesOptions> c(m, "analyze",
+        "Tracked bounces from the two tips of the ball (`tribolab bounce analyze`, the rugby-ball study's "
+        "experiment 1): velocities, spin, e and energies before and after, with uncertainties; "
+        "several files: a series with a summary (the rugby-ball study's experiment 2).");
+    TRIBOLAB_ARG(c, files);
+    TRIBOLAB_OPT(c, each.track_a);
+    TRIBOLAB_OPT(c, each.track_b);
+    TRIBOLAB_OPT(c, each.time_scale);
+    TRIBOLAB_OPT(c, each.length_unit);
+    TRIBOLAB_OPT(c, each.ball.ball.a);
+    TRIBOLAB_OPT(c, each.ball.ball.b);
+    TRIBOLAB_OPT(c, each.ball.ball.mass);
+    TRIBOLAB_OPT(c, each.ball.ball.inertia);
     TRIBOLAB_OPT(c, floor_y);
-    TRIBOLAB_OPT(c, sigma_floor_y);
+    TRIBOLAB_OPT(c, each.sigma_floor_y);
     TRIBOLAB_OPT(c, contact_duration);
-    TRIBOLAB_OPT(c, exclude);
-    TRIBOLAB_OPT(c, impact);
-    TRIBOLAB_OPT(c, bounces_out);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
-    c.def(&app::bounce_analyze,
-          [](const app::BounceAnalyzeResult& r, py::dict& d) {
+    TRIBOLAB_OPT(c, each.exclude);
+    TRIBOLAB_OPT(c, each.impact);
+    TRIBOLAB_OPT(c, each.bounces_out);
+    TRIBOLAB_OPT(c, series.threads);
+    TRIBOLAB_OPT(c, each.report);
+    TRIBOLAB_OPT(c, each.plotly);
+    c.def(&app::bounce_analyze_series,
+          [](const app::BounceAnalyzeSeriesResult& r, py::dict& d) {
             using track::RigidBodyRow;
-            const auto& rows = r.analysis.body.rows;
-            py::dict body;
-            body["t"] = of_each(rows, [](const RigidBodyRow& b) { return b.t; });
-            body["x"] = of_each(rows, [](const RigidBodyRow& b) { return b.xc; });
-            body["y"] = of_each(rows, [](const RigidBodyRow& b) { return b.yc; });
-            body["theta"] = of_each(rows, [](const RigidBodyRow& b) { return b.theta; });
-            body["length"] = of_each(rows, [](const RigidBodyRow& b) { return b.length; });
-            body["omega"] = of_each(rows, [](const RigidBodyRow& b) { return b.omega; });
-            body["sigma_omega"] = of_each(rows, [](const RigidBodyRow& b) { return b.sigma_omega; });
-            d["body"] = body;
-            for (const auto& [name, seg] : {std::pair{"flight_pre", &r.analysis.pre}, {"flight_post", &r.analysis.post}}) {
-              py::dict f;
-              f["t"] = array_1d(seg->grid_t);
-              f["x"] = array_1d(seg->grid_x);
-              f["y"] = array_1d(seg->grid_y);
-              f["theta"] = array_1d(seg->grid_theta);
-              d[name] = f;
+            py::list fits;
+            for (const auto& run : r.runs) {
+              if (!run.result) {
+                fits.append(py::none());
+                continue;
+              }
+              const auto& a = run.result->analysis;
+              py::dict f, body;
+              const auto& rows = a.body.rows;
+              body["t"] = of_each(rows, [](const RigidBodyRow& b) { return b.t; });
+              body["x"] = of_each(rows, [](const RigidBodyRow& b) { return b.xc; });
+              body["y"] = of_each(rows, [](const RigidBodyRow& b) { return b.yc; });
+              body["theta"] = of_each(rows, [](const RigidBodyRow& b) { return b.theta; });
+              body["length"] = of_each(rows, [](const RigidBodyRow& b) { return b.length; });
+              body["omega"] = of_each(rows, [](const RigidBodyRow& b) { return b.omega; });
+              body["sigma_omega"] = of_each(rows, [](const RigidBodyRow& b) { return b.sigma_omega; });
+              f["body"] = body;
+              for (const auto& [name, seg] : {std::pair{"flight_pre", &a.pre}, {"flight_post", &a.post}}) {
+                py::dict g;
+                g["t"] = array_1d(seg->grid_t);
+                g["x"] = array_1d(seg->grid_x);
+                g["y"] = array_1d(seg->grid_y);
+                g["theta"] = array_1d(seg->grid_theta);
+                f[name] = g;
+              }
+              fits.append(f);
             }
+            d["fits"] = fits;
           },
-          "body: dict of arrays t (s), x, y (m, centre), theta (rad, A to B, unwrapped), length (m, "
-          "A-B), omega, sigma_omega (rad/s, local spin); flight_pre, flight_post: the fitted flights "
-          "sampled over their spans, dicts of arrays t (s), x, y (m), theta (rad)");
+          "fits: one per file (None where it failed), dicts of body: arrays t (s), x, y (m, centre), "
+          "theta (rad, A to B, unwrapped), length (m, A-B), omega, sigma_omega (rad/s, local spin); "
+          "flight_pre, flight_post: the fitted flights sampled over their spans, arrays t (s), x, y "
+          "(m), theta (rad)");
   }
   {
     Command<app::BounceFitOptions> c(m, "fit",

@@ -10,7 +10,7 @@ namespace tribolab::python {
 
 SelftestResult selftest_echo(const SelftestOptions& o) {
   if (o.n < 1 || o.n > 100) {
-    throw InputError("--n", "must be in [1, 100], got " + std::to_string(o.n) + "\nsecond line");
+    throw InputError(tribolab::field("n"), "must be in [1, 100], got " + std::to_string(o.n) + "\nsecond line");
   }
   SelftestResult r;
   r.json = nlohmann::json::parse(o.json_text);

@@ -3,6 +3,7 @@ user would, to compare every function with the command line's --json output."""
 import json
 import os
 import pathlib
+import re
 import subprocess
 
 import pytest
@@ -15,6 +16,12 @@ def _binary():
     if not b:
         pytest.fail("TRIBOLAB_BINARY is not set (run the tests through ctest)")
     return b
+
+
+def as_keywords(message):
+    """A command-line error message as Python raises it: each option the core names as a field
+    (docs/design.md "Errors") spelled as the keyword, `--time-scale` -> `time_scale`."""
+    return re.sub(r"(?<![\w-])--([A-Za-z][\w-]*)", lambda m: m.group(1).replace("-", "_"), message)
 
 
 class Cli:

@@ -5,7 +5,7 @@ import inspect
 import numpy as np
 import pytest
 
-from conftest import assert_same_as_cli
+from conftest import assert_same_as_cli, as_keywords
 import tribolab
 
 
@@ -42,10 +42,10 @@ def test_drop_equals_cli(cli):
 def test_bad_input_is_value_error_with_the_cli_message(cli):
     with pytest.raises(ValueError) as e:
         tribolab.bounce.simulate(vx=0.5, vy=4)
-    assert str(e.value) == cli.error("bounce", "simulate", "--vx", 0.5, "--vy", 4)
+    assert str(e.value) == as_keywords(cli.error("bounce", "simulate", "--vx", 0.5, "--vy", 4))
     with pytest.raises(ValueError) as e:
         tribolab.bounce.drop(height=-1)
-    assert str(e.value) == cli.error("bounce", "drop", "--height", -1)
+    assert str(e.value) == as_keywords(cli.error("bounce", "drop", "--height", -1))
 
 
 def test_unknown_keyword_is_type_error():
@@ -64,19 +64,41 @@ def test_help_lists_the_law_with_units():
 def test_analyze_equals_cli(cli, demo):
     f = demo / "bounce" / "ordinary.txt"
     kw = dict(track_a="A", track_b="B", time_scale=0.125)
-    r = tribolab.bounce.analyze(str(f), **kw)
+    r = tribolab.bounce.analyze([str(f)], **kw)
     c = cli("bounce", "analyze", f, "--track-a", "A", "--track-b", "B", "--time-scale", 0.125)
     assert_same_as_cli(r, c)
-    b = r["body"]
+    (fit,) = r["fits"]
+    b = fit["body"]
     assert b["t"].shape == b["theta"].shape == b["omega"].shape and len(b["t"]) > 20
     # The tips are one rigid body: their distance is the ball's length 2a within the marking
     # noise (0.29 m for the default ball; 5 mm allows a few pixels of clicking).
     assert np.median(b["length"]) == pytest.approx(0.29, abs=5e-3)
-    pre, post = r["flight_pre"], r["flight_post"]
+    pre, post = fit["flight_pre"], fit["flight_post"]
     assert pre["t"].max() <= post["t"].min()  # the fitted flights lie on either side of the impact
     with pytest.raises(ValueError) as e:
-        tribolab.bounce.analyze(str(f), track_a="A", track_b="Q", time_scale=0.125)
-    assert str(e.value) == cli.error("bounce", "analyze", f, "--track-a", "A", "--track-b", "Q", "--time-scale", 0.125)
+        tribolab.bounce.analyze([str(f)], track_a="A", track_b="Q", time_scale=0.125)
+    assert str(e.value) == as_keywords(cli.error("bounce", "analyze", f, "--track-a", "A", "--track-b", "Q", "--time-scale", 0.125))
+
+
+def test_analyze_several_files_is_the_cli_series(cli, demo, tmp_path):
+    # seed 001 experiment 2: several bounces, per-file floor heights, as `bounce analyze F1 F2 ...`.
+    files = sorted((demo / "bounce_series").glob("*.txt"))[:3]
+    assert len(files) == 3
+    out = tmp_path / "bounces.csv"
+    r = tribolab.bounce.analyze([str(f) for f in files], track_a="A", track_b="B", time_scale=0.125,
+                                floor_y=[0.0], contact_duration=[0.004, 0.004, 0.004], bounces_out=str(out),
+                                threads=2)
+    out_cli = tmp_path / "bounces_cli.csv"
+    c = cli("bounce", "analyze", *files, "--track-a", "A", "--track-b", "B", "--time-scale", 0.125,
+            "--floor-y", 0, "--contact-duration", "0.004,0.004,0.004", "--bounces-out", out_cli)
+    r_json = {k: v for k, v in r.items() if k != "fits"}
+    r_json["summary"] = dict(r_json["summary"], bounces_out=str(out_cli))  # the file named differs
+    assert r_json == c
+    assert out.read_text() == out_cli.read_text()
+    assert len(r["fits"]) == 3 and all(f is not None for f in r["fits"])
+    assert r["summary"]["n_runs"] == 3
+    with pytest.raises(ValueError, match="contact_duration: gives 2 values for 3 files"):
+        tribolab.bounce.analyze([str(f) for f in files], track_a="A", track_b="B", contact_duration=[0.004, 0.004])
 
 
 def test_fit_equals_cli(cli, demo):
@@ -104,8 +126,8 @@ def test_sweep_map_is_shaped_by_its_axes(cli, tmp_path):
     assert [float(x["e"]) for x in rows] == e.ravel().tolist()
     with pytest.raises(ValueError) as err:
         tribolab.bounce.sweep(out=str(tmp_path / "bad.csv"), theta_deg=(100, 160, 0), omega=(30, 50, 3))
-    assert str(err.value) == cli.error("bounce", "sweep", "--theta-deg", "100:160:0", "--omega", "30:50:3",
-                                       "--out", tmp_path / "bad.csv")
+    assert str(err.value) == as_keywords(cli.error("bounce", "sweep", "--theta-deg", "100:160:0", "--omega", "30:50:3",
+                                       "--out", tmp_path / "bad.csv"))
     with pytest.raises(TypeError):
         tribolab.bounce.sweep(out=str(tmp_path / "x.csv"), theta_deg="100:160:4", omega=(30, 50, 3))
 

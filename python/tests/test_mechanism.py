@@ -33,8 +33,9 @@ def test_keywords_reach_the_nested_fields():
 def test_input_error_is_value_error_with_the_cli_message():
     with pytest.raises(ValueError) as e:
         _selftest.echo([], n=0)
-    # InputError("--n", ...) as cli/app.cpp prints it: one line.
-    assert str(e.value) == "--n: must be in [1, 100], got 0 second line"
+    # InputError(field("n"), ...): one line, the field named as the keyword (the command line
+    # would print --n).
+    assert str(e.value) == "n: must be in [1, 100], got 0 second line"
 
 
 def test_unknown_keyword_and_wrong_type_are_type_errors():

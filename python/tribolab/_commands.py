@@ -49,7 +49,7 @@ def _doc(spec):
               "    " + (spec["returns"] or "no arrays"),
               "", "Raises", "------",
               "ValueError",
-              "    Bad input, with the command line's message (naming the option as --spelled).",
+              "    Bad input, with the command line's message (naming the option as its keyword).",
               "TypeError",
               "    An unknown keyword or a value of the wrong type."]
     return "\n".join(lines)

@@ -184,7 +184,7 @@ const track::Impact& choose_impact(const track::Track& a, const track::Track& b,
                      std::to_string(r.impacts.noise_y * 1000).substr(0, 5) + " mm)");
   }
   if (static_cast<std::size_t>(options.impact) > r.impacts.impacts.size()) {
-    throw InputError("--impact", "asked for impact " + std::to_string(options.impact) + " but only " +
+    throw InputError(field("impact"), "asked for impact " + std::to_string(options.impact) + " but only " +
                                      std::to_string(r.impacts.impacts.size()) + " found");
   }
   r.impact_used = static_cast<std::size_t>(options.impact - 1);
@@ -449,9 +449,9 @@ void require_plausible_floor(int pre_trimmed, int post_trimmed, const BounceAnal
   for (auto [trimmed, now, which] : {std::tuple{pre_trimmed, r.pre.n_points, "pre"}, {post_trimmed, r.post.n_points, "post"}}) {
     const int lost = trimmed - now;
     if (lost > std::max(3, trimmed / 10)) {
-      const std::string what = r.floor_method == FloorMethod::given              ? "--floor-y"
-                               : r.floor_method == FloorMethod::contact_duration ? "--contact-duration"
-                                                                                 : "floor";
+      const std::string what = r.floor_method == FloorMethod::given              ? field("floor_y")
+                               : r.floor_method == FloorMethod::contact_duration ? field("contact_duration")
+                                                                                 : std::string("floor");
       throw InputError(what, "puts the ball on the floor during " + std::to_string(lost) + " frames of the " + which +
                                  "-impact flight that move as free flight; check the floor's height (file frame, m) and the contact duration");
     }
@@ -462,10 +462,7 @@ void require_plausible_floor(int pre_trimmed, int post_trimmed, const BounceAnal
 
 BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip_b,
                               const BounceAnalyzeOptions& options) {
-  if (auto e = options.validate(); !e.empty()) {
-    const auto colon = e.find(':');
-    throw InputError("--" + e.substr(0, colon), colon == std::string::npos ? e : e.substr(colon + 2));
-  }
+  if (auto e = options.validate(); !e.empty()) throw input_error_of(e);
   BounceAnalysis r;
   require_common_frames(tip_a, tip_b);
   // Wild frames the impact detector would take for impacts (a hand in the picture) are left

@@ -23,7 +23,7 @@ std::string BounceFitOptions::validate() const {
     for (const char* k : kNames) known = known || name == k;
     if (!known) return "fix: unknown parameter '" + name + "' (K, n, D, e, mu)";
     if (restitution_model && name == "D") return "fix: D is not a parameter of a restitution-based fit (use e)";
-    if (!restitution_model && name == "e") return "fix: e is a parameter only with --restitution";
+    if (!restitution_model && name == "e") return "fix: e is a parameter only with " + field("restitution");
     if (!std::isfinite(v)) return "fix: " + name + " must be finite";
     if ((name == "K" || name == "D") && !(v > 0)) return "fix: " + name + " must be positive";
     if (name == "n" && !(v >= 1 && v <= 3)) return "fix: n must lie in [1, 3]";
@@ -62,10 +62,7 @@ BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
 }
 
 BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitOptions& o) {
-  if (auto e = o.validate(); !e.empty()) {
-    const auto colon = e.find(':');
-    throw InputError("--" + e.substr(0, colon), e.substr(colon + 2));
-  }
+  if (auto e = o.validate(); !e.empty()) throw input_error_of(e);
   const bool hooke = o.model == bounce::NormalModel::hooke;
   const bool hertz = o.model == bounce::NormalModel::hertz;
   auto fixed_or = [&](const char* name, double v) {
@@ -84,7 +81,7 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   }
   params[3] = {"mu", fixed_or("mu", o.mu0), 0.0, 3.0, o.fixed.count("mu") > 0};
   if (hooke && o.fixed.count("n") && o.fixed.at("n") != 1.0)
-    throw InputError("--fix", "the hooke law is linear (n = 1)");
+    throw InputError(field("fix"), "the hooke law is linear (n = 1)");
 
   auto spec_of = [&](const double* p) {
     bounce::NormalLawSpec s;
@@ -176,7 +173,7 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   if (!f.ok()) {
     std::string why = f.message;
     if (f.status == numerics::FitStatus::not_identifiable)
-      why = "the data cannot determine all free parameters (" + f.message + "); fix some with --fix";
+      why = "the data cannot determine all free parameters (" + f.message + "); fix some with " + field("fix");
     numerics::throw_fit_failure(f, "", "bounce fit failed: " + why);
   }
   const auto& v = f.values;

@@ -16,11 +16,7 @@
 namespace tribolab::analysis {
 
 namespace {
-void throw_invalid(const std::string& e) {
-  const auto colon = e.find(':');
-  if (colon != std::string::npos && colon < 24) throw InputError("--" + e.substr(0, colon), e.substr(colon + 2));
-  throw InputError(e);
-}
+[[noreturn]] void throw_invalid(const std::string& e) { throw input_error_of(e); }
 }  // namespace
 
 std::string SynthVideoOptions::validate() const {

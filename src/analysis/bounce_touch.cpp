@@ -177,9 +177,9 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
     const std::string where = std::string(pre ? "pre" : "post") + "-impact flight (its lowest point is at y = " +
                               std::to_string(h_imp).substr(0, 7) + " m at the impact time)";
     if (method == FloorMethod::given)
-      throw InputError("--floor-y", "the floor at y = " + std::to_string(*options.floor_y).substr(0, 7) +
+      throw InputError(field("floor_y"), "the floor at y = " + std::to_string(*options.floor_y).substr(0, 7) +
                                         " m does not meet the fitted " + where + "; check the floor's height and the track's origin");
-    throw InputError("the first touch and separation could not be located on the fitted " + where + "; give --floor-y");
+    throw InputError("the first touch and separation could not be located on the fitted " + where + "; give " + field("floor_y"));
   }
   // Linear propagation, central differences with steps of 1e-3 standard deviations.
   Eigen::Matrix<double, kOuts, kParams> J = Eigen::Matrix<double, kOuts, kParams>::Zero();

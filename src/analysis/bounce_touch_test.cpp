@@ -218,7 +218,7 @@ TEST(BounceTouch, FloorFarFromTheFlightsIsAnError) {
       analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), ao);
       ADD_FAILURE() << "no error for floor " << floor;
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("--floor-y"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("floor_y"), std::string::npos) << e.what();
     }
   }
 }

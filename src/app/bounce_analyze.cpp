@@ -1,6 +1,8 @@
 #include "app/study_citation.hpp"
 #include "app/bounce_analyze.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/report_bounce_analysis.hpp"
 
 #include "io/atomic_file.hpp"
@@ -92,34 +94,26 @@ json bounce_analysis_json(const BounceAnalysis& r) {
   return j;
 }
 
-void check_bounces_out_path(const std::string& path) {
-  if (path.empty()) return;
-  namespace fs = std::filesystem;
-  const fs::path p(path);
-  std::error_code ec;
-  if (fs::is_directory(p, ec)) throw InputError("--bounces-out", "'" + path + "' is a directory");
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir, ec)) throw InputError("--bounces-out", "folder '" + dir.string() + "' does not exist");
-}
+void check_bounces_out_path(const std::string& path) { check_output_paths({}, {{"bounces_out", path}}); }
 
 analysis::BounceAnalyzeOptions BounceAnalyzeOptions::checked() const {
   analysis::BounceAnalyzeOptions o;
   o.ball = ball.ball;
   checked_ball(o.ball);
-  check_range(time_scale, ranges::time_scale, "--time-scale");  // docs/cli.md#physical-ranges
-  if (!std::isfinite(time_scale) || !(time_scale > 0)) throw InputError("--time-scale", "must be positive");
+  check_range(time_scale, ranges::time_scale, field("time_scale"));  // docs/cli.md#physical-ranges
+  if (!std::isfinite(time_scale) || !(time_scale > 0)) throw InputError(field("time_scale"), "must be positive");
   if (!(std::isfinite(sigma_floor_y) && sigma_floor_y >= 0 && sigma_floor_y < 1))
-    throw InputError("--sigma-floor-y", "must lie in [0, 1) m");
-  if (track_a == track_b) throw InputError("--track-b", "must name a different track than --track-a");
-  check_bounces_out_path(bounces_out);
+    throw InputError(field("sigma_floor_y"), "must lie in [0, 1) m");
+  if (track_a == track_b) throw InputError(field("track_b"), "must name a different track than " + field("track_a"));
+  check_output_paths({file}, {{"bounces_out", bounces_out}, {"report", report}});  // before any work
   if (floor_y) {
-    check_range(*floor_y, ranges::position, "--floor-y");  // docs/cli.md#physical-ranges
-    check_finite(*floor_y, "--floor-y");
+    check_range(*floor_y, ranges::position, field("floor_y"));  // docs/cli.md#physical-ranges
+    check_finite(*floor_y, field("floor_y"));
   }
   if (contact_duration) {
     const double T = *contact_duration;
-    check_range(T, PhysicalRange{0, 10, "s", true}, "--contact-duration");
-    if (!(std::isfinite(T) && T > 0)) throw InputError("--contact-duration", "must be a positive number of seconds");
+    check_range(T, PhysicalRange{0, 10, "s", true}, field("contact_duration"));
+    if (!(std::isfinite(T) && T > 0)) throw InputError(field("contact_duration"), "must be a positive number of seconds");
   }
   o.floor_y = floor_y;
   o.sigma_floor_y = sigma_floor_y;
@@ -183,6 +177,7 @@ BounceAnalyzeResult bounce_analyze(const BounceAnalyzeOptions& opts) {
 }
 
 BounceFitResult bounce_fit(const BounceFitOptions& opts) {
+  check_output_paths({opts.file}, {{"report", opts.report}});  // before any work (app/output_paths.hpp)
   analysis::BounceFitOptions o;
   o.ball = opts.ball.ball;
   checked_ball(o.ball);
@@ -190,32 +185,32 @@ BounceFitResult bounce_fit(const BounceFitOptions& opts) {
   o.restitution_model = opts.restitution;
   o.friction.kind = parsed_friction(opts.friction);
   o.friction.slip_scale = opts.slip_scale;
-  check_finite(o.friction.slip_scale, "--slip-scale");
+  check_finite(o.friction.slip_scale, field("slip_scale"));
   o.K0 = opts.K0;
   o.n0 = opts.n0;
   o.D0 = opts.D0;
   o.e0 = opts.e0;
   o.mu0 = opts.mu0;
   o.loss_scale = opts.loss_scale;
-  for (auto [v, name] : {std::pair{o.K0, "--K0"}, {o.n0, "--n0"}, {o.D0, "--D0"}, {o.e0, "--e0"}, {o.mu0, "--mu0"}, {o.loss_scale, "--loss-scale"}})
+  for (auto [v, name] : {std::pair{o.K0, field("K0")}, {o.n0, field("n0")}, {o.D0, field("D0")}, {o.e0, field("e0")}, {o.mu0, field("mu0")}, {o.loss_scale, field("loss_scale")}})
     check_finite(v, name);
-  check_range(o.K0, ranges::stiffness, "--K0");  // docs/cli.md#physical-ranges
-  check_range(o.D0, PhysicalRange{0, 1e12, "N s/m^(n+1)", true}, "--D0");
-  check_range(o.loss_scale, PhysicalRange{0, 1e3, "m/s", true}, "--loss-scale");
-  if (!(o.n0 >= 1 && o.n0 <= 3)) throw InputError("--n0", "must lie in [1, 3]");
-  if (!(o.e0 > 0.02 && o.e0 <= 1)) throw InputError("--e0", "must lie in (0.02, 1]");
-  if (!(o.mu0 >= 0 && o.mu0 <= 3)) throw InputError("--mu0", "must lie in [0, 3]");
+  check_range(o.K0, ranges::stiffness, field("K0"));  // docs/cli.md#physical-ranges
+  check_range(o.D0, PhysicalRange{0, 1e12, "N s/m^(n+1)", true}, field("D0"));
+  check_range(o.loss_scale, PhysicalRange{0, 1e3, "m/s", true}, field("loss_scale"));
+  if (!(o.n0 >= 1 && o.n0 <= 3)) throw InputError(field("n0"), "must lie in [1, 3]");
+  if (!(o.e0 > 0.02 && o.e0 <= 1)) throw InputError(field("e0"), "must lie in (0.02, 1]");
+  if (!(o.mu0 >= 0 && o.mu0 <= 3)) throw InputError(field("mu0"), "must lie in [0, 3]");
   if (opts.loss == "huber") o.loss = numerics::RobustLoss::huber;
   else if (opts.loss == "cauchy") o.loss = numerics::RobustLoss::cauchy;
   else if (opts.loss == "none") o.loss = numerics::RobustLoss::none;
-  else throw InputError("--loss", "unknown loss '" + opts.loss + "' (huber, cauchy, none)");
+  else throw InputError(field("loss"), "unknown loss '" + opts.loss + "' (huber, cauchy, none)");
   for (const auto& f : opts.fix) {
     const auto eq = f.find('=');
-    if (eq == std::string::npos) throw InputError("--fix", "expected NAME=VALUE, got '" + f + "'");
+    if (eq == std::string::npos) throw InputError(field("fix"), "expected NAME=VALUE, got '" + f + "'");
     const std::string name = f.substr(0, eq);
     if (name != "K" && name != "n" && name != "D" && name != "e" && name != "mu")
-      throw InputError("--fix", "unknown parameter '" + name + "' (K, n, D, e, mu)");
-    o.fixed[name] = io::parse_double(f.substr(eq + 1), "--fix " + name);
+      throw InputError(field("fix"), "unknown parameter '" + name + "' (K, n, D, e, mu)");
+    o.fixed[name] = io::parse_double(f.substr(eq + 1), field("fix") + " " + name);
   }
   BounceFitResult res;
   res.rows = io::read_bounce_table(opts.file);

@@ -1,7 +1,8 @@
 // `tribolab bounce analyze` (one file) and `bounce fit` as workflows of the application layer
 // (docs/design.md, "Application layer: bounce"; docs/cli.md#bounce-analyze): seed 001's
 // experiment 1 on two tracked tips, and the contact-law fit to a table of bounces. Errors are
-// InputError naming the option as the command line spells it; nothing is printed.
+// InputError naming the field (numerics/error.hpp field(): --time-scale on the command line,
+// time_scale in Python); nothing is printed.
 #pragma once
 
 #include "app/bounce_options.hpp"

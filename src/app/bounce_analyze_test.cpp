@@ -71,10 +71,10 @@ TEST(BounceTruthLaw, ModelOverridesOnlyWhatItFixes) {
   EXPECT_EQ(s.n, 1.51);
   EXPECT_EQ(s.D, 0.0);
   law.model = "nope";
-  EXPECT_NE(error_of([&] { law.apply(s, f); }).find("--model: unknown model 'nope'"), std::string::npos);
+  EXPECT_NE(error_of([&] { law.apply(s, f); }).find("model: unknown model 'nope'"), std::string::npos);
   law.model = "hertz";
   law.friction = "sticky";
-  EXPECT_NE(error_of([&] { law.apply(s, f); }).find("--friction"), std::string::npos);
+  EXPECT_NE(error_of([&] { law.apply(s, f); }).find("friction"), std::string::npos);
 }
 
 // A generated bounce analysed back: the spin before and after within 5 standard errors of the
@@ -104,21 +104,21 @@ TEST(BounceAnalyze, ErrorsNameTheOption) {
   BounceAnalyzeOptions a;
   a.file = "none.txt";
   a.track_a = a.track_b = "A";
-  EXPECT_NE(error_of([&] { bounce_analyze(a); }).find("--track-b"), std::string::npos);
+  EXPECT_NE(error_of([&] { bounce_analyze(a); }).find("track_b"), std::string::npos);
   a.track_b = "B";
   a.contact_duration = -1;
-  EXPECT_NE(error_of([&] { bounce_analyze(a); }).find("--contact-duration"), std::string::npos);
+  EXPECT_NE(error_of([&] { bounce_analyze(a); }).find("contact_duration"), std::string::npos);
   BounceFitOptions f;
   f.file = "none.csv";
   f.loss = "square";
-  EXPECT_NE(error_of([&] { bounce_fit(f); }).find("--loss"), std::string::npos);
+  EXPECT_NE(error_of([&] { bounce_fit(f); }).find("loss"), std::string::npos);
   f.loss = "huber";
   f.fix = {"q=1"};
-  EXPECT_NE(error_of([&] { bounce_fit(f); }).find("--fix"), std::string::npos);
+  EXPECT_NE(error_of([&] { bounce_fit(f); }).find("fix"), std::string::npos);
   BounceRenderOptions r;
   r.out = "none.avi";
   r.size = "640by480";
-  EXPECT_NE(error_of([&] { bounce_render(r); }).find("--size"), std::string::npos);
+  EXPECT_NE(error_of([&] { bounce_render(r); }).find("size"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists("none.avi"));
 }
 

@@ -23,7 +23,7 @@ const char* kind_word(BounceCellKind k) { return k == BounceCellKind::impact ? "
 AngleConvention convention_of(const std::string& angle) {
   if (angle == "collision") return AngleConvention::collision;
   if (angle == "orientation") return AngleConvention::orientation;
-  throw InputError("--angle", "unknown angle convention '" + angle + "' (collision, orientation)");
+  throw InputError(field("angle"), "unknown angle convention '" + angle + "' (collision, orientation)");
 }
 
 }  // namespace
@@ -47,7 +47,7 @@ BounceCell make_bounce_cell(const BounceCellOptions& o, BounceCellKind kind) {
   cell.friction = o.law.friction_model(0.5);  // each cell sets its own mu
   cell.options = o.law.contact(checked_g(o.g, /*zero_allowed=*/true));  // cells start at touch
   cell.convention = convention_of(o.angle);
-  check_range(o.vx, ranges::velocity, "--vx");  // docs/cli.md#physical-ranges
+  check_range(o.vx, ranges::velocity, field("vx"));  // docs/cli.md#physical-ranges
   if (o.spin_sign != 1 && o.spin_sign != -1) throw InputError("spin_sign", "must be +1 or -1");
   cell.vx = o.vx;
   cell.direction = o.vx < 0 ? -1 : 1;  // as collision_angle_deg in `bounce simulate`
@@ -127,7 +127,7 @@ sweep::CellModel bounce_cell_model(const BounceCell& cell) {
 
 ParsedBounceCell parse_bounce_cell_description(const std::string& description) {
   auto refuse = [&](const std::string& why) {
-    return InputError("--report", "cannot rebuild the physics of the sweep file (" + why + "): '" +
+    return InputError(field("report"), "cannot rebuild the physics of the sweep file (" + why + "): '" +
                                       description.substr(0, 60) + "'");
   };
   ParsedBounceCell p;
@@ -181,7 +181,7 @@ ParsedBounceCell parse_bounce_cell_description(const std::string& description) {
       try {
         it->second(o, io::parse_double(value, key));
       } catch (const InputError& e) {
-        throw refuse(e.what());
+        throw refuse(marked_message(e));
       }
     }
   }
@@ -192,7 +192,7 @@ sweep::CellModel bounce_cell_model_from_description(const std::string& descripti
   const ParsedBounceCell p = parse_bounce_cell_description(description);
   sweep::CellModel model = bounce_cell_model(make_bounce_cell(p.options, p.kind));
   if (model.description != description) {
-    throw InputError("--report", "cannot rebuild the physics of the sweep file (it does not read back to the same "
+    throw InputError(field("report"), "cannot rebuild the physics of the sweep file (it does not read back to the same "
                                  "options): '" + description.substr(0, 60) + "'");
   }
   return model;

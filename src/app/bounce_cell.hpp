@@ -78,7 +78,7 @@ struct BounceCell {
 /// first contact phase); contact: vx, vy, omega_out, e.
 const std::vector<std::string>& bounce_cell_outputs(BounceCellKind kind);
 
-/// The checked cell of the options; InputError naming the option ("--vx: ...") otherwise.
+/// The checked cell of the options; InputError naming the field (field("vx")) otherwise.
 BounceCell make_bounce_cell(const BounceCellOptions& options, BounceCellKind kind = BounceCellKind::impact);
 
 /// The sweep's cell model of a cell (outputs, description, mass and inertia for the energy

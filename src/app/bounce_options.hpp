@@ -2,8 +2,8 @@
 // law and the integrator tolerance (docs/cli.md#bounce). One definition so that defaults and
 // error messages agree across simulate, drop, contact-time, sweep, analyze and fit, and
 // across the front ends (the command line binds these fields in cli/bounce_options.hpp; the
-// Python module takes them as keywords). Errors name the option as the command line spells
-// it ("--mu: ...").
+// Python module takes them as keywords). Errors name the field (field("mu"),
+// numerics/error.hpp), which each front end spells: "--mu: ..." on the command line.
 #pragma once
 
 #include "bounce/contact.hpp"
@@ -23,9 +23,9 @@ bounce::NormalModel parsed_model(const std::string& name);
 bounce::FrictionKind parsed_friction(const std::string& name);
 
 /// Throws InputError naming `option` unless v is finite.
-void check_finite(double v, const char* option);
+void check_finite(double v, const std::string& option);
 
-/// Turns "field: message" from a validate() into an InputError naming the option --field.
+/// Turns "field: message" from a validate() into an InputError naming the field (input_error_of).
 [[noreturn]] void invalid(const std::string& message);
 
 /// g within the physical range, else an InputError naming --g: [0.01, 1000] m/s^2 where a

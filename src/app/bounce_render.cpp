@@ -1,4 +1,6 @@
 // `bounce render` (src/app/bounce_synth.hpp): film a simulated throw to a video with its truth
+
+#include "app/output_paths.hpp"
 // (docs/cli.md#bounce-render, docs/theory.md#rendering).
 #include "app/bounce_synth.hpp"
 
@@ -32,10 +34,10 @@ std::pair<int, int> parse_size(const std::string& text) {
     w = std::stoi(text.substr(0, x), &used_w);
     h = std::stoi(text.substr(x + 1), &used_h);
   } catch (const std::exception&) {
-    throw InputError("--size", "expected WIDTHxHEIGHT in pixels (e.g. 640x480), got '" + text + "'");
+    throw InputError(field("size"), "expected WIDTHxHEIGHT in pixels (e.g. 640x480), got '" + text + "'");
   }
   if (used_w != x || used_h != text.size() - x - 1) {
-    throw InputError("--size", "expected WIDTHxHEIGHT in pixels (e.g. 640x480), got '" + text + "'");
+    throw InputError(field("size"), "expected WIDTHxHEIGHT in pixels (e.g. 640x480), got '" + text + "'");
   }
   return {w, h};
 }
@@ -44,7 +46,7 @@ video::RenderOptions::Background parse_background(const std::string& name) {
   if (name == "plain") return video::RenderOptions::Background::plain;
   if (name == "gradient") return video::RenderOptions::Background::gradient;
   if (name == "texture") return video::RenderOptions::Background::texture;
-  throw InputError("--background", "unknown background '" + name + "' (plain, gradient, texture)");
+  throw InputError(field("background"), "unknown background '" + name + "' (plain, gradient, texture)");
 }
 
 // The project Tracker opens with the rendered video: the clip is every frame, frame k at
@@ -76,16 +78,7 @@ std::string exact(double v) { return fmt::format("{}", v); }
 video::ThrowFilmOptions film_options(const BounceRenderOptions& opts) {
   video::ThrowFilmOptions o;
   auto& m = o.motion;
-  m.ball = opts.ball.ball;
-  checked_ball(m.ball);
-  opts.law.apply(m.law, m.friction);
-  m.height = opts.height;
-  m.theta_deg = opts.theta_deg;
-  m.omega = opts.omega;
-  m.vx = opts.vx;
-  m.vy = opts.vy;
-  m.after = opts.after;
-  m.seed = opts.seed;
+  apply_throw(opts, m);
   o.sticker = opts.sticker;
   auto& r = o.render;
   r.fps = opts.fps;
@@ -93,9 +86,9 @@ video::ThrowFilmOptions film_options(const BounceRenderOptions& opts) {
   r.shutter_fraction = opts.shutter;
   r.blur_samples = opts.blur_samples;
   r.supersample = opts.supersample;
-  check_finite(r.fps, "--fps");
+  check_finite(r.fps, field("fps"));
   const double scale = opts.scale.value_or(0.0);  // 0: the core fits the throw in view
-  check_finite(scale, "--scale");
+  check_finite(scale, field("scale"));
   const auto [w, h] = parse_size(opts.size);
   r.width = w;
   r.height = h;
@@ -111,6 +104,7 @@ video::ThrowFilmOptions film_options(const BounceRenderOptions& opts) {
 }  // namespace
 
 BounceRenderResult bounce_render(const BounceRenderOptions& opts) {
+  check_output_paths({}, {{"out", opts.out}, {"truth", opts.truth}, {"write_trk", opts.write_trk}});  // before any work (app/output_paths.hpp)
   const video::ThrowFilm film = video::plan_throw_film(film_options(opts));
   // Outputs appear whole or not at all: the truth is written to a temporary file first and
   // renamed after the video is complete.
@@ -122,7 +116,7 @@ BounceRenderResult bounce_render(const BounceRenderOptions& opts) {
   std::optional<io::AtomicFile> trk;
   if (!opts.write_trk.empty()) {
     if (std::filesystem::path(opts.write_trk).extension() != ".trk") {
-      throw InputError("--write-trk " + opts.write_trk, "the project file must end in .trk");
+      throw InputError(field("write_trk") + " " + opts.write_trk, "the project file must end in .trk");
     }
     trk.emplace(opts.write_trk);
     // The truth goes in as tracks truth, truth.A, truth.B (a project needs a track, and

@@ -1,5 +1,12 @@
 #include "app/bounce_series.hpp"
 
+#include "app/report_bounce_series.hpp"
+#include "app/series_json.hpp"
+#include "analysis/series_plausibility.hpp"
+#include "io/text.hpp"
+#include "numerics/error.hpp"
+#include "report/html.hpp"
+
 #include <cmath>
 
 namespace tribolab::app {
@@ -70,6 +77,107 @@ json bounce_series_json(const BounceSeriesSummary& s, const std::vector<BounceSe
           {"contact_point", {{"fastest", named_run(s.fastest_contact_run)}, {"slowest", named_run(s.slowest_contact_run)}}},
           {"outliers", outliers},
           {"points", pts}};
+}
+
+}  // namespace tribolab::app
+
+namespace tribolab::app {
+
+std::vector<BounceAnalyzeOptions> BounceAnalyzeSeriesOptions::per_file() const {
+  if (files.empty()) throw MissingOptionError("FILE", "is required");
+  const std::size_t n = files.size();
+  each.checked();  // the shared options first, as one file would check them
+  const auto floor = app::per_file(floor_y, n, field("floor_y"));
+  const auto duration = app::per_file(contact_duration, n, field("contact_duration"));
+  std::vector<BounceAnalyzeOptions> per(n, each);
+  for (std::size_t i = 0; i < n; ++i) {
+    per[i].file = files[i];
+    per[i].floor_y = floor[i];
+    per[i].contact_duration = duration[i];
+    per[i].checked();  // every file's values before any work
+  }
+  return per;
+}
+
+namespace {
+
+/// The command line of the series (shown in its report), options as given.
+std::string series_command(const BounceAnalyzeSeriesOptions& o) {
+  const auto list = [](const std::vector<double>& v) {
+    std::string s;
+    for (double x : v) s += (s.empty() ? "" : ",") + io::format_number(x);
+    return s;
+  };
+  const BounceAnalyzeOptions& e = o.each;
+  std::string command = "tribolab bounce analyze";
+  for (const auto& f : o.files) command += " " + f;
+  command += " --track-a " + e.track_a + " --track-b " + e.track_b + " --time-scale " + io::format_number(e.time_scale);
+  if (!o.floor_y.empty()) command += " --floor-y " + list(o.floor_y);
+  if (e.sigma_floor_y > 0) command += " --sigma-floor-y " + io::format_number(e.sigma_floor_y);
+  if (!o.contact_duration.empty()) command += " --contact-duration " + list(o.contact_duration);
+  return command;
+}
+
+/// Runs that stand apart from the series (another time scale or length calibration).
+template <class Runs>
+std::vector<std::string> bounce_series_run_warnings(const Runs& runs) {
+  std::vector<const analysis::BounceAnalysis*> analyses;
+  std::vector<std::string> sources;
+  for (const auto& run : runs) {
+    analyses.push_back(run.ok() ? &run.result->analysis : nullptr);
+    sources.push_back(run.source);
+  }
+  return analysis::bounce_series_warnings(analyses, sources);
+}
+
+}  // namespace
+
+BounceAnalyzeSeriesResult bounce_analyze_series(const BounceAnalyzeSeriesOptions& o) {
+  const std::vector<BounceAnalyzeOptions> per = o.per_file();
+  BounceAnalyzeSeriesResult res;
+  if (per.size() == 1) {
+    BounceAnalyzeResult r = bounce_analyze(per.front());
+    res.json = r.json;
+    res.runs.push_back({per.front().file, std::move(r), {}});
+    return res;
+  }
+  std::vector<analysis::BounceAnalyzeOptions> checked;
+  for (const auto& p : per) checked.push_back(p.checked());
+  const auto runs = analysis::run_series<BounceAnalyzeResult>(
+      o.files, [&](std::size_t i, const std::string&) { return bounce_analyze_run(per[i], checked[i]); }, o.series);
+  std::vector<analysis::BounceSeriesPoint> points;
+  std::vector<std::string> files;
+  for (const auto& run : runs) {
+    if (!run.ok()) continue;
+    points.push_back(analysis::point_of(run.result->analysis));
+    files.push_back(run.source);
+  }
+  const analysis::BounceSeriesOptions so;
+  json summary = series_counts(runs);
+  if (!points.empty()) {
+    const analysis::BounceSeriesSummary sum = analysis::summarize_bounce_series(points, so);
+    summary.update(bounce_series_json(sum, points, files, so));
+    summary["warnings"] = bounce_series_run_warnings(runs);  // docs/theory.md#plausibility-checks
+    if (!o.each.bounces_out.empty()) {
+      write_bounces_out(o.each.bounces_out, points, files);
+      summary["bounces_out"] = o.each.bounces_out;
+    }
+    if (!o.each.report.empty()) {
+      std::vector<BounceSeriesRun> report_runs;
+      for (const auto& run : runs)
+        report_runs.push_back({run.source, run.ok() ? &run.result->analysis : nullptr,
+                               run.ok() ? std::string() : run.located_error()});
+      report::write_html(bounce_analyze_series_report(series_command(o), checked.front().ball, report_runs, points,
+                                                      sum, so, o.each.report,
+                                                      [&](std::size_t i) { return bounce_analyze_command(per[i]); },
+                                                      o.each.plotly),
+                         o.each.report, o.each.plotly);
+    }
+  }
+  res.json = {{"runs", series_rows(runs, [](const BounceAnalyzeResult& r) { return r.json; })}, {"summary", summary}};
+  res.errors = series_errors(runs);
+  for (const auto& r : runs) res.runs.push_back({r.source, r.result, r.located_error()});
+  return res;
 }
 
 }  // namespace tribolab::app

@@ -1,6 +1,8 @@
 #include "app/study_citation.hpp"
 #include "app/bounce_simulate.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/report_bounce.hpp"
 
 #include "bounce/geometry.hpp"
@@ -135,16 +137,17 @@ json bounce_impact_json(const Ball& ball, const ImpactResult& r, NormalModel mod
 }
 
 BounceContactTimeResult bounce_contact_time(const BounceContactTimeOptions& o) {
+  check_output_paths({}, {{"report", o.report}});  // before any work (app/output_paths.hpp)
   const Ball ball = o.ball.get();
-  check_range(o.height, ranges::height, "--height");  // docs/cli.md#physical-ranges
-  check_range(o.omega, ranges::spin, "--omega");
-  check_range(o.theta_deg, ranges::angle_deg, "--theta-deg");
-  if (o.direction != 1 && o.direction != -1) throw InputError("--direction", "must be 1 or -1");
+  check_range(o.height, ranges::height, field("height"));  // docs/cli.md#physical-ranges
+  check_range(o.omega, ranges::spin, field("omega"));
+  check_range(o.theta_deg, ranges::angle_deg, field("theta_deg"));
+  if (o.direction != 1 && o.direction != -1) throw InputError(field("direction"), "must be 1 or -1");
   FlightOptions fo;
   fo.g = checked_g(o.g);
   BounceContactTimeResult res;
   const FlightResult& r = res.flight = first_contact_from_apex(ball, o.height, o.omega, to_rad(o.theta_deg), fo);
-  if (r.status == FlightStatus::touching_start) throw InputError("--height", r.message);
+  if (r.status == FlightStatus::touching_start) throw InputError(field("height"), r.message);
   if (r.status != FlightStatus::contact) throw InputError(r.message);
   // The flight from the apex to the contact, closed form (docs/theory.md#bounce-flight): the
   // report's gap and orientation curves.
@@ -172,14 +175,15 @@ BounceContactTimeResult bounce_contact_time(const BounceContactTimeOptions& o) {
 }
 
 BounceSimulateResult bounce_simulate(const BounceSimulateOptions& o) {
+  check_output_paths({}, {{"history", o.history}, {"report", o.report}});  // before any work (app/output_paths.hpp)
   const Ball ball = o.ball.get();
-  for (auto [v, r, name] : {std::tuple{o.vx, ranges::velocity, "--vx"}, {o.vy, ranges::velocity, "--vy"},
-                            {o.omega, ranges::spin, "--omega"}, {o.theta_deg, ranges::angle_deg, "--theta-deg"}})
+  for (auto [v, r, name] : {std::tuple{o.vx, ranges::velocity, field("vx")}, {o.vy, ranges::velocity, field("vy")},
+                            {o.omega, ranges::spin, field("omega")}, {o.theta_deg, ranges::angle_deg, field("theta_deg")}})
     check_range(v, r, name);  // docs/cli.md#physical-ranges
   const NormalLawSpec spec = o.law.law();
   const FrictionModel fr = o.law.friction_model();
   const ContactOptions copt = o.law.contact(checked_g(o.g, /*zero_allowed=*/true));  // starts at touch
-  if (!(o.vy < 0)) throw InputError("--vy", "the ball must be falling at first touch (vy < 0)");
+  if (!(o.vy < 0)) throw InputError(field("vy"), "the ball must be falling at first touch (vy < 0)");
   BodyState s;
   s.theta = to_rad(o.theta_deg);
   s.vx = o.vx;
@@ -187,7 +191,7 @@ BounceSimulateResult bounce_simulate(const BounceSimulateOptions& o) {
   s.omega = o.omega;
   const PointVelocity pv = contact_point_velocity(ball, s.theta, s.vx, s.vy, s.omega);
   if (!(pv.vy < 0)) {
-    throw InputError("--omega", "the contact point moves away from the floor at first touch (its vertical velocity "
+    throw InputError(field("omega"), "the contact point moves away from the floor at first touch (its vertical velocity "
                                 "vy + omega X = " + io::format_number(pv.vy) + " m/s): no contact");
   }
   BounceSimulateResult res;
@@ -206,17 +210,18 @@ BounceSimulateResult bounce_simulate(const BounceSimulateOptions& o) {
 }
 
 BounceDropResult bounce_drop(const BounceDropOptions& o) {
+  check_output_paths({}, {{"trajectory", o.trajectory}, {"report", o.report}});  // before any work (app/output_paths.hpp)
   const Ball ball = o.ball.get();
   for (auto [v, r, name] :
-       {std::tuple{o.height, ranges::height, "--height"}, {o.omega, ranges::spin, "--omega"},
-        {o.theta_deg, ranges::angle_deg, "--theta-deg"}, {o.vx, ranges::velocity, "--vx"},
-        {o.vy, ranges::velocity, "--vy"}, {o.rest_height, PhysicalRange{0, 1e3, "m"}, "--rest-height"},
-        {o.sample_dt, PhysicalRange{0, 10, "s"}, "--sample-dt"}})
+       {std::tuple{o.height, ranges::height, field("height")}, {o.omega, ranges::spin, field("omega")},
+        {o.theta_deg, ranges::angle_deg, field("theta_deg")}, {o.vx, ranges::velocity, field("vx")},
+        {o.vy, ranges::velocity, field("vy")}, {o.rest_height, PhysicalRange{0, 1e3, "m"}, field("rest_height")},
+        {o.sample_dt, PhysicalRange{0, 10, "s"}, field("sample_dt")}})
     check_range(v, r, name);  // docs/cli.md#physical-ranges
-  if (o.bounces < 1 || o.bounces > 10000) throw InputError("--bounces", "must lie in 1..10000");
-  if (!(o.rest_height >= 0)) throw InputError("--rest-height", "must be >= 0");
+  if (o.bounces < 1 || o.bounces > 10000) throw InputError(field("bounces"), "must lie in 1..10000");
+  if (!(o.rest_height >= 0)) throw InputError(field("rest_height"), "must be >= 0");
   const bool sampled = !(o.trajectory.empty() && o.report.empty()) || o.keep_trajectory;
-  if (sampled && !(o.sample_dt > 0)) throw InputError("--sample-dt", "must be positive");
+  if (sampled && !(o.sample_dt > 0)) throw InputError(field("sample_dt"), "must be positive");
   const NormalLawSpec spec = o.law.law();
   const FrictionModel fr = o.law.friction_model();
   DropOptions d;

@@ -2,8 +2,8 @@
 // (docs/design.md, "Application layer: bounce"; docs/cli.md#bounce): one options struct per
 // command whose member initializers are the command's defaults, one function that checks,
 // computes, writes the requested files and returns the JSON the command prints together with
-// the arrays a notebook wants. Errors are InputError naming the option as the command line
-// spells it ("--vy: ..."). Nothing is printed.
+// the arrays a notebook wants. Errors are InputError naming the field (field("vy"):
+// "--vy: ..." on the command line, "vy: ..." in Python). Nothing is printed.
 #pragma once
 
 #include "app/bounce_options.hpp"

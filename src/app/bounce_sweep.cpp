@@ -1,6 +1,8 @@
 #include "app/study_citation.hpp"
 #include "app/bounce_sweep.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/report_sweep.hpp"
 #include "app/sweep_mpi.hpp"
 #include "io/sweep_file.hpp"
@@ -23,10 +25,10 @@ sweep::Axis axis_of(sweep::Axis a, sweep::Quantity q) {
 /// The grid and run options of the sweep, checked; messages name the option.
 SweepCommandOptions to_run_options(const BounceSweepOptions& a) {
   SweepCommandOptions o;
-  if (!a.theta_deg) throw InputError("--theta-deg is required");
+  if (!a.theta_deg) throw MissingOptionError(field("theta_deg") + " is required");
   o.grid.axes.push_back(axis_of(*a.theta_deg, sweep::Quantity::theta_deg));
   if (a.omega.has_value() == a.ratio.has_value()) {
-    throw InputError("give exactly one of --omega (spin range) and --ratio (spin/speed range)");
+    throw InputError("give exactly one of " + field("omega") + " (spin range) and " + field("ratio") + " (spin/speed range)");
   }
   if (a.omega) o.grid.axes.push_back(axis_of(*a.omega, sweep::Quantity::omega));
   if (a.ratio) o.grid.axes.push_back(axis_of(*a.ratio, sweep::Quantity::ratio));
@@ -36,19 +38,19 @@ SweepCommandOptions to_run_options(const BounceSweepOptions& a) {
   if (a.mu.axis) o.grid.axes.push_back(axis_of(*a.mu.axis, sweep::Quantity::mu));
   // Physical ranges of the swept quantities (numerics/physical_range.hpp, docs/cli.md#physical-ranges).
   for (const sweep::Axis& ax : o.grid.axes) {
-    const char* option = ax.quantity == sweep::Quantity::speed   ? "--speed"
-                         : ax.quantity == sweep::Quantity::mu    ? "--mu"
-                         : ax.quantity == sweep::Quantity::omega ? "--omega"
-                         : ax.quantity == sweep::Quantity::ratio ? "--ratio"
-                                                                 : nullptr;
+    const char* name = ax.quantity == sweep::Quantity::speed   ? "speed"
+                       : ax.quantity == sweep::Quantity::mu    ? "mu"
+                       : ax.quantity == sweep::Quantity::omega ? "omega"
+                       : ax.quantity == sweep::Quantity::ratio ? "ratio"
+                                                               : nullptr;
     const PhysicalRange r = ax.quantity == sweep::Quantity::speed   ? ranges::speed
                             : ax.quantity == sweep::Quantity::mu    ? ranges::friction
                             : ax.quantity == sweep::Quantity::ratio ? PhysicalRange{-1e5, 1e5, "rad/m"}
                                                                     : ranges::spin;
-    if (option) for (double v : {ax.lo, ax.hi}) check_range(v, r, option);
+    if (name) for (double v : {ax.lo, ax.hi}) check_range(v, r, field(name));
   }
-  check_range(o.grid.fixed_speed, ranges::speed, "--speed");
-  check_range(o.grid.fixed_mu, ranges::friction, "--mu");
+  check_range(o.grid.fixed_speed, ranges::speed, field("speed"));
+  check_range(o.grid.fixed_mu, ranges::friction, field("mu"));
   sweep::sort_axes(o.grid.axes);
   o.shard = a.shard;
   o.out = a.out;
@@ -57,19 +59,19 @@ SweepCommandOptions to_run_options(const BounceSweepOptions& a) {
   o.contour_out = a.contour;
   o.threshold_out = a.threshold;
   if (!(a.contour_tol > 0 && a.contour_tol < 1)) {
-    throw InputError("--contour-tol", "must be in (0, 1) (a fraction of the grid spacing)");
+    throw InputError(field("contour_tol"), "must be in (0, 1) (a fraction of the grid spacing)");
   }
   o.contour.x_tol_rel = a.contour_tol;
   if (auto e = o.validate(); !e.empty()) throw InputError(e);
   if (!a.report.empty()) {
     // A shard holds every N-th cell of the grid: no map to draw. Checked before any work.
     if (o.shard.count > 1) {
-      throw InputError("--report", "needs the whole grid, not one shard; merge the shards with `tribolab bounce "
+      throw InputError(field("report"), "needs the whole grid, not one shard; merge the shards with `tribolab bounce "
                                    "merge ... --report FILE.html`");
     }
     for (const std::string* p : {&o.out, &o.contour_out, &o.threshold_out}) {
       if (!p->empty() && (a.report == *p || a.report == *p + ".partial")) {
-        throw InputError("--report", "must not be the same file as --out, --contour or --threshold");
+        throw InputError(field("report"), "must not be the same file as " + field("out") + ", " + field("contour") + " or " + field("threshold"));
       }
     }
   }
@@ -83,8 +85,8 @@ void check_theta_range(const BounceCell& cell, const sweep::Axis& theta) {
   if (cell.convention != AngleConvention::collision) return;
   for (double v : {theta.lo, theta.hi}) {
     if (!(v >= 0 && v <= 180)) {
-      throw InputError("--theta-deg", "a collision angle lies in 0..180 deg, got " + io::format_number_exact(v) +
-                                          " (use --angle orientation for the orientation at impact)");
+      throw InputError(field("theta_deg"), "a collision angle lies in 0..180 deg, got " + io::format_number_exact(v) +
+                                          " (use " + field("angle") + " orientation for the orientation at impact)");
     }
   }
 }
@@ -121,6 +123,7 @@ sweep::CellModel model_of_sweep_file(const std::string& path) {
 }  // namespace
 
 BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
+  check_output_paths({}, {{"out", a.out}, {"contour", a.contour}, {"threshold", a.threshold}, {"report", a.report}});  // before any work (app/output_paths.hpp)
   const SweepCommandOptions o = to_run_options(a);
   const BounceCell cell = make_bounce_cell(a.cell);
   check_theta_range(cell, *a.theta_deg);
@@ -131,7 +134,7 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
     result.run = run_sweep_command_mpi(o, model, a.progress, a.cancel);
 #else
     throw InputError("this tribolab was built without MPI (cmake -DTRIBOLAB_MPI=ON); run it "
-                     "without mpirun, or split the grid with --shard");
+                     "without mpirun, or split the grid with " + field("shard"));
 #endif
   } else {
     result.run = run_sweep_command(o, model, a.progress, a.cancel);
@@ -168,11 +171,12 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
 }
 
 BounceMergeResult bounce_merge(const BounceMergeOptions& a) {
+  check_output_paths(a.files, {{"out", a.out}, {"report", a.report}});  // before any work (app/output_paths.hpp)
   // The physics is rebuilt from the first shard's header before anything is written, so a
   // file this tribolab cannot report on fails without output.
   std::optional<sweep::CellModel> model;
   if (!a.report.empty()) {
-    if (a.report == a.out) throw InputError("--report", "must not be the same file as --out");
+    if (a.report == a.out) throw InputError(field("report"), "must not be the same file as " + field("out"));
     if (!a.files.empty()) model = model_of_sweep_file(a.files.front());
   }
   const MergeResult r = run_merge_command(a.files, a.out);
@@ -182,7 +186,7 @@ BounceMergeResult bounce_merge(const BounceMergeOptions& a) {
     d.header = scan.header;
     const sweep::ContourOptions co;
     if (model->output_index(co.output) < 0) {
-      throw InputError("--report: the cell model has no output '" + co.output + "'");
+      throw InputError(field("report") + ": the cell model has no output '" + co.output + "'");
     }
     d.boundary = sweep::trace_contour(d.header.grid, *model, d.values, co);
     d.thresholds = sweep::spin_thresholds(d.header.grid, *model, d.values, co);

@@ -69,7 +69,7 @@ struct BounceSweepResult {
   std::optional<SweepMap> map;    ///< when options.return_map and the sweep completed
 };
 
-/// Validates (InputError naming the option as the command line spells it), runs, resumes or
+/// Validates (InputError naming the field), runs, resumes or
 /// reuses the sweep, writes --contour/--threshold/--report from what it computed, returns the
 /// result. A cancelled run throws InputError("interrupted: ... run the same command again to
 /// resume") after saving its cells, as the command reports it.

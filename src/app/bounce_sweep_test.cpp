@@ -90,23 +90,23 @@ TEST(BounceSweep, InvalidOptionsNameTheOptionAndWriteNothing) {
   const std::string dir = temp_dir("invalid");
   BounceSweepOptions o = small_sweep(dir + "/map.csv");
   o.ratio = sweep::Axis{sweep::Quantity::ratio, 5, 15, 3};
-  EXPECT_EQ(message_of(o), "give exactly one of --omega (spin range) and --ratio (spin/speed range)");
+  EXPECT_EQ(message_of(o), "give exactly one of omega (spin range) and ratio (spin/speed range)");
   o = small_sweep(dir + "/map.csv");
   o.theta_deg = sweep::Axis{sweep::Quantity::theta_deg, 100, 190, 4};
-  EXPECT_NE(message_of(o).find("--theta-deg: a collision angle lies in 0..180 deg, got 190"), std::string::npos);
+  EXPECT_NE(message_of(o).find("theta_deg: a collision angle lies in 0..180 deg, got 190"), std::string::npos);
   o = small_sweep(dir + "/map.csv");
   o.speed.value = -1;
-  EXPECT_EQ(message_of(o).rfind("--speed", 0), 0u) << message_of(o);
+  EXPECT_EQ(message_of(o).rfind("speed", 0), 0u) << message_of(o);
   o = small_sweep(dir + "/map.csv");
   o.contour_tol = 2;
-  EXPECT_EQ(message_of(o).rfind("--contour-tol", 0), 0u);
+  EXPECT_EQ(message_of(o).rfind("contour_tol", 0), 0u);
   o = small_sweep(dir + "/map.csv");
   o.shard = sweep::Shard{0, 2};
   o.report = dir + "/r.html";
-  EXPECT_NE(message_of(o).find("--report: needs the whole grid"), std::string::npos);
+  EXPECT_NE(message_of(o).find("report: needs the whole grid"), std::string::npos);
   o = small_sweep(dir + "/map.csv");
   o.cell.angle = "sideways";
-  EXPECT_NE(message_of(o).find("--angle"), std::string::npos);
+  EXPECT_NE(message_of(o).find("angle"), std::string::npos);
   EXPECT_TRUE(fs::is_empty(dir));
 }
 

@@ -1,5 +1,7 @@
 #include "app/bounce_synth.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "bounce/geometry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/tracker_export.hpp"
@@ -14,20 +16,12 @@ namespace tribolab::app {
 using nlohmann::json;
 
 BounceSynthVideoResult bounce_synth_video(const BounceSynthVideoOptions& opts) {
+  check_output_paths({}, {{"out", opts.out}});  // before any work (app/output_paths.hpp)
   analysis::SynthVideoOptions o;
-  o.ball = opts.ball.ball;
-  checked_ball(o.ball);
-  opts.law.apply(o.law, o.friction);
-  o.height = opts.height;
-  o.theta_deg = opts.theta_deg;
-  o.omega = opts.omega;
-  o.vx = opts.vx;
-  o.vy = opts.vy;
-  o.after = opts.after;
+  apply_throw(opts, o);
   o.fps = opts.fps;
   o.noise = opts.noise;
   o.time_factor = opts.time_factor;
-  o.seed = opts.seed;
   BounceSynthVideoResult res;
   res.video = analysis::synth_video(o);
   const auto& v = res.video;
@@ -46,6 +40,7 @@ BounceSynthVideoResult bounce_synth_video(const BounceSynthVideoOptions& opts) {
 }
 
 BounceSynthTableResult bounce_synth_table(const BounceSynthTableOptions& opts) {
+  check_output_paths({}, {{"out", opts.out}});  // before any work (app/output_paths.hpp)
   analysis::SynthTableOptions o;
   o.ball = opts.ball.ball;
   checked_ball(o.ball);
@@ -60,9 +55,9 @@ BounceSynthTableResult bounce_synth_table(const BounceSynthTableOptions& opts) {
   o.outlier_fraction = opts.outlier_fraction;
   o.outlier_v = opts.outlier_v;
   o.seed = opts.seed;
-  for (auto [v, name] : {std::pair{o.speed_min, "--speed-min"}, {o.speed_max, "--speed-max"}, {o.vx_max, "--vx-max"},
-                         {o.omega_max, "--omega-max"}, {o.noise_v, "--noise-v"}, {o.noise_omega, "--noise-omega"},
-                         {o.outlier_fraction, "--outlier-fraction"}, {o.outlier_v, "--outlier-v"}})
+  for (auto [v, name] : {std::pair{o.speed_min, field("speed_min")}, {o.speed_max, field("speed_max")}, {o.vx_max, field("vx_max")},
+                         {o.omega_max, field("omega_max")}, {o.noise_v, field("noise_v")}, {o.noise_omega, field("noise_omega")},
+                         {o.outlier_fraction, field("outlier_fraction")}, {o.outlier_v, field("outlier_v")}})
     check_finite(v, name);
   BounceSynthTableResult res;
   res.rows = analysis::synth_table(o);

@@ -23,6 +23,23 @@
 
 namespace tribolab::app {
 
+/// The throw of `opts` (BounceSynthVideoOptions or BounceRenderOptions: ball, law, release
+/// height, orientation, spin, speeds, video after the separation, seed) into the motion `m`,
+/// the ball checked (InputError naming the field).
+template <class Opts>
+void apply_throw(const Opts& opts, analysis::SynthVideoOptions& m) {
+  m.ball = opts.ball.ball;
+  checked_ball(m.ball);
+  opts.law.apply(m.law, m.friction);
+  m.height = opts.height;
+  m.theta_deg = opts.theta_deg;
+  m.omega = opts.omega;
+  m.vx = opts.vx;
+  m.vy = opts.vy;
+  m.after = opts.after;
+  m.seed = opts.seed;
+}
+
 /// `bounce synth-video`: a synthetic Tracker export of one bounce (tips A and B).
 struct BounceSynthVideoOptions {
   BallOptions ball;

@@ -1,11 +1,13 @@
 #include "app/bounce_truth_law.hpp"
 
+#include "numerics/error.hpp"
+
 #include <utility>
 
 namespace tribolab::app {
 
 void TruthLawOptions::apply(bounce::NormalLawSpec& s, bounce::FrictionModel& f) const {
-  for (auto [v, name] : {std::pair{K, "--K"}, {n, "--n"}, {D, "--D"}, {mu, "--mu"}, {slip_scale, "--slip-scale"}})
+  for (auto [v, name] : {std::pair{K, field("K")}, {n, field("n")}, {D, field("D")}, {mu, field("mu")}, {slip_scale, field("slip_scale")}})
     check_finite(v, name);
   s.model = parsed_model(model);
   s.K = K;

@@ -1,5 +1,7 @@
 #include "app/incline_analysis.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/incline_launch.hpp"
 #include "app/report_incline_analysis.hpp"
 #include "io/atomic_file.hpp"
@@ -20,7 +22,7 @@ using nlohmann::json;
 
 track::Track read_incline_track(const std::string& file, const InclineTrackInput& in) {
   io::ImportOptions o;
-  o.time_scale = check_range(in.time_scale, ranges::time_scale, "--time-scale");
+  o.time_scale = check_range(in.time_scale, ranges::time_scale, field("time_scale"));
   if (!in.track.empty()) o.tracks = {in.track};
   const track::TrackSet set = io::read_tracks(file, o);
   if (!in.track.empty()) return set.find(in.track);
@@ -31,40 +33,41 @@ track::Track read_incline_track(const std::string& file, const InclineTrackInput
   std::string names;
   for (const auto* t : with_points) names += (names.empty() ? "'" : ", '") + t->name + "'";
   throw InputError(set.source, "the file holds " + std::to_string(with_points.size()) + " tracks (" +
-                                   names + "); choose one with --track");
+                                   names + "); choose one with " + field("track"));
 }
 
 // ---- synth ----------------------------------------------------------------------------
 
 InclineSynthResult incline_synth(const InclineSynthOptions& s) {
-  auto need = [](const std::optional<double>& v, const char* option) {
-    if (!v) throw InputError(option, "is required");
+  check_output_paths({}, {{"out", s.out}});  // before any work (app/output_paths.hpp)
+  auto need = [](const std::optional<double>& v, const std::string& option) {
+    if (!v) throw MissingOptionError(option, "is required");
     return *v;
   };
   analysis::InclineSynthOptions o;
   // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
-  o.params.mu = check_range(need(s.mu, "--mu"), ranges::friction, "--mu");
-  if (!(o.params.mu > 0)) throw InputError("--mu", "must be > 0, got " + io::format_number(o.params.mu));
-  o.params.phi = to_rad(check_incline_angle_deg(need(s.phi_deg, "--phi-deg"), "--phi-deg", true));
-  o.params.v0 = check_range(need(s.v0, "--v0"), ranges::speed, "--v0");
-  o.params.g = check_range(s.g, ranges::gravity, "--g");
-  o.params.normal_accel = check_range(s.normal_accel, ranges::accel, "--normal-accel");
-  o.fps = check_range(s.fps, ranges::frame_rate, "--fps");
-  o.noise = check_range(s.noise, ranges::noise, "--noise");
+  o.params.mu = check_range(need(s.mu, field("mu")), ranges::friction, field("mu"));
+  if (!(o.params.mu > 0)) throw InputError(field("mu"), "must be > 0, got " + io::format_number(o.params.mu));
+  o.params.phi = to_rad(check_incline_angle_deg(need(s.phi_deg, field("phi_deg")), field("phi_deg"), true));
+  o.params.v0 = check_range(need(s.v0, field("v0")), ranges::speed, field("v0"));
+  o.params.g = check_range(s.g, ranges::gravity, field("g"));
+  o.params.normal_accel = check_range(s.normal_accel, ranges::accel, field("normal_accel"));
+  o.fps = check_range(s.fps, ranges::frame_rate, field("fps"));
+  o.noise = check_range(s.noise, ranges::noise, field("noise"));
   if (!(std::abs(s.frame_rotation_deg) <= 20))
-    throw InputError("--frame-rotation-deg",
+    throw InputError(field("frame_rotation_deg"),
                      "must be within [-20, 20] deg, got " + io::format_number(s.frame_rotation_deg));
   o.frame_rotation = to_rad(s.frame_rotation_deg);
-  if (s.seed > 9007199254740992ULL) throw InputError("--seed", "must be an integer >= 0, got " + std::to_string(s.seed));
+  if (s.seed > 9007199254740992ULL) throw InputError(field("seed"), "must be an integer >= 0, got " + std::to_string(s.seed));
   o.seed = s.seed;
-  o.t_launch = check_range(s.t_offset, ranges::duration, "--t-offset");
-  o.x0 = check_range(s.x0, ranges::position, "--x0");
-  o.y0 = check_range(s.y0, ranges::position, "--y0");
-  o.duration = s.duration ? check_range(*s.duration, ranges::duration, "--duration") : 0.0;
+  o.t_launch = check_range(s.t_offset, ranges::duration, field("t_offset"));
+  o.x0 = check_range(s.x0, ranges::position, field("x0"));
+  o.y0 = check_range(s.y0, ranges::position, field("y0"));
+  o.duration = s.duration ? check_range(*s.duration, ranges::duration, field("duration")) : 0.0;
   if (s.format != "export" && s.format != "csv")
-    throw InputError("--format", "must be export or csv, got '" + s.format + "'");
+    throw InputError(field("format"), "must be export or csv, got '" + s.format + "'");
   if (s.track_name.empty() || s.track_name.find_first_of(",\t;\n\"") != std::string::npos)
-    throw InputError("--track-name", "must be a non-empty name without , ; tab or quotes");
+    throw InputError(field("track_name"), "must be a non-empty name without , ; tab or quotes");
   o.track_name = s.track_name;
   if (const std::string e = o.validate(); !e.empty()) throw InputError("incline synth", e);
   InclineSynthResult res;
@@ -97,22 +100,25 @@ InclineSynthResult incline_synth(const InclineSynthOptions& s) {
 // ---- normal-friction-test -------------------------------------------------------------
 
 InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormalFrictionTestOptions& s) {
+  std::vector<std::string> inputs = s.files;
+  if (!s.table.empty()) inputs.push_back(s.table);
+  check_output_paths(inputs, {{"report", s.report}});  // before any work (app/output_paths.hpp)
   std::vector<analysis::ThetaCPoint> pts;
   if (!s.table.empty()) {
     if (!s.files.empty() || !s.phi_deg.empty())
-      throw InputError("--table", "give either --table or tracked files with --phi-deg, not both");
+      throw InputError(field("table"), "give either " + field("table") + " or tracked files with " + field("phi_deg") + ", not both");
     pts = io::read_theta_c_table(s.table);
   } else {
-    if (s.files.empty()) throw InputError("normal-friction-test", "give tracked files with --phi-deg, or --table");
-    if (s.phi_deg.empty()) throw InputError("--phi-deg", "is required with tracked files (one angle per file)");
+    if (s.files.empty()) throw InputError("normal-friction-test", "give tracked files with " + field("phi_deg") + ", or " + field("table"));
+    if (s.phi_deg.empty()) throw MissingOptionError(field("phi_deg"), "is required with tracked files (one angle per file)");
     if (s.phi_deg.size() != s.files.size())
-      throw InputError("--phi-deg", "gives " + std::to_string(s.phi_deg.size()) + " angles for " +
+      throw InputError(field("phi_deg"), "gives " + std::to_string(s.phi_deg.size()) + " angles for " +
                                         std::to_string(s.files.size()) + " files");
-    const double g = check_range(s.g, ranges::gravity, "--g");
+    const double g = check_range(s.g, ranges::gravity, field("g"));
     for (std::size_t i = 0; i < s.files.size(); ++i) {
       // Model B only: theta_c of each run, at its v_y extremum (seed 000, 圖三-2).
       analysis::InclineFitOptions o;
-      o.phi = to_rad(check_incline_angle_deg(s.phi_deg[i], "--phi-deg", false));
+      o.phi = to_rad(check_incline_angle_deg(s.phi_deg[i], field("phi_deg"), false));
       o.g = g;
       o.fit_model_a = false;
       const track::Track t = read_incline_track(s.files[i], s.input);

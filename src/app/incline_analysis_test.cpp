@@ -53,13 +53,13 @@ TEST(InclineSynth, KeepsTheTrackAndTruthWithoutWritingAFile) {
   EXPECT_EQ(r.json["x_stop"].get<double>(), r.run.truth.back().x);
   InclineSynthOptions bad = seed_run(20.96, 2.62);
   bad.frame_rotation_deg = 25;
-  expect_input_error([&] { incline_synth(bad); }, "--frame-rotation-deg");
+  expect_input_error([&] { incline_synth(bad); }, "frame_rotation_deg");
   bad = seed_run(20.96, 2.62);
   bad.format = "xml";
-  expect_input_error([&] { incline_synth(bad); }, "--format");
+  expect_input_error([&] { incline_synth(bad); }, "format");
   bad = seed_run(20.96, 2.62);
   bad.mu.reset();
-  expect_input_error([&] { incline_synth(bad); }, "--mu");
+  expect_input_error([&] { incline_synth(bad); }, "mu");
 }
 
 TEST(InclineAnalyze, RecoversTheFrictionOfASynthesizedRun) {
@@ -80,13 +80,13 @@ TEST(InclineAnalyze, RecoversTheFrictionOfASynthesizedRun) {
   EXPECT_EQ(r.runs[0].analysis->data.size(), r.json["n_points"].get<std::size_t>());
   EXPECT_EQ(r.runs[0].analysis->model_b_at_data.size(), r.runs[0].analysis->data.size());
   o.phi_deg = {20.96, 12};
-  expect_input_error([&] { incline_analyze(o); }, "--phi-deg");  // two angles, one file
+  expect_input_error([&] { incline_analyze(o); }, "phi_deg");  // two angles, one file
   o.phi_deg = {20.96};
   o.frame_rotation = "guess";
-  expect_input_error([&] { incline_analyze(o); }, "--frame-rotation");
+  expect_input_error([&] { incline_analyze(o); }, "frame_rotation");
   o.frame_rotation = "fit";
   o.block = 3;
-  expect_input_error([&] { incline_analyze(o); }, "--block");
+  expect_input_error([&] { incline_analyze(o); }, "block");
   fs::remove_all(dir);
 }
 
@@ -128,7 +128,7 @@ TEST(InclineMuFromSlide, RecoversTheFrictionOfASynthesizedSlide) {
   EXPECT_EQ(r.runs[0].result->t.size(), r.runs[0].result->s.size());
   o.sigma_phi_deg = {0.1};
   o.phi_deg.clear();
-  expect_input_error([&] { incline_mu_from_slide(o); }, "--sigma-phi-deg");  // needs an angle
+  expect_input_error([&] { incline_mu_from_slide(o); }, "sigma_phi_deg");  // needs an angle
   fs::remove_all(dir);
 }
 
@@ -150,11 +150,11 @@ TEST(InclineNormalFrictionTest, ATableOnEqCsLineGivesItsSlope) {
   ASSERT_EQ(r.tan_phi.size(), 4u);
   EXPECT_EQ(r.json["runs"][0]["source"], table + ":2");
   o.files = {"a.csv"};
-  expect_input_error([&] { incline_normal_friction_test(o); }, "--table");
+  expect_input_error([&] { incline_normal_friction_test(o); }, "table");
   o.table.clear();
   o.files = {"a.csv", "b.csv"};
   o.phi_deg = {10};
-  expect_input_error([&] { incline_normal_friction_test(o); }, "--phi-deg");
+  expect_input_error([&] { incline_normal_friction_test(o); }, "phi_deg");
   fs::remove_all(dir);
 }
 

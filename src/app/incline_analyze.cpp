@@ -1,6 +1,8 @@
 #include "app/study_citation.hpp"
 #include "app/incline_analyze.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/incline_launch.hpp"
 #include "app/incline_series.hpp"
 #include "app/report_incline_analysis.hpp"
@@ -20,17 +22,6 @@ namespace {
 using nlohmann::json;
 
 json interval(double lo, double hi) { return json::array({lo, hi}); }
-
-/// One value for every file, or exactly one per file (n_files of them); none gives unset values.
-std::vector<std::optional<double>> per_file(const std::vector<double>& values, std::size_t n_files,
-                                            const std::string& option) {
-  if (values.empty()) return std::vector<std::optional<double>>(n_files);
-  if (values.size() == 1) return std::vector<std::optional<double>>(n_files, values.front());
-  if (values.size() != n_files)
-    throw InputError(option, "gives " + std::to_string(values.size()) + " values for " + std::to_string(n_files) +
-                                 (n_files == 1 ? " file" : " files") + " (give one value for all, or one per file)");
-  return {values.begin(), values.end()};
-}
 
 analysis::SeriesOptions series_options(const InclineSeriesControl& c) {
   analysis::SeriesOptions o;
@@ -170,20 +161,21 @@ json incline_analysis_json(const analysis::InclineAnalysis& a) {
 // ---- analyze --------------------------------------------------------------------------
 
 InclineAnalyzeResult incline_analyze(const InclineAnalyzeOptions& s) {
-  if (s.files.empty()) throw InputError("FILE", "is required");
-  if (s.phi_deg.empty()) throw InputError("--phi-deg", "is required");
-  const auto phi_given = per_file(s.phi_deg, s.files.size(), "--phi-deg");
+  check_output_paths(s.files, {{"report", s.report}});  // before any work (app/output_paths.hpp)
+  if (s.files.empty()) throw MissingOptionError("FILE", "is required");
+  if (s.phi_deg.empty()) throw MissingOptionError(field("phi_deg"), "is required");
+  const auto phi_given = per_file(s.phi_deg, s.files.size(), field("phi_deg"));
   if (s.frame_rotation != "fit" && s.frame_rotation != "none")
-    throw InputError("--frame-rotation", "must be fit or none, got '" + s.frame_rotation + "'");
+    throw InputError(field("frame_rotation"), "must be fit or none, got '" + s.frame_rotation + "'");
   std::vector<analysis::InclineFitOptions> per(s.files.size());
   std::vector<double> phi_deg(s.files.size());
   for (std::size_t i = 0; i < per.size(); ++i) {
     analysis::InclineFitOptions& o = per[i];
-    phi_deg[i] = check_incline_angle_deg(*phi_given[i], "--phi-deg", true);
+    phi_deg[i] = check_incline_angle_deg(*phi_given[i], field("phi_deg"), true);
     o.phi = to_rad(phi_deg[i]);
-    o.g = check_range(s.g, ranges::gravity, "--g");
+    o.g = check_range(s.g, ranges::gravity, field("g"));
     if (s.block && !(*s.block == 0 || (*s.block >= 5 && *s.block <= 1000)))  // 0: automatic, as unset
-      throw InputError("--block", "must be 0 or an integer in [5, 1000], got " + std::to_string(*s.block));
+      throw InputError(field("block"), "must be 0 or an integer in [5, 1000], got " + std::to_string(*s.block));
     o.diagnostic_block = s.block.value_or(0);
     o.fit_model_a = !s.no_model_a;
     o.fit_frame_rotation = s.frame_rotation == "fit";
@@ -242,18 +234,19 @@ InclineAnalyzeResult incline_analyze(const InclineAnalyzeOptions& s) {
 // ---- mu-from-slide --------------------------------------------------------------------
 
 InclineMuFromSlideResult incline_mu_from_slide(const InclineMuFromSlideOptions& s) {
-  if (s.files.empty()) throw InputError("FILE", "is required");
-  const auto phi = per_file(s.phi_deg, s.files.size(), "--phi-deg");
-  const auto sigma = per_file(s.sigma_phi_deg, s.files.size(), "--sigma-phi-deg");
+  check_output_paths(s.files, {{"report", s.report}});  // before any work (app/output_paths.hpp)
+  if (s.files.empty()) throw MissingOptionError("FILE", "is required");
+  const auto phi = per_file(s.phi_deg, s.files.size(), field("phi_deg"));
+  const auto sigma = per_file(s.sigma_phi_deg, s.files.size(), field("sigma_phi_deg"));
   std::vector<analysis::SlideOptions> per(s.files.size());
   for (std::size_t i = 0; i < per.size(); ++i) {
     analysis::SlideOptions& o = per[i];
-    if (phi[i]) o.phi = to_rad(check_incline_angle_deg(*phi[i], "--phi-deg", false));
+    if (phi[i]) o.phi = to_rad(check_incline_angle_deg(*phi[i], field("phi_deg"), false));
     if (sigma[i]) {
-      if (!o.phi) throw InputError("--sigma-phi-deg", "needs --phi-deg");
-      o.sigma_phi = to_rad(check_range(*sigma[i], ranges::angle_sigma_deg, "--sigma-phi-deg"));
+      if (!o.phi) throw InputError(field("sigma_phi_deg"), "needs " + field("phi_deg"));
+      o.sigma_phi = to_rad(check_range(*sigma[i], ranges::angle_sigma_deg, field("sigma_phi_deg")));
     }
-    o.g = check_range(s.g, ranges::gravity, "--g");
+    o.g = check_range(s.g, ranges::gravity, field("g"));
   }
   InclineMuFromSlideResult res;
   if (s.files.size() == 1) {

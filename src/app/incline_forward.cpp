@@ -1,6 +1,8 @@
 #include "app/study_citation.hpp"
 #include "app/incline_forward.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/report_incline.hpp"
 #include "incline/numeric.hpp"
 #include "io/atomic_file.hpp"
@@ -20,6 +22,16 @@ using nlohmann::json;
 
 json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
+/// The keys predict and each member of families share: k, regime, the stop point and x_limit.
+void add_prediction_keys(json& j, const incline::Prediction& pr) {
+  j["k"] = finite_or_null(pr.k);
+  j["regime"] = incline::to_string(pr.regime);
+  j["t_stop"] = json_or_null(pr.t_stop);
+  j["x_stop"] = json_or_null(pr.x_stop);
+  j["y_stop"] = json_or_null(pr.y_stop);
+  j["x_limit"] = json_or_null(pr.x_limit);
+}
+
 void write_state(std::ostream& out, const incline::State& st) {
   const incline::State s{st.t + 0.0, st.x + 0.0, st.y + 0.0, st.vx + 0.0,
                          st.vy + 0.0, st.ax + 0.0, st.ay + 0.0};  // -0 -> 0
@@ -31,7 +43,7 @@ void write_state(std::ostream& out, const incline::State& st) {
 /// Sample times 0, dt, 2 dt, ... up to t_end (inclusive, within rounding).
 std::vector<double> time_grid(double t_end, double dt) {
   const double n_real = std::floor(t_end / dt * (1 + 1e-12));
-  if (n_real > 1e7) throw InputError("--dt", "gives more than 10^7 rows; use a larger step");
+  if (n_real > 1e7) throw InputError(field("dt"), "gives more than 10^7 rows; use a larger step");
   const auto n = static_cast<std::size_t>(n_real);
   std::vector<double> t(n + 1);
   for (std::size_t i = 0; i <= n; ++i) t[i] = static_cast<double>(i) * dt;
@@ -50,6 +62,7 @@ std::vector<double> even_times(double t_end, int n) {
 // ---- predict --------------------------------------------------------------------------
 
 InclinePredictResult incline_predict(const InclinePredictOptions& o) {
+  check_output_paths({}, {{"report", o.report}});  // before any work (app/output_paths.hpp)
   InclinePredictResult res;
   const incline::Parameters& p = res.parameters = incline_launch_parameters(o.launch);
   const incline::Prediction& pr = res.prediction = incline::ClosedForm(p).predict();
@@ -57,13 +70,8 @@ InclinePredictResult incline_predict(const InclinePredictOptions& o) {
   if (std::isfinite(t_end) && t_end > 0) res.trajectory = incline::ClosedForm(p).trajectory(even_times(t_end, 400));
   if (!o.report.empty()) report::write_html(with_study_source(incline_predict_report(p, pr, res.trajectory), Study::incline), o.report, o.plotly);
   json& j = res.json;
-  j["k"] = finite_or_null(pr.k);
-  j["regime"] = incline::to_string(pr.regime);
-  j["t_stop"] = json_or_null(pr.t_stop);
-  j["x_stop"] = json_or_null(pr.x_stop);
-  j["y_stop"] = json_or_null(pr.y_stop);
+  add_prediction_keys(j, pr);
   j["v_terminal"] = json_or_null(pr.v_terminal);
-  j["x_limit"] = json_or_null(pr.x_limit);
   j["a_x0"] = pr.a_x0;
   j["a_y0"] = pr.a_y0;
   j["a_x_final"] = pr.a_x_final;
@@ -75,23 +83,24 @@ InclinePredictResult incline_predict(const InclinePredictOptions& o) {
 // ---- simulate -------------------------------------------------------------------------
 
 InclineSimulateResult incline_simulate(const InclineSimulateOptions& o) {
+  check_output_paths({}, {{"out", o.out}, {"report", o.report}});  // before any work (app/output_paths.hpp)
   InclineSimulateResult res;
   incline::Parameters p = incline_launch_parameters(o.launch);
-  if (o.model != "A" && o.model != "B") throw InputError("--model", "must be A or B, got '" + o.model + "'");
+  if (o.model != "A" && o.model != "B") throw InputError(field("model"), "must be A or B, got '" + o.model + "'");
   const bool model_a = o.model == "A";
   if (o.normal_accel) {
-    if (!model_a) throw InputError("--normal-accel", "applies to --model A only");
-    p.normal_accel = check_range(*o.normal_accel, ranges::accel, "--normal-accel");
+    if (!model_a) throw InputError(field("normal_accel"), "applies to " + field("model") + " A only");
+    p.normal_accel = check_range(*o.normal_accel, ranges::accel, field("normal_accel"));
   }
   const std::string method = o.method ? *o.method : (model_a ? "numeric" : "analytic");
   if (method != "analytic" && method != "numeric")
-    throw InputError("--method", "must be analytic or numeric, got '" + method + "'");
+    throw InputError(field("method"), "must be analytic or numeric, got '" + method + "'");
   if (model_a && method == "analytic")
-    throw InputError("--method", "analytic is model B's closed form; model A has none (use numeric)");
-  const double t_end = o.t_end ? check_range(*o.t_end, ranges::step, "--t-end") : incline::default_duration(p);
-  const double dt = o.dt ? check_range(*o.dt, ranges::step, "--dt") : t_end / 500;
+    throw InputError(field("method"), "analytic is model B's closed form; model A has none (use numeric)");
+  const double t_end = o.t_end ? check_range(*o.t_end, ranges::step, field("t_end")) : incline::default_duration(p);
+  const double dt = o.dt ? check_range(*o.dt, ranges::step, field("dt")) : t_end / 500;
   if (!std::isfinite(t_end) || !std::isfinite(dt) || !(dt > 0))
-    throw InputError("--t-end", "the default duration is not finite for these parameters; give --t-end and --dt");
+    throw InputError(field("t_end"), "the default duration is not finite for these parameters; give " + field("t_end") + " and " + field("dt"));
   const std::vector<double> times = time_grid(t_end, dt);
 
   std::optional<io::AtomicFile> file;  // opened first: a bad path fails before the work
@@ -157,28 +166,29 @@ InclineSimulateResult incline_simulate(const InclineSimulateOptions& o) {
 // ---- families -------------------------------------------------------------------------
 
 InclineFamiliesResult incline_families(const InclineFamiliesOptions& s) {
+  check_output_paths({}, {{"out", s.out}, {"report", s.report}});  // before any work (app/output_paths.hpp)
   InclineFamiliesResult res;
   incline::FamilyOptions& o = res.options;
   std::string skip;
   if (s.vary == "v0") {
     o.vary = incline::FamilyParameter::v0;
-    skip = "--v0";
+    skip = field("v0");
   } else if (s.vary == "phi") {
     o.vary = incline::FamilyParameter::phi;
-    skip = "--phi-deg";
+    skip = field("phi_deg");
   } else if (s.vary == "mu") {
     o.vary = incline::FamilyParameter::mu;
-    skip = "--mu";
+    skip = field("mu");
   } else {
-    throw InputError("--vary", "must be v0, phi or mu, got '" + s.vary + "'");
+    throw InputError(field("vary"), "must be v0, phi or mu, got '" + s.vary + "'");
   }
   o.base = incline_launch_parameters(s.launch, skip);
-  if (s.values.empty()) throw InputError("--values", "is required");
+  if (s.values.empty()) throw MissingOptionError(field("values"), "is required");
   const bool phi = o.vary == incline::FamilyParameter::phi;
   for (double v : s.values) {
     if (phi) {
       if (!(v >= 0 && v < 90))
-        throw InputError("--values", "phi must be in [0, 90) degrees, got " + io::format_number(v));
+        throw InputError(field("values"), "phi must be in [0, 90) degrees, got " + io::format_number(v));
       v = to_rad(v);
     } else {
       check_range(v, o.vary == incline::FamilyParameter::v0 ? ranges::speed : ranges::friction,
@@ -187,9 +197,9 @@ InclineFamiliesResult incline_families(const InclineFamiliesOptions& s) {
     o.values.push_back(v);
   }
   if (!(s.samples >= 2 && s.samples <= 1000000))
-    throw InputError("--samples", "must be an integer in [2, 1000000], got " + std::to_string(s.samples));
+    throw InputError(field("samples"), "must be an integer in [2, 1000000], got " + std::to_string(s.samples));
   o.samples = s.samples;
-  if (s.t_end) o.t_end = check_range(*s.t_end, ranges::step, "--t-end");
+  if (s.t_end) o.t_end = check_range(*s.t_end, ranges::step, field("t_end"));
   const incline::Family& f = res.family = incline::make_family(o);
   std::optional<io::AtomicFile> file;
   if (!s.out.empty()) file.emplace(s.out);
@@ -208,12 +218,7 @@ InclineFamiliesResult incline_families(const InclineFamiliesOptions& s) {
     const auto& pr = m.prediction;
     json e;
     e[column] = shown;
-    e["k"] = finite_or_null(pr.k);
-    e["regime"] = incline::to_string(pr.regime);
-    e["t_stop"] = json_or_null(pr.t_stop);
-    e["x_stop"] = json_or_null(pr.x_stop);
-    e["y_stop"] = json_or_null(pr.y_stop);
-    e["x_limit"] = json_or_null(pr.x_limit);
+    add_prediction_keys(e, pr);
     e["t_end"] = m.t_end;
     const double v0 = m.parameters.v0;
     const bool stops = pr.t_stop && v0 > 0;

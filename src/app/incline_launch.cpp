@@ -18,19 +18,19 @@ incline::Parameters incline_launch_parameters(const InclineLaunchOptions& o, con
   auto need = [&](const std::optional<double>& v, const std::string& option) {
     if (!v) {
       if (option == skip) return 0.0;
-      throw InputError(option, "is required");
+      throw MissingOptionError(option, "is required");
     }
     return *v;
   };
   // Physical ranges: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
-  p.mu = check_range(need(o.mu, "--mu"), ranges::friction, "--mu");
-  const double phi_deg = need(o.phi_deg, "--phi-deg");
+  p.mu = check_range(need(o.mu, field("mu")), ranges::friction, field("mu"));
+  const double phi_deg = need(o.phi_deg, field("phi_deg"));
   if (!(phi_deg >= 0 && phi_deg < 90))
-    throw InputError("--phi-deg", "must be in [0, 90), got " + io::format_number(phi_deg));
+    throw InputError(field("phi_deg"), "must be in [0, 90), got " + io::format_number(phi_deg));
   p.phi = to_rad(phi_deg);
-  p.v0 = check_range(need(o.v0, "--v0"), ranges::speed, "--v0");
-  p.g = check_range(o.g, ranges::gravity, "--g");
-  if (o.mu_static) p.mu_static = check_range(*o.mu_static, ranges::friction, "--mu-static");
+  p.v0 = check_range(need(o.v0, field("v0")), ranges::speed, field("v0"));
+  p.g = check_range(o.g, ranges::gravity, field("g"));
+  if (o.mu_static) p.mu_static = check_range(*o.mu_static, ranges::friction, field("mu_static"));
   p.check();
   return p;
 }

@@ -1,6 +1,8 @@
 #include "app/study_citation.hpp"
 #include "app/incline_stop.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/report_incline_analysis.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
@@ -10,29 +12,30 @@
 namespace tribolab::app {
 
 InclineMuFromStopResult incline_mu_from_stop(const InclineMuFromStopOptions& s) {
+  check_output_paths({}, {{"report", s.report}});  // before any work (app/output_paths.hpp)
   using nlohmann::json;
-  auto need = [](const std::optional<double>& v, const char* option) {
-    if (!v) throw InputError(option, "is required");
+  auto need = [](const std::optional<double>& v, const std::string& option) {
+    if (!v) throw MissingOptionError(option, "is required");
     return *v;
   };
   InclineMuFromStopResult res;
   incline::StopMeasurement& m = res.measurement;
-  const double phi_deg = need(s.phi_deg, "--phi-deg");
+  const double phi_deg = need(s.phi_deg, field("phi_deg"));
   if (!(phi_deg > 0 && phi_deg < 90))
-    throw InputError("--phi-deg", "must be in (0, 90), got " + io::format_number(phi_deg));
+    throw InputError(field("phi_deg"), "must be in (0, 90), got " + io::format_number(phi_deg));
   m.phi = to_rad(phi_deg);
-  m.x_stop = check_range(need(s.x_stop, "--x-stop"), ranges::position, "--x-stop");
+  m.x_stop = check_range(need(s.x_stop, field("x_stop")), ranges::position, field("x_stop"));
   if (!(m.x_stop > 0))
-    throw InputError("--x-stop", "must be > 0 (launch along +x); no physical root, got " + io::format_number(m.x_stop));
-  m.y_stop = check_range(need(s.y_stop, "--y-stop"), ranges::position, "--y-stop");
+    throw InputError(field("x_stop"), "must be > 0 (launch along +x); no physical root, got " + io::format_number(m.x_stop));
+  m.y_stop = check_range(need(s.y_stop, field("y_stop")), ranges::position, field("y_stop"));
   if (!(m.y_stop < 0))
-    throw InputError("--y-stop", "must be < 0 (the disc ends below the launch line); no physical root, got " +
+    throw InputError(field("y_stop"), "must be < 0 (the disc ends below the launch line); no physical root, got " +
                                      io::format_number(m.y_stop));
   const bool has_sigma = s.sigma_phi_deg || s.sigma_pos;
   if (s.sigma_phi_deg)
-    m.sigma_phi = to_rad(check_range(*s.sigma_phi_deg, ranges::angle_sigma_deg, "--sigma-phi-deg"));
-  if (s.sigma_pos) m.sigma_pos = check_range(*s.sigma_pos, ranges::noise, "--sigma-pos");
-  m.g = check_range(s.g, ranges::gravity, "--g");
+    m.sigma_phi = to_rad(check_range(*s.sigma_phi_deg, ranges::angle_sigma_deg, field("sigma_phi_deg")));
+  if (s.sigma_pos) m.sigma_pos = check_range(*s.sigma_pos, ranges::noise, field("sigma_pos"));
+  m.g = check_range(s.g, ranges::gravity, field("g"));
   const incline::MuFromStopResult& r = res.fit = incline::mu_from_stop(m);
   json& j = res.json;
   j["mu"] = r.mu;
@@ -43,9 +46,9 @@ InclineMuFromStopResult incline_mu_from_stop(const InclineMuFromStopOptions& s) 
   j["best_phi_deg"] = nullptr;
   j["best_sigma_mu"] = nullptr;
   if (s.plate_size) {
-    const double plate = check_range(*s.plate_size, ranges::distance, "--plate-size");
+    const double plate = check_range(*s.plate_size, ranges::distance, field("plate_size"));
     if (!(m.sigma_phi > 0 || m.sigma_pos > 0))
-      throw InputError("--plate-size", "the advice needs --sigma-phi-deg or --sigma-pos > 0");
+      throw InputError(field("plate_size"), "the advice needs " + field("sigma_phi_deg") + " or " + field("sigma_pos") + " > 0");
     res.advice = incline::best_angle(r.mu, r.v0, incline::SetupConstraint::launch_speed, m.sigma_phi,
                                      m.sigma_pos, plate, m.g);
     j["best_phi_deg"] = to_deg(res.advice->phi);

@@ -4,9 +4,11 @@
 #pragma once
 
 #include "analysis/series.hpp"
+#include "numerics/error.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,18 @@ nlohmann::json series_counts(const std::vector<analysis::RunOutcome<Result>>& ru
     if (!r.ok()) failed.push_back(r.source);
   return {{"n_runs", runs.size()}, {"n_ok", runs.size() - failed.size()}, {"n_failed", failed.size()},
           {"failed", failed}};
+}
+
+/// A per-file option: one value for every file, or exactly one per file (n_files of them);
+/// none gives unset values. InputError naming `option` when the count differs.
+inline std::vector<std::optional<double>> per_file(const std::vector<double>& values, std::size_t n_files,
+                                                   const std::string& option) {
+  if (values.empty()) return std::vector<std::optional<double>>(n_files);
+  if (values.size() == 1) return std::vector<std::optional<double>>(n_files, values.front());
+  if (values.size() != n_files)
+    throw InputError(option, "gives " + std::to_string(values.size()) + " values for " + std::to_string(n_files) +
+                                 (n_files == 1 ? " file" : " files") + " (give one value for all, or one per file)");
+  return {values.begin(), values.end()};
 }
 
 /// The located errors of the failed runs (input order): what a front end reports after the output.

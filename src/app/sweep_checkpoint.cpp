@@ -113,16 +113,16 @@ SweepCheckpoint::SweepCheckpoint(const SweepCommandOptions& o, const SweepHeader
     try {
       scan = scan_sweep_file(out_);
     } catch (const InputError& e) {
-      throw InputError(std::string(e.what()) + " (--out exists and is not this sweep's output; "
-                                               "pass --restart to overwrite it)");
+      throw InputError(marked_message(e) + " (" + field("out") + " exists and is not this sweep's output; "
+                                               "pass " + field("restart") + " to overwrite it)");
     }
     if (format_header(scan.header) != format_header(header)) {
       throw InputError(out_, "exists and holds a different sweep (differs in " +
                                  difference_impl(scan.header, header, true) +
-                                 "); pass --restart to overwrite it");
+                                 "); pass " + field("restart") + " to overwrite it");
     }
     if (scan.complete_cells != scan.expected_cells || scan.torn_tail) {
-      throw InputError(out_, "exists but is incomplete; pass --restart to recompute it");
+      throw InputError(out_, "exists but is incomplete; pass " + field("restart") + " to recompute it");
     }
     reused_ = true;
     return;
@@ -153,13 +153,13 @@ SweepCheckpoint::SweepCheckpoint(const SweepCommandOptions& o, const SweepHeader
     try {
       scan = scan_sweep_file(partial_);
     } catch (const InputError& e) {
-      throw InputError(std::string(e.what()) +
-                       " (the checkpoint is damaged; delete it or pass --restart)");
+      throw InputError(marked_message(e) +
+                       " (the checkpoint is damaged; delete it or pass " + field("restart") + ")");
     }
     if (format_header(scan.header) != format_header(header)) {
       throw InputError(partial_, "is the checkpoint of a different sweep (differs in " +
                                      difference_impl(scan.header, header, true) +
-                                     "); delete it or pass --restart");
+                                     "); delete it or pass " + field("restart"));
     }
     // Drop a torn last line (the process was killed in the middle of a write).
     if (::ftruncate(fd.get(), static_cast<off_t>(scan.valid_bytes)) != 0) {

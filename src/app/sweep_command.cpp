@@ -20,25 +20,12 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-std::string option_of(sweep::Quantity q) {
-  switch (q) {
-    case sweep::Quantity::speed: return "--speed";
-    case sweep::Quantity::mu: return "--mu";
-    case sweep::Quantity::theta_deg: return "--theta-deg";
-    case sweep::Quantity::omega: return "--omega";
-    case sweep::Quantity::ratio: return "--ratio";
-  }
-  return "";
-}
-
-/// "theta_deg: message" (a core validation message) -> "--theta-deg: message".
+/// "theta_deg: message" (a core validation message) -> the same with the field marked
+/// (numerics/error.hpp: the command line shows "--theta-deg: message").
 std::string with_option_names(const std::string& message) {
   const auto colon = message.find(": ");
-  if (colon != std::string::npos) {
-    if (auto q = sweep::quantity_from_name(std::string_view(message).substr(0, colon))) {
-      return option_of(*q) + message.substr(colon);
-    }
-  }
+  if (colon != std::string::npos && sweep::quantity_from_name(std::string_view(message).substr(0, colon)))
+    return field(message.substr(0, colon)) + message.substr(colon);
   return message;
 }
 
@@ -99,36 +86,46 @@ std::string to_string(SweepStatus s) {
 
 std::string SweepCommandOptions::validate() const {
   if (auto e = grid.validate(); !e.empty()) return with_option_names(e);
-  if (auto e = shard.validate(); !e.empty()) return "--shard: " + e;
-  if (out.empty()) return "--out: an output file is required";
-  if (threads < 0) return "--threads: must be >= 0 (0 = all cores), got " + std::to_string(threads);
+  if (auto e = shard.validate(); !e.empty()) return field("shard") + ": " + e;
+  if (out.empty()) return field("out") + ": an output file is required";
+  if (threads < 0) return field("threads") + ": must be >= 0 (0 = all cores), got " + std::to_string(threads);
   if (chunk_cells < 0) return "chunk_cells must be >= 0";
   if (!(fsync_interval_s > 0)) return "fsync_interval_s must be > 0";
   const bool maps = !contour_out.empty() || !threshold_out.empty();
   if (maps && shard.count > 1) {
-    return std::string(contour_out.empty() ? "--threshold" : "--contour") +
+    return std::string(contour_out.empty() ? field("threshold") : field("contour")) +
            ": needs the whole grid, not one shard; merge the shards with `tribolab bounce merge`, "
-           "then rerun the same sweep with --out set to the merged file";
+           "then rerun the same sweep with " + field("out") + " set to the merged file";
   }
-  if (auto e = contour.validate(); !e.empty()) return "--contour: " + e;
+  if (auto e = contour.validate(); !e.empty()) return field("contour") + ": " + e;
   for (const std::string* p : {&contour_out, &threshold_out}) {
     if (!p->empty() && (*p == out || *p == out + ".partial")) {
-      return "--contour/--threshold: must not be the sweep output file " + out;
+      return field("contour") + "/" + field("threshold") + ": must not be the sweep output file " + out;
     }
   }
   if (!contour_out.empty() && contour_out == threshold_out) {
-    return "--contour and --threshold must be different files";
+    return field("contour") + " and " + field("threshold") + " must be different files";
   }
   return {};
 }
 
-SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::CellModel& model,
-                                     const SweepProgressCallback& progress, const std::atomic<bool>* cancel) {
+SweepCommandResult checked_sweep_start(const SweepCommandOptions& o, const sweep::CellModel& model) {
   if (auto e = o.validate(); !e.empty()) throw InputError(e);
   if (auto e = model.validate(); !e.empty()) throw InputError("cell model: " + e);
+  SweepCommandResult r;
+  r.out = o.out;
+  r.cells_grid = o.grid.cell_count();
+  r.cells_shard = o.shard.cells(r.cells_grid);
+  r.threads = sweep::resolve_threads(o.threads);
+  return r;
+}
+
+SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::CellModel& model,
+                                     const SweepProgressCallback& progress, const std::atomic<bool>* cancel) {
+  SweepCommandResult r = checked_sweep_start(o, model);
   if ((!o.contour_out.empty() || !o.threshold_out.empty() || o.keep_derived) &&
       model.output_index(o.contour.output) < 0) {
-    throw InputError("--contour: the cell model has no output '" + o.contour.output + "'");
+    throw InputError(field("contour") + ": the cell model has no output '" + o.contour.output + "'");
   }
   {
     const fs::path target(o.out);
@@ -137,11 +134,6 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
     if (fs::is_directory(target)) throw InputError(o.out, "is a directory, expected a file name");
   }
   const SweepHeader header{o.grid, o.shard, model.output_names, model.description};
-  SweepCommandResult r;
-  r.out = o.out;
-  r.cells_grid = o.grid.cell_count();
-  r.cells_shard = o.shard.cells(r.cells_grid);
-  r.threads = sweep::resolve_threads(o.threads);
   SweepCheckpoint file(o, header);
   if (file.reused()) {
     r.status = SweepStatus::reused;
@@ -180,7 +172,7 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
 
 MergeResult run_merge_command(const std::vector<std::string>& inputs, const std::string& out) {
   if (inputs.empty()) throw InputError("merge: no input files given");
-  if (out.empty()) throw InputError("--out: an output file is required");
+  if (out.empty()) throw InputError(field("out") + ": an output file is required");
   std::vector<SweepHeader> headers;
   for (const std::string& path : inputs) {
     if (!fs::exists(path)) throw InputError(path, "no such file");

@@ -79,6 +79,11 @@ struct SweepCommandResult {
 /// already holds this complete sweep is reused (status "reused"; only the derived maps are
 /// computed); one holding another sweep is an error unless restart. `progress` (when not
 /// empty) is called as chunks complete. Throws InputError for invalid options or files.
+/// Checks the options and the cell model (InputError) and returns a result holding the sizes
+/// (out, cells of the grid and of the shard, threads): the start the threaded and the MPI
+/// sweep share.
+SweepCommandResult checked_sweep_start(const SweepCommandOptions& options, const sweep::CellModel& model);
+
 SweepCommandResult run_sweep_command(const SweepCommandOptions& options, const sweep::CellModel& model,
                                      const SweepProgressCallback& progress,
                                      const std::atomic<bool>* cancel = nullptr);

@@ -228,7 +228,7 @@ TEST(SweepCommand, ReusesAFinishedOutputAndRefusesAnotherSweepsFiles) {
   SweepCommandOptions other = o;
   other.grid.axes[2].count = 5;
   EXPECT_NE(message_of([&] { run_sweep_command(other, m, nullptr); })
-                .find("map.csv: exists and holds a different sweep (differs in grid); pass --restart"),
+                .find("map.csv: exists and holds a different sweep (differs in grid); pass restart"),
             std::string::npos);
   EXPECT_EQ(read_file(o.out), first);  // untouched
   other.restart = true;
@@ -252,7 +252,7 @@ TEST(SweepCommand, RefusesTheCheckpointOfADifferentSweep) {
   other.description = "different K";
   EXPECT_NE(message_of([&] { run_sweep_command(o, other, nullptr); })
                 .find("map.csv.partial: is the checkpoint of a different sweep (differs in physical "
-                      "options); delete it or pass --restart"),
+                      "options); delete it or pass restart"),
             std::string::npos);
   SweepCommandOptions restart = o;
   restart.restart = true;
@@ -332,20 +332,20 @@ TEST(SweepCommand, InvalidOptionsNameTheOptionAndWriteNothing) {
   SweepCommandOptions o = options_for(dir + "/map.csv");
   o.shard = sweep::Shard{0, 2};
   o.contour_out = dir + "/c.csv";
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("--contour: needs the whole grid"),
+  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("contour: needs the whole grid"),
             std::string::npos);
   o = options_for(dir + "/missing_dir/map.csv");
   EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("directory does not exist"),
             std::string::npos);
   o = options_for(dir + "/map.csv");
   o.grid.axes[0].count = 0;
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("--mu: count must be at least 1"),
+  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("mu: count must be at least 1"),
             std::string::npos);
   o = options_for(dir + "/map.csv");
   o.threads = -1;
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("--threads"), std::string::npos);
+  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("threads"), std::string::npos);
   o = options_for("");
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("--out"), std::string::npos);
+  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("out"), std::string::npos);
   o = options_for(dir + "/map.csv");
   o.threshold_out = dir + "/t.csv";
   sweep::CellModel no_e = m;

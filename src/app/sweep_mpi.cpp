@@ -73,14 +73,8 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   // Validation is deterministic: every rank throws the same error, no communication needed.
-  if (auto e = o.validate(); !e.empty()) throw InputError(e);
-  if (auto e = model.validate(); !e.empty()) throw InputError("cell model: " + e);
+  SweepCommandResult r = checked_sweep_start(o, model);
   const SweepHeader header{o.grid, o.shard, model.output_names, model.description};
-  SweepCommandResult r;
-  r.out = o.out;
-  r.cells_grid = o.grid.cell_count();
-  r.cells_shard = o.shard.cells(r.cells_grid);
-  r.threads = sweep::resolve_threads(o.threads);
 
   // 1. Rank 0 opens (or resumes, or reuses) the output; everyone learns where to start.
   std::unique_ptr<SweepCheckpoint> file;
@@ -91,14 +85,14 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
     try {
       if ((!o.contour_out.empty() || !o.threshold_out.empty() || o.keep_derived) &&
           model.output_index(o.contour.output) < 0) {
-        throw InputError("--contour: the cell model has no output '" + o.contour.output + "'");
+        throw InputError(field("contour") + ": the cell model has no output '" + o.contour.output + "'");
       }
       file = std::make_unique<SweepCheckpoint>(o, header);
       decision = file->reused() ? kReused : kContinue;
       first = file->reused() ? 0 : file->first_local();
     } catch (const std::exception& e) {
       decision = kError;
-      message = e.what();
+      message = marked_message(e);
     }
   }
   if (agree(decision, message) == kReused) {
@@ -139,7 +133,7 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
     try {
       sweep::run_cells(o.grid, model, o.shard, lo, ro, sink, hi);
     } catch (const std::exception& e) {
-      error = e.what();
+      error = marked_message(e);
       failed = true;
     }
     // A failed rank sends its error message instead of its lines.
@@ -174,7 +168,7 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
         }
       } catch (const std::exception& e) {
         decision = kError;
-        message = e.what();
+        message = marked_message(e);
       }
       if (progress) {
         sweep::Progress p;

@@ -1,5 +1,7 @@
 #include "app/track_import.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "io/atomic_file.hpp"
 #include "io/track_csv.hpp"
 #include "numerics/error.hpp"
@@ -54,12 +56,13 @@ const track::Track& choose_track(const track::TrackSet& set, const std::string& 
   std::string names;
   for (const auto* t : with_points) names += (names.empty() ? "'" : ", '") + t->name + "'";
   throw InputError(set.source, "the file holds " + std::to_string(with_points.size()) +
-                                   " tracks (" + names + "); choose one with --track");
+                                   " tracks (" + names + "); choose one with " + field("track"));
 }
 
 nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 TrackImportResult track_import(const TrackImportOptions& options) {
+  check_output_paths({options.input.file}, {{"out", options.out}});  // before any work (app/output_paths.hpp)
   const track::TrackSet set = io::read_tracks(options.input.file, import_options(options.input, options.track));
   TrackImportResult r;
   nlohmann::json& j = r.json;

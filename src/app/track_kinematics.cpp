@@ -1,5 +1,7 @@
 #include "app/track_kinematics.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/report_track.hpp"
 #include "io/atomic_file.hpp"
 #include "io/track_csv.hpp"
@@ -11,22 +13,23 @@
 namespace tribolab::app {
 
 TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options) {
+  check_output_paths({options.input.file}, {{"out", options.out}, {"report", options.report}});  // before any work (app/output_paths.hpp)
   const TrackKinematicsOptions defaults;
   track::KinematicsOptions o;
   if (options.method == "tracker") {
     o.method = track::DerivativeMethod::tracker;
     if (options.window != defaults.window || options.order != defaults.order) {
-      throw InputError("--window/--order", "apply to --method savgol only");
+      throw InputError(field("window") + "/" + field("order"), "apply to " + field("method") + " savgol only");
     }
   } else if (options.method == "savgol") {
     o.method = track::DerivativeMethod::savgol;
   } else {
-    throw InputError("--method", "must be tracker or savgol, got '" + options.method + "'");
+    throw InputError(field("method"), "must be tracker or savgol, got '" + options.method + "'");
   }
   if (options.impacts != "auto" && options.impacts != "none") {
-    throw InputError("--impacts", "must be auto or none, got '" + options.impacts + "'");
+    throw InputError(field("impacts"), "must be auto or none, got '" + options.impacts + "'");
   }
-  if (options.out.empty()) throw InputError("--out", "the output CSV is required");
+  if (options.out.empty()) throw MissingOptionError(field("out"), "the output CSV is required");
   o.window = options.window;
   o.order = options.order;
   o.split_at_impacts = options.impacts == "auto";

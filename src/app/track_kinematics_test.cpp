@@ -83,12 +83,12 @@ TEST(TrackKinematics, BadOptionsThrowTheCliMessages) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(message([](auto& c) { c.method = "spline"; }), "--method: must be tracker or savgol, got 'spline'");
-  EXPECT_EQ(message([](auto& c) { c.window = 9; }), "--window/--order: apply to --method savgol only");
-  EXPECT_EQ(message([](auto& c) { c.impacts = "maybe"; }), "--impacts: must be auto or none, got 'maybe'");
-  EXPECT_NE(message([](auto& c) { c.track.clear(); }).find("choose one with --track"), std::string::npos);
+  EXPECT_EQ(message([](auto& c) { c.method = "spline"; }), "method: must be tracker or savgol, got 'spline'");
+  EXPECT_EQ(message([](auto& c) { c.window = 9; }), "window/order: apply to method savgol only");
+  EXPECT_EQ(message([](auto& c) { c.impacts = "maybe"; }), "impacts: must be auto or none, got 'maybe'");
+  EXPECT_NE(message([](auto& c) { c.track.clear(); }).find("choose one with track"), std::string::npos);
   EXPECT_NE(message([](auto& c) { c.track = "C"; }).find("available tracks: 'A', 'B'"), std::string::npos);
-  EXPECT_NE(message([](auto& c) { c.out.clear(); }).find("--out"), std::string::npos);
+  EXPECT_NE(message([](auto& c) { c.out.clear(); }).find("out"), std::string::npos);
   EXPECT_FALSE(fs::exists(o.out));
 }
 

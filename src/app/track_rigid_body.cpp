@@ -1,5 +1,7 @@
 #include "app/track_rigid_body.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/report_track_rigid_body.hpp"
 #include "io/atomic_file.hpp"
 #include "numerics/error.hpp"
@@ -32,14 +34,14 @@ void write_csv(std::ostream& out, const track::RigidBody& body) {
 std::string percent(double fraction) { return fmt::format("{:.1f} %", 100 * fraction); }
 
 void validate(const TrackRigidBodyOptions& o) {
-  if (o.track_a.empty()) throw InputError("--track-a", "name the track of point A");
-  if (o.track_b.empty()) throw InputError("--track-b", "name the track of point B");
+  if (o.track_a.empty()) throw InputError(field("track_a"), "name the track of point A");
+  if (o.track_b.empty()) throw InputError(field("track_b"), "name the track of point B");
   if (o.track_a == o.track_b) {
-    throw InputError("--track-b", "must name another track than --track-a ('" + o.track_a + "')");
+    throw InputError(field("track_b"), "must name another track than " + field("track_a") + " ('" + o.track_a + "')");
   }
-  if (o.window < 3) throw InputError("--window", "must be at least 3 points, got " + std::to_string(o.window));
+  if (o.window < 3) throw InputError(field("window"), "must be at least 3 points, got " + std::to_string(o.window));
   if (!(o.max_drift > 0 && o.max_drift <= 1)) {
-    throw InputError("--max-drift", "must lie in (0, 1] (a fraction of the A-B distance), got " +
+    throw InputError(field("max_drift"), "must lie in (0, 1] (a fraction of the A-B distance), got " +
                                         fmt::format("{}", o.max_drift));
   }
 }
@@ -75,6 +77,7 @@ LengthCheck check_length(const track::RigidBody& body) {
 }
 
 TrackRigidBodyResult track_rigid_body(const TrackRigidBodyOptions& options) {
+  check_output_paths({options.input.file}, {{"out", options.out}, {"report", options.report}});  // before any work (app/output_paths.hpp)
   validate(options);
   const track::TrackSet set =
       io::read_tracks(options.input.file, import_options(options.input, {options.track_a, options.track_b}));

@@ -209,14 +209,16 @@ TEST(TrackRigidBody, BadInputThrowsOneClearError) {
     change(c);
     return c;
   };
-  expect_input_error(with([](auto& c) { c.track_a.clear(); }), "--track-a");
-  expect_input_error(with([](auto& c) { c.track_b.clear(); }), "--track-b");
-  expect_input_error(with([](auto& c) { c.track_b = "A"; }), "--track-b: must name another track");
+  expect_input_error(with([](auto& c) { c.track_a.clear(); }), "track_a");
+  expect_input_error(with([](auto& c) { c.track_b.clear(); }), "track_b");
+  expect_input_error(with([](auto& c) { c.track_b = "A"; }), "track_b: must name another track");
   expect_input_error(with([](auto& c) { c.track_b = "C"; }), "available tracks: 'A', 'B'");
-  expect_input_error(with([](auto& c) { c.window = 2; }), "--window");
-  expect_input_error(with([](auto& c) { c.max_drift = 0; }), "--max-drift");
+  expect_input_error(with([](auto& c) { c.window = 2; }), "window");
+  expect_input_error(with([](auto& c) { c.max_drift = 0; }), "max_drift");
   expect_input_error(with([&](auto& c) { c.input.file = dir + "/missing.csv"; }), "missing.csv");
-  expect_input_error(with([&](auto& c) { c.out = dir + "/no/such/folder.csv"; }), "folder.csv");
+  // The output folder is checked before any work (app/output_paths.hpp), naming the field.
+  expect_input_error(with([&](auto& c) { c.out = dir + "/no/such/folder.csv"; }),
+                     "out: directory '" + dir + "/no/such' does not exist");
   // one point only, and too few common frames
   b.frames = 2;
   expect_input_error(with([&](auto& c) { c.input.file = b.write(dir + "/two.csv"); }),

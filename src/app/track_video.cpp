@@ -1,5 +1,7 @@
 #include "app/track_video.hpp"
 
+#include "app/output_paths.hpp"
+
 #include "app/report_track_video.hpp"
 #include "app/track_import.hpp"
 #include "io/atomic_file.hpp"
@@ -75,8 +77,8 @@ video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
   o.ellipse.max_gap_frames = a.max_gap;
   o.progress = a.progress;
   if (a.report.empty()) o.thumbnails = 0;
-  for (const auto& s : a.start) o.targets.push_back(parse_target(s, video::Target::Kind::point, "--start"));
-  for (const auto& s : a.ellipse) o.targets.push_back(parse_target(s, video::Target::Kind::ellipse, "--ellipse"));
+  for (const auto& s : a.start) o.targets.push_back(parse_target(s, video::Target::Kind::point, field("start")));
+  for (const auto& s : a.ellipse) o.targets.push_back(parse_target(s, video::Target::Kind::ellipse, field("ellipse")));
   for (const auto& name : a.from_track) {
     video::Target t;
     t.name = name;
@@ -84,17 +86,20 @@ video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
     o.targets.push_back(t);
   }
   if (!a.calibrate.empty()) {
-    const auto v = numbers(a.calibrate, 5, "--calibrate");
+    const auto v = numbers(a.calibrate, 5, field("calibrate"));
     o.source.calibrate_points = std::make_pair(cv::Point2d(v[0], v[1]), cv::Point2d(v[2], v[3]));
     o.source.calibrate_length_m = v[4];
   }
   if (!a.origin.empty()) {
-    const auto v = numbers(a.origin, 2, "--origin");
+    const auto v = numbers(a.origin, 2, field("origin"));
     o.source.origin_px = cv::Point2d(v[0], v[1]);
   }
   if (!a.write_trk.empty() && !ends_with_trk(a.write_trk)) {
-    throw InputError("--write-trk " + a.write_trk, "the project file must end in .trk");
+    throw InputError(field("write_trk") + " " + a.write_trk, "the project file must end in .trk");
   }
+  if (a.start.empty() && a.ellipse.empty() && a.from_track.empty())  // a missing required option
+    throw MissingOptionError("nothing to track: give " + field("start") + ", " + field("ellipse") + " or " +
+                             field("from_track"));
   if (const auto err = o.validate(); !err.empty()) throw InputError(err);
   return o;
 }
@@ -164,8 +169,9 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
 }  // namespace
 
 TrackVideoResult track_video(const TrackVideoOptions& options) {
+  check_output_paths({options.input}, {{"out", options.out}, {"write_trk", options.write_trk}, {"report", options.report}});  // before any work (app/output_paths.hpp)
   const video::TrackVideoOptions o = build_options(options);
-  if (options.out.empty()) throw InputError("--out", "the output CSV is required");
+  if (options.out.empty()) throw MissingOptionError(field("out"), "the output CSV is required");
   // open the outputs first: a bad output path fails before minutes of decoding
   io::AtomicFile csv(options.out);
   std::unique_ptr<io::AtomicFile> trk;

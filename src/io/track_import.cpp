@@ -37,13 +37,13 @@ bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.
 
 std::string ImportOptions::validate() const {
   // Physical range: numerics/physical_range.hpp (docs/cli.md#physical-ranges).
-  if (auto e = range_error(time_scale, ranges::time_scale, "--time-scale"); !e.empty())
+  if (auto e = range_error(time_scale, ranges::time_scale, field("time_scale")); !e.empty())
     return e + " (real seconds per file second)";
   if (!length_unit.empty()) {
     try {
-      metres_per_unit(length_unit, "--length-unit");
+      metres_per_unit(length_unit, field("length_unit"));
     } catch (const InputError& e) {
-      return e.what();
+      return marked_message(e);  // its field kept marked
     }
   }
   return "";
@@ -72,7 +72,7 @@ void finish_import(track::TrackSet& set, const ImportOptions& options) {
   }
   const std::string unit = options.length_unit.empty() ? set.file_length_unit : options.length_unit;
   const double k = metres_per_unit(unit, options.length_unit.empty() ? set.source + ": length unit"
-                                                                      : "--length-unit");
+                                                                      : field("length_unit"));
   set.file_length_unit = unit;
   set.time_scale = options.time_scale;
   bool any = false;

@@ -63,14 +63,14 @@ TEST(ReadTracks, ErrorsAreClear) {
   EXPECT_THAT(err(std::filesystem::temp_directory_path().string()), HasSubstr("directory"));
   ImportOptions bad;
   bad.time_scale = -1;
-  EXPECT_THAT(err(temp("c.txt", write_export_text(two())), bad), HasSubstr("--time-scale"));
+  EXPECT_THAT(err(temp("c.txt", write_export_text(two())), bad), HasSubstr("time_scale"));
   ImportOptions unknown;
   unknown.tracks = {"C"};
   EXPECT_THAT(err(temp("d.txt", write_export_text(two())), unknown),
               HasSubstr("available tracks: 'A', 'B'"));
   ImportOptions unit;
   unit.length_unit = "parsec";
-  EXPECT_THAT(err(temp("e.txt", write_export_text(two())), unit), HasSubstr("--length-unit"));
+  EXPECT_THAT(err(temp("e.txt", write_export_text(two())), unit), HasSubstr("length_unit"));
   EXPECT_THAT(err(temp("f.txt", "\xef\xbb\xbf   \n")), HasSubstr("empty"));
   EXPECT_THAT(err(temp("g.txt", "t,x,y\n")), HasSubstr("no tracked points"));
 }

@@ -13,12 +13,15 @@
 // * Both derive from Error (where() + message): the command-line layer catches them and
 //   prints one line, "tribolab: error: <where>: <message>", exit status 1; library users
 //   catch Error, or std::exception.
+// * The core names an option by its field (field("time_scale")), never by a front end's
+//   spelling: the command line shows it as --time-scale, Python as time_scale.
 // * Internal invariants are checked with TRIBOLAB_ASSERT, which prints both the
 //   condition and the values involved and aborts: such a failure is a bug in tribolab.
 // * Non-finite numbers are never passed on silently: require_finite() turns them into
 //   an InputError naming the quantity.
 #pragma once
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -28,17 +31,60 @@
 
 namespace tribolab {
 
+/// A field of an option struct named in a message, as the core spells it: its snake_case
+/// name between two control characters, field("time_scale"), written where the message
+/// names the input (`InputError(field("time_scale"), "must be positive")`, `field("order") +
+/// " must be 1..6"`). Each front end spells it its own way (Error::message): the command line
+/// `--time-scale`, Python (and what()) `time_scale` (docs/design.md, "Errors").
+inline constexpr char kFieldOpen = '\x1e', kFieldClose = '\x1f';
+inline std::string field(std::string_view name) {
+  return kFieldOpen + std::string(name) + kFieldClose;
+}
+
+/// `text` with every field(...) in it spelled by `spell(name)`; other text unchanged.
+template <class Spell>
+std::string spell_fields(std::string_view text, Spell spell) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t open = text.find(kFieldOpen, i);
+    const std::size_t close = open == std::string_view::npos ? open : text.find(kFieldClose, open + 1);
+    if (close == std::string_view::npos) {
+      out.append(text.substr(i));
+      break;
+    }
+    out.append(text.substr(i, open - i));
+    out += spell(text.substr(open + 1, close - open - 1));
+    i = close + 1;
+  }
+  return out;
+}
+
+/// `text` with its fields named as the option structs name them (time_scale).
+inline std::string plain_fields(std::string_view text) {
+  return spell_fields(text, [](std::string_view name) { return std::string(name); });
+}
+
 /// An error tribolab reports to its user: what() is the whole message, `where()` names the
-/// source ("file.csv:12", "--mu", "model A") when one is known.
+/// source ("file.csv:12", "time_scale", "model A") when one is known. Fields named with
+/// field() read as their plain names in what() and where(); message(spell) spells them as a
+/// front end does.
 class Error : public std::runtime_error {
  public:
-  explicit Error(const std::string& message) : std::runtime_error(message) {}
+  explicit Error(const std::string& message) : std::runtime_error(plain_fields(message)), text_(message) {}
   Error(const std::string& where, const std::string& message)
-      : std::runtime_error(where.empty() ? message : where + ": " + message), where_(where) {}
+      : std::runtime_error(plain_fields(where.empty() ? message : where + ": " + message)),
+        where_(plain_fields(where)),
+        text_(where.empty() ? message : where + ": " + message) {}
   const std::string& where() const noexcept { return where_; }
+  /// The whole message with each field spelled by `spell(name)` (the command line: "--" and
+  /// dashes for underscores).
+  template <class Spell>
+  std::string message(Spell spell) const { return spell_fields(text_, spell); }
 
  private:
   std::string where_;
+  std::string text_;  ///< the message with its field() marks
 };
 
 /// Invalid input from the user: a parameter, an option or a file, or data that cannot
@@ -48,11 +94,40 @@ class InputError : public Error {
   using Error::Error;
 };
 
+/// A required input is missing ("give --start, --ellipse or --from-track"): to the command
+/// line a malformed command line (exit 2, as a missing required option), to Python a ValueError.
+class MissingOptionError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 /// A solver failed on valid input: an integration gave up, a root or fit did not converge.
 class SolverError : public Error {
  public:
   using Error::Error;
 };
+
+/// The InputError of a validate() message. "name: what", name a field as the option structs
+/// spell it (range_error(v, r, "slip_scale") writes that), names field(name); a message that
+/// already names its field with field(), or names none, is kept whole.
+inline InputError input_error_of(const std::string& message) {
+  const auto colon = message.find(':');
+  if (colon == std::string::npos || colon == 0 || colon >= 24 || message.compare(colon, 2, ": ") != 0)
+    return InputError(message);
+  std::string name = message.substr(0, colon);
+  for (char& c : name) {
+    if (c == '-') c = '_';  // the older spelling of a few validate() messages
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return InputError(message);
+  }
+  return InputError(field(name), message.substr(colon + 2));
+}
+
+/// The message of `e` with its fields still marked (an Error's), else what(): for passing a
+/// caught error's text on inside another message or between processes.
+inline std::string marked_message(const std::exception& e) {
+  if (const auto* err = dynamic_cast<const Error*>(&e)) return err->message(field);
+  return e.what();
+}
 
 /// A message on one line, as the front ends print it ("tribolab: error: ..." and Python's
 /// ValueError): line breaks become spaces, trailing spaces go.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <string_view>
 
 namespace tribolab {
 namespace {
@@ -48,6 +49,34 @@ TEST(ErrorConvention, FitFailureTypeFollowsItsStatus) {
     EXPECT_EQ(e.where(), "run.csv");
     EXPECT_STREQ(e.what(), "run.csv: model B cannot be fitted: no convergence");
   }
+}
+
+TEST(ErrorConvention, FieldsAreNamedByTheCoreAndSpelledByEachFrontEnd) {
+  const auto flag = [](std::string_view name) {  // the command line's spelling (cli::flag_of)
+    std::string f = "--" + std::string(name);
+    for (char& c : f)
+      if (c == '_') c = '-';
+    return f;
+  };
+  const InputError e(field("time_scale"), "must name a track other than " + field("track_a"));
+  EXPECT_EQ(e.where(), "time_scale");  // what library users and Python see
+  EXPECT_STREQ(e.what(), "time_scale: must name a track other than track_a");
+  EXPECT_EQ(e.message(flag), "--time-scale: must name a track other than --track-a");
+  // A message without a place, the field inside it.
+  EXPECT_EQ(InputError(field("order") + " must be 1..6, got 9").message(flag), "--order must be 1..6, got 9");
+  // Text around the marks is never touched, even with dashes and underscores.
+  EXPECT_EQ(InputError("file_1--x.csv:3", "bad").message(flag), "file_1--x.csv:3: bad");
+}
+
+TEST(ErrorConvention, ValidateMessagesNameTheirFieldThroughInputErrorOf) {
+  const auto flag = [](std::string_view name) { return "<" + std::string(name) + ">"; };
+  EXPECT_EQ(input_error_of("slip_scale: must be positive").message(flag), "<slip_scale>: must be positive");
+  EXPECT_EQ(input_error_of("slip-scale: must be positive").where(), "slip_scale");  // older spelling
+  EXPECT_EQ(input_error_of("model A: no fit").message(flag), "model A: no fit");    // not a field
+  EXPECT_EQ(input_error_of("thumbnails must be from 0 to 100").message(flag), "thumbnails must be from 0 to 100");
+  EXPECT_EQ(input_error_of(field("fps") + ": 0 is outside").message(flag), "<fps>: 0 is outside");
+  EXPECT_THROW(throw input_error_of("a: b"), InputError);
+  EXPECT_THROW(throw MissingOptionError("nothing to track"), InputError);
 }
 
 }  // namespace

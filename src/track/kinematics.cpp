@@ -20,12 +20,12 @@ const char* to_string(DerivativeMethod m) {
 
 std::string KinematicsOptions::validate() const {
   if (method == DerivativeMethod::savgol) {
-    if (order < 1 || order > 6) return "--order must be 1..6, got " + std::to_string(order);
+    if (order < 1 || order > 6) return field("order") + " must be 1..6, got " + std::to_string(order);
     if (window < order + 2) {
-      return "--window must be at least order + 2 = " + std::to_string(order + 2) + ", got " +
+      return field("window") + " must be at least order + 2 = " + std::to_string(order + 2) + ", got " +
              std::to_string(window);
     }
-    if (window > 1001) return "--window must be at most 1001, got " + std::to_string(window);
+    if (window > 1001) return field("window") + " must be at most 1001, got " + std::to_string(window);
   }
   if (split_at_impacts) return impacts.validate();
   return "";

@@ -11,12 +11,8 @@
 namespace tribolab::video {
 namespace {
 
-// "field: message" -> InputError naming --field (as analysis::synth_video does).
-[[noreturn]] void throw_invalid(const std::string& e) {
-  const auto colon = e.find(':');
-  if (colon != std::string::npos && colon < 24) throw InputError("--" + e.substr(0, colon), e.substr(colon + 2));
-  throw InputError(e);
-}
+// "field: message" -> InputError naming the field (numerics/error.hpp).
+[[noreturn]] void throw_invalid(const std::string& e) { throw input_error_of(e); }
 
 double luma(const cv::Scalar& bgr) { return 0.114 * bgr[0] + 0.587 * bgr[1] + 0.299 * bgr[2]; }
 
@@ -49,7 +45,7 @@ ThrowFilm plan_throw_film(const ThrowFilmOptions& o) {
     film.t0 = std::uniform_real_distribution<double>(0, 1)(rng) * dt;
   }
   film.frames = static_cast<int>(std::floor((m.t_end - film.t0) / dt)) + 1;
-  if (film.frames > 100000) throw InputError("--after", "the video would hold more than 100000 frames");
+  if (film.frames > 100000) throw InputError(field("after"), "the video would hold more than 100000 frames");
 
   // Layout: the floor line at 88 % of the height; the whole path of the ball (centre range
   // +- a) inside 90 % of the width and between the floor and 5 % below the top edge.
@@ -69,7 +65,7 @@ ThrowFilm plan_throw_film(const ThrowFilmOptions& o) {
   }
   v.origin_x_px = 0.5 * (r.width - 1) - 0.5 * (xmin + xmax) / v.scale_m_per_px;
   if (ball.b / v.scale_m_per_px < 2) {
-    throw InputError("--scale", "the ball's semi-minor axis would be " + std::to_string(ball.b / v.scale_m_per_px) +
+    throw InputError(field("scale"), "the ball's semi-minor axis would be " + std::to_string(ball.b / v.scale_m_per_px) +
                                     " px; need at least 2 px (a larger image or a smaller scale)");
   }
   if (o.floor_band) r.floor_y_px = v.origin_y_px;

@@ -99,7 +99,7 @@ TEST(ThrowFilm, InvalidOptionsNameTheOption) {
     plan_throw_film(o);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.where(), "--scale");
+    EXPECT_EQ(e.where(), "scale");
   }
   o = small_film();
   o.render.blur_samples = 0;
@@ -107,7 +107,7 @@ TEST(ThrowFilm, InvalidOptionsNameTheOption) {
     plan_throw_film(o);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.where(), "--blur-samples");
+    EXPECT_EQ(e.where(), "blur_samples");
   }
 }
 

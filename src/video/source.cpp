@@ -77,30 +77,30 @@ std::string point_error(const cv::Point2d& p, const std::string& name) {
 
 std::string SourceOptions::validate() const {
   if (fps != 0) {
-    if (auto e = range_error(fps, ranges::frame_rate, "--fps"); !e.empty()) return e;
+    if (auto e = range_error(fps, ranges::frame_rate, field("fps")); !e.empty()) return e;
   }
-  if (auto e = range_error(time_scale, ranges::time_scale, "--time-scale"); !e.empty())
+  if (auto e = range_error(time_scale, ranges::time_scale, field("time_scale")); !e.empty())
     return e + " (real seconds per video second)";
   if (scale_m_per_px != 0) {
-    if (auto e = range_error(scale_m_per_px, kScale, "--scale"); !e.empty()) return e;
+    if (auto e = range_error(scale_m_per_px, kScale, field("scale")); !e.empty()) return e;
   }
   if (calibrate_points) {
-    if (scale_m_per_px != 0) return "--scale and --calibrate: give one of them, not both";
+    if (scale_m_per_px != 0) return field("scale") + " and " + field("calibrate") + ": give one of them, not both";
     for (const auto& p : {calibrate_points->first, calibrate_points->second}) {
-      if (auto e = point_error(p, "--calibrate"); !e.empty()) return e;
+      if (auto e = point_error(p, field("calibrate")); !e.empty()) return e;
     }
     if (cv::norm(calibrate_points->second - calibrate_points->first) < 1) {
-      return "--calibrate: the two ends of the stick must be at least 1 px apart";
+      return field("calibrate") + ": the two ends of the stick must be at least 1 px apart";
     }
-    if (auto e = range_error(calibrate_length_m, ranges::distance, "--calibrate"); !e.empty())
+    if (auto e = range_error(calibrate_length_m, ranges::distance, field("calibrate")); !e.empty())
       return e + " (the stick's length)";
   } else if (calibrate_length_m != 0) {
-    return "--calibrate: the stick's length needs its two ends";
+    return field("calibrate") + ": the stick's length needs its two ends";
   }
   if (origin_px) {
-    if (auto e = point_error(*origin_px, "--origin"); !e.empty()) return e;
+    if (auto e = point_error(*origin_px, field("origin")); !e.empty()) return e;
   }
-  if (auto e = range_error(axes_deg, ranges::angle_deg, "--axes-deg"); !e.empty()) return e;
+  if (auto e = range_error(axes_deg, ranges::angle_deg, field("axes_deg")); !e.empty()) return e;
   return "";
 }
 
@@ -299,7 +299,7 @@ VideoInput open_plain(const std::string& path, const SourceOptions& o) {
   in.video_file = path;
   in.time.frame_duration_s = o.fps > 0 ? 1 / o.fps : (in.info.fps > 0 ? 1 / in.info.fps : 0);
   if (!(in.time.frame_duration_s > 0)) {
-    throw InputError(path, "the video states no frame rate: give it with --fps");
+    throw InputError(path, "the video states no frame rate: give it with " + field("fps"));
   }
   in.time.time_scale = o.time_scale;
   in.calibration = plain_calibration(o, in.info, in.warnings);

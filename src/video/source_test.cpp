@@ -267,7 +267,7 @@ TEST(Source, BadInputIsOneClearError) {
   expect_input_error(dir + "/long.trk", {}, "clip needs frame 21");
   SourceOptions o;
   o.scale_m_per_px = -1;
-  expect_input_error(dir + "/v.avi", o, "--scale");
+  expect_input_error(dir + "/v.avi", o, "scale");
   SourceOptions both;
   both.scale_m_per_px = 0.001;
   both.calibrate_points = std::make_pair(cv::Point2d(0, 0), cv::Point2d(10, 0));

@@ -36,12 +36,13 @@ std::string TrackVideoOptions::validate() const {
   if (auto e = source.validate(); !e.empty()) return e;
   if (auto e = point.validate(); !e.empty()) return e;
   if (auto e = ellipse.validate(); !e.empty()) return e;
-  if (targets.empty()) return "nothing to track: give --start, --ellipse or --from-track";
+  if (targets.empty()) return "nothing to track: give " + field("start") + ", " + field("ellipse") + " or " + field("from_track");
   if (thumbnails < 0 || thumbnails > kMaxThumbnails) return "thumbnails must be from 0 to 100";
   std::set<std::string> names;
   for (const Target& t : targets) {
-    const std::string opt = !t.from_track.empty() ? "--from-track"
-                            : t.kind == Target::Kind::ellipse ? "--ellipse" : "--start";
+    const std::string opt = field(!t.from_track.empty()                 ? "from_track"
+                                  : t.kind == Target::Kind::ellipse ? "ellipse"
+                                                                    : "start");
     if (t.name.empty()) return opt + ": the track needs a name";
     if (t.name.find_first_of("\n\r\"") != std::string::npos) {
       return opt + " " + t.name + ": a track name may not hold quotes or line breaks";
@@ -111,7 +112,7 @@ void resolve_start(Follower& w, const VideoInput& in) {
   Target& t = w.target;
   if (!t.from_track.empty()) {
     if (in.marks_px.empty()) {
-      throw InputError("--from-track " + t.from_track,
+      throw InputError(field("from_track") + " " + t.from_track,
                        "only a Tracker project (.trk or .trz) has tracks to start from");
     }
     const auto it = std::find_if(in.marks_px.begin(), in.marks_px.end(),
@@ -119,18 +120,18 @@ void resolve_start(Follower& w, const VideoInput& in) {
     if (it == in.marks_px.end()) {
       std::string names;
       for (const auto& m : in.marks_px) names += (names.empty() ? "'" : ", '") + m.name + "'";
-      throw InputError("--from-track " + t.from_track,
+      throw InputError(field("from_track") + " " + t.from_track,
                        "no such track in " + in.input + "; its tracks: " + names);
     }
     if (it->points.empty()) {
-      throw InputError("--from-track " + t.from_track, "the track has no mark on the clip's frames");
+      throw InputError(field("from_track") + " " + t.from_track, "the track has no mark on the clip's frames");
     }
     w.start_frame = it->points.front().frame;
     w.start_x = it->points.front().x;
     w.start_y = it->points.front().y;
     return;
   }
-  const std::string opt = (t.kind == Target::Kind::ellipse ? "--ellipse " : "--start ") + t.name;
+  const std::string opt = field(t.kind == Target::Kind::ellipse ? "ellipse" : "start") + " " + t.name;
   w.start_frame = t.frame < 0 ? in.clip.start_frame : t.frame;
   w.start_x = t.x_px;
   w.start_y = t.y_px;
@@ -290,7 +291,7 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
   }
   for (const Follower& w : followers) {
     if (!w.started) {
-      throw InputError(w.target.from_track.empty() ? w.target.name : "--from-track " + w.target.from_track,
+      throw InputError(w.target.from_track.empty() ? w.target.name : field("from_track") + " " + w.target.from_track,
                        "the start frame " + std::to_string(w.start_frame) + " is beyond the end of the clip (" +
                            std::to_string(result.frames) + " frames decoded)");
     }
