@@ -95,17 +95,15 @@ double inflection(const std::vector<double>& cy, double start) {
 
 const char* to_string(Verdict v) { return v == Verdict::present ? "present" : "absent"; }
 
-std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
-                                         double window_low, double window_high, int degree) {
-  std::vector<double> tau, x, y;
-  for (const auto& p : track.points) {
-    if (p.t < window_low || p.t > window_high) continue;
-    tau.push_back(p.t - t_guess);
-    x.push_back(p.x);
-    y.push_back(p.y);
-  }
+namespace {
+
+/// The eq c estimate from fits of one degree over the points (tau, x, y) of the window.
+std::optional<ThetaC> theta_c_of_degree(const std::vector<double>& tau, const std::vector<double>& x,
+                                        const std::vector<double>& y, double t_guess, double window_low,
+                                        double window_high, int degree) {
   if (static_cast<int>(tau.size()) < degree + 4) return std::nullopt;
   ThetaC r;
+  r.degree = degree;
   r.t_guess = t_guess;
   r.window_low = window_low;
   r.window_high = window_high;
@@ -168,6 +166,48 @@ std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_gue
   r.sigma_cos_theta_c = std::sqrt(std::max(0.0, var_cos));
   r.sigma_t_c = std::sqrt(std::max(0.0, var_t));
   return r;
+}
+
+}  // namespace
+
+std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
+                                         double window_low, double window_high, int degree) {
+  std::vector<double> tau, x, y;
+  for (const auto& p : track.points) {
+    if (p.t < window_low || p.t > window_high) continue;
+    tau.push_back(p.t - t_guess);
+    x.push_back(p.x);
+    y.push_back(p.y);
+  }
+  const int n = static_cast<int>(tau.size());
+  if (degree > 0) return theta_c_of_degree(tau, x, y, t_guess, window_low, window_high, degree);
+  // Automatic (docs/theory.md#incline-analysis, "theta_c truncation"): quartics or sextics,
+  // whichever states the smaller sigma once the truncation error of its polynomial model,
+  // estimated from the fits one and two degrees higher, is added.
+  // At least 10 points (a sextic): with fewer, lower degrees were 6 sd off on exact data.
+  if (n < 10) return std::nullopt;
+  std::optional<ThetaC> best;
+  for (int d : {4, 6}) {
+    std::optional<ThetaC> r = theta_c_of_degree(tau, x, y, t_guess, window_low, window_high, d);
+    if (!r) continue;
+    // Truncation: the largest change to the fits one and two degrees higher (either can agree
+    // by chance), squared bias estimated without the noise: E (c_d - c_h)^2 = bias^2 +
+    // var(c_h) - var(c_d) for nested least-squares fits of the same points. The estimate fell
+    // short of the true error by at most 1.3 in the noise-free grid: doubled to bound it.
+    double bias2 = 0;
+    for (int dh : {d + 1, d + 2}) {
+      const std::optional<ThetaC> hi = theta_c_of_degree(tau, x, y, t_guess, window_low, window_high, dh);
+      if (!hi) continue;
+      const double diff = r->cos_theta_c - hi->cos_theta_c;
+      const double noise2 = std::abs(hi->sigma_cos_theta_c * hi->sigma_cos_theta_c -
+                                     r->sigma_cos_theta_c * r->sigma_cos_theta_c);
+      bias2 = std::max(bias2, diff * diff - noise2);
+    }
+    r->sigma_truncation = 2 * std::sqrt(bias2);
+    r->sigma_cos_theta_c = std::hypot(r->sigma_cos_theta_c, r->sigma_truncation);
+    if (!best || r->sigma_cos_theta_c < best->sigma_cos_theta_c) best = r;
+  }
+  return best;
 }
 
 NormalFrictionTest normal_friction_test(const std::vector<ThetaCPoint>& points, double level) {

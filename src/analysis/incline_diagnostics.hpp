@@ -53,19 +53,24 @@ struct ThetaC {
   double sigma_t_c = 0;      ///< s
   double vx = 0, vy = 0;     ///< velocity there, m/s
   double cos_theta_c = 0;    ///< |v_y|/|v| at the extremum
-  double sigma_cos_theta_c = 0;  ///< propagated from the local fits' covariance
+  /// propagated from the local fits' covariance, with the truncation error in quadrature
+  double sigma_cos_theta_c = 0;
+  /// the polynomial model's truncation error (automatic degree only; 0 otherwise), part of sigma
+  double sigma_truncation = 0;
+  int degree = 0;            ///< degree of the local fits of x(t) and y(t)
   double theta_c_deg = 0;    ///< deg
-  double window_low = 0, window_high = 0;  ///< time window of the local cubic fits, s
+  double window_low = 0, window_high = 0;  ///< time window of the local polynomial fits, s
   numerics::PolyFit fit_x, fit_y;          ///< polynomials in (t - t_guess)
   double t_guess = 0;        ///< centre of the window (the model's prediction), s
 };
 
 /// Locates the v_y extremum in [window_low, window_high] from polynomial fits of x(t) and
-/// y(t) of `degree` (3..6) in t - t_guess: the inflection of y where y'' rises through zero
+/// y(t) of `degree` (3..8) in t - t_guess: the inflection of y where y'' rises through zero
 /// nearest t_guess. Empty when there is none in the window or the window has fewer than
-/// degree + 4 points.
+/// degree + 4 points. `degree` = 0 (automatic): sextics (fewer with few points) and the
+/// truncation error, from the fit two degrees higher, added to the sigma (docs/theory.md).
 std::optional<ThetaC> theta_c_diagnostic(const track::Track& track, double t_guess,
-                                         double window_low, double window_high, int degree = 4);
+                                         double window_low, double window_high, int degree = 0);
 
 /// Whether a friction component normal to the path is present (docs/theory.md, model A):
 /// present when the test's interval excludes 0.

@@ -59,8 +59,9 @@ TEST(NormalAccelDiagnostic, InterceptIsMinusTheNormalAcceleration) {
 }
 
 TEST(ThetaC, CosineEqualsKForModelB) {
-  // eq c': cos(theta_c) = tan(phi)/mu. Noise-free: the quartics' bias over the window was
-  // measured at <= 0.0023; with 1 mm noise the truth lies within 3.3 sigma (+ that bias).
+  // eq c': cos(theta_c) = tan(phi)/mu. Noise-free: the error of the local fits over the
+  // window was measured at <= 0.0023 (quartics; with the degree chosen now: <= 0.0004); with 1 mm
+  // noise the truth lies within 3.3 sigma (+ that bias).
   for (double phi_deg : {10.0, 16.0, 20.96, 26.0}) {
     const double k = std::tan(incline::deg_to_rad(phi_deg)) / 0.634;
     const auto clean = analyze(run_options(phi_deg, 1e-7, 2));
@@ -75,9 +76,10 @@ TEST(ThetaC, CosineEqualsKForModelB) {
 
 TEST(ThetaC, IntervalCoversTheTruth) {
   // 100 runs at each of two angles: the 95 % interval cos +- 1.96 sigma covers k at a rate
-  // within the binomial tolerance 3 sqrt(0.95 0.05/100) = 0.065 of 0.95. (Measured: 0.93 at
-  // 20.96 deg, 0.97 at 26 deg; at 10 and 16 deg 0.89 and 0.90, where the v_y extremum is
-  // flatter and earlier and the delta method is less accurate: see docs/theory.md.)
+  // within the binomial tolerance 3 sqrt(0.95 0.05/100) = 0.065 of 0.95. (Measured: 0.91 at
+  // 20.96 deg, 0.98 at 26 deg with the truncation error in sigma; 0.93 and 0.97 with quartics
+  // before. At 10 and 16 deg the v_y extremum is flatter and earlier and the delta method
+  // is less accurate: see docs/theory.md.)
   for (double phi_deg : {20.96, 26.0}) {
     const double k = std::tan(incline::deg_to_rad(phi_deg)) / 0.634;
     int covered = 0, found = 0;
@@ -152,6 +154,78 @@ TEST(Verdict, TextIsTheJsonValue) {
   EXPECT_STREQ(to_string(Verdict::present), "present");
   EXPECT_EQ(verdict_from(true), Verdict::present);
   EXPECT_EQ(verdict_from(false), Verdict::absent);
+}
+
+/// z = (measured - k) / stated sigma of cos(theta_c) over a grid of model B runs (mu 0.4-0.9,
+/// phi 10-30 deg, v0 1.5 and 2.62 m/s, 60-1000 fps) with noise `noise`, `seeds` runs each;
+/// runs with k >= 0.95 (barely stopping) or no diagnostic are left out.
+std::vector<double> theta_c_z_over_grid(double noise, int seeds) {
+  std::vector<double> z;
+  for (double mu : {0.4, 0.634, 0.9})
+    for (double phi : {10.0, 20.96, 30.0})
+      for (double v0 : {1.5, 2.62})
+        for (double fps : {60.0, 240.0, 1000.0})
+          for (int seed = 1; seed <= seeds; ++seed) {
+            InclineSynthOptions s;
+            s.params.mu = mu;
+            s.params.phi = incline::deg_to_rad(phi);
+            s.params.v0 = v0;
+            s.fps = fps;
+            s.noise = noise;
+            s.seed = static_cast<std::uint64_t>(seed);
+            const double k = std::tan(s.params.phi) / mu;
+            if (k >= 0.95) continue;
+            InclineFitOptions o;
+            o.phi = s.params.phi;
+            o.fit_model_a = false;
+            const auto a = analyze_incline_run(synthesize_incline_run(s).track, o);
+            if (!a.theta_c) continue;
+            z.push_back((a.theta_c->cos_theta_c - k) / a.theta_c->sigma_cos_theta_c);
+          }
+  return z;
+}
+
+TEST(ThetaC, ExactDataLieWithinTheStatedSigma) {
+  // Noise-free runs: the only error is the polynomial model's truncation, which the stated
+  // sigma must include. Quartics were up to 8.6 sd off (0.0021 at 20.96 deg, 1000 fps); the
+  // sextics' error was at most 1.15 of the sigma over this grid (0.8 in all runs but one,
+  // whose fits happen to agree) and at most 0.0044 absolute (k = 0.91, where v_y is flat).
+  const auto z = theta_c_z_over_grid(0, 1);
+  ASSERT_GE(z.size(), 40u);
+  double worst = 0;
+  for (double v : z) {
+    EXPECT_LT(std::abs(v), 1.5);
+    worst = std::max(worst, std::abs(v));
+  }
+  std::printf("theta_c on %zu exact runs: worst %.2f sd\n", z.size(), worst);
+  // The reviewer's case: the 0.002 (6 sd) error of the quartics.
+  InclineSynthOptions s = run_options(20.96, 0, 1, 0, 1000);
+  const double k = std::tan(s.params.phi) / 0.634;
+  const auto a = analyze(s);
+  ASSERT_TRUE(a.theta_c.has_value());
+  EXPECT_NEAR(a.theta_c->cos_theta_c, k, a.theta_c->sigma_cos_theta_c);
+  EXPECT_LT(std::abs(a.theta_c->cos_theta_c - k), 3e-4);  // sextic truncation measured 1.3e-4
+}
+
+TEST(ThetaC, StatedSigmaCoversTheTruthOverAGridOfNoisyRuns) {
+  // 0.2 and 0.5 mm of noise over the grid. For a Gaussian 95 % lie within 2 sd and 99.7 %
+  // within 3; measured 0.94 and 0.99, worst 3.5 sd (quartics alone: 0.74 and 0.80, worst 125
+  // sd). The misses are short runs at 60 fps and k < 0.3 (an early, flat extremum), where the
+  // delta method is poor (docs/theory.md). Bounds: measured minus ~3 binomial sd (n = 82).
+  std::vector<double> z = theta_c_z_over_grid(2e-4, 1);
+  for (double v : theta_c_z_over_grid(5e-4, 1)) z.push_back(v);
+  ASSERT_GE(z.size(), 75u);
+  int in2 = 0, in3 = 0;
+  for (double v : z) {
+    in2 += std::abs(v) < 2;
+    in3 += std::abs(v) < 3;
+  }
+  double worst = 0;
+  for (double v : z) worst = std::max(worst, std::abs(v));
+  std::printf("theta_c z over %zu noisy runs: %.3f within 2 sd, %.3f within 3 sd, worst %.2f sd\n", z.size(),
+              in2 / double(z.size()), in3 / double(z.size()), worst);
+  EXPECT_GE(in2 / double(z.size()), 0.85);
+  EXPECT_GE(in3 / double(z.size()), 0.92);
 }
 
 }  // namespace

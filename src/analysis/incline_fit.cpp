@@ -460,13 +460,14 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     const incline::ClosedForm cf(pb);
     const double s_c = std::atanh(k) / k;  // a_y = alpha tanh(k s) - beta = 0 (eq 四)
     const double t_c = b.t0.value + cf.time_at(s_c);
-    // Window: 35 % of the motion's duration on each side, quartic fits (the choice with
-    // the smallest error over 100 runs at 10-26 deg, bias <= 0.0025), kept clear of the launch and of
-    // the last 10 % before the stop (where the acceleration changes fastest).
+    // Window: 35 % of the motion's duration on each side, kept clear of the launch and of the
+    // last 10 % before the stop (where the acceleration changes fastest); quartic or sextic fits
+    // with their truncation error in the sigma (quartics were 0.002 = 6 sd off on exact data;
+    // docs/theory.md#incline-analysis).
     const double T = *b.t_stop - b.t0.value;
     const double lo = std::max(b.t0.value + 0.02 * T, t_c - 0.35 * T);
     const double hi = std::min(*b.t_stop - 0.1 * T, t_c + 0.35 * T);
-    a.theta_c = theta_c_diagnostic(incline_frame, t_c, lo, hi, 4);
+    a.theta_c = theta_c_diagnostic(incline_frame, t_c, lo, hi);
     if (!a.theta_c) a.notes.push_back("theta_c diagnostic skipped: too few points around the v_y extremum");
   } else {
     a.notes.push_back("theta_c diagnostic skipped: the fitted motion does not stop (k >= 1), so v_y has no extremum");

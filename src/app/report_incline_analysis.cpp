@@ -108,7 +108,7 @@ Figure a_n_figure(const std::string& title, const analysis::NormalAccelDiagnosti
 /// v_y around its extremum (eq c): data, the local fit's derivative, and the located theta_c.
 Figure theta_c_figure(const std::string& title, const analysis::InclineAnalysis& a, const analysis::ThetaC& c) {
   Figure f = figure(title + ": v_y at its extremum, θ_c (eq c)", "t (s)", "v_y (m/s)", 340);
-  f.caption = "a_y = 0 where v_y is extremal; there cos θ_c = |v_y|/|v|. Local quartic fits of x(t) and y(t) over the "
+  f.caption = "a_y = 0 where v_y is extremal; there cos θ_c = |v_y|/|v|. Local polynomial fits (quartic or sextic) of x(t) and y(t) over the "
               "shaded window give v; model B predicts cos θ_c = k = tan φ/μ.";
   Series data = named("data (Savitzky–Golay)");
   for (const auto& r : a.kinematics.rows)
