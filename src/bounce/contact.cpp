@@ -3,8 +3,9 @@
 #include "numerics/error.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
 #include <limits>
 
 namespace tribolab::bounce {
@@ -285,9 +286,21 @@ struct PhaseSystem {
     bool valid = false;
   } cache;
 
+  // Bitwise equality of two doubles (NaN of the same bits equal, +0 and -0 not), inline:
+  // a memcmp call here took ~8 % of the solver's time (perf, docs/benchmarks.md#issue-15),
+  // and the states of successive stages already differ in their first component.
+  static bool same_bits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  }
+  bool cached(const State& st) const {
+    if (!(cache.valid && cache.mode == cur.mode && same_bits(cache.s, cur.s))) return false;
+    for (std::size_t i = 0; i < kN; ++i)
+      if (!same_bits(cache.x[i], st[i])) return false;
+    return true;
+  }
+
   const Eval& eval_at(const State& st) {
-    if (!(cache.valid && cache.mode == cur.mode && std::memcmp(&cache.s, &cur.s, sizeof cur.s) == 0 &&
-          std::memcmp(cache.x.data(), st.data(), sizeof(State)) == 0)) {
+    if (!cached(st)) {
       cache.e = model.eval(st, cur.mode, cur.s);
       cache.x = st;
       cache.mode = cur.mode;

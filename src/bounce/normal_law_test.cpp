@@ -34,6 +34,25 @@ TEST(NormalLaw, HuntCrossleyNearlyElasticLimit) {
   EXPECT_EQ(hunt_crossley_chi_v(1.0), 0.0);
 }
 
+// eval computes d^n as exp(n log d) (cheaper than pow, docs/benchmarks.md#issue-15). Its
+// relative error is the absolute error of n log d, up to ~1.5 units of its last place
+// (log's 0.5 plus the product's 0.5, both relative to |n log d|), plus exp's and pow's own
+// rounding: bound (2 |n log d| + 4) x 1.1e-16, ~2e-14 at d = 1e-12 m, n = 3 (measured worst
+// 1.24e-14). A wrong formula (log base 2, n - 1) misses it by many orders.
+TEST(NormalLaw, PowerThroughExpLogMatchesPow) {
+  for (double n : {1.0, 1.25, 1.5, 1.51, 2.0, 3.0}) {
+    NormalLaw law;
+    law.K = 1e5;
+    law.n = n;
+    law.D = 6e4;
+    for (double d = 1e-12; d < 0.1; d *= 1.7) {
+      const double want = law.K * std::pow(d, n);
+      const double bound = (2 * std::abs(n * std::log(d)) + 4) * 1.1e-16 * want;
+      EXPECT_NEAR(law.eval(d, 0.0).elastic, want, bound) << "n " << n << " d " << d;
+    }
+  }
+}
+
 TEST(NormalLaw, HookeClampedRestitution) {
   EXPECT_DOUBLE_EQ(hooke_restitution(0), 1.0);
   double prev = 1;

@@ -486,6 +486,7 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
   observer(t, x);
   double h = std::max(h0 > 0 ? h0 : opt.initial_step, 1e-300);
   std::size_t attempts = 0;
+  bool after_rejection = false;  // the last trial step was rejected (no growth on the next accept)
   while (true) {
     if (t >= t_end) {
       out.status = PhaseStatus::reached_end;
@@ -527,6 +528,7 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
         h_new = detail::retry_step_past_guard_zero<E>(h, h_new, armed, g_a, r_a, g_b);
       }
       h = h_new;
+      after_rejection = true;
       continue;
     }
     // Accepted step [t, t + h]: look for guards crossing to <= 0.
@@ -581,7 +583,11 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     g_a = g_b;
     r_a = r_b;
     observer(t, x);
-    h *= std::min(factor, 5.0);
+    // No growth right after a rejection (Hairer, Nørsett & Wanner §II.4, dopri5): the step
+    // just accepted was cut to what the error allowed, growing it again at once mostly buys
+    // another rejection (docs/theory.md#bounce-integrator).
+    h *= after_rejection ? std::min(factor, 1.0) : std::min(factor, 5.0);
+    after_rejection = false;
   }
   out.t = t;
   out.x = x;

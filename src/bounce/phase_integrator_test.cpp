@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace tribolab::bounce {
 namespace {
@@ -179,6 +180,51 @@ TEST(PhaseIntegrator, HermiteInteriorMinimum) {
   EXPECT_EQ(detail::hermite_interior_minimum(1, 0, -1, -1), -1);
   // A maximum inside only (slopes + then -): none.
   EXPECT_EQ(detail::hermite_interior_minimum(0, 0, 1, -1), -1);
+}
+
+TEST(PhaseIntegrator, NoStepGrowthRightAfterARejection) {
+  // x' = nine narrow bumps (width 0.01, at t = 0.1, 0.2, ..., 0.9) on a flat rhs: between
+  // bumps the step grows freely, and the long step that reaches the next bump is rejected,
+  // so each bump brings rejections. Every trial step calls the rhs 6 times,
+  // the last at its end t + h; a trial whose end is not the next accepted time was rejected.
+  // After a rejection the step accepted next must not grow the step that follows it
+  // (docs/theory.md#bounce-integrator): h_next <= h_accepted. Both are differences of times
+  // of order 1 (rounding 1e-16 against steps >= 1e-6), hence the relative slack 1e-9.
+  std::vector<double> calls, accepted;
+  auto f = [&](const Vec<1>& x, Vec<1>& dx, double t) {
+    calls.push_back(t);
+    dx[0] = 0;
+    for (int k = 1; k < 10; ++k) dx[0] += std::exp(-std::pow((t - 0.1 * k) / 1e-2, 2)) / 1e-2;
+  };
+  auto none = [](double, const Vec<1>&, std::array<double, 1>& g) { g[0] = 1; };
+  PhaseOptions o;
+  o.abs_tol = o.rel_tol = 1e-6;
+  auto end = integrate_phase<1, 1>(f, none, [&](double t, const Vec<1>&) { accepted.push_back(t); }, 0.0,
+                                   Vec<1>{0}, 1.0, 1e-4, o);
+  ASSERT_EQ(end.status, PhaseStatus::reached_end);
+  ASSERT_EQ((calls.size() - 1) % 6, 0u);  // the first call, then 6 per trial step
+  std::size_t next = 1, rejections = 0, checked = 0;
+  double t = 0, h_after_rejection = 0;
+  bool rejected = false;
+  for (std::size_t b = 6; b < calls.size(); b += 6) {
+    const double h = calls[b] - t;
+    if (h_after_rejection > 0) {
+      EXPECT_LE(h, h_after_rejection * (1 + 1e-9)) << "trial step at t = " << t;
+      ++checked;
+      h_after_rejection = 0;
+    }
+    if (next < accepted.size() && calls[b] == accepted[next]) {
+      if (rejected) h_after_rejection = h;
+      rejected = false;
+      t = accepted[next++];
+    } else {
+      rejected = true;
+      ++rejections;
+    }
+  }
+  EXPECT_EQ(next, accepted.size()) << calls.size();
+  EXPECT_GT(rejections, 5u);  // the problem does exercise the rule
+  EXPECT_GT(checked, 5u);
 }
 
 }  // namespace
