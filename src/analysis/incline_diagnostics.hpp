@@ -6,7 +6,7 @@
 //       a_N = (ax vy - ay vx)/|v| = g sin(phi) sin(theta) - f_N/m           (eq b)
 //     a straight line with slope g sin(phi) and intercept -f_N/m. (The seed prints
 //     a_N = a_y sin(theta) - a_x cos(theta) with cos(theta) = v_y/|v|, which is -a_N: see the
-//     errata in docs/theory.md.) Velocities and accelerations come from local quadratic or quartic fits
+//     errata in docs/theory.md.) Velocities and accelerations come from local quadratic fits
 //     on NON-overlapping blocks of consecutive points, so the points of the line fit have
 //     independent errors and the intercept's interval is honest.
 // (c) theta_c at the extremum of v_y (a_y = 0): cos(theta_c) = |v_y|/|v| there, and
@@ -40,7 +40,7 @@ struct NormalAccelDiagnostic {
   double intercept_ci_low = 0, intercept_ci_high = 0;  ///< interval at `level`, m/s^2
   bool intercept_excludes_zero = false;
   int block = 0;               ///< points per block
-  int degree = 2;              ///< degree of the local fits (2 or 4, the smaller total sigma)
+  int degree = 2;              ///< degree of the local fits
 };
 
 /// Eq b over the points of `track` with t0 < t <= t_end (the moving part; choose t_end short
