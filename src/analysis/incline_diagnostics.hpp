@@ -31,13 +31,16 @@ struct NormalAccelDiagnostic {
   std::vector<double> t, sin_theta, a_n;  ///< one point per block: s, 1, m/s^2
   numerics::PolyFit line;                 ///< a_n = c0 + c1 sin_theta
   double slope = 0;            ///< m/s^2 (expected g sin(phi))
-  double sigma_slope = 0;      ///< m/s^2
+  double sigma_slope = 0;      ///< m/s^2, statistical and truncation in quadrature
   double slope_expected = 0;   ///< g sin(phi), m/s^2
   double intercept = 0;        ///< m/s^2 (expected 0 for model B, -f_N/m for model A)
-  double sigma_intercept = 0;  ///< m/s^2
+  double sigma_intercept = 0;  ///< m/s^2, statistical and truncation in quadrature
+  /// the local fits' truncation error (from fits one and two degrees higher), part of the sigmas, m/s^2
+  double sigma_truncation_intercept = 0, sigma_truncation_slope = 0;
   double intercept_ci_low = 0, intercept_ci_high = 0;  ///< interval at `level`, m/s^2
   bool intercept_excludes_zero = false;
   int block = 0;               ///< points per block
+  int degree = 2;              ///< degree of the local fits
 };
 
 /// Eq b over the points of `track` with t0 < t <= t_end (the moving part; choose t_end short
