@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <regex>
 #include <utility>
 #include <vector>
 
@@ -52,14 +51,40 @@ std::vector<std::string> reports() {
 }
 
 std::string strip_tags(const std::string& html) {
-  return std::regex_replace(html, std::regex("<[^>]*>"), "");
+  std::string out;
+  bool in_tag = false;
+  for (char c : html) {
+    if (c == '<') in_tag = true;
+    else if (c == '>') in_tag = false;
+    else if (!in_tag) out += c;
+  }
+  return out;
+}
+
+/// The contents of every `<tag ...>...</tag>` in `html`, in order (not nested). Plain string
+/// search: libstdc++'s std::regex recurses once per character of a lazy `[\s\S]*?`, which
+/// overflows the stack on a report's tables under AddressSanitizer.
+std::vector<std::string> elements(const std::string& html, const std::string& tag) {
+  std::vector<std::string> out;
+  const std::string open = "<" + tag, close = "</" + tag + ">";
+  for (std::size_t at = html.find(open); at != std::string::npos; at = html.find(open, at)) {
+    const char next = at + open.size() < html.size() ? html[at + open.size()] : '\0';
+    if (next != '>' && next != ' ') {  // another tag with this prefix (<th> vs <thead>)
+      at += open.size();
+      continue;
+    }
+    const std::size_t begin = html.find('>', at);
+    const std::size_t end = begin == std::string::npos ? std::string::npos : html.find(close, begin);
+    if (end == std::string::npos) break;
+    out.push_back(html.substr(begin + 1, end - begin - 1));
+    at = end + close.size();
+  }
+  return out;
 }
 
 std::vector<std::string> cells(const std::string& row, const char* tag) {
   std::vector<std::string> out;
-  const std::regex re(std::string("<") + tag + "[^>]*>([\\s\\S]*?)</" + tag + ">");
-  for (auto it = std::sregex_iterator(row.begin(), row.end(), re); it != std::sregex_iterator(); ++it)
-    out.push_back(strip_tags((*it)[1].str()));
+  for (const std::string& e : elements(row, tag)) out.push_back(strip_tags(e));
   return out;
 }
 
@@ -74,22 +99,21 @@ TEST(DemoReports, EveryParameterTableHasAUnitForEachNumber) {
   int tables = 0;
   for (const std::string& path : reports()) {
     const std::string html = slurp(path);
-    const std::regex table_re("<table>([\\s\\S]*?)</table>");
-    for (auto it = std::sregex_iterator(html.begin(), html.end(), table_re); it != std::sregex_iterator(); ++it) {
-      const std::string t = (*it)[1].str();
+    for (const std::string& t : elements(html, "table")) {
       const std::vector<std::string> header = cells(t, "th");
       if (header.empty() || (header[0] != "quantity" && header[0] != "parameter")) continue;
       const std::string caption = cells(t, "caption").empty() ? "" : cells(t, "caption")[0];
       ++tables;
       ASSERT_GE(header.size(), 3u) << caption;
       EXPECT_EQ(header[1], "unit") << path << ": " << caption;
-      const std::regex row_re("<tr>([\\s\\S]*?)</tr>");
       const std::string body = t.substr(t.find("<tbody>"));
-      for (auto r = std::sregex_iterator(body.begin(), body.end(), row_re); r != std::sregex_iterator(); ++r) {
-        const std::vector<std::string> c = cells((*r)[1].str(), "td");
+      for (const std::string& row : elements(body, "tr")) {
+        const std::vector<std::string> c = cells(row, "td");
         ASSERT_EQ(c.size(), header.size());
         const bool any_number = std::any_of(c.begin() + 2, c.end(), numeric);
-        if (any_number) EXPECT_FALSE(c[1].empty()) << path << ": table '" << caption << "', row '" << c[0] << "'";
+        if (any_number) {
+          EXPECT_FALSE(c[1].empty()) << path << ": table '" << caption << "', row '" << c[0] << "'";
+        }
       }
     }
   }
@@ -149,8 +173,9 @@ TEST(DemoReports, EveryAxisSpansItsDataWithASmallMargin) {
         EXPECT_GE(r1, hi - 1e-9 * std::max(1.0, std::abs(hi))) << path << ": '" << title << "' " << axis;
         EXPECT_GE(r0, lo - slack) << path << ": '" << title << "' " << axis << " data " << lo << ".." << hi;
         EXPECT_LE(r1, hi + slack) << path << ": '" << title << "' " << axis << " data " << lo << ".." << hi;
-        if (fig["layout"]["yaxis"].contains("scaleanchor"))
+        if (fig["layout"]["yaxis"].contains("scaleanchor")) {
           EXPECT_EQ(layout_axis["constrain"], "domain") << title;  // 1:1 by shrinking the plot, not the range
+        }
         ++axes;
       }
     }
