@@ -301,17 +301,20 @@ double polish_event(Rhs& rhs, GuardValue& guard_value, std::size_t i, double t, 
 namespace detail {
 
 /// The error of a trial step in the max norm of the step control (Hairer, Nørsett & Wanner
-/// §II.4): max_i |err_i| / (abs_tol + rel_tol max(|x_i|, |x_new_i|)); `finite` is false when
-/// a component of x_new is not finite (docs/theory.md#bounce-integrator).
+/// §II.4): max_i w_i |err_i| / (abs_tol + rel_tol max(|x_i|, |x_new_i|)), with the weights
+/// w_i = (*weights)[i] (all 1 when weights is null: a weight w holds its component to 1/w of
+/// the tolerances); `finite` is false when a component of x_new is not finite
+/// (docs/theory.md#bounce-integrator).
 template <std::size_t N>
 double step_error_norm(const Vec<N>& x, const Vec<N>& x_new, const Vec<N>& err, const PhaseOptions& opt,
-                       bool& finite) {
+                       bool& finite, const Vec<N>* weights = nullptr) {
   double err_norm = 0;
   finite = true;
   for (std::size_t i = 0; i < N; ++i) {
     if (!std::isfinite(x_new[i])) finite = false;
     const double sc = opt.abs_tol + opt.rel_tol * std::max(std::abs(x[i]), std::abs(x_new[i]));
-    err_norm = std::max(err_norm, std::abs(err[i]) / sc);
+    const double e = weights ? (*weights)[i] * std::abs(err[i]) : std::abs(err[i]);
+    err_norm = std::max(err_norm, e / sc);
   }
   return err_norm;
 }
@@ -449,11 +452,13 @@ int first_event_in_step(Rhs& rhs, GuardValue& guard_value, ZeroBound& zero_bound
 /// guard then just waits to become positive (used to leave a point where two phases both
 /// end at once, see contact.cpp).
 /// observer(t, x) is called at t0 and after every accepted step and at the end.
+/// error_weights (optional) weighs each component's local error (step_error_norm).
 /// docs/theory.md#bounce-integrator.
 template <std::size_t N, std::size_t E, class Rhs, class Guards, class Observer>
 PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, double t0,
                             const Vec<N>& x0, double t_end, double h0,
-                            const PhaseOptions& opt, unsigned patient_guards = 0) {
+                            const PhaseOptions& opt, unsigned patient_guards = 0,
+                            const Vec<N>* error_weights = nullptr) {
   using G = std::array<double, E>;
   constexpr bool has_rates = std::is_invocable_v<Guards&, double, const Vec<N>&, G&, G&>;
   auto eval_guards = [&](double tt, const Vec<N>& st, G& g, G& rate) {
@@ -509,7 +514,7 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     dopri_step<N>(rhs, t, x, k1, h, x_new, k7, &err, true, &stages);
     out.rhs_calls += 6;
     bool finite = true;
-    const double err_norm = detail::step_error_norm<N>(x, x_new, err, opt, finite);
+    const double err_norm = detail::step_error_norm<N>(x, x_new, err, opt, finite, error_weights);
     if (!finite || !std::isfinite(err_norm)) {
       // Shrink hard; a genuinely non-finite state shows up as underflow of h.
       h *= 0.1;
