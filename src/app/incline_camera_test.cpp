@@ -165,6 +165,27 @@ TEST(InclineAnalyze, WarnsWhenAFrameHeldAlignedIsTurned) {
     // so the 3-sd warning fires in every run (measured 20 of 20 each sign; 0 before the check).
     EXPECT_EQ(k.frame_warned, runs);
   }
+  // Without model A the check refits model B's psi and says so (B's psi also absorbs a normal
+  // friction). One seeded run at 0.5 deg: B's sd is ~0.03 deg, so the turn is ~17 sd.
+  {
+    const fs::path dir = fs::temp_directory_path() / "tribolab_app_camera_no_a";
+    fs::create_directories(dir);
+    const std::string file = (dir / "run.csv").string();
+    write_turned_run(file, 33100, 80, 0.5);
+    InclineAnalyzeOptions o;
+    o.files = {file};
+    o.phi_deg = {kPhiDeg};
+    o.frame_rotation = "none";
+    o.no_model_a = true;
+    const nlohmann::json j = incline_analyze(o).json;
+    bool warned = false;
+    for (const auto& w : j["warnings"]) {
+      const std::string text = w.get<std::string>();
+      warned |= text.find("--frame-rotation fit") != std::string::npos && text.find("model B") != std::string::npos;
+    }
+    EXPECT_TRUE(warned) << j["warnings"];
+    fs::remove_all(dir);
+  }
   // An aligned camera analysed with --frame-rotation none must not be warned about: the check
   // is a 3-sd test (0.27 % false alarms), so 40 runs allow at most 1 (P(>= 2) ~ 0.5 %).
   const Counts aligned = analyse_turned("none_aligned", 40, 35000, 0.0, "none");
