@@ -201,7 +201,7 @@ void BM_MapSize(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * g.cell_count());
 }
-BENCHMARK(BM_MapSize)->Arg(1000)->Arg(10000)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_MapSize)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// Keeps the CPU time per iteration of each run, s (the median aggregate when repeated),
 /// keyed "function/args": CPU time, because the machine is shared (real time follows the

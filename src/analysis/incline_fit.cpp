@@ -373,6 +373,21 @@ std::optional<GravityCheck> check_gravity(const track::Track& track, const Incli
   return c;
 }
 
+std::optional<Estimate> check_frame_rotation(const track::Track& track, const InclineFitOptions& o) {
+  if (o.fit_frame_rotation) return std::nullopt;
+  InclineFitOptions free = o;
+  free.fit_frame_rotation = true;
+  try {
+    const ModelBFit b = fit_model_b(track, free);
+    // Model A nests B, so its psi is unbiased with or without normal friction; B's absorbs
+    // part of one (docs/theory.md#incline-analysis).
+    if (o.fit_model_a) return fit_model_a(track, free, b).frame_rotation;
+    return b.frame_rotation;
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
 const char* to_string(VerdictSource s) {
   switch (s) {
     case VerdictSource::model_a_test: return "model_a_test";
@@ -473,6 +488,20 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     a.notes.push_back("theta_c diagnostic skipped: the fitted motion does not stop (k >= 1), so v_y has no extremum");
   }
 
+  // The frame held aligned (--frame-rotation none) against data that show it turned: a turned
+  // frame biases mu and mimics normal friction (0.5 deg: mu +0.0045 = 13 sd, `present` in every
+  // run), and the g check below then blames the frame rate. 3 sd, as the g check.
+  a.frame_rotation_check = check_frame_rotation(track, o);
+  const bool frame_turned = a.frame_rotation_check &&
+                            std::abs(a.frame_rotation_check->value) > 3 * a.frame_rotation_check->sigma;
+  if (frame_turned) {
+    const Estimate& p = *a.frame_rotation_check;
+    a.warnings.push_back("the camera frame is held aligned with the incline (--frame-rotation none), but the data show it "
+                         "turned by " + fmt(to_deg(p.value), 3) + " +- " + fmt(to_deg(p.sigma), 2) + " deg (fitted with model " +
+                         (o.fit_model_a ? "A" : "B, which also turns by any normal friction") +
+                         "): a turned frame biases mu, v0 and g and is mistaken for normal friction; check the axes "
+                         "against a plumb line or analyse with --frame-rotation fit");
+  }
   a.gravity = check_gravity(track, o, b);
   if (a.gravity && a.gravity->implausible) {
     const GravityCheck& c = *a.gravity;
@@ -489,7 +518,8 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     a.warnings.push_back("the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " +
                          fmt(o.g) + ": check the frame rate (--time-scale; an error of k % in it changes g by 2k %), "
                          "the length calibration and the incline angle; mu and v0 are fitted with g = " + fmt(o.g) +
-                         " and are off by more than their uncertainties until this is fixed");
+                         " and are off by more than their uncertainties until this is fixed" +
+                         (frame_turned ? std::string(" (or the turned camera frame warned about above)") : std::string()));
   }
   // Wild frames (a hand in the picture, the tracker jumping): model B misses them by far
   // more than the noise; they pull mu and can flip the verdict. 8 robust noise sds + 2 mm, as

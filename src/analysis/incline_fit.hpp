@@ -135,6 +135,10 @@ struct InclineAnalysis {
   std::vector<double> residual_x_b, residual_y_b, residual_x_a, residual_y_a;
   std::vector<std::string> notes;  ///< what was skipped and why
   std::optional<GravityCheck> gravity;  ///< absent for phi < 3 deg or when the refit fails
+  /// With the frame held aligned (fit_frame_rotation = false): psi, rad, refitted free (model A
+  /// when it is fitted, else B) to check that assumption; absent when psi was fitted or the
+  /// refit failed.
+  std::optional<Estimate> frame_rotation_check;
   /// Plain-language warnings: data that contradict what the physics knows (gravity far from
   /// g, an impossible friction coefficient). Empty when none.
   std::vector<std::string> warnings;
@@ -163,6 +167,11 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& option
 /// factors (4, 8, 16 in time). Empty when phi < 3 deg or no fit converges.
 std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& options,
                                           const ModelBFit& b);
+
+/// With psi held at 0 (options.fit_frame_rotation false): refits with psi free (model A from
+/// `b` when options.fit_model_a, else model B) and returns psi, rad; empty when psi is fitted
+/// anyway or the refit fails.
+std::optional<Estimate> check_frame_rotation(const track::Track& track, const InclineFitOptions& options);
 
 /// The whole analysis of `incline analyze`.
 InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitOptions& options);

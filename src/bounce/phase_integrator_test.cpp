@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -225,6 +226,31 @@ TEST(PhaseIntegrator, NoStepGrowthRightAfterARejection) {
   EXPECT_EQ(next, accepted.size()) << calls.size();
   EXPECT_GT(rejections, 5u);  // the problem does exercise the rule
   EXPECT_GT(checked, 5u);
+}
+
+TEST(PhaseIntegrator, StepGrowsAtMostByTheGrowthLimit) {
+  // x'' = -x from a first step 1e-7 s, ~1e4 times shorter than the tolerance allows: the
+  // error controller asks for 5x per step; the integrator grows the step by at most 1.5x
+  // from one accepted step to the next (kMaxStepGrowth, docs/theory.md#bounce-integrator,
+  // "Step growth"), so the step needs ~23 steps to reach its error-limited size. Steps are
+  // differences of times of order 1: relative slack 1e-9 for rounding.
+  Oscillator f;
+  std::vector<double> accepted;
+  auto none = [](double, const Vec<2>&, std::array<double, 1>& g) { g[0] = 1; };
+  PhaseOptions o;
+  o.abs_tol = o.rel_tol = 1e-6;
+  auto end = integrate_phase<2, 1>(f, none, [&](double t, const Vec<2>&) { accepted.push_back(t); }, 0.0,
+                                   Vec<2>{1, 0}, 10.0, 1e-7, o);
+  ASSERT_EQ(end.status, PhaseStatus::reached_end);
+  ASSERT_GT(accepted.size(), 20u);
+  double largest_ratio = 0;
+  for (std::size_t i = 2; i < accepted.size(); ++i) {
+    const double h_prev = accepted[i - 1] - accepted[i - 2], h = accepted[i] - accepted[i - 1];
+    EXPECT_LE(h, 1.5 * h_prev * (1 + 1e-9)) << "step " << i;
+    largest_ratio = std::max(largest_ratio, h / h_prev);
+  }
+  EXPECT_GT(largest_ratio, 1.4);  // the limit, not the error, bounded the growth
+  EXPECT_NEAR(end.x[0], std::cos(10.0), 100 * o.abs_tol);  // as AdaptiveAccuracyFollowsTolerance
 }
 
 }  // namespace

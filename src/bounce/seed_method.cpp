@@ -31,7 +31,9 @@ SeedOut run(const SeedParams& p, double th, double vx, double vy, double w, doub
     double N = 0;
     if (d > 0) {
       const double fac = 1 - chi * (vy + w * X);  // 1 + chi d_dot
-      if (fac > 0) N = K * std::pow(d, n) * fac;
+      // d^n as exp(n log d), as our solver computes it (normal_law.hpp): faster than pow
+      // and within a few ulp of it (docs/benchmarks.md#issue-15).
+      if (fac > 0) N = K * std::exp(n * std::log(d)) * fac;
     }
     const double v_t = vx + w * Y;
     double f;
