@@ -60,9 +60,10 @@ enum : std::size_t { iX, iY, iTh, iVx, iVy, iW, iU, iWn, iWf, iSY, iSYp };
 
 // Y and Y' are held to 1/kSupportErrorWeight of the tolerances: the penetration d = Y - y of a
 // grazing contact is small for a long time, and an error of Y as large as y's moved its
-// lift-off (largest error over the seed's map at tol 1e-6: 1.5e-5 m/s with Y computed from
-// theta; 7.1e-5 with the weight 1, 1.4e-5 with 100, 5.6e-6 with 300 for 7 % more steps;
-// docs/benchmarks.md#issue-15). Y and Y' are smooth in time, so this costs few steps.
+// lift-off (largest error over the seed's map at tol 1e-6, exact Coulomb: 1.5e-5 m/s with Y
+// computed from theta; 7.1e-5 with the weight 1, 1.4e-5 with 100, 5.6e-6 with 300 for 7 % more
+// right-hand-side calls; docs/benchmarks.md#issue-15-fifth-pass-the-support-point-as-state).
+// Y and Y' are smooth in time, so this costs few steps.
 constexpr double kSupportErrorWeight = 300;
 constexpr State kErrorWeights = {1, 1, 1, 1, 1, 1, 1, 1, 1, kSupportErrorWeight, kSupportErrorWeight};
 
