@@ -73,6 +73,10 @@ struct PhaseOptions {
 /// (docs/benchmarks.md, "Issue 15, fourth pass").
 inline constexpr double kMaxStepGrowth = 1.5;
 
+/// Points of the dense output at which a guard that is negative at the end of a phase's first
+/// step is looked at before the phase ends at once (integrate_phase).
+inline constexpr int kFirstStepProbes = 16;
+
 enum class PhaseStatus {
   guard,       ///< a guard reached zero (PhaseEnd::guard says which)
   reached_end, ///< t_end reached
@@ -564,6 +568,24 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     eval_guards(t + h, x_new, g_b, r_b);
     std::array<bool, E> newly_armed{};
     int hit = detail::guard_ending_phase_at_once<E>(armed, g_b, out.steps, patient_guards, newly_armed);
+    if (hit >= 0 && h > opt.event_tol()) {
+      // A guard that starts at zero can rise and fall back below zero inside a long first step
+      // (the spring model entering its elastic phase on the cap: positive for 1.5 ms, then a
+      // stick-slip change, docs/theory.md#bounce-integrator, "Zero-progress chatter"). If the
+      // dense output shows it positive inside the step, the first step is retried up to there,
+      // where the guard is armed, instead of ending the phase at once.
+      const std::size_t ih = static_cast<std::size_t>(hit);
+      double tau_positive = -1;
+      for (int k = kFirstStepProbes - 1; k >= 1 && tau_positive < 0; --k) {
+        const double tau = h * k / kFirstStepProbes;
+        if (guard_at(ih, tau) > 0) tau_positive = tau;
+      }
+      if (tau_positive > 0) {
+        --out.steps;
+        h = tau_positive;
+        continue;
+      }
+    }
     const bool immediate = hit >= 0;
     double tau_hit = immediate ? 0 : h;
     if (!immediate) {

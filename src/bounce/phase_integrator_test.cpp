@@ -51,6 +51,20 @@ TEST(PhaseIntegrator, GuardLocatedAtTheExactCrossing) {
   EXPECT_NEAR(end.x[1], -1.0, 1e-10);
 }
 
+// A guard that starts at zero, is positive on (0, 0.5) and negative after, with a first step
+// of 2 that ends where it is negative: the phase must run to its zero at 0.5 (the dense output
+// shows it positive inside the step, so the first step is retried shorter), not end at once.
+TEST(PhaseIntegrator, GuardPositiveInsideALongFirstStepDoesNotEndThePhaseAtOnce) {
+  auto f = [](const Vec<1>&, Vec<1>& dx, double) { dx[0] = 1; };  // x = t
+  auto guards = [](double, const Vec<1>& x, std::array<double, 1>& g) { g[0] = x[0] * (0.5 - x[0]); };
+  PhaseOptions o;
+  o.abs_tol = o.rel_tol = 1e-10;
+  auto end = integrate_phase<1, 1>(f, guards, [](double, const Vec<1>&) {}, 0.0, Vec<1>{0}, 10.0, 2.0, o);
+  ASSERT_EQ(end.status, PhaseStatus::guard);
+  EXPECT_FALSE(end.immediate);
+  EXPECT_NEAR(end.t, 0.5, 1e-9);  // the event time tolerance is 1e-4 s x 1e-10
+}
+
 TEST(PhaseIntegrator, AdaptiveAccuracyFollowsTolerance) {
   Oscillator f;
   auto none = [](double, const Vec<2>&, std::array<double, 1>& g) { g[0] = 1; };
