@@ -3,8 +3,9 @@
 // Euler), until the penetration of the support point returns to zero. It is the baseline
 // our solver is measured against (docs/benchmarks.md), in speed and in accuracy: written as
 // tight as a careful engineer would write it (no allocation, d^n as exp(n log d) as in our
-// solver, one sincos per step, the friction law chosen at compile time). bench/ compiles the
-// same source a second time with -O3 -march=native (bench/seed/seed_native.cpp).
+// solver, sin and cos of theta advanced by the step's rotation instead of a sincos per step,
+// the friction law chosen at compile time). bench/ compiles the same source a second time
+// with -O3 -march=native (bench/seed/seed_native.cpp).
 #pragma once
 
 #include "numerics/units.hpp"
