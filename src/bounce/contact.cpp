@@ -84,6 +84,7 @@ struct Model {
   const FrictionModel& fr;
   double g;
   double inv_m, inv_I;
+  double inv_vs = 1 / fr.slip_scale;  // 1 / v_s: a product instead of a division on every call
   double a2 = ball.a * ball.a, b2 = ball.b * ball.b, a2_b2 = a2 * b2;
 
   // The support point from the state's Y and Y' (geometry.cpp's support() without sin, cos
@@ -117,7 +118,7 @@ struct Model {
       case Mode::coulomb_slip:
       case Mode::spring_slip: e.f = -s * mu * N; break;
       case Mode::coulomb_stick: e.f = required_force(e.sp, w, N); break;
-      case Mode::regularized: e.f = -mu * N * std::tanh(e.v_t / fr.slip_scale); break;
+      case Mode::regularized: e.f = -mu * N * std::tanh(e.v_t * inv_vs); break;
       case Mode::spring_elastic: e.f = -(fr.k_t * x[iU] + fr.c_t * e.v_t); break;
     }
     if (mode == Mode::coulomb_stick) e.f_req = required_force(e.sp, w, N);
@@ -290,8 +291,8 @@ struct PhaseSystem {
   PeakTracker peak_d; ///< of the penetration d
 
   // The integrator asks for the same state three times per accepted step (the FSAL rhs
-  // at the step end, the guards there, the observer): the last evaluation is reused when
-  // state and mode are bitwise the same (eval is a pure function of them).
+  // at the step end, the guards there, the observer): the guards and the observer reuse the
+  // last evaluation when state and mode are bitwise the same (eval is a pure function of them).
   struct EvalCache {
     State x{};
     Mode mode = Mode::free;
@@ -324,8 +325,17 @@ struct PhaseSystem {
     return cache.e;
   }
 
+  // The right-hand side evaluates into a local and then fills the cache: reading the
+  // evaluation back from the cache put a store and a load on the chain from one stage to the
+  // next (7 % of the solver's time, docs/benchmarks.md, "Issue 15, sixth pass"); a stage state
+  // is new anyway, so the cache is not looked at here.
   void rhs(const State& st, State& dx) {
-    const Eval& e = eval_at(st);
+    const Eval e = model.eval(st, cur.mode, cur.s);
+    cache.e = e;
+    cache.x = st;
+    cache.mode = cur.mode;
+    cache.s = cur.s;
+    cache.valid = true;
     dx[iX] = st[iVx];
     dx[iY] = st[iVy];
     dx[iTh] = st[iW];
