@@ -1,5 +1,6 @@
 #include "bounce/contact.hpp"
 
+#include "numerics/cpu_dispatch.hpp"
 #include "numerics/error.hpp"
 
 #include <algorithm>
@@ -485,11 +486,14 @@ void finish_contact(const Ball& ball, const NormalLaw& law, const ContactOptions
                       r.dissipated_normal - r.dissipated_friction - law.potential(d_end);
 }
 
-}  // namespace
-
-ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
-                               const BodyState& touch, const ContactOptions& options,
-                               std::vector<ContactSample>* history) {
+/// The solver (docs/theory.md#bounce-contact), inlined into one function per CPU level below
+/// (numerics/cpu_dispatch.hpp): with FMA and no vectorisation of the 11-component stage sums
+/// (CMakeLists.txt) a right-hand-side call is ~8 % faster (docs/benchmarks.md, "Issue 15, sixth
+/// pass"); the integrator's hot templates are always-inline for this.
+[[gnu::always_inline]] inline ContactResult solve_contact(const Ball& ball, const NormalLaw& law,
+                                                          const FrictionModel& friction, const BodyState& touch,
+                                                          const ContactOptions& options,
+                                                          std::vector<ContactSample>* history) {
   validate_contact(ball, law, friction, touch, options);
   const Model model{ball, law, friction, options.g, 1 / ball.mass, 1 / ball.inertia};
   ContactResult r;
@@ -536,6 +540,42 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   }
   finish_contact(ball, law, options, x, t, sys, r);
   return r;
+}
+
+}  // namespace
+
+namespace detail {
+
+ContactResult simulate_contact_baseline(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                                        const BodyState& touch, const ContactOptions& options,
+                                        std::vector<ContactSample>* history) {
+  return solve_contact(ball, law, friction, touch, options, history);
+}
+
+#if TRIBOLAB_HAVE_X86_64_V3
+TRIBOLAB_TARGET_X86_64_V3 ContactResult simulate_contact_x86_64_v3(const Ball& ball, const NormalLaw& law,
+                                                                   const FrictionModel& friction,
+                                                                   const BodyState& touch,
+                                                                   const ContactOptions& options,
+                                                                   std::vector<ContactSample>* history) {
+  return solve_contact(ball, law, friction, touch, options, history);
+}
+#else
+ContactResult simulate_contact_x86_64_v3(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                                         const BodyState& touch, const ContactOptions& options,
+                                         std::vector<ContactSample>* history) {
+  return solve_contact(ball, law, friction, touch, options, history);  // no such build: the baseline
+}
+#endif
+
+}  // namespace detail
+
+ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                               const BodyState& touch, const ContactOptions& options,
+                               std::vector<ContactSample>* history) {
+  if (options.kernel == ContactKernel::fastest && numerics::cpu_level() == numerics::CpuLevel::x86_64_v3)
+    return detail::simulate_contact_x86_64_v3(ball, law, friction, touch, options, history);
+  return detail::simulate_contact_baseline(ball, law, friction, touch, options, history);
 }
 
 ContactResult simulate_contact(const Ball& ball, const NormalLawSpec& spec,

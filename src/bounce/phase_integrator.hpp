@@ -131,8 +131,10 @@ struct DopriStages {
 /// `fsal` is false and err == nullptr: a trial step that only needs x_new), when
 /// err != nullptr the error estimate (5th minus 4th order), and when stages != nullptr the
 /// stages the dense output needs.
+/// Always inline (as integrate_phase): the contact solver compiles its callers once per CPU
+/// level (numerics/cpu_dispatch.hpp), and only inlined code runs at the caller's level.
 template <std::size_t N, class Rhs>
-void dopri_step(Rhs& rhs, double t, const Vec<N>& x, const Vec<N>& k1, double h, Vec<N>& x_new,
+[[gnu::always_inline]] inline void dopri_step(Rhs& rhs, double t, const Vec<N>& x, const Vec<N>& k1, double h, Vec<N>& x_new,
                 Vec<N>& k7, Vec<N>* err, bool fsal = true, DopriStages<N>* stages = nullptr) {
   using namespace detail;
   DopriStages<N> local;
@@ -477,9 +479,9 @@ int first_event_in_step(Rhs& rhs, GuardValue& guard_value, ZeroBound& zero_bound
 /// end at once, see contact.cpp).
 /// observer(t, x) is called at t0 and after every accepted step and at the end.
 /// error_weights (optional) weighs each component's local error (step_error_norm).
-/// docs/theory.md#bounce-integrator.
+/// Always inline: see dopri_step. docs/theory.md#bounce-integrator.
 template <std::size_t N, std::size_t E, class Rhs, class Guards, class Observer>
-PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, double t0,
+[[gnu::always_inline]] inline PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, double t0,
                             const Vec<N>& x0, double t_end, double h0,
                             const PhaseOptions& opt, unsigned patient_guards = 0,
                             const Vec<N>* error_weights = nullptr) {
