@@ -64,7 +64,8 @@ BodyState touch_of(const sweep::CellInput& in) {
 sweep::CellModel our_model(bool regularized, double tol) {
   sweep::CellModel m;
   m.output_names = {"vx", "vy", "b_omega"};
-  const ContactOptions o = contact_options_with_tolerance(tol);
+  ContactOptions o = contact_options_with_tolerance(tol);
+  o.kernel = ContactKernel::fastest;  // as `bounce sweep` (app/bounce_cell.cpp)
   const FrictionModel f = friction_of(regularized);
   m.evaluate = [o, f](const sweep::CellInput& in) {
     const ContactResult r = simulate_contact(Ball{}, NormalLawSpec{}, f, touch_of(in), o);
@@ -146,7 +147,8 @@ BENCHMARK(BM_MapSeed)->ArgsProduct({{0, 1}, {0, 1}})->Unit(benchmark::kMilliseco
 void BM_MapOurs(benchmark::State& state) {
   const bool reg = state.range(0) != 0;
   const sweep::GridSpec g = seed_grid();
-  const ContactOptions o = contact_options_with_tolerance(kOurTol);
+  ContactOptions o = contact_options_with_tolerance(kOurTol);
+  o.kernel = ContactKernel::fastest;  // as `bounce sweep` (app/bounce_cell.cpp)
   const FrictionModel f = friction_of(reg);
   double sum = 0, steps = 0, rhs = 0, phases = 0;
   for (auto _ : state) {

@@ -46,6 +46,9 @@ BounceCell make_bounce_cell(const BounceCellOptions& o, BounceCellKind kind) {
   cell.law = o.law.law();
   cell.friction = o.law.friction_model(0.5);  // each cell sets its own mu
   cell.options = o.law.contact(checked_g(o.g, /*zero_allowed=*/true));  // cells start at touch
+  // A map is many contacts: the fastest compiled solver (bounce/contact.hpp; a map made on a CPU
+  // without FMA differs in the last bits, and by up to ~the tolerance in a few cells).
+  cell.options.kernel = bounce::ContactKernel::fastest;
   cell.convention = convention_of(o.angle);
   check_range(o.vx, ranges::velocity, field("vx"));  // docs/cli.md#physical-ranges
   if (o.spin_sign != 1 && o.spin_sign != -1) throw InputError("spin_sign", "must be +1 or -1");

@@ -51,6 +51,7 @@ TEST(BounceCell, ComputesTheWholeImpactOfTheCoreBitForBit) {
     f.mu = in.mu;
     ImpactOptions io;
     io.contact = contact_options_with_tolerance(1e-6);
+    io.contact.kernel = ContactKernel::fastest;  // a sweep's cells run the fastest solver (docs/design.md#cpu-dispatch)
     const ImpactResult r = simulate_impact(Ball{}, NormalLawSpec{}, f, s, io);
     ASSERT_EQ(r.status, ImpactStatus::free_flight);
     const sweep::CellOutputs out = model.evaluate(in);

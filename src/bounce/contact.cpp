@@ -1,5 +1,6 @@
 #include "bounce/contact.hpp"
 
+#include "numerics/cpu_dispatch.hpp"
 #include "numerics/error.hpp"
 
 #include <algorithm>
@@ -84,6 +85,7 @@ struct Model {
   const FrictionModel& fr;
   double g;
   double inv_m, inv_I;
+  double inv_vs = 1 / fr.slip_scale;  // 1 / v_s: a product instead of a division on every call
   double a2 = ball.a * ball.a, b2 = ball.b * ball.b, a2_b2 = a2 * b2;
 
   // The support point from the state's Y and Y' (geometry.cpp's support() without sin, cos
@@ -117,7 +119,7 @@ struct Model {
       case Mode::coulomb_slip:
       case Mode::spring_slip: e.f = -s * mu * N; break;
       case Mode::coulomb_stick: e.f = required_force(e.sp, w, N); break;
-      case Mode::regularized: e.f = -mu * N * std::tanh(e.v_t / fr.slip_scale); break;
+      case Mode::regularized: e.f = -mu * N * std::tanh(e.v_t * inv_vs); break;
       case Mode::spring_elastic: e.f = -(fr.k_t * x[iU] + fr.c_t * e.v_t); break;
     }
     if (mode == Mode::coulomb_stick) e.f_req = required_force(e.sp, w, N);
@@ -290,8 +292,8 @@ struct PhaseSystem {
   PeakTracker peak_d; ///< of the penetration d
 
   // The integrator asks for the same state three times per accepted step (the FSAL rhs
-  // at the step end, the guards there, the observer): the last evaluation is reused when
-  // state and mode are bitwise the same (eval is a pure function of them).
+  // at the step end, the guards there, the observer): the guards and the observer reuse the
+  // last evaluation when state and mode are bitwise the same (eval is a pure function of them).
   struct EvalCache {
     State x{};
     Mode mode = Mode::free;
@@ -324,8 +326,17 @@ struct PhaseSystem {
     return cache.e;
   }
 
+  // The right-hand side evaluates into a local and then fills the cache: reading the
+  // evaluation back from the cache put a store and a load on the chain from one stage to the
+  // next (7 % of the solver's time, docs/benchmarks.md, "Issue 15, sixth pass"); a stage state
+  // is new anyway, so the cache is not looked at here.
   void rhs(const State& st, State& dx) {
-    const Eval& e = eval_at(st);
+    const Eval e = model.eval(st, cur.mode, cur.s);
+    cache.e = e;
+    cache.x = st;
+    cache.mode = cur.mode;
+    cache.s = cur.s;
+    cache.valid = true;
     dx[iX] = st[iVx];
     dx[iY] = st[iVy];
     dx[iTh] = st[iW];
@@ -475,11 +486,14 @@ void finish_contact(const Ball& ball, const NormalLaw& law, const ContactOptions
                       r.dissipated_normal - r.dissipated_friction - law.potential(d_end);
 }
 
-}  // namespace
-
-ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
-                               const BodyState& touch, const ContactOptions& options,
-                               std::vector<ContactSample>* history) {
+/// The solver (docs/theory.md#bounce-contact), inlined into one function per CPU level below
+/// (numerics/cpu_dispatch.hpp): with FMA and no vectorisation of the 11-component stage sums
+/// (CMakeLists.txt) a right-hand-side call is ~8 % faster (docs/benchmarks.md, "Issue 15, sixth
+/// pass"); the integrator's hot templates are always-inline for this.
+[[gnu::always_inline]] inline ContactResult solve_contact(const Ball& ball, const NormalLaw& law,
+                                                          const FrictionModel& friction, const BodyState& touch,
+                                                          const ContactOptions& options,
+                                                          std::vector<ContactSample>* history) {
   validate_contact(ball, law, friction, touch, options);
   const Model model{ball, law, friction, options.g, 1 / ball.mass, 1 / ball.inertia};
   ContactResult r;
@@ -526,6 +540,42 @@ ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const Fri
   }
   finish_contact(ball, law, options, x, t, sys, r);
   return r;
+}
+
+}  // namespace
+
+namespace detail {
+
+ContactResult simulate_contact_baseline(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                                        const BodyState& touch, const ContactOptions& options,
+                                        std::vector<ContactSample>* history) {
+  return solve_contact(ball, law, friction, touch, options, history);
+}
+
+#if TRIBOLAB_HAVE_X86_64_V3
+TRIBOLAB_TARGET_X86_64_V3 ContactResult simulate_contact_x86_64_v3(const Ball& ball, const NormalLaw& law,
+                                                                   const FrictionModel& friction,
+                                                                   const BodyState& touch,
+                                                                   const ContactOptions& options,
+                                                                   std::vector<ContactSample>* history) {
+  return solve_contact(ball, law, friction, touch, options, history);
+}
+#else
+ContactResult simulate_contact_x86_64_v3(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                                         const BodyState& touch, const ContactOptions& options,
+                                         std::vector<ContactSample>* history) {
+  return solve_contact(ball, law, friction, touch, options, history);  // no such build: the baseline
+}
+#endif
+
+}  // namespace detail
+
+ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                               const BodyState& touch, const ContactOptions& options,
+                               std::vector<ContactSample>* history) {
+  if (options.kernel == ContactKernel::fastest && numerics::cpu_level() == numerics::CpuLevel::x86_64_v3)
+    return detail::simulate_contact_x86_64_v3(ball, law, friction, touch, options, history);
+  return detail::simulate_contact_baseline(ball, law, friction, touch, options, history);
 }
 
 ContactResult simulate_contact(const Ball& ball, const NormalLawSpec& spec,

@@ -24,6 +24,17 @@
 
 namespace tribolab::bounce {
 
+/// Which compiled solver simulate_contact() runs (numerics/cpu_dispatch.hpp).
+enum class ContactKernel {
+  /// The build's baseline code: the same bits on every CPU the build runs on (shipped demo
+  /// data, the demo's check that they are what make.sh makes, stored test values).
+  reproducible,
+  /// The x86-64-v3 code (FMA) where the CPU has it, else the baseline: ~8 % faster per contact
+  /// (docs/benchmarks.md, "Issue 15, sixth pass"); the results differ from the baseline's in the
+  /// last bits, and by up to ~the tolerance where rounding flips a step. `bounce sweep` runs it.
+  fastest,
+};
+
 struct ContactOptions {
   double g = kDefaultG;  ///< gravitational acceleration during the contact, m/s^2 (0 allowed)
   /// Integrator tolerances. The defaults (1e-10 abs and rel) give outgoing velocities to
@@ -31,6 +42,7 @@ struct ContactOptions {
   PhaseOptions integrator{};
   double max_duration = 1.0;    ///< give up (status max_duration) after this contact time, s
   std::size_t max_phases = 10'000;  ///< stick/slip phase changes before giving up
+  ContactKernel kernel = ContactKernel::reproducible;  ///< the compiled solver to run
 
   std::string validate() const;  ///< empty when valid
 };
@@ -112,10 +124,22 @@ struct ContactResult {
 /// Simulates one contact starting at first touch in state `touch` (its y is ignored: the
 /// contact starts at gap 0, y = Y(theta); x is kept). The contact point must approach the
 /// floor (vy + omega X < 0). Throws InputError for invalid input. When `history` is not
-/// null it is cleared and filled with samples.
+/// null it is cleared and filled with samples. options.kernel chooses the compiled solver.
 ContactResult simulate_contact(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
                                const BodyState& touch, const ContactOptions& options = {},
                                std::vector<ContactSample>* history = nullptr);
+
+namespace detail {
+/// The solver of simulate_contact() compiled for the build's baseline target and, where
+/// TRIBOLAB_HAVE_X86_64_V3, for x86-64-v3 (call that one only when
+/// numerics::cpu_level_supported() says so); both ignore options.kernel. For tests.
+ContactResult simulate_contact_baseline(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                                        const BodyState& touch, const ContactOptions& options,
+                                        std::vector<ContactSample>* history);
+ContactResult simulate_contact_x86_64_v3(const Ball& ball, const NormalLaw& law, const FrictionModel& friction,
+                                         const BodyState& touch, const ContactOptions& options,
+                                         std::vector<ContactSample>* history);
+}  // namespace detail
 
 /// As above, resolving `spec` (restitution -> damping) for this impact first.
 ContactResult simulate_contact(const Ball& ball, const NormalLawSpec& spec,

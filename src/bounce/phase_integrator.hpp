@@ -131,8 +131,10 @@ struct DopriStages {
 /// `fsal` is false and err == nullptr: a trial step that only needs x_new), when
 /// err != nullptr the error estimate (5th minus 4th order), and when stages != nullptr the
 /// stages the dense output needs.
+/// Always inline (as integrate_phase): the contact solver compiles its callers once per CPU
+/// level (numerics/cpu_dispatch.hpp), and only inlined code runs at the caller's level.
 template <std::size_t N, class Rhs>
-void dopri_step(Rhs& rhs, double t, const Vec<N>& x, const Vec<N>& k1, double h, Vec<N>& x_new,
+[[gnu::always_inline]] inline void dopri_step(Rhs& rhs, double t, const Vec<N>& x, const Vec<N>& k1, double h, Vec<N>& x_new,
                 Vec<N>& k7, Vec<N>* err, bool fsal = true, DopriStages<N>* stages = nullptr) {
   using namespace detail;
   DopriStages<N> local;
@@ -332,6 +334,17 @@ double step_error_norm(const Vec<N>& x, const Vec<N>& x_new, const Vec<N>& err, 
   return err_norm;
 }
 
+/// The step size's factor after a trial step whose error norm is err_norm (Hairer, Nørsett &
+/// Wanner §II.4): 0.9 err_norm^(-1/5), clamped to [0.2, 5], and at most `cap` (<= 5). Where the
+/// cap wins, err_norm <= (0.9 / cap)^5, the power is not computed: most accepted steps of a
+/// contact end there, and std::pow was ~5 % of the contact solver's time
+/// (docs/benchmarks.md, "Issue 15, sixth pass"). The factor is the same either way.
+inline double step_factor(double err_norm, double cap) {
+  const double r = 0.9 / cap;
+  if (err_norm <= r * r * r * r * r) return cap;
+  return std::min(std::clamp(0.9 * std::pow(err_norm, -0.2), 0.2, 5.0), cap);
+}
+
 /// The retry after a rejected step of length h whose controller proposes h_new
 /// (docs/theory.md#bounce-integrator, "Brief lift-offs"). When an armed guard with a known
 /// rate is <= 0 at the trial end (g_b), the step may have failed because the right-hand side
@@ -466,9 +479,9 @@ int first_event_in_step(Rhs& rhs, GuardValue& guard_value, ZeroBound& zero_bound
 /// end at once, see contact.cpp).
 /// observer(t, x) is called at t0 and after every accepted step and at the end.
 /// error_weights (optional) weighs each component's local error (step_error_norm).
-/// docs/theory.md#bounce-integrator.
+/// Always inline: see dopri_step. docs/theory.md#bounce-integrator.
 template <std::size_t N, std::size_t E, class Rhs, class Guards, class Observer>
-PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, double t0,
+[[gnu::always_inline]] inline PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, double t0,
                             const Vec<N>& x0, double t_end, double h0,
                             const PhaseOptions& opt, unsigned patient_guards = 0,
                             const Vec<N>* error_weights = nullptr) {
@@ -537,10 +550,8 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
       }
       continue;
     }
-    const double factor =
-        err_norm == 0 ? 5.0 : std::clamp(0.9 * std::pow(err_norm, -0.2), 0.2, 5.0);
     if (err_norm > 1) {
-      double h_new = h * std::max(factor, 0.1);
+      double h_new = h * detail::step_factor(err_norm, 5.0);
       if constexpr (has_rates) {
         eval_guards(t + h, x_new, g_b, r_b);  // k7 was evaluated there: no new model call
         h_new = detail::retry_step_past_guard_zero<E>(h, h_new, armed, g_a, r_a, g_b);
@@ -622,7 +633,7 @@ PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, dou
     // No growth right after a rejection (Hairer, Nørsett & Wanner §II.4, dopri5): the step
     // just accepted was cut to what the error allowed, growing it again at once mostly buys
     // another rejection; otherwise at most kMaxStepGrowth (docs/theory.md#bounce-integrator).
-    h *= std::min(factor, after_rejection ? 1.0 : kMaxStepGrowth);
+    h *= detail::step_factor(err_norm, after_rejection ? 1.0 : kMaxStepGrowth);
     after_rejection = false;
   }
   out.t = t;

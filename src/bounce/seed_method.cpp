@@ -3,6 +3,8 @@
 // -O3 -march=native.
 #include "bounce/seed_method.hpp"
 
+#include "numerics/cpu_dispatch.hpp"
+
 #include <cmath>
 
 #ifndef TRIBOLAB_SEED_CONTACT_FN
@@ -13,7 +15,8 @@ namespace tribolab::bounce::seed {
 namespace {
 
 template <bool Regularized>
-SeedOut run(const SeedParams& p, double th, double vx, double vy, double w, double dt) {
+[[gnu::always_inline]] inline SeedOut run(const SeedParams& p, double th, double vx, double vy, double w,
+                                          double dt) {
   const double a2 = p.a * p.a, b2 = p.b * p.b, ab = a2 - b2;
   const double inv_m = 1 / p.mass, inv_I = 1 / p.inertia, inv_vs = 1 / p.slip_scale;
   const double K = p.K, n = p.n, chi = p.chi, mu = p.mu, g = p.g;
@@ -59,10 +62,33 @@ SeedOut run(const SeedParams& p, double th, double vx, double vy, double w, doub
   return {vx, vy, w, static_cast<double>(k) * dt, k};
 }
 
+[[gnu::always_inline]] inline SeedOut run_law(const SeedParams& p, double th, double vx, double vy, double w,
+                                              double dt) {
+  return p.regularized ? run<true>(p, th, vx, vy, w, dt) : run<false>(p, th, vx, vy, w, dt);
+}
+
+#ifndef TRIBOLAB_SEED_NO_DISPATCH
+// The same CPU dispatch as our solver's (numerics/cpu_dispatch.hpp, contact.cpp), so that the
+// two are compiled alike: with the library's flags, the loop runs compiled for x86-64-v3 (FMA)
+// where the CPU has it (docs/benchmarks.md, "Issue 15, sixth pass").
+SeedOut run_baseline(const SeedParams& p, double th, double vx, double vy, double w, double dt) {
+  return run_law(p, th, vx, vy, w, dt);
+}
+TRIBOLAB_TARGET_X86_64_V3 SeedOut run_x86_64_v3(const SeedParams& p, double th, double vx, double vy, double w,
+                                                 double dt) {
+  return run_law(p, th, vx, vy, w, dt);
+}
+#endif
+
 }  // namespace
 
 SeedOut TRIBOLAB_SEED_CONTACT_FN(const SeedParams& p, double theta, double vx, double vy, double omega, double dt) {
-  return p.regularized ? run<true>(p, theta, vx, vy, omega, dt) : run<false>(p, theta, vx, vy, omega, dt);
+#ifdef TRIBOLAB_SEED_NO_DISPATCH
+  return run_law(p, theta, vx, vy, omega, dt);
+#else
+  if (numerics::cpu_level() == numerics::CpuLevel::x86_64_v3) return run_x86_64_v3(p, theta, vx, vy, omega, dt);
+  return run_baseline(p, theta, vx, vy, omega, dt);
+#endif
 }
 
 }  // namespace tribolab::bounce::seed
