@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 namespace tribolab::track {
 
@@ -86,14 +87,19 @@ SegmentAcceleration fit_segment(const Track& track, const Segment& seg, double n
     a.shape = FlightShape::not_along_y;
     return a;
   }
-  // 3. The motion along y turns: vy(s) = c1 + 2 c2 s at the ends, with its standard error.
-  auto vy_at = [&](double si, double& sd) {
-    const auto& c = fy.covariance;
-    sd = std::sqrt(std::max(c(1, 1) + 4 * si * si * c(2, 2) + 4 * si * c(1, 2), 0.0));
-    return fy.coef[1] + 2 * fy.coef[2] * si;
+  // 3. The motion along y turns, in the data themselves: straight lines through the first and
+  //    the last third of the points have slopes of opposite signs, each beyond 3 standard
+  //    errors. (The fitted parabola's vertex is no proof: a disc resting, then sliding, is
+  //    fitted by a parabola whose vertex lies inside the segment.)
+  const std::size_t third = std::max<std::size_t>(3, seg.size() / 3);
+  auto slope = [&](std::size_t lo, double& sd) {
+    const std::span<const double> ts(s.data() + lo, third), ys(y.data() + lo, third);
+    const numerics::PolyFit line = numerics::fit_polynomial(ts, ys, 1, "y(t)");
+    sd = line.sigma[1];
+    return line.coef[1];
   };
   double sd0 = 0, sd1 = 0;
-  const double v0 = vy_at(s.front(), sd0), v1 = vy_at(s.back(), sd1);
+  const double v0 = slope(0, sd0), v1 = slope(seg.size() - third, sd1);
   if (!(v0 * v1 < 0 && std::abs(v0) > kSd * sd0 && std::abs(v1) > kSd * sd1)) {
     a.shape = FlightShape::no_turning_point;
     return a;

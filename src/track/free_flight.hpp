@@ -8,10 +8,11 @@
 //      robust position noise + fit_floor (a pendulum, a rolling start, a contact do not);
 //   2. the acceleration lies within max_tilt_deg of the y axis, either way (a slide or cart
 //      seen from the side accelerates along its slope; -y is down, +y a flipped axis);
-//   3. the motion along y turns within the segment: the fitted vy at its first and last points
-//      have opposite signs, each beyond 3 standard errors (thrown up and falling back, a
-//      bounce). A slide seen in seed 000's frame (y up the slope) accelerates along -y too,
-//      but never turns back with one constant acceleration (friction flips at the turn).
+//   3. the motion along y turns within the segment: straight lines through the first and the
+//      last third of its points have slopes of opposite signs, each beyond 3 standard errors
+//      (thrown up and falling back, a bounce). A slide seen in seed 000's frame (y up the
+//      slope) accelerates along -y too, but never turns back with one constant acceleration
+//      (friction flips at the turn).
 // Only such a segment is compared with g: its |a| (within tolerance of g beyond 3 sd), its
 // direction (down, not up) and its tilt from -y (within min_tilt_deg beyond 3 sd).
 #pragma once
@@ -44,7 +45,7 @@ enum class FlightShape {
   too_few_points,             ///< fewer than min_points
   not_constant_acceleration,  ///< the parabolas miss the points by more than the noise
   not_along_y,                ///< the acceleration is tilted more than max_tilt_deg from +-y
-  no_turning_point,           ///< the motion along y does not reverse within the segment
+  no_turning_point,           ///< the motion along y does not reverse within the segment (first vs last third)
 };
 /// "free_flight", "too_few_points", "not_constant_acceleration", "not_along_y", "no_turning_point".
 const char* to_string(FlightShape s);
