@@ -2,6 +2,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/polyfit.hpp"
+#include "track/check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,7 @@ const char* to_string(FlightShape s) {
   switch (s) {
     case FlightShape::free_flight: return "free_flight";
     case FlightShape::too_few_points: return "too_few_points";
+    case FlightShape::no_fit: return "no_fit";
     case FlightShape::not_constant_acceleration: return "not_constant_acceleration";
     case FlightShape::not_along_y: return "not_along_y";
     case FlightShape::no_turning_point: return "no_turning_point";
@@ -38,8 +40,9 @@ std::string FreeFlightOptions::validate() const {
 
 namespace {
 
-SegmentAcceleration fit_segment(const Track& track, const Segment& seg, double noise_x, double noise_y,
-                                const FreeFlightOptions& o) {
+/// The segment's range and times, every fitted value NaN.
+SegmentAcceleration blank(const Track& track, const Segment& seg) {
+  TRACK_CHECK(seg.begin < seg.end && seg.end <= track.points.size(), "a flight segment holds points of the track");
   const auto& p = track.points;
   SegmentAcceleration a;
   a.range = seg;
@@ -49,6 +52,13 @@ SegmentAcceleration fit_segment(const Track& track, const Segment& seg, double n
   a.t_last = p[seg.end - 1].t;
   a.ax = a.ay = a.sigma_ax = a.sigma_ay = a.magnitude = a.sigma_magnitude = nan;
   a.tilt_deg = a.sigma_tilt_deg = a.rms_x = a.rms_y = nan;
+  return a;
+}
+
+SegmentAcceleration fit_segment_unchecked(const Track& track, const Segment& seg, double noise_x, double noise_y,
+                                          const FreeFlightOptions& o) {
+  const auto& p = track.points;
+  SegmentAcceleration a = blank(track, seg);
   if (seg.size() < 4) return a;  // a parabola and its residual scatter need 4 points
   // Time about the segment's middle: the coefficients are then nearly uncorrelated.
   const double t_mid = 0.5 * (a.t_first + a.t_last);
@@ -111,6 +121,17 @@ SegmentAcceleration fit_segment(const Track& track, const Segment& seg, double n
   a.tilted = !a.points_up && std::abs(a.tilt_deg) > kSd * a.sigma_tilt_deg &&
              std::abs(a.tilt_deg) > o.min_tilt_deg;
   return a;
+}
+
+SegmentAcceleration fit_segment(const Track& track, const Segment& seg, double noise_x, double noise_y,
+                                const FreeFlightOptions& o) {
+  try {
+    return fit_segment_unchecked(track, seg, noise_x, noise_y, o);
+  } catch (const InputError&) {  // times too clustered for a parabola or a line (fit_polynomial)
+    SegmentAcceleration a = blank(track, seg);
+    a.shape = FlightShape::no_fit;
+    return a;
+  }
 }
 
 }  // namespace

@@ -43,11 +43,13 @@ struct FreeFlightOptions {
 enum class FlightShape {
   free_flight,                ///< all three marks: checked against g
   too_few_points,             ///< fewer than min_points
+  no_fit,                     ///< the times cannot determine a parabola (numerically clustered)
   not_constant_acceleration,  ///< the parabolas miss the points by more than the noise
   not_along_y,                ///< the acceleration is tilted more than max_tilt_deg from +-y
   no_turning_point,           ///< the motion along y does not reverse within the segment (first vs last third)
 };
-/// "free_flight", "too_few_points", "not_constant_acceleration", "not_along_y", "no_turning_point".
+/// "free_flight", "too_few_points", "no_fit", "not_constant_acceleration", "not_along_y",
+/// "no_turning_point".
 const char* to_string(FlightShape s);
 
 /// The constant-acceleration fit of one flight segment and its comparison with g.
@@ -73,7 +75,8 @@ struct SegmentAcceleration {
 
 /// Fits and classifies every segment of `track` (noise_x, noise_y: the robust position noise
 /// of the track, m, as Kinematics gives it). Values are NaN where a segment has fewer than 4
-/// points. Throws InputError for invalid options.
+/// points or no fit. Throws InputError for invalid options only: a segment that cannot be
+/// fitted is reported (no_fit), never an error, so the check cannot fail a command.
 std::vector<SegmentAcceleration> check_free_flight(const Track& track, const std::vector<Segment>& segments,
                                                    double noise_x, double noise_y,
                                                    const FreeFlightOptions& options = {});

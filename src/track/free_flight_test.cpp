@@ -194,6 +194,17 @@ TEST(FreeFlight, EachBounceOfABallIsCheckedBetweenImpacts) {
   }
 }
 
+TEST(FreeFlight, TimesTooClusteredForAParabolaAreReportedNotThrown) {
+  // Increasing times 1e-200 s apart: t^2 underflows, the least-squares parabola is singular.
+  // The check must say so and never fail the command that asked for derivatives.
+  Track t;
+  for (int i = 0; i < 12; ++i) t.points.push_back({i, i * 1e-200, 0.001 * (i % 3), 0.002 * (i % 2)});
+  const auto r = check_free_flight(t, {{0, t.points.size()}}, 1e-3, 1e-3);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].shape, FlightShape::no_fit);
+  EXPECT_TRUE(std::isnan(r[0].ax));
+}
+
 TEST(FreeFlightOptions, BadValuesAreNamed) {
   FreeFlightOptions o;
   o.g = 0;
