@@ -68,6 +68,9 @@ void register_track(CLI::App& root) {
     cmd->add_option("--impacts", o->impacts,
                     "auto: detect impacts and never difference across them; none: differentiate "
                     "straight through, exactly as Tracker does");
+    cmd->add_option("--g", o->g,
+                    "Gravitational acceleration, m/s^2: segments that move like a free flight are checked "
+                    "against it (docs/theory.md#free-flight-check)");
     cmd->add_option("--out", o->out, "Output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)")->required();
     add_report_option(*cmd, o->report, o->plotly);
     bind(*cmd, o, std::make_shared<bool>(false), track_kinematics);

@@ -147,6 +147,8 @@ TEST(TrackCli, BadInputIsOneErrorLineAndNoOutputFile) {
   expect_error(run_tribolab("track kinematics '" + f.trk + "' --method savgol --window 3" + o), "--window");
   expect_error(run_tribolab("track kinematics '" + f.trk + "' --window 9" + o), "savgol only");
   expect_error(run_tribolab("track kinematics '" + f.trk + "' --impacts maybe" + o), "--impacts");
+  expect_error(run_tribolab("track kinematics '" + f.trk + "' --g 0" + o), "--g");
+  expect_error(run_tribolab("track kinematics '" + f.trk + "' --g -9.8" + o), "--g");
   expect_error(run_tribolab("track import '" + f.trk + "' --length-unit parsec" + o), "--length-unit");
   // malformed and truncated files
   const std::string trunc = f.dir + "/trunc.trk";
@@ -169,6 +171,34 @@ TEST(TrackCli, BadInputIsOneErrorLineAndNoOutputFile) {
   const auto r = run_tribolab("track kinematics '" + f.trk + "'");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
+}
+
+TEST(TrackCli, KinematicsWarnsWhenAFreeFlightDoesNotFallAtG) {
+  // A ball thrown up at 3 m/s filmed at 240 fps, its times written as if at 30 fps (slow
+  // motion analysed as real time): it falls at 9.8/64 = 0.153 m/s^2 in the file's time.
+  const std::string dir = temp_dir("track_kin_g");
+  const std::string csv = dir + "/throw.csv", out = dir + "/k.csv";
+  {
+    std::ofstream f(csv);
+    f << "t,x,y\n";
+    for (int i = 0; i < 144; ++i) {
+      const double s = i / 240.0;
+      f << i / 30.0 << ',' << 0.2 + 1.5 * s << ',' << 1.0 + 3.0 * s - 4.9 * s * s << '\n';
+    }
+  }
+  const auto r = run_tribolab("track kinematics '" + csv + "' --out '" + out + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;  // a warning, not an error: the numbers are still written
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("tribolab: warning: segment 1 of 1 (frames 0-143"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--time-scale 0.125 "), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["g"], 9.8);
+  EXPECT_EQ(j["segment_fits"][0]["gravity_plausible"], false);
+  EXPECT_TRUE(fs::exists(out));
+  // The same file held against the g it shows is quiet: --g is the g the check uses.
+  const auto quiet = run_tribolab("track kinematics '" + csv + "' --g 0.153125 --out '" + out + "'");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
 }
 
 }  // namespace

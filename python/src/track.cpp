@@ -53,6 +53,7 @@ void bind_track(py::module_& m) {
     TRIBOLAB_OPT(c, window);
     TRIBOLAB_OPT(c, order);
     TRIBOLAB_OPT(c, impacts);
+    TRIBOLAB_OPT(c, g);
     TRIBOLAB_OPT(c, out);
     TRIBOLAB_OPT(c, report);
     TRIBOLAB_OPT(c, plotly);

@@ -10,7 +10,9 @@
 namespace tribolab::app {
 
 report::Report track_kinematics_report(const track::Kinematics& k, const track::KinematicsOptions& options,
-                                       const std::string& source) {
+                                       const std::string& source,
+                                       const std::vector<track::SegmentAcceleration>& segment_fits,
+                                       const std::vector<std::string>& warnings) {
   using Row = track::KinematicsRow;
   const bool savgol = k.method == track::DerivativeMethod::savgol;
   report::Report r;
@@ -50,6 +52,26 @@ report::Report track_kinematics_report(const track::Kinematics& k, const track::
                          report::format_value(m.dvx, 3), report::format_value(m.dvy, 3),
                          report::format_value(m.significance, 3)});
     s.add_table(std::move(im));
+  }
+  if (!segment_fits.empty()) {
+    report::Table ft;
+    ft.caption = "One constant acceleration fitted to each segment; a free flight is held against g "
+                 "(docs/theory.md#free-flight-check)";
+    ft.header = {"segment", "frames", "a_x (m/s^2)", "a_y (m/s^2)", "|a| (m/s^2)", "tilt from −y (deg)", "free flight?",
+                 "falls at g?"};
+    int i = 0;
+    for (const auto& a : segment_fits)
+      ft.rows.push_back({std::to_string(++i), std::to_string(a.frame_first) + "–" + std::to_string(a.frame_last),
+                         report::format_uncertain(a.ax, a.sigma_ax), report::format_uncertain(a.ay, a.sigma_ay),
+                         report::format_uncertain(a.magnitude, a.sigma_magnitude),
+                         report::format_uncertain(a.tilt_deg, a.sigma_tilt_deg),
+                         a.checked() ? "yes" : std::string("no: ") + track::to_string(a.shape),
+                         a.checked() ? (a.plausible() ? "yes" : "no (see the warnings)") : "not checked"});
+    s.add_table(std::move(ft));
+  }
+  if (!warnings.empty()) {
+    s.add_subheading("Warnings");
+    s.add_list(std::vector<std::string>(warnings));
   }
   struct Panel {
     const char* name;

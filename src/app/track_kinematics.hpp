@@ -4,6 +4,7 @@
 #pragma once
 
 #include "app/track_import.hpp"
+#include "track/free_flight.hpp"
 #include "track/kinematics.hpp"
 #include "report/plotly_script.hpp"
 
@@ -20,6 +21,8 @@ struct TrackKinematicsOptions {
   int window = 7;                ///< savgol: points per local fit
   int order = 2;                 ///< savgol: polynomial degree 1..6
   std::string impacts = "auto";  ///< auto: never difference across detected impacts; none: straight through
+  /// Gravity a free-flight segment is held against, m/s^2 (docs/theory.md#free-flight-check)
+  double g = kDefaultG;
   std::string out;               ///< CSV t,x,y,vx,vy,ax,ay (+ sigmas for savgol); required
   std::string report;            ///< HTML report; empty: not written
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
@@ -30,10 +33,14 @@ struct TrackKinematicsResult {
   /// Per point: frame, t (s), x, y (m), vx, vy (m/s), ax, ay (m/s^2) and their standard errors
   /// (savgol; NaN for tracker and where a derivative is undefined), the impacts.
   track::Kinematics kinematics;
+  /// Constant-acceleration fit of every flight segment and its comparison with g.
+  std::vector<track::SegmentAcceleration> segment_fits;
+  std::vector<std::string> warnings;  ///< the JSON's "warnings": importer's, then the g check's
 };
 
-/// Validates (InputError naming --method, --window/--order, --impacts, --out or the file),
-/// differentiates, writes the CSV (and the report when asked) and summarises.
+/// Validates (InputError naming --method, --window/--order, --impacts, --g, --out or the
+/// file), differentiates, checks the free-flight segments against g, writes the CSV (and the
+/// report when asked) and summarises.
 TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options);
 
 }  // namespace tribolab::app

@@ -7,6 +7,7 @@
 
 #include "app/track_test_util.hpp"
 #include "numerics/error.hpp"
+#include "numerics/source_dir_test_util.hpp"
 #include "track/kinematics.hpp"
 
 #include <gtest/gtest.h>
@@ -157,9 +158,7 @@ TEST(TrackRigidBody, DriftingDistanceIsWarnedSmallOneIsNot) {
 TEST(TrackRigidBody, ASpinChangedByABounceIsWarnedASteadyOneIsNot) {
   // The demo's filmed throw: the floor changes the spin (about 45 rad/s before the bounce,
   // less after), so no single spin describes the record.
-  const char* src = std::getenv("TRIBOLAB_SOURCE_DIR");
-  ASSERT_NE(src, nullptr);
-  TrackRigidBodyOptions o = options_for(std::string(src) + "/data/demo/bounce/ordinary.txt");
+  TrackRigidBodyOptions o = options_for(tribolab::test_source_dir() + "/data/demo/bounce/ordinary.txt");
   o.input.time_scale = 0.125;
   const auto r = track_rigid_body(o);
   std::string all;

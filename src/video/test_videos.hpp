@@ -3,6 +3,7 @@
 // index so a test can check which frame it was given. For the source, workflow and CLI tests.
 #pragma once
 
+#include "numerics/source_dir_test_util.hpp"
 #include "video/frame.hpp"
 #include "video/render.hpp"
 
@@ -85,8 +86,7 @@ inline Frame rendered_frame(const Scene& scene, int index, const RenderOptions& 
 inline std::string ball_toss_path() {
   std::string path;
   for (const char* root : {"/../shared", "/../../shared"}) {
-    const char* src = std::getenv("TRIBOLAB_SOURCE_DIR");
-    const std::string p = std::string(src ? src : ".") + root + "/data/tracker/BallToss.trz";
+    const std::string p = tribolab::test_source_dir() + root + "/data/tracker/BallToss.trz";
     if (std::filesystem::exists(p)) path = p;
   }
   return path;
