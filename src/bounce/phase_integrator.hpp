@@ -134,8 +134,9 @@ struct DopriStages {
 /// Always inline (as integrate_phase): the contact solver compiles its callers once per CPU
 /// level (numerics/cpu_dispatch.hpp), and only inlined code runs at the caller's level.
 template <std::size_t N, class Rhs>
-[[gnu::always_inline]] inline void dopri_step(Rhs& rhs, double t, const Vec<N>& x, const Vec<N>& k1, double h, Vec<N>& x_new,
-                Vec<N>& k7, Vec<N>* err, bool fsal = true, DopriStages<N>* stages = nullptr) {
+[[gnu::always_inline]] inline void dopri_step(Rhs& rhs, double t, const Vec<N>& x, const Vec<N>& k1, double h,
+                                              Vec<N>& x_new, Vec<N>& k7, Vec<N>* err, bool fsal = true,
+                                              DopriStages<N>* stages = nullptr) {
   using namespace detail;
   DopriStages<N> local;
   DopriStages<N>& st = stages ? *stages : local;
@@ -336,9 +337,9 @@ double step_error_norm(const Vec<N>& x, const Vec<N>& x_new, const Vec<N>& err, 
 
 /// The step size's factor after a trial step whose error norm is err_norm (Hairer, Nørsett &
 /// Wanner §II.4): 0.9 err_norm^(-1/5), clamped to [0.2, 5], and at most `cap` (<= 5). Where the
-/// cap wins, err_norm <= (0.9 / cap)^5, the power is not computed: most accepted steps of a
-/// contact end there, and std::pow was ~5 % of the contact solver's time
-/// (docs/benchmarks.md, "Issue 15, sixth pass"). The factor is the same either way.
+/// cap wins, err_norm <= (0.9 / cap)^5, the power is not computed (about one step in five of
+/// a contact at tol 1e-6; std::pow was ~5 % of the contact solver's time, docs/benchmarks.md,
+/// "Issue 15, sixth pass"). The factor is the same either way.
 inline double step_factor(double err_norm, double cap) {
   const double r = 0.9 / cap;
   if (err_norm <= r * r * r * r * r) return cap;
@@ -481,10 +482,10 @@ int first_event_in_step(Rhs& rhs, GuardValue& guard_value, ZeroBound& zero_bound
 /// error_weights (optional) weighs each component's local error (step_error_norm).
 /// Always inline: see dopri_step. docs/theory.md#bounce-integrator.
 template <std::size_t N, std::size_t E, class Rhs, class Guards, class Observer>
-[[gnu::always_inline]] inline PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer, double t0,
-                            const Vec<N>& x0, double t_end, double h0,
-                            const PhaseOptions& opt, unsigned patient_guards = 0,
-                            const Vec<N>* error_weights = nullptr) {
+[[gnu::always_inline]] inline PhaseEnd<N> integrate_phase(Rhs&& rhs, Guards&& guards, Observer&& observer,
+                                                          double t0, const Vec<N>& x0, double t_end, double h0,
+                                                          const PhaseOptions& opt, unsigned patient_guards = 0,
+                                                          const Vec<N>* error_weights = nullptr) {
   using G = std::array<double, E>;
   constexpr bool has_rates = std::is_invocable_v<Guards&, double, const Vec<N>&, G&, G&>;
   auto eval_guards = [&](double tt, const Vec<N>& st, G& g, G& rate) {

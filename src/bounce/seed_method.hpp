@@ -4,8 +4,9 @@
 // our solver is measured against (docs/benchmarks.md), in speed and in accuracy: written as
 // tight as a careful engineer would write it (no allocation, d^n as exp(n log d) as in our
 // solver, sin and cos of theta advanced by the step's rotation instead of a sincos per step,
-// the friction law chosen at compile time). bench/ compiles the same source a second time
-// with -O3 -march=native (bench/seed/seed_native.cpp).
+// the friction law chosen at compile time). Like our solver it runs compiled for x86-64-v3
+// where the CPU has it (numerics/cpu_dispatch.hpp), so that the two are compiled alike; bench/
+// compiles the same source a second time with -O3 -march=native (bench/seed/seed_native.cpp).
 #pragma once
 
 #include "numerics/units.hpp"
