@@ -195,9 +195,9 @@ TEST(InclineAnalysisCli, AWrongTimeScaleIsCalledOutNotAnalysedWithConfidence) {
   const auto r = run_tribolab("incline analyze " + f + " --phi-deg 20.96 --no-model-a --time-scale 8 --json");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   const json j = json::parse(r.out);
-  // The gravity warning, last (after theta_c's: the stretched run leaves 12 points in its window).
+  // The gravity warning first (then theta_c's: the stretched run leaves 12 points in its window).
   ASSERT_FALSE(j["warnings"].empty());
-  EXPECT_NE(j["warnings"].back().get<std::string>().find("multiplied by 0.125"), std::string::npos) << j["warnings"];
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("multiplied by 0.125"), std::string::npos) << j["warnings"];
   EXPECT_TRUE(j["gravity"]["implausible"].get<bool>());
   EXPECT_NEAR(j["gravity"]["g"].get<double>(), 9.8 / 64, 0.01);  // sigma ~0.001 m/s^2 here
   EXPECT_NE(r.err.find("tribolab: warning: the data show gravity g = 0.15"), std::string::npos) << r.err;
