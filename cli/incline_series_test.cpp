@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace tribolab::cli::testing {
@@ -42,6 +43,16 @@ std::string join(const std::vector<std::string>& files) {
   std::string s;
   for (const auto& f : files) s += " '" + f + "'";
   return s;
+}
+
+/// stderr without the runs' "tribolab: warning: " lines (e.g. theta_c from fewer than 50
+/// points, which the v0 2.0 m/s run at 120 fps has: 45).
+std::string without_warnings(const std::string& err) {
+  std::string out, line;
+  std::istringstream in(err);
+  while (std::getline(in, line))
+    if (line.rfind("tribolab: warning: ", 0) != 0) out += line + "\n";
+  return out;
 }
 
 TEST(InclineSeriesCli, SeveralFilesGiveRunsAndSummary) {
@@ -111,7 +122,7 @@ TEST(InclineSeriesCli, ABadFileInTheMiddleKeepsTheOthers) {
   files.insert(files.begin() + 1, bad);
   const auto r = run_tribolab("incline analyze" + join(files) + " --phi-deg 20.96 --json");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;  // the one error line names the failure
+  EXPECT_EQ(count_lines(without_warnings(r.err)), 1) << r.err;  // the one error line names the failure
   EXPECT_NE(r.err.find("1 of 3 runs failed"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(bad), std::string::npos) << r.err;
   ASSERT_EQ(count_lines(r.out), 1) << r.out;
@@ -158,7 +169,7 @@ TEST(InclineSeriesCli, TextOutputListsRunsThenSummary) {
   const auto files = synth_runs(dir, {"2.0", "2.6"}, "20.96");
   const auto r = run_tribolab("incline analyze" + join(files) + " --phi-deg 20.96");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(r.err.empty()) << r.err;  // no progress line when stderr is not a terminal
+  EXPECT_TRUE(without_warnings(r.err).empty()) << r.err;  // no progress line when stderr is not a terminal
   EXPECT_EQ(r.out.rfind("file", 0), 0u) << r.out;
   EXPECT_NE(r.out.find(files[1]), std::string::npos);
   EXPECT_NE(r.out.find("\nsummary\n"), std::string::npos);

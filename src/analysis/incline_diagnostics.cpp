@@ -155,6 +155,7 @@ std::optional<ThetaC> theta_c_of_degree(const std::vector<double>& tau, const st
   if (static_cast<int>(tau.size()) < degree + 4) return std::nullopt;
   ThetaC r;
   r.degree = degree;
+  r.points = static_cast<int>(tau.size());
   r.t_guess = t_guess;
   r.window_low = window_low;
   r.window_high = window_high;

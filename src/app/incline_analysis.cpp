@@ -104,6 +104,7 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
   if (!s.table.empty()) inputs.push_back(s.table);
   check_output_paths(inputs, {{"report", s.report}});  // before any work (app/output_paths.hpp)
   std::vector<analysis::ThetaCPoint> pts;
+  std::vector<std::string> warnings;  // each run's, with its file (as `incline series` prints them)
   if (!s.table.empty()) {
     if (!s.files.empty() || !s.phi_deg.empty())
       throw InputError(field("table"), "give either " + field("table") + " or tracked files with " + field("phi_deg") + ", not both");
@@ -127,6 +128,7 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
         throw InputError(s.files[i], "no v_y extremum found (" +
                                          (a.notes.empty() ? std::string("the disc does not stop") : a.notes.back()) + ")");
       pts.push_back({o.phi, a.theta_c->cos_theta_c, a.theta_c->sigma_cos_theta_c, s.files[i]});
+      for (const auto& w : a.warnings) warnings.push_back(s.files[i] + ": " + w);
     }
   }
   InclineNormalFrictionTestResult res;
@@ -156,6 +158,7 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
                  "(eq c): about one series in twenty without normal friction is called present";
   j["n_runs"] = r.points.size();
   j["runs"] = runs;
+  j["warnings"] = warnings;
   if (!s.report.empty()) report::write_html(incline_normal_test_report(r), s.report, s.plotly);
   return res;
 }

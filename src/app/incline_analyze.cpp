@@ -137,7 +137,8 @@ json incline_analysis_json(const analysis::InclineAnalysis& a) {
                     {"sigma_cos_theta_c", a.theta_c->sigma_cos_theta_c},
                     {"theta_c_deg", a.theta_c->theta_c_deg},
                     {"t_c", a.theta_c->t_c},
-                    {"cos_theta_c_model", a.cos_theta_c_model}};
+                    {"cos_theta_c_model", a.cos_theta_c_model},
+                    {"points", a.theta_c->points}};
   } else {
     j["theta_c"] = nullptr;
   }
