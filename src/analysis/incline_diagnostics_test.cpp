@@ -232,13 +232,15 @@ TEST(ThetaC, StatedSigmaCoversTheTruthOverAGridOfNoisyRuns) {
   EXPECT_GE(in3 / double(z.size()), 0.92);
 }
 
-/// Model B run analysed without model A (as `theta_c_z_over_grid`).
-InclineAnalysis analyze_theta_c_run(double mu, double phi_deg, double v0, double fps, double noise,
-                                    std::uint64_t seed) {
+/// A model B run (normal acceleration normal_accel, launch speed v0) analysed without model A,
+/// so the eq b verdict comes from the a_N intercept (`incline analyze --no-model-a`).
+InclineAnalysis analyze_b_only(double mu, double phi_deg, double fps, double noise, std::uint64_t seed,
+                               double normal_accel = 0, double v0 = 2.62) {
   InclineSynthOptions s;
   s.params.mu = mu;
   s.params.phi = incline::deg_to_rad(phi_deg);
   s.params.v0 = v0;
+  s.params.normal_accel = normal_accel;
   s.fps = fps;
   s.noise = noise;
   s.seed = seed;
@@ -246,6 +248,12 @@ InclineAnalysis analyze_theta_c_run(double mu, double phi_deg, double v0, double
   o.phi = s.params.phi;
   o.fit_model_a = false;
   return analyze_incline_run(synthesize_incline_run(s).track, o);
+}
+
+/// A model-B-only analysis launched at v0 (m/s).
+InclineAnalysis analyze_theta_c_run(double mu, double phi_deg, double v0, double fps, double noise,
+                                    std::uint64_t seed) {
+  return analyze_b_only(mu, phi_deg, fps, noise, seed, 0, v0);
 }
 
 bool warns_about_theta_c(const InclineAnalysis& a) {
@@ -354,24 +362,6 @@ TEST(ThetaC, DISABLED_MeasureWarnedAndUnwarnedRuns) {
 
 namespace tribolab::analysis {
 namespace {
-
-/// The eq b diagnostic of a model B run (no normal friction) analysed without model A, so the
-/// verdict comes from the a_N intercept (`incline analyze --no-model-a`).
-InclineAnalysis analyze_b_only(double mu, double phi_deg, double fps, double noise, std::uint64_t seed,
-                               double normal_accel = 0) {
-  InclineSynthOptions s;
-  s.params.mu = mu;
-  s.params.phi = incline::deg_to_rad(phi_deg);
-  s.params.v0 = 2.62;
-  s.params.normal_accel = normal_accel;
-  s.fps = fps;
-  s.noise = noise;
-  s.seed = seed;
-  InclineFitOptions o;
-  o.phi = s.params.phi;
-  o.fit_model_a = false;
-  return analyze_incline_run(synthesize_incline_run(s).track, o);
-}
 
 TEST(NormalAccelDiagnostic, ExactDataLieWithinTheStatedSigma) {
   // The two cases: the local quadratics' truncation bias gave slope 3.5094 +- 0.0001
