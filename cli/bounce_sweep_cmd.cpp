@@ -78,7 +78,7 @@ struct SweepText {
 };
 
 /// Number of ranks the MPI launcher started (1 when not under a launcher).
-[[maybe_unused]] int launcher_ranks() {
+int launcher_ranks() {
   for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
     if (const char* v = std::getenv(var)) return std::atoi(v);
   }
@@ -87,18 +87,14 @@ struct SweepText {
 
 void run_sweep(app::BounceSweepOptions o, const SweepText& t) {
   int rank = 0;
-#if TRIBOLAB_WITH_MPI
-  if (app::launched_by_mpi_launcher()) {
+  if (app::launched_by_mpi_launcher() && app::built_with_mpi()) {
     static app::MpiSession session;  // MPI_Finalize at exit
     rank = session.rank();
     o.mpi = true;
-  }
-#else
-  if (launcher_ranks() > 1) {
+  } else if (launcher_ranks() > 1) {
     throw InputError("this tribolab was built without MPI (cmake -DTRIBOLAB_MPI=ON); run it "
                      "without mpirun, or split the grid with --shard");
   }
-#endif
   try {
     o.theta_deg = parse_axis(t.theta, sweep::Quantity::theta_deg, "--theta-deg");
     if (!t.omega.empty()) o.omega = parse_axis(t.omega, sweep::Quantity::omega, "--omega");

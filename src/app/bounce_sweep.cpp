@@ -130,12 +130,11 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
   const sweep::CellModel model = bounce_cell_model(cell);
   BounceSweepResult result;
   if (a.mpi) {
-#if TRIBOLAB_WITH_MPI
+    if (!built_with_mpi()) {
+      throw InputError("this tribolab was built without MPI (cmake -DTRIBOLAB_MPI=ON); run it "
+                       "without mpirun, or split the grid with " + field("shard"));
+    }
     result.run = run_sweep_command_mpi(o, model, a.progress, a.cancel);
-#else
-    throw InputError("this tribolab was built without MPI (cmake -DTRIBOLAB_MPI=ON); run it "
-                     "without mpirun, or split the grid with " + field("shard"));
-#endif
   } else {
     result.run = run_sweep_command(o, model, a.progress, a.cancel);
   }

@@ -2,6 +2,10 @@
 
 #include <cstdlib>
 
+#include "numerics/error.hpp"
+
+// The one file of tribolab that sees MPI: CMakeLists.txt defines TRIBOLAB_WITH_MPI for it
+// (and its test) alone when configured with -DTRIBOLAB_MPI=ON.
 #if TRIBOLAB_WITH_MPI
 #include <mpi.h>
 
@@ -11,7 +15,6 @@
 
 #include "app/sweep_checkpoint.hpp"
 #include "io/sweep_file.hpp"
-#include "numerics/error.hpp"
 #endif
 
 namespace tribolab::app {
@@ -22,6 +25,8 @@ bool launched_by_mpi_launcher() {
 }
 
 #if TRIBOLAB_WITH_MPI
+
+bool built_with_mpi() { return true; }
 
 using namespace ::tribolab::io;
 
@@ -205,6 +210,22 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& o, const swe
   }
   write_derived_maps(o, model, r);
   return r;
+}
+
+#else  // built without MPI
+
+namespace {
+[[noreturn]] void no_mpi() {
+  throw InputError("this tribolab was built without MPI (cmake -DTRIBOLAB_MPI=ON)");
+}
+}  // namespace
+
+bool built_with_mpi() { return false; }
+MpiSession::MpiSession() { no_mpi(); }
+MpiSession::~MpiSession() = default;
+SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions&, const sweep::CellModel&,
+                                         const SweepProgressCallback&, const std::atomic<bool>*) {
+  no_mpi();
 }
 
 #endif

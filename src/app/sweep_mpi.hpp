@@ -15,7 +15,10 @@ namespace tribolab::app {
 /// OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_RANK) - whether or not this build has MPI.
 bool launched_by_mpi_launcher();
 
-#if TRIBOLAB_WITH_MPI
+/// True when this build links MPI (cmake -DTRIBOLAB_MPI=ON, the default of `make build`).
+/// Only sweep_mpi.cpp sees MPI; without it, MpiSession and run_sweep_command_mpi throw
+/// InputError saying the build has no MPI.
+bool built_with_mpi();
 
 /// MPI_Init_thread (funneled: only the calling thread uses MPI) on construction unless MPI
 /// is already initialised; MPI_Finalize on destruction if it initialised it.
@@ -46,7 +49,5 @@ SweepCommandResult run_sweep_command_mpi(const SweepCommandOptions& options,
                                          const sweep::CellModel& model,
                                          const SweepProgressCallback& progress,
                                          const std::atomic<bool>* cancel = nullptr);
-
-#endif
 
 }  // namespace tribolab::app

@@ -143,4 +143,27 @@ TEST(SweepMpi, AnErrorOnAnyRankReachesEveryRank) {
 
 }  // namespace
 }  // namespace tribolab::app
+#else  // a build without MPI (the ASan tree of `make test`)
+
+#include "numerics/error.hpp"
+#include "sweep/synthetic.hpp"
+
+namespace tribolab::app {
+namespace {
+
+TEST(SweepMpi, ABuildWithoutMpiSaysSoInsteadOfRunning) {
+  EXPECT_FALSE(built_with_mpi());
+  SweepCommandOptions o;
+  o.out = "never_written.csv";
+  try {
+    run_sweep_command_mpi(o, sweep::synthetic::wave_model(), nullptr);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("built without MPI"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(MpiSession{}, InputError);
+}
+
+}  // namespace
+}  // namespace tribolab::app
 #endif
