@@ -190,8 +190,8 @@ bool is_hop(const track::Track& centre, const track::Segment& seg) {
 /// options.exclude points next to it (docs/theory.md#bounce-analysis). Fills r.impacts,
 /// r.impact_used, r.pre and r.post's ranges; throws InputError when there is no such impact
 /// or a flight keeps fewer than kMinPoints points.
-track::Impact choose_impact(const track::Track& a, const track::Track& b,
-                                   const BounceAnalyzeOptions& options, BounceAnalysis& r) {
+track::Impact choose_impact(const track::Track& a, const track::Track& b, const BounceAnalyzeOptions& options,
+                            BounceAnalysis& r) {
   r.impacts = track::detect_impacts(r.centre, options.impacts);
   // A contact of many frames or a noisy track shows no jump between adjacent windows: look
   // across a gap of contact frames with wider windows (detail::find_impact_across_gap).
