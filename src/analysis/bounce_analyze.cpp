@@ -2,6 +2,7 @@
 #include "analysis/bounce_analyze.hpp"
 
 #include "analysis/bounce_glitch.hpp"
+#include "analysis/bounce_impact.hpp"
 #include "analysis/bounce_plausibility.hpp"
 #include "analysis/bounce_touch.hpp"
 
@@ -171,30 +172,66 @@ void require_common_frames(const track::Track& a, const track::Track& b) {
   }
 }
 
+/// True when points [seg.begin, seg.end) of `centre`, between two detected impacts, are no
+/// rebound: too few for a parabola, or a y parabola with no apex inside them (falling all
+/// along, or still rising at the next touch). bounce::simulate_impact's whole impact goes on
+/// through such a flight (docs/theory.md#bounce-analysis, repeated contacts).
+bool is_hop(const track::Track& centre, const track::Segment& seg) {
+  if (seg.size() < static_cast<std::size_t>(kMinPoints)) return true;
+  std::vector<double> t, y;
+  for (std::size_t i = seg.begin; i < seg.end; ++i) t.push_back(centre.points[i].t), y.push_back(centre.points[i].y);
+  const auto p = numerics::fit_polynomial(t, y, 2, "flight between impacts y(t)");
+  if (!(p.coef[2] < 0)) return true;
+  const double apex = -p.coef[1] / (2 * p.coef[2]);
+  return !(apex > t.front() && apex < t.back());
+}
+
 /// The impact options.impact of the centre track and the flights on either side of it, less
 /// options.exclude points next to it (docs/theory.md#bounce-analysis). Fills r.impacts,
 /// r.impact_used, r.pre and r.post's ranges; throws InputError when there is no such impact
 /// or a flight keeps fewer than kMinPoints points.
-const track::Impact& choose_impact(const track::Track& a, const track::Track& b,
-                                   const BounceAnalyzeOptions& options, BounceAnalysis& r) {
+track::Impact choose_impact(const track::Track& a, const track::Track& b, const BounceAnalyzeOptions& options,
+                            BounceAnalysis& r) {
   r.impacts = track::detect_impacts(r.centre, options.impacts);
+  // A contact of many frames or a noisy track shows no jump between adjacent windows: look
+  // across a gap of contact frames with wider windows (detail::find_impact_across_gap).
+  std::size_t first_post = 0;
+  if (r.impacts.impacts.empty()) {
+    if (const auto g = detail::find_impact_across_gap(r.centre, r.impacts, options.impacts)) {
+      r.impacts.impacts.push_back(g->impact);
+      first_post = g->first_post;
+    }
+  }
   if (r.impacts.impacts.empty()) {
     throw InputError("no impact found in the centre track of '" + a.name + "' and '" + b.name +
                      "' (no significant velocity jump; position noise ~" +
                      std::to_string(r.impacts.noise_y * 1000).substr(0, 5) + " mm)");
   }
-  if (static_cast<std::size_t>(options.impact) > r.impacts.impacts.size()) {
-    throw InputError(field("impact"), "asked for impact " + std::to_string(options.impact) + " but only " +
-                                     std::to_string(r.impacts.impacts.size()) + " found");
+  // The whole impacts: a detected impact followed by a flight that never reaches its apex
+  // before the next one (the ball leaves still moving down, or touches again while rising)
+  // is one impact with it, as bounce::simulate_impact follows it.
+  const auto& found = r.impacts.impacts;
+  const auto segs = track::flight_segments(r.centre.points.size(), found);
+  std::vector<std::pair<std::size_t, std::size_t>> whole;  // first and last detected impact
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    if (!whole.empty() && whole.back().second + 1 == k && is_hop(r.centre, segs[k])) {
+      whole.back().second = k;
+    } else {
+      whole.emplace_back(k, k);
+    }
   }
-  r.impact_used = static_cast<std::size_t>(options.impact - 1);
+  if (static_cast<std::size_t>(options.impact) > whole.size()) {
+    throw InputError(field("impact"), "asked for impact " + std::to_string(options.impact) + " but only " +
+                                     std::to_string(whole.size()) + " found");
+  }
+  const auto [first, last] = whole[static_cast<std::size_t>(options.impact - 1)];
+  r.impact_used = first;
   // centre_track has one point per body row, so track indices are row indices.
-  const auto segs = track::flight_segments(r.centre.points.size(), r.impacts.impacts);
-  const track::Segment in = segs[r.impact_used], out = segs[r.impact_used + 1];
+  const track::Segment in = segs[first], out = segs[last + 1];
   const auto ex = static_cast<std::size_t>(options.exclude);
   r.pre.begin = in.begin;
   r.pre.end = in.end > in.begin + ex ? in.end - ex : in.begin;
-  r.post.begin = std::min(out.begin + ex, out.end);
+  r.post.begin = std::min(std::max(out.begin, first_post) + ex, out.end);
   r.post.end = out.end;
   r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
   r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
@@ -206,7 +243,13 @@ const track::Impact& choose_impact(const track::Track& a, const track::Track& b,
                        std::to_string(kMinPoints) + " are needed for a y-t parabola");
     }
   }
-  return r.impacts.impacts[r.impact_used];
+  if (first == last) return found[first];
+  // Several contacts: the detector's time of the first stands for the whole (the fits then
+  // find where the flights' parabolas meet, within the gap between them).
+  track::Impact imp = found[first];
+  for (std::size_t k = first + 1; k <= last; ++k) imp.dvx += found[k].dvx, imp.dvy += found[k].dvy;
+  imp.t = 0.5 * (r.centre.points[in.end - 1].t + r.centre.points[out.begin].t);
+  return imp;
 }
 
 /// The median time between consecutive rows, s: the frame period (it sets the uncertainty of a
@@ -441,20 +484,37 @@ bool drop_frames_inside_contact(const std::vector<track::RigidBodyRow>& rows, Bo
   return dropped;
 }
 
-/// A few contact frames pass the trim test (measured: at most 1 before and 3 after at 240
-/// fps); many more mean the floor (or T) puts the ball on the floor while the flights show
-/// free flight: a wrong --floor-y (e.g. in other units or another origin). Throws InputError
-/// naming the option then (docs/theory.md#bounce-analysis).
-void require_plausible_floor(int pre_trimmed, int post_trimmed, const BounceAnalysis& r) {
-  for (auto [trimmed, now, which] : {std::tuple{pre_trimmed, r.pre.n_points, "pre"}, {post_trimmed, r.post.n_points, "post"}}) {
-    const int lost = trimmed - now;
-    if (lost > std::max(3, trimmed / 10)) {
-      const std::string what = r.floor_method == FloorMethod::given              ? field("floor_y")
-                               : r.floor_method == FloorMethod::contact_duration ? field("contact_duration")
-                                                                                 : std::string("floor");
-      throw InputError(what, "puts the ball on the floor during " + std::to_string(lost) + " frames of the " + which +
-                                 "-impact flight that move as free flight; check the floor's height (file frame, m) and the contact duration");
-    }
+/// The frames each flight lost to the located contact (drop_frames_inside_contact) were in
+/// contact only if the ball's lowest point there, as measured (centre and orientation of the
+/// frame itself), is not far below the floor: a real contact compresses the ball by less than
+/// kMaxDeformation, while a floor (or T) too high by 10 cm or more (another origin, other
+/// units) puts flight frames that far "under" it. Throws InputError naming the option when two or
+/// more lost frames lie below the floor by more than kMaxDeformation plus 4 sds of the
+/// measured lowest point (docs/theory.md#bounce-analysis). A low rebound or a repeated
+/// contact loses many frames to a correct floor: their count alone says nothing.
+void require_plausible_floor(const std::vector<track::RigidBodyRow>& rows, const bounce::Ball& ball,
+                             std::size_t pre_trimmed_end, std::size_t post_trimmed_begin, const BounceAnalysis& r) {
+  // 3 cm: above the largest compression of the synthetic contacts (the seed's law: up to
+  // 1.8 cm at 3.4 m/s over bounce_grid_test's grid, checked there, bounce::simulate_contact's
+  // max_penetration) and below the 10 cm or more a wrong origin or unit puts between the
+  // floor and the flights.
+  constexpr double kMaxDeformation = 0.03;
+  const double theta_noise = std::max({r.pre.spin.rms_residual, r.post.spin.rms_residual, 0.0});
+  const double sd_h = std::hypot(std::max(r.impacts.noise_y, 1e-6), ball.a * theta_noise);
+  const double limit = r.floor_y - kMaxDeformation - 4 * sd_h;
+  int below = 0;
+  auto count = [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) below += rows[i].yc - bounce::support_depth(ball, rows[i].theta) < limit;
+  };
+  count(r.pre.end, pre_trimmed_end);
+  count(post_trimmed_begin, r.post.begin);
+  if (below >= 2) {
+    const std::string what = r.floor_method == FloorMethod::given              ? field("floor_y")
+                             : r.floor_method == FloorMethod::contact_duration ? field("contact_duration")
+                                                                               : std::string("floor");
+    throw InputError(what, "puts the ball on the floor during " + std::to_string(below) +
+                               " frames where its lowest point is more than 3 cm below it (the ball would be pressed "
+                               "into the floor); check the floor's height (file frame, m) and the contact duration");
   }
 }
 
@@ -484,12 +544,12 @@ BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip
   // the flights just where the touch and the separation are read. Once located, every kept
   // frame after the touch (pre) or before the separation (post) is in contact by definition:
   // drop them and fit again, until none is left (docs/theory.md#bounce-analysis).
-  const int pre_trimmed = r.pre.n_points, post_trimmed = r.post.n_points;
+  const std::size_t pre_trimmed_end = r.pre.end, post_trimmed_begin = r.post.begin;
   for (int pass = 0;; ++pass) {
     fit_flights_once(rows, imp, options, frame_dt, r);
     if (!drop_frames_inside_contact(rows, r) || pass == 5) break;
   }
-  require_plausible_floor(pre_trimmed, post_trimmed, r);
+  require_plausible_floor(rows, options.ball, pre_trimmed_end, post_trimmed_begin, r);
   check_gravity(rows, r);
   check_bounce_plausibility(options.ball, r);  // docs/theory.md#plausibility-checks
   if (!glitches.times.empty()) {

@@ -8,11 +8,53 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace tribolab::analysis {
 
 namespace {
 const char* const kNames[] = {"K", "n", "D", "e", "mu"};
+}  // namespace
+
+namespace {
+
+/// Weights of the 3 N residuals (vx, vy, b omega of each row) from the rows' own sigmas:
+/// var = sigma_out^2 + sum over the inputs q (theta, vx_in, vy_in, omega_in) of
+/// (d pred / d q  sigma_q)^2, the sensitivities by forward differences (steps of 1e-3 sigma_q,
+/// or 1e-6 when sigma_q = 0) at `law` and `friction`; weight = median sd / sd, so that the
+/// residuals keep their unit (m/s) and the robust loss's scale its meaning.
+void weigh_by_uncertainties(const std::vector<BounceRow>& rows, const BounceFitOptions& o,
+                            const bounce::NormalLawSpec& law, const bounce::FrictionModel& friction,
+                            std::vector<double>& weight) {
+  std::vector<double> sd(weight.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const BounceRow& row = rows[i];
+    const BounceFitRow p0 = predict_bounce(row, o.ball, law, friction, o.tolerance);
+    double var[3] = {row.sigma_vx_out * row.sigma_vx_out, row.sigma_vy_out * row.sigma_vy_out,
+                     o.ball.b * o.ball.b * row.sigma_omega_out * row.sigma_omega_out};
+    const std::pair<double BounceRow::*, double> inputs[] = {{&BounceRow::theta_deg, row.sigma_theta_deg},
+                                                              {&BounceRow::vx_in, row.sigma_vx_in},
+                                                              {&BounceRow::vy_in, row.sigma_vy_in},
+                                                              {&BounceRow::omega_in, row.sigma_omega_in}};
+    for (const auto& [member, sigma] : inputs) {
+      if (!(sigma > 0)) continue;
+      BounceRow moved = row;
+      const double h = 1e-3 * sigma;
+      moved.*member += h;
+      const BounceFitRow p1 = predict_bounce(moved, o.ball, law, friction, o.tolerance);
+      const double d[3] = {(p1.vx_pred - p0.vx_pred) / h, (p1.vy_pred - p0.vy_pred) / h,
+                           o.ball.b * (p1.omega_pred - p0.omega_pred) / h};
+      for (int c = 0; c < 3; ++c)
+        if (std::isfinite(d[c])) var[c] += d[c] * sigma * d[c] * sigma;
+    }
+    for (int c = 0; c < 3; ++c) sd[3 * i + static_cast<std::size_t>(c)] = std::sqrt(var[c]);
+  }
+  std::vector<double> sorted = sd;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double ref = sorted[sorted.size() / 2];
+  for (std::size_t k = 0; k < sd.size(); ++k) weight[k] = ref / sd[k];
+}
+
 }  // namespace
 
 std::string BounceFitOptions::validate() const {
@@ -35,6 +77,14 @@ std::string BounceFitOptions::validate() const {
   if (!(loss_scale > 0 && std::isfinite(loss_scale))) return "loss-scale: must be positive";
   if (!(tolerance > 0 && tolerance < 1e-3)) return "tol: must lie in (0, 1e-3)";
   return {};
+}
+
+bool BounceRow::has_sigmas() const {
+  for (double v : {sigma_theta_deg, sigma_vx_in, sigma_vy_in, sigma_omega_in})
+    if (!(std::isfinite(v) && v >= 0)) return false;
+  for (double v : {sigma_vx_out, sigma_vy_out, sigma_omega_out})
+    if (!(std::isfinite(v) && v > 0)) return false;
+  return true;
 }
 
 BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
@@ -115,6 +165,13 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   fo.parameter_tolerance = 1e-8;
   fo.gradient_tolerance = 1e-12;
   fo.covariance = o.covariance;  // docs/theory.md#bounce-fit: which estimator and why
+  // Residual weights: 1 (unweighted) until the rows' own uncertainties are carried in below.
+  std::vector<double> weight(static_cast<std::size_t>(3 * N), 1.0);
+  int with_sigmas = 0;
+  for (const auto& row : rows) with_sigmas += row.has_sigmas();
+  if (with_sigmas != 0 && with_sigmas != N)
+    throw InputError(std::to_string(with_sigmas) + " of " + std::to_string(N) +
+                     " bounces have uncertainties (sigma columns): give them for every row or for none");
   auto residuals = [&](const double* p, double* r) {
     const auto spec = spec_of(p);
     const auto fr = friction_of(p);
@@ -125,9 +182,9 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
       } catch (const Error&) {
         return false;  // e.g. a restitution the law cannot reach: the solver backs off
       }
-      r[3 * i] = q.r_vx;
-      r[3 * i + 1] = q.r_vy;
-      r[3 * i + 2] = q.r_b_omega;
+      r[3 * i] = weight[3 * i] * q.r_vx;
+      r[3 * i + 1] = weight[3 * i + 1] * q.r_vy;
+      r[3 * i + 2] = weight[3 * i + 2] * q.r_b_omega;
       if (!std::isfinite(q.r_vx) || !std::isfinite(q.r_vy) || !std::isfinite(q.r_b_omega)) return false;
     }
     return true;
@@ -168,6 +225,12 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
     }
     auto alt = numerics::fit_least_squares(residuals, 3 * N, second, fo);
     if (alt.ok() && (!out.fit.ok() || alt.cost < out.fit.cost)) out.fit = std::move(alt);
+  }
+  if (with_sigmas == N && out.fit.ok()) {
+    weigh_by_uncertainties(rows, o, spec_of(out.fit.values.data()), friction_of(out.fit.values.data()), weight);
+    auto start = params;
+    for (std::size_t k = 0; k < start.size(); ++k) start[k].initial = out.fit.values[k];
+    out.fit = numerics::fit_least_squares(residuals, 3 * N, start, fo);
   }
   const auto& f = out.fit;
   if (!f.ok()) {

@@ -9,6 +9,7 @@
 #include "bounce/contact.hpp"
 #include "numerics/least_squares.hpp"
 
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -21,6 +22,11 @@ struct BounceRow {
   double theta_deg = 0;                         ///< orientation at first touch, deg
   double vx_in = 0, vy_in = 0, omega_in = 0;    ///< m/s, m/s (< 0), rad/s
   double vx_out = 0, vy_out = 0, omega_out = 0; ///< m/s, m/s, rad/s
+  /// Standard uncertainties of the values above (deg, m/s, rad/s); NaN when not known (a
+  /// table without the sigma columns). With them fit_bounces weighs each row by its own.
+  double sigma_theta_deg = NAN, sigma_vx_in = NAN, sigma_vy_in = NAN, sigma_omega_in = NAN;
+  double sigma_vx_out = NAN, sigma_vy_out = NAN, sigma_omega_out = NAN;
+  bool has_sigmas() const;  ///< all seven sigmas finite and >= 0, the outgoing ones > 0
 };
 
 struct BounceFitOptions {
@@ -61,7 +67,11 @@ struct BounceFitResult {
   std::vector<std::string> free_parameters;
 };
 
-/// Fits. Throws InputError when the options are invalid, the data are too few for the free
+/// Fits. Rows with sigmas (BounceRow::has_sigmas, all or none) are weighted by their own
+/// uncertainties: each residual is divided by its sd, the outgoing value's and the incoming
+/// ones' carried through the law (sensitivities at the unweighted fit), then multiplied by
+/// the median sd so residuals stay in m/s (docs/theory.md#bounce-fit, weights). Throws
+/// InputError when the options are invalid, only some rows have sigmas, the data are too few for the free
 /// parameters, or the fit cannot determine them (status not_identifiable / failed).
 BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitOptions& options);
 

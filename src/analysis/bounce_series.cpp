@@ -44,6 +44,13 @@ BounceSeriesPoint point_of(const BounceAnalysis& r) {
   p.vx_out = r.post.vx;
   p.vy_out = r.vy_separation;
   p.omega_out = r.post.omega;
+  p.sigma_theta_deg = r.sigma_theta_touch_deg;
+  p.sigma_vx_in = r.pre.sigma_vx;
+  p.sigma_vy_in = r.sigma_vy_touch;
+  p.sigma_omega_in = r.pre.sigma_omega;
+  p.sigma_vx_out = r.post.sigma_vx;
+  p.sigma_vy_out = r.sigma_vy_separation;
+  p.sigma_omega_out = r.post.sigma_omega;
   p.energy_pre = r.pre.energy;    // at t_touch
   p.energy_post = r.post.energy;  // at t_separation
   p.mean_normal_force = r.mean_normal_force.value_or(NAN);
@@ -58,7 +65,15 @@ BounceSeriesPoint point_of(const BounceAnalysis& r) {
 }
 
 BounceRow bounce_row_of(const BounceSeriesPoint& p) {
-  return {p.theta_deg, p.vx_in, p.vy_in, p.omega_in, p.vx_out, p.vy_out, p.omega_out};
+  BounceRow row{p.theta_deg, p.vx_in, p.vy_in, p.omega_in, p.vx_out, p.vy_out, p.omega_out};
+  row.sigma_theta_deg = p.sigma_theta_deg;
+  row.sigma_vx_in = p.sigma_vx_in;
+  row.sigma_vy_in = p.sigma_vy_in;
+  row.sigma_omega_in = p.sigma_omega_in;
+  row.sigma_vx_out = p.sigma_vx_out;
+  row.sigma_vy_out = p.sigma_vy_out;
+  row.sigma_omega_out = p.sigma_omega_out;
+  return row;
 }
 
 std::string BounceSeriesOptions::validate() const {

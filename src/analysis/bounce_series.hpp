@@ -12,6 +12,7 @@
 #include "bounce/contact.hpp"
 #include "bounce/geometry.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,10 @@ struct BounceSeriesPoint {
   double e_height = 0, sigma_e_height = 0;      ///< sqrt(H'/H); NaN when not reported
   double vx_in = 0, vy_in = 0, omega_in = 0;    ///< at first touch, m/s, m/s (< 0), rad/s
   double vx_out = 0, vy_out = 0, omega_out = 0; ///< at separation, m/s, m/s, rad/s
+  /// Their standard uncertainties (deg, m/s, rad/s; NaN with a bracketed floor): the fit's
+  /// weights (bounce_row_of, fit_bounces).
+  double sigma_theta_deg = NAN, sigma_vx_in = NAN, sigma_vy_in = NAN, sigma_omega_in = NAN;
+  double sigma_vx_out = NAN, sigma_vy_out = NAN, sigma_omega_out = NAN;
   bounce::KineticEnergy energy_pre, energy_post;  ///< J at touch / separation (seed 001, 討論 (一))
   double mean_normal_force = 0, sigma_mean_normal_force = 0;  ///< N (typ. 100-300); NaN without T
   /// Velocity of the material point at the support point at first touch, m/s (seed 001

@@ -4,6 +4,7 @@
 #include "numerics/physical_range.hpp"
 
 #include "bounce/flight.hpp"
+#include "bounce/impact.hpp"
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
 
@@ -57,12 +58,18 @@ ThrowMotion simulate_throw(const SynthVideoOptions& o) {
   fo.g = g;
   const auto first = bounce::first_contact(o.ball, s0, fo);
   if (first.status != bounce::FlightStatus::contact) throw InputError("the release touches the floor");
-  bounce::ContactOptions co;
-  co.g = g;
-  const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, first.state, co, &m.contact);
-  // Still on the floor after max_duration is what the input asks for; a failed integration is not.
-  if (c.status == bounce::ContactStatus::max_duration) throw InputError("the contact did not end: " + std::string(c.message));
-  if (c.status != bounce::ContactStatus::separated) throw SolverError("the contact did not end: " + std::string(c.message));
+  // The whole impact (bounce::simulate_impact): a ball that leaves the floor still moving
+  // down, or touches again before its apex, is filmed through its further contacts, as
+  // `bounce simulate` and the maps follow it; the history holds every contact, and the
+  // flights between them are free flight, which state()'s cubic Hermite reproduces exactly.
+  bounce::ImpactOptions io;
+  io.contact.g = g;
+  const auto impact = bounce::simulate_impact(o.ball, o.law, o.friction, first.state, io, &m.contact);
+  const bounce::ContactResult& c = impact.whole;
+  // Still on the floor (or chattering) is what the input asks for; a failed integration is not.
+  if (impact.status == bounce::ImpactStatus::rest || impact.status == bounce::ImpactStatus::max_contacts)
+    throw InputError("the contact did not end: " + std::string(impact.message));
+  if (impact.status != bounce::ImpactStatus::free_flight) throw SolverError("the contact did not end: " + std::string(impact.message));
   SynthVideoTruth& tr = m.truth;
   tr.g = g;
   tr.t_touch = first.t_contact;

@@ -1,7 +1,7 @@
 // Synthetic data with known truth for the bounce analyses (tests and the demo):
-//  * a tracked video of one bounce: the two tips of a spinning ellipse in flight, one contact
-//    (bounce::simulate_contact) and flight again, sampled at a frame rate with Gaussian
-//    position noise, times optionally multiplied by a slow-motion factor (seed 001: 8);
+//  * a tracked video of one bounce: the two tips of a spinning ellipse in flight, one whole
+//    impact (bounce::simulate_impact: the first contact and any further ones before the
+//    apex) and flight again, sampled at a frame rate with Gaussian position noise, times optionally multiplied by a slow-motion factor (seed 001: 8);
 //  * a table of bounces (incoming and outgoing velocities) from simulate_contact with noise.
 // Deterministic for a given seed (std::mt19937_64). docs/theory.md#bounce-synthetic.
 #pragma once
@@ -36,7 +36,7 @@ struct SynthVideoOptions {
 
 /// Truth of a synthetic video, in real time (not multiplied by time_factor).
 struct SynthVideoTruth {
-  double t_touch = 0, t_separation = 0;  ///< s from the first frame's time origin
+  double t_touch = 0, t_separation = 0;  ///< s from the first frame's time origin (first touch, last separation)
   bounce::BodyState touch, separation;   ///< states at first touch and at separation
   double g = kDefaultG;                  ///< m/s^2
   double floor_y = 0;                    ///< m
@@ -51,12 +51,12 @@ struct SynthVideo {
   SynthVideoTruth truth;
 };
 
-/// The simulated throw as a continuous motion in real time (flight, one contact, flight):
+/// The simulated throw as a continuous motion in real time (flight, one whole impact, flight):
 /// what synth_video samples at its frames and what a renderer samples within an exposure.
 struct ThrowMotion {
   bounce::BodyState release;                 ///< state at t = 0 (x = 0, y = height)
   SynthVideoTruth truth;
-  std::vector<bounce::ContactSample> contact;  ///< the contact's history, t from first touch
+  std::vector<bounce::ContactSample> contact;  ///< every contact's history, t from first touch
   double t_end = 0;  ///< s: `after` s past the separation, or the next touch if earlier
   /// The ball's state at any time t >= 0, s: free flight before the touch and after the
   /// separation; during the contact a cubic Hermite interpolation of the history's positions

@@ -20,12 +20,21 @@ std::string shortest(double v) {
 
 constexpr std::array<const char*, 7> kColumns = {"theta_deg", "vx_in", "vy_in", "omega_in",
                                                  "vx_out", "vy_out", "omega_out"};
+/// Optional columns: the standard uncertainties of the seven above (bounce analyze
+/// --bounces-out writes them; tables without them stay unweighted in bounce fit).
+constexpr std::array<const char*, 7> kSigmaColumns = {"sigma_theta_deg", "sigma_vx_in", "sigma_vy_in", "sigma_omega_in",
+                                                      "sigma_vx_out", "sigma_vy_out", "sigma_omega_out"};
+constexpr std::array<double analysis::BounceRow::*, 7> kSigmaFields = {
+    &analysis::BounceRow::sigma_theta_deg, &analysis::BounceRow::sigma_vx_in,  &analysis::BounceRow::sigma_vy_in,
+    &analysis::BounceRow::sigma_omega_in,  &analysis::BounceRow::sigma_vx_out, &analysis::BounceRow::sigma_vy_out,
+    &analysis::BounceRow::sigma_omega_out};
 }
 
 std::vector<analysis::BounceRow> parse_bounce_table(std::string_view text, const std::string& source) {
   std::vector<analysis::BounceRow> rows;
-  std::array<int, 7> col{};
+  std::array<int, 7> col{}, sigma_col{};
   col.fill(-1);
+  sigma_col.fill(-1);
   std::size_t n_fields = 0;
   bool have_header = false;
   int line_no = 0;
@@ -42,8 +51,16 @@ std::vector<analysis::BounceRow> parse_bounce_table(std::string_view text, const
     if (!have_header) {
       for (std::size_t i = 0; i < fields.size(); ++i) {
         const auto name = trim(fields[i]);
-        for (std::size_t c = 0; c < kColumns.size(); ++c)
+        for (std::size_t c = 0; c < kColumns.size(); ++c) {
           if (name == kColumns[c]) col[c] = static_cast<int>(i);
+          if (name == kSigmaColumns[c]) sigma_col[c] = static_cast<int>(i);
+        }
+      }
+      for (std::size_t c = 0; c < kSigmaColumns.size(); ++c) {
+        if ((sigma_col[c] < 0) != (sigma_col[0] < 0))
+          throw InputError(where, std::string("column '") + kSigmaColumns[c] +
+                                      (sigma_col[c] < 0 ? "' missing" : "' without the other sigma columns") +
+                                      ": give all seven sigma_ columns or none");
       }
       for (std::size_t c = 0; c < kColumns.size(); ++c) {
         if (col[c] < 0) {
@@ -63,7 +80,15 @@ std::vector<analysis::BounceRow> parse_bounce_table(std::string_view text, const
       v[c] = parse_double(trim(fields[col[c]]), where + " (" + kColumns[c] + ")");
       if (!std::isfinite(v[c])) throw InputError(where, std::string(kColumns[c]) + " is not finite");
     }
-    rows.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6]});
+    analysis::BounceRow row{v[0], v[1], v[2], v[3], v[4], v[5], v[6]};
+    for (std::size_t c = 0; c < kSigmaColumns.size() && sigma_col[0] >= 0; ++c) {
+      const double sv = parse_double(trim(fields[sigma_col[c]]), where + " (" + kSigmaColumns[c] + ")");
+      if (!(std::isfinite(sv) && sv >= 0)) throw InputError(where, std::string(kSigmaColumns[c]) + " must be a finite number >= 0");
+      row.*kSigmaFields[c] = sv;
+    }
+    if (sigma_col[0] >= 0 && !row.has_sigmas())
+      throw InputError(where, "sigma_vx_out, sigma_vy_out and sigma_omega_out must be positive");
+    rows.push_back(row);
   }
   if (!have_header) throw InputError(source, "empty table (no header)");
   if (rows.empty()) throw InputError(source, "no data rows after the header");
@@ -76,11 +101,20 @@ std::vector<analysis::BounceRow> read_bounce_table(const std::string& path) {
 
 std::string write_bounce_table(const std::vector<analysis::BounceRow>& rows) {
   std::ostringstream out;
-  out << "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n";
+  // The sigma columns when every row has its sigmas (tables without them read as before).
+  bool sigmas = !rows.empty();
+  for (const auto& r : rows) sigmas = sigmas && r.has_sigmas();
+  out << "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out";
+  if (sigmas)
+    for (const char* c : kSigmaColumns) out << ',' << c;
+  out << '\n';
   for (const auto& r : rows) {
     out << shortest(r.theta_deg) << ',' << shortest(r.vx_in) << ',' << shortest(r.vy_in) << ','
         << shortest(r.omega_in) << ',' << shortest(r.vx_out) << ',' << shortest(r.vy_out) << ','
-        << shortest(r.omega_out) << '\n';
+        << shortest(r.omega_out);
+    if (sigmas)
+      for (auto f : kSigmaFields) out << ',' << shortest(r.*f);
+    out << '\n';
   }
   return out.str();
 }

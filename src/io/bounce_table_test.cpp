@@ -48,5 +48,32 @@ TEST(BounceTable, ErrorsNameFileAndLine) {
   EXPECT_THAT(error_of(h + "1,2,3,4,5,6,nan\n"), HasSubstr("t.csv:2"));
 }
 
+// The sigma columns bounce analyze --bounces-out writes (issue 27): written when every row
+// has its sigmas and read back exactly; a table without them (every file written before) still
+// reads, unweighted; a partial set or a non-positive outgoing sigma is an error naming the line.
+TEST(BounceTable, SigmaColumnsRoundTripAndOldTablesStillRead) {
+  analysis::BounceRow row{12.5, 1.0 / 3, -4.2, 30, 0.1, 2.0 / 7, -5};
+  row.sigma_theta_deg = 0.3, row.sigma_vx_in = 0.004, row.sigma_vy_in = 0.005, row.sigma_omega_in = 0.2;
+  row.sigma_vx_out = 0.006, row.sigma_vy_out = 1.0 / 3, row.sigma_omega_out = 0.7;
+  const std::string text = write_bounce_table({row});
+  EXPECT_THAT(text, HasSubstr(",sigma_theta_deg,sigma_vx_in,sigma_vy_in,sigma_omega_in,sigma_vx_out,sigma_vy_out,sigma_omega_out\n"));
+  const auto back = parse_bounce_table(text, "t.csv");
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_TRUE(back[0].has_sigmas());
+  EXPECT_EQ(back[0].sigma_vy_out, 1.0 / 3);
+  EXPECT_EQ(back[0].sigma_theta_deg, 0.3);
+  // Without sigmas: the old header, and rows read without them.
+  const analysis::BounceRow plain{12.5, 1.0 / 3, -4.2, 30, 0.1, 2.0 / 7, -5};
+  const std::string old = write_bounce_table({plain});
+  EXPECT_EQ(old.substr(0, old.find('\n')), "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out");
+  EXPECT_FALSE(parse_bounce_table(old, "t.csv")[0].has_sigmas());
+  const std::string h = "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out,sigma_vx_out\n";
+  EXPECT_THAT(error_of(h + "1,2,3,4,5,6,7,0.1\n"), HasSubstr("t.csv:1"));
+  const std::string all = "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out,sigma_theta_deg,sigma_vx_in,"
+                          "sigma_vy_in,sigma_omega_in,sigma_vx_out,sigma_vy_out,sigma_omega_out\n";
+  EXPECT_THAT(error_of(all + "1,2,3,4,5,6,7,0,0,0,0,0.1,0,0.1\n"), HasSubstr("t.csv:2"));
+  EXPECT_THAT(error_of(all + "1,2,3,4,5,6,7,0,0,0,0,0.1,-1,0.1\n"), HasSubstr("t.csv:2"));
+}
+
 }  // namespace
 }  // namespace tribolab::io

@@ -1,0 +1,67 @@
+// docs/theory.md#bounce-analysis ("impact search").
+#include "analysis/bounce_impact.hpp"
+
+#include "track/local_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace tribolab::analysis::detail {
+
+std::optional<GapImpact> find_impact_across_gap(const track::Track& centre, const track::ImpactResult& found,
+                                                const track::ImpactOptions& options) {
+  const std::size_t n = centre.points.size();
+  std::vector<double> t(n), x(n), y(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    t[i] = centre.points[i].t;
+    x[i] = centre.points[i].x;
+    y[i] = centre.points[i].y;
+  }
+  if (n < 8) return std::nullopt;
+  const double sx = std::max(found.noise_x, options.min_noise), sy = std::max(found.noise_y, options.min_noise);
+  if (!(sx > 0 && sy > 0)) return std::nullopt;
+  // The frame period (median): gaps of up to 0.1 s, longer than any bounce's contact.
+  std::vector<double> dts;
+  for (std::size_t i = 1; i < n; ++i) dts.push_back(t[i] - t[i - 1]);
+  std::nth_element(dts.begin(), dts.begin() + static_cast<std::ptrdiff_t>(dts.size() / 2), dts.end());
+  const double dt = dts[dts.size() / 2];
+  const auto max_gap = static_cast<std::size_t>(std::clamp(0.1 / std::max(dt, 1e-12), 1.0, 200.0));
+  // Windows of w points on each side, w doubling; then (w = 0) all the points on each side:
+  // no other impact was detected, so each side is one flight.
+  for (auto w = static_cast<std::size_t>(options.window);; w = 2 * w <= n ? 2 * w : 0) {
+    std::optional<GapImpact> best;
+    for (std::size_t k = std::max<std::size_t>(w, 4) - 1; k + 1 + std::max<std::size_t>(w, 4) <= n; ++k) {
+      for (std::size_t gap = 0; gap <= max_gap && k + 1 + gap + std::max<std::size_t>(w, 4) <= n; ++gap) {
+        const std::size_t b = k + 1 + gap;  // first point of the right window
+        const std::size_t wl = w ? w : k + 1, wr = w ? w : n - b;
+        const double tm = 0.5 * (t[k] + t[b]);
+        const auto left = track::fit_polynomial(&t[k + 1 - wl], &x[k + 1 - wl], &y[k + 1 - wl], static_cast<int>(wl), tm, 2);
+        const auto right = track::fit_polynomial(&t[b], &x[b], &y[b], static_cast<int>(wr), tm, 2);
+        if (!left.ok || !right.ok) continue;
+        const double dvx = right.c[0][1] - left.c[0][1], dvy = right.c[1][1] - left.c[1][1];
+        const double f = left.var_unit(1) + right.var_unit(1);
+        const double sig = std::sqrt(dvx * dvx / (sx * sx * f) + dvy * dvy / (sy * sy * f));
+        // A bounce: the centre falls before and rises after (a window reaching into the
+        // contact or across the apex fails this).
+        if (!(left.c[1][1] < 0 && right.c[1][1] > 0)) continue;
+        if (!(sig > options.threshold) || !(std::hypot(dvx, dvy) > options.min_jump)) continue;
+        if (best && sig <= best->impact.significance) continue;
+        GapImpact g;
+        g.impact.index = k;
+        g.impact.frame = centre.points[k].frame;
+        g.impact.t = tm;
+        g.impact.dvx = dvx;
+        g.impact.dvy = dvy;
+        g.impact.significance = sig;
+        g.first_post = b;
+        best = g;
+      }
+    }
+    if (best) return best;
+    if (w == 0) break;
+  }
+  return std::nullopt;
+}
+
+}  // namespace tribolab::analysis::detail
