@@ -329,7 +329,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, cell.angle);
     c.def(+[](const app::BounceSweepOptions& o) {
             app::BounceSweepOptions with_map = o;
-            with_map.return_map = true;  // a notebook wants the arrays
+            with_map.return_map = o.shard.count == 1;  // a notebook wants the arrays; a shard is not the map
             return app::bounce_sweep(with_map);
           },
           [](const app::BounceSweepResult& r, py::dict& d) {
@@ -350,7 +350,7 @@ void bind_bounce(py::module_& m) {
           },
           "axes: dict of 1-D arrays, the values of each swept quantity (grid order); map: dict of "
           "arrays, one per output of a cell (e, vx_out, vy_out, omega_out, ...), shaped by the axes "
-          "(the last axis fastest, as in the CSV)");
+          "(the last axis fastest, as in the CSV); none for a shard (merge the shards, then read the file)");
   }
 
 }

@@ -21,6 +21,11 @@ CLI_ONLY = {
 }
 PYTHON_ONLY = {
     "bounce drop": {"keep_trajectory"},  # a notebook keeps the samples without a file (FieldRole::notebook)
+    # A series of files runs on every core on the command line, which has no --threads for it
+    # (yet); a notebook may limit it.
+    "bounce analyze": {"threads"},
+    "incline analyze": {"threads"},
+    "incline mu-from-slide": {"threads"},
 }
 
 
