@@ -3,6 +3,7 @@
 #include "analysis/bounce_plausibility.hpp"
 #include "analysis/bounce_synth.hpp"
 
+#include "numerics/error.hpp"
 #include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
