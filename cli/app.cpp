@@ -15,7 +15,18 @@
 
 namespace tribolab::cli {
 
-void print_result(const nlohmann::json& result, bool as_json) {
+nlohmann::json spelled_for_cli(const nlohmann::json& j) {
+  if (j.is_string()) return spell_fields(j.get<std::string>(), flag_of);
+  if (j.is_array() || j.is_object()) {
+    nlohmann::json out = j;
+    for (auto& v : out) v = spelled_for_cli(v);
+    return out;
+  }
+  return j;
+}
+
+void print_result(const nlohmann::json& raw, bool as_json, const app::ResultKeys* keys) {
+  const nlohmann::json result = spelled_for_cli(raw);
   // Data that contradict the physics are said on stderr too, whatever the output format.
   if (result.is_object() && result.contains("warnings") && result["warnings"].is_array()) {
     for (const auto& w : result["warnings"]) {
@@ -26,7 +37,7 @@ void print_result(const nlohmann::json& result, bool as_json) {
     std::cout << result.dump() << '\n';
     return;
   }
-  std::cout << text_listing(result);
+  std::cout << text_listing(result, keys);
 }
 
 void add_json_flag(CLI::App& cmd, bool& flag) {
@@ -52,6 +63,7 @@ int run(int argc, char** argv) {
   register_bounce(app);
   register_track(app);
   register_demo(app);
+  register_schema(app);
   tidy_placeholders(app);
   wrap_help(app);  // after the placeholders: they read the one-line help
   try {

@@ -4,6 +4,8 @@
 // src/app/bounce_series.* (several files) and src/app/bounce_synth.*; this file binds their
 // options to flags and prints the results.
 #include "bounce_analysis_cmd.hpp"
+#include "declared_options.hpp"
+#include "app/result_keys.hpp"
 
 #include "app.hpp"
 #include "help_explain.hpp"
@@ -65,10 +67,11 @@ void add_analyze(CLI::App* area) {
   cmd->add_option("--bounces-out", o.bounces_out, "also write the analysed bounces as a `bounce fit` table (CSV)")->type_name("FILE.csv");
   add_report_option(*cmd, o.report, o.plotly);
   add_json_flag(*cmd, opts->json);
+  declare_results(*cmd, bounce_analyze_result_keys());
   cmd->callback([opts] {
     opts->o.series = cli_series_options();
     const BounceAnalyzeSeriesResult r = bounce_analyze_series(opts->o);
-    if (opts->o.files.size() == 1) return print_result(r.json, opts->json);
+    if (opts->o.files.size() == 1) return print_result(r.json, opts->json, &bounce_analyze_result_keys());
     print_series(r.json["runs"], opts->json ? r.json["summary"] : summary_for_text(r.json["summary"]), opts->json,
                  {"collision_angle_deg", "e_velocity", "sigma_e_velocity", "e_height", "energy_pre", "energy_post",
                   "mean_normal_force"});
@@ -116,13 +119,9 @@ void add_synth_video(CLI::App* area) {
   auto opts = std::make_shared<Opts>();
   auto& o = opts->o;
   auto* cmd = area->add_subcommand("synth-video", "write a synthetic Tracker export of one bounce (tips A and B) with known truth");
-  cmd->add_option("--out", o.out, "output file (Tracker Export Data text)")->required();
-  add_throw_options(cmd, o);
-  cmd->add_option("--noise", o.noise, "position noise sd of each tip coordinate, m");
-  cmd->add_option("--time-factor", o.time_factor, "file time = real time x this (8: 240 fps shown at 30)");
-  cmd->add_option("--seed", o.seed, "random seed");
+  add_declared_options(*cmd, o, bounce_synth_video_fields(), bounce_synth_video_result_keys());
   add_json_flag(*cmd, opts->json);
-  cmd->callback([opts] { print_result(bounce_synth_video(opts->o).json, opts->json); });
+  cmd->callback([opts, cmd] { print_declared(*cmd, bounce_synth_video(opts->o).json, opts->json); });
 }
 
 void add_synth_table(CLI::App* area) {
@@ -133,21 +132,9 @@ void add_synth_table(CLI::App* area) {
   auto opts = std::make_shared<Opts>();
   auto& o = opts->o;
   auto* cmd = area->add_subcommand("synth-table", "write a synthetic bounce table for `bounce fit` with known truth");
-  cmd->add_option("--out", o.out, "output CSV")->required();
-  add_ball_options(cmd, o.ball);
-  add_truth_law_options(cmd, o.law);
-  cmd->add_option("--rows", o.rows, "bounces");
-  cmd->add_option("--speed-min", o.speed_min, "smallest incoming |vy|, m/s");
-  cmd->add_option("--speed-max", o.speed_max, "largest incoming |vy|, m/s");
-  cmd->add_option("--vx-max", o.vx_max, "incoming vx in [-vx-max, vx-max], m/s");
-  cmd->add_option("--omega-max", o.omega_max, "incoming omega in [-omega-max, omega-max], rad/s");
-  cmd->add_option("--noise-v", o.noise_v, "noise sd of the outgoing vx, vy, m/s");
-  cmd->add_option("--noise-omega", o.noise_omega, "noise sd of the outgoing omega, rad/s");
-  cmd->add_option("--outlier-fraction", o.outlier_fraction, "fraction of rows with a gross error on one outgoing value");
-  cmd->add_option("--outlier-v", o.outlier_v, "size of a gross error, m/s: uniform in [v, 2v], random sign; omega: v/b");
-  cmd->add_option("--seed", o.seed, "random seed");
+  add_declared_options(*cmd, o, bounce_synth_table_fields(), bounce_synth_table_result_keys());
   add_json_flag(*cmd, opts->json);
-  cmd->callback([opts] { print_result(bounce_synth_table(opts->o).json, opts->json); });
+  cmd->callback([opts, cmd] { print_declared(*cmd, bounce_synth_table(opts->o).json, opts->json); });
 }
 
 }  // namespace

@@ -25,15 +25,4 @@ void add_law_options(CLI::App* cmd, app::LawOptions& o, bool with_mu) {
   cmd->add_option("--tol", o.tol, "integrator tolerance, absolute and relative");
 }
 
-void add_truth_law_options(CLI::App* cmd, app::TruthLawOptions& o) {
-  cmd->add_option("--model", o.model, "normal law: hooke|hertz|hunt-crossley|flores|lankarani-nikravesh|gonthier");
-  cmd->add_option("--K", o.K, "stiffness, N/m^n");
-  cmd->add_option("--n", o.n, "exponent (hooke: 1 whatever is given)");
-  cmd->add_option("--D", o.D, "damping, N s/m^(n+1) (hertz: 0 whatever is given)");
-  cmd->add_option("--restitution", o.restitution, "target restitution instead of --D");
-  cmd->add_option("--mu", o.mu, "friction coefficient");
-  cmd->add_option("--friction", o.friction, "coulomb|regularized|spring");
-  cmd->add_option("--slip-scale", o.slip_scale, "v_s of the regularized law, m/s");
-}
-
 }  // namespace tribolab::cli

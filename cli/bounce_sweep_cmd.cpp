@@ -3,6 +3,7 @@
 // interrupt signal and the progress line handled here; the workflow is app::bounce_sweep
 // (src/app/bounce_sweep.hpp), each cell the one bounce cell model (src/app/bounce_cell.hpp).
 // docs/cli.md#bounce-sweep, docs/theory.md#sweeps.
+#include "declared_options.hpp"
 #include "bounce_sweep_cmd.hpp"
 
 #include <atomic>
@@ -170,12 +171,9 @@ void register_bounce_sweep(CLI::App& bounce_area) {
   auto merge_json = std::make_shared<bool>(false);
   CLI::App* merge = bounce_area.add_subcommand(
       "merge", "Join the shard files of one `bounce sweep` into the full map, exactly");
-  merge->add_option("files", merge_opts->files, "Shard files (every shard i/N exactly once, any order)")
-      ->required();
-  merge->add_option("--out", merge_opts->out, "Merged output CSV")->required();
-  add_report_option(*merge, merge_opts->report, merge_opts->plotly);
+  add_declared_options(*merge, *merge_opts, app::bounce_merge_fields(), app::bounce_merge_result_keys());
   add_json_flag(*merge, *merge_json);
-  merge->callback([merge_opts, merge_json] { print_result(app::bounce_merge(*merge_opts).json, *merge_json); });
+  merge->callback([merge_opts, merge_json, merge] { print_declared(*merge, app::bounce_merge(*merge_opts).json, *merge_json); });
 }
 
 }  // namespace tribolab::cli

@@ -3,6 +3,8 @@
 // layer's struct (src/app/incline_analysis.hpp, incline_analyze.hpp), calls the workflow and
 // prints its JSON (a series: its table, then a non-zero exit if a run failed).
 #include "incline_analysis_cmd.hpp"
+#include "declared_options.hpp"
+#include "app/result_keys.hpp"
 
 #include "app.hpp"
 #include "help_explain.hpp"
@@ -48,32 +50,10 @@ void add_synth(CLI::App* area) {
       "synth", "Synthetic tracked run from the simulators, with noise (test and demo data)");
   auto s = std::make_shared<InclineSynthOptions>();
   auto as_json = std::make_shared<bool>(false);
-  add_number(*cmd, "--mu", s->mu, "Kinetic friction coefficient (> 0)")->required();
-  add_number(*cmd, "--phi-deg", s->phi_deg, "Incline angle, degrees, in [0, 90)")->required();
-  add_number(*cmd, "--v0", s->v0,
-             "Launch speed along +x, m/s (>= 0; 0 = released from rest: a straight slide down the slope)")
-      ->required();
-  add_number(*cmd, "--g", s->g, "Gravitational acceleration, m/s^2");
-  add_number(*cmd, "--normal-accel", s->normal_accel,
-             "Model A: normal friction / mass, m/s^2, positive left of the velocity (0 = model B; see incline analyze --help)");
-  add_number(*cmd, "--fps", s->fps, "Frame rate, 1/s");
-  add_number(*cmd, "--noise", s->noise, "Standard deviation of the position noise, m");
-  add_number(*cmd, "--seed", s->seed, "Noise seed, integer >= 0");
-  add_number(*cmd, "--t-offset", s->t_offset, "Launch instant in the file's time, s");
-  add_number(*cmd, "--x0", s->x0, "Launch point x, m");
-  add_number(*cmd, "--y0", s->y0, "Launch point y, m");
-  add_number(*cmd, "--duration", s->duration,
-             "Recording length, s (unset: until 0.3 s after the stop, or 1.5 s after the launch)");
-  cmd->add_option("--format", s->format,
-                  "export (Tracker Export Data text, tab delimited) or csv (track,frame,t,x,y)");
-  cmd->add_option("--track-name", s->track_name, "Name of the track");
-  add_number(*cmd, "--frame-rotation-deg", s->frame_rotation_deg,
-             "Camera axes turned against the incline: points rotated CCW about the launch point, deg "
-             "(within +-20)");
-  cmd->add_option("--out", s->out, "Output file")->required();
+  add_declared_options(*cmd, *s, incline_synth_fields(), incline_synth_result_keys());
   add_json_flag(*cmd, *as_json);
   set_types(cmd);
-  cmd->callback([s, as_json] { print_result(incline_synth(*s).json, *as_json); });
+  cmd->callback([s, as_json, cmd] { print_declared(*cmd, incline_synth(*s).json, *as_json); });
 }
 
 // ---- mu-from-slide -------------------------------------------------------------------
@@ -88,8 +68,8 @@ InclineSeriesControl series_control() {
 /// Prints one file's object, or a series' table and summary; a failed run of a series then
 /// makes the exit non-zero (finish_series).
 void print_runs(const nlohmann::json& j, const std::vector<std::string>& errors, std::size_t n_files,
-                bool as_json, const std::vector<std::string>& columns) {
-  if (n_files == 1) return print_result(j, as_json);
+                bool as_json, const std::vector<std::string>& columns, const app::ResultKeys* keys = nullptr) {
+  if (n_files == 1) return print_result(j, as_json, keys);
   print_series(j["runs"], j["summary"], as_json, columns);
   finish_series(n_files, errors);
 }
@@ -112,10 +92,12 @@ void add_mu_from_slide(CLI::App* area) {
   add_json_flag(*cmd, *as_json);
   set_types(cmd);
   add_report_option(*cmd, s->report, s->plotly);
+  declare_results(*cmd, incline_mu_from_slide_result_keys());
   cmd->callback([s, as_json] {
     s->series = series_control();
     const InclineMuFromSlideResult r = incline_mu_from_slide(*s);
-    print_runs(r.json, r.errors, s->files.size(), *as_json, {"phi_deg", "a", "sigma_a", "mu", "sigma_mu", "r_squared"});
+    print_runs(r.json, r.errors, s->files.size(), *as_json, {"phi_deg", "a", "sigma_a", "mu", "sigma_mu", "r_squared"},
+               &incline_mu_from_slide_result_keys());
   });
 }
 

@@ -6,6 +6,7 @@
 #include "help_explain.hpp"
 #include "incline_analysis_cmd.hpp"
 #include "incline_options.hpp"
+#include "declared_options.hpp"
 #include "report_option.hpp"
 
 #include "app/incline_forward.hpp"
@@ -46,45 +47,35 @@ void add_command(CLI::App* area, const std::string& name, const std::string& hel
   cmd->callback([o, as_json, run] { print_result(run(*o).json, *as_json); });
 }
 
+/// Registers `name` bound from its declaration (app/option_fields.hpp, cli/declared_options.hpp).
+template <class Options, class Run>
+void add_declared_command(CLI::App* area, const std::string& name, const std::string& help,
+                          const app::Fields<Options>& fields, const app::ResultKeys& keys, Run run,
+                          const std::string& footer = "") {
+  auto* cmd = area->add_subcommand(name, help);
+  cmd->footer(footer);
+  auto o = std::make_shared<Options>();
+  auto as_json = std::make_shared<bool>(false);
+  add_declared_options(*cmd, *o, fields, keys);
+  add_json_flag(*cmd, *as_json);
+  name_option_types(cmd);
+  cmd->callback([o, as_json, run, cmd] { print_declared(*cmd, run(*o).json, *as_json); });
+}
+
 void add_predict(CLI::App* area) {
-  add_command<InclinePredictOptions>(
-      area, "predict", "Closed-form prediction of a launch (model B)",
-      [](CLI::App& cmd, InclinePredictOptions& o) { add_launch_options(cmd, o.launch, true); },
-      incline_predict, help::kInclineModels);
+  add_declared_command(area, "predict", "Closed-form prediction of a launch (model B)", incline_predict_fields(),
+                       incline_predict_result_keys(), incline_predict, help::kInclineModels);
 }
 
 void add_simulate(CLI::App* area) {
-  add_command<InclineSimulateOptions>(
-      area, "simulate", "Trajectory of a launch as CSV (t,x,y,vx,vy,ax,ay)",
-      [](CLI::App& cmd, InclineSimulateOptions& o) {
-        add_launch_options(cmd, o.launch, true);
-        cmd.add_option("--model", o.model, "A (normal friction component) or B");
-        add_number(cmd, "--normal-accel", o.normal_accel,
-                   "Model A: normal friction / mass, m/s^2, positive left of the velocity (unset: 0)");
-        cmd.add_option("--method", o.method,
-                       "analytic (closed form, model B only) or numeric; unset: analytic for B, numeric for A");
-        add_number(cmd, "--dt", o.dt, "Sample interval, s (unset: t-end/500)");
-        add_number(cmd, "--t-end", o.t_end,
-                   "Duration, s (unset: 1.25 t_stop if it stops, else 2 v0/(g mu cos phi), else 1)");
-        cmd.add_option("--out", o.out, "Output CSV file")->required();
-      },
-      incline_simulate, help::kInclineModels);
+  add_declared_command(area, "simulate", "Trajectory of a launch as CSV (t,x,y,vx,vy,ax,ay)", incline_simulate_fields(),
+                       incline_simulate_result_keys(), incline_simulate, help::kInclineModels);
 }
 
 void add_mu_from_stop(CLI::App* area) {
-  add_command<InclineMuFromStopOptions>(
-      area, "mu-from-stop", "Friction coefficient from the stopping point alone (incline study, equation 10A (十A))",
-      [](CLI::App& cmd, InclineMuFromStopOptions& o) {
-        add_number(cmd, "--phi-deg", o.phi_deg, "Incline angle, degrees, in (0, 90)")->required();
-        add_number(cmd, "--x-stop", o.x_stop, "Stop position across the slope, m (> 0)")->required();
-        add_number(cmd, "--y-stop", o.y_stop, "Stop position up the slope, m (< 0)")->required();
-        add_number(cmd, "--sigma-phi-deg", o.sigma_phi_deg, "Uncertainty of the angle, degrees");
-        add_number(cmd, "--sigma-pos", o.sigma_pos, "Uncertainty of x-stop and of y-stop, m");
-        add_number(cmd, "--g", o.g, "Gravitational acceleration, m/s^2");
-        add_number(cmd, "--plate-size", o.plate_size,
-                   "Largest usable stop distance, m: enables the best-angle advice");
-      },
-      incline_mu_from_stop, help::kInclineMuFromStop);
+  add_declared_command(area, "mu-from-stop", "Friction coefficient from the stopping point alone (incline study, equation 10A (十A))",
+                       incline_mu_from_stop_fields(), incline_mu_from_stop_result_keys(), incline_mu_from_stop,
+                       help::kInclineMuFromStop);
 }
 
 void add_families(CLI::App* area) {

@@ -46,8 +46,9 @@ analysis::SeriesOptions cli_series_options(const std::string& what) {
   return o;
 }
 
-void print_series(const nlohmann::json& rows, const nlohmann::json& summary, bool as_json,
+void print_series(const nlohmann::json& raw_rows, const nlohmann::json& raw_summary, bool as_json,
                   const std::vector<std::string>& columns) {
+  const nlohmann::json rows = spelled_for_cli(raw_rows), summary = spelled_for_cli(raw_summary);  // --floor-y
   // Each run's warnings on stderr with its file, whatever the output format; the summary's
   // own below (print_result, or here for --json).
   for (const auto& row : rows)

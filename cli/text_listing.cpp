@@ -131,9 +131,18 @@ Companions companions(const json& o, const std::string& key) {
 
 class Listing {
  public:
+  explicit Listing(const app::ResultKeys* keys) : keys_(keys) {}
   std::string str() const { return out_; }
 
-  void object(const json& o, const std::string& parent, std::size_t indent) {
+  /// The unit of the key at `path` ("law.K", "bounces.vx_in"); `key` its last part, `parent`
+  /// the enclosing key.
+  std::string unit(const std::string& path, const std::string& key, const std::string& parent) const {
+    if (!keys_) return unit_of(key, parent);
+    const app::ResultKey* k = app::find_result_key(*keys_, path);
+    return k ? k->unit : "";
+  }
+
+  void object(const json& o, const std::string& parent, std::size_t indent, const std::string& prefix = "") {
     // Companions are shown on their value's row, not on rows of their own.
     std::set<std::string> shown_with_value;
     for (const auto& [k, v] : o.items()) {
@@ -155,15 +164,15 @@ class Listing {
       const std::string lead = std::string(indent, ' ');
       if (v.is_object() && !v.empty()) {
         line(lead + k + ":");
-        object(v, k, indent + 2);
+        object(v, k, indent + 2, prefix + k + ".");
       } else if (v.is_array() && !v.empty() && std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_object(); })) {
         line(lead + k + ":");
-        table(v, k, indent + 2);
+        table(v, k, indent + 2, prefix + k + ".");
       } else if (v.is_array() && !v.empty() && std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_string(); })) {
         for (std::size_t i = 0; i < v.size(); ++i)
           line(lead + pad(i == 0 ? k : "", width) + "  " + v[i].get<std::string>());
       } else {
-        line(lead + pad(k, width) + "  " + value(o, k, v, parent));
+        line(lead + pad(k, width) + "  " + value(o, k, v, unit(prefix + k, k, parent)));
       }
     }
   }
@@ -175,8 +184,7 @@ class Listing {
     out_ += t + '\n';
   }
 
-  std::string value(const json& o, const std::string& k, const json& v, const std::string& parent) const {
-    const std::string unit = unit_of(k, parent);
+  std::string value(const json& o, const std::string& k, const json& v, const std::string& unit) const {
     if (v.is_null()) return null_meaning(k);
     if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
     if (v.is_string()) return v.get<std::string>();
@@ -212,7 +220,7 @@ class Listing {
 
   /// A list of objects: few elements side by side (one column each, one row per field), many
   /// elements one row each (one column per field); units beside the field names.
-  void table(const json& list, const std::string& key, std::size_t indent) {
+  void table(const json& list, const std::string& key, std::size_t indent, const std::string& prefix) {
     std::vector<std::string> fields;
     std::vector<std::map<std::string, std::string>> cells(list.size());
     for (std::size_t i = 0; i < list.size(); ++i) {
@@ -224,7 +232,7 @@ class Listing {
       }
     }
     auto label = [&](const std::string& f) {  // "_deg" and "_px" already name their unit
-      const std::string u = unit_of(f.substr(f.rfind('.') + 1), key);
+      const std::string u = unit(prefix + f, f.substr(f.rfind('.') + 1), key);
       return u.empty() || ends(f, "_deg") || ends(f, "_px") ? f : f + " (" + u + ")";
     };
     const std::string lead(indent, ' ');
@@ -269,6 +277,7 @@ class Listing {
     }
   }
 
+  const app::ResultKeys* keys_;
   std::string out_;
 };
 
@@ -278,9 +287,9 @@ std::string unit_of(const std::string& key, const std::string& parent) {
   return report::unit_of_key(key, parent);  // one set of rules for the listing and the reports
 }
 
-std::string text_listing(const json& result) {
+std::string text_listing(const json& result, const app::ResultKeys* keys) {
   if (!result.is_object()) return result.dump() + "\n";
-  Listing l;
+  Listing l(keys);
   l.object(result, "", 0);
   return l.str();
 }

@@ -2,6 +2,8 @@
 // differentiate it, follow two points of one body. Options are documented in docs/cli.md#track;
 // the workflows live in src/app/track_*.hpp, this file only binds options to them.
 #include "app.hpp"
+#include "declared_options.hpp"
+#include "app/result_keys.hpp"
 #include "report_option.hpp"
 #include "track_video_cmd.hpp"
 
@@ -26,10 +28,13 @@ void add_input_options(CLI::App& cmd, TrackInputOptions& in) {
   cmd.add_option("--entry", in.entry, "For a .trz: the .trk inside to read (when not given: the first)");
 }
 
+/// `keys`: the command's declared result keys (the listing's units), when declared.
 template <class Options, class Run>
-void bind(CLI::App& cmd, std::shared_ptr<Options> o, std::shared_ptr<bool> as_json, Run run) {
+void bind(CLI::App& cmd, std::shared_ptr<Options> o, std::shared_ptr<bool> as_json, Run run,
+          const app::ResultKeys* keys = nullptr) {
   add_json_flag(cmd, *as_json);
-  cmd.callback([o, as_json, run] { print_result(run(*o).json, *as_json); });
+  if (keys) declare_results(cmd, *keys);
+  cmd.callback([o, as_json, run, keys] { print_result(run(*o).json, *as_json, keys); });
 }
 
 }  // namespace
@@ -73,7 +78,7 @@ void register_track(CLI::App& root) {
                     "against it (docs/theory.md#free-flight-check)");
     cmd->add_option("--out", o->out, "Output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)")->required();
     add_report_option(*cmd, o->report, o->plotly);
-    bind(*cmd, o, std::make_shared<bool>(false), track_kinematics);
+    bind(*cmd, o, std::make_shared<bool>(false), track_kinematics, &track_kinematics_result_keys());
   }
 
   // track rigid-body

@@ -2,6 +2,8 @@
 // video (docs/cli.md#track-video). Binds the options to app::TrackVideoOptions, shows progress
 // on a terminal, prints the summary of app::track_video (src/app/track_video.hpp).
 #include "track_video_cmd.hpp"
+#include "declared_options.hpp"
+#include "app/result_keys.hpp"
 
 #include "app.hpp"
 #include "report_option.hpp"
@@ -84,11 +86,12 @@ void register_track_video(CLI::App& track_area) {
                   "Also write the tracks as a Tracker project (opens in Tracker with its video)");
   add_json_flag(*cmd, *as_json);
   add_report_option(*cmd, o->report, o->plotly);
+  declare_results(*cmd, track_video_result_keys());
   cmd->callback([o, as_json] {
     Progress progress;
     TrackVideoOptions options = *o;
     options.progress = [&progress](int done, int expected) { progress(done, expected); };
-    print_result(track_video(options).json, *as_json);
+    print_result(track_video(options).json, *as_json, &track_video_result_keys());
   });
 }
 

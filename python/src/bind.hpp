@@ -9,6 +9,7 @@
 // of the option structs, collected at build time by python/option_help.py).
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
@@ -24,6 +25,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 // `plotly="embed"|"cdn"|"file"` (report::PlotlyMode, --plotly): a str in Python; another
@@ -116,7 +118,8 @@ py::dict columns_2d(const std::vector<Row>& rows, SamplesOf samples_of,
 namespace detail {
 
 /// The Python type a C++ option type takes, for docstrings.
-template <class T> struct TypeName { static std::string get() { return py::type_id<T>(); } };
+/// (A type with its own caster, as sweep::Axis, says its Python spelling: "tuple[float, float, int]".)
+template <class T> struct TypeName { static std::string get() { return py::detail::make_caster<T>::name.text; } };
 template <> struct TypeName<double> { static std::string get() { return "float"; } };
 template <> struct TypeName<float> { static std::string get() { return "float"; } };
 template <> struct TypeName<bool> { static std::string get() { return "bool"; } };
@@ -158,6 +161,23 @@ class Command {
   template <class Get>
   Command& opt_as(const std::string& keyword, const std::string& path, Get get) {
     return add(path, keyword, std::move(get), false);
+  }
+  /// Every declared field of O (src/app/option_fields.hpp) as a keyword named as the field, its
+  /// Python type, default (from a default-constructed O), help and unit from the declaration;
+  /// the input files (FieldRole::input_files) positional or keyword.
+  Command& declared(const app::Fields<O>& fields) {
+    O defaults;
+    for (const app::Field<O>& f : fields) {
+      std::visit(
+          [&](auto* p) {
+            using T = std::remove_cvref_t<decltype(*p)>;
+            auto ref = f.ref;
+            add(f.name, f.name, [ref](O& o) -> T& { return *std::get<T*>(ref(o)); },
+                f.role == app::FieldRole::input_files, &f);
+          },
+          f.ref(defaults));
+    }
+    return *this;
   }
   /// A positional argument of the command line (e.g. the input files): positional or keyword.
   template <class Get>
@@ -212,7 +232,8 @@ class Command {
   }
 
   template <class Get>
-  Command& add(const std::string& path, const std::string& keyword, Get get, bool positional) {
+  Command& add(const std::string& path, const std::string& keyword, Get get, bool positional,
+               const app::FieldDecl* decl = nullptr) {
     using T = std::remove_cvref_t<decltype(get(std::declval<O&>()))>;
     O defaults;
     py::dict o;
@@ -221,6 +242,16 @@ class Command {
     o["type"] = detail::TypeName<T>::get();
     o["default"] = py::cast(get(defaults));  // the ONE source of the default: the struct
     o["positional"] = positional;
+    if (decl) {  // declared: the help and unit of the declaration, not the struct's comment
+      std::string help = decl->help;
+      if (!decl->choices.empty()) {
+        help += ":";
+        for (const auto& c : decl->choices) help += " " + c;
+      }
+      o["help"] = help;
+      o["unit"] = decl->unit;
+      o["required"] = decl->required;
+    }
     options_.append(o);
     std::string name = name_;
     setters_[keyword] = [get, name, keyword](O& options, py::handle value) {

@@ -6,6 +6,7 @@
 #include "app/bounce_series.hpp"
 #include "app/bounce_simulate.hpp"
 #include "app/bounce_sweep.hpp"
+#include "app/bounce_synth.hpp"
 
 // A sweep axis from Python: (lo, hi, count), as the command line's LO:HI:N; a quantity that is
 // one value or an axis (speed, mu): a number or (lo, hi, count).
@@ -28,6 +29,26 @@ struct type_caster<tribolab::sweep::Axis> {
   }
   static handle cast(const tribolab::sweep::Axis& a, return_value_policy, handle) {
     return make_tuple(a.lo, a.hi, a.count).release();
+  }
+};
+// A shard from Python: (index, count), as the command line's i/N.
+template <>
+struct type_caster<tribolab::sweep::Shard> {
+  PYBIND11_TYPE_CASTER(tribolab::sweep::Shard, const_name("tuple[int, int]"));
+  bool load(handle src, bool) {
+    if (!isinstance<sequence>(src) || isinstance<str>(src)) return false;
+    const auto seq = reinterpret_borrow<sequence>(src);
+    if (seq.size() != 2) return false;
+    try {
+      value.index = seq[0].cast<std::int64_t>();
+      value.count = seq[1].cast<std::int64_t>();
+    } catch (const cast_error&) {
+      return false;
+    }
+    return true;
+  }
+  static handle cast(const tribolab::sweep::Shard& s, return_value_policy, handle) {
+    return make_tuple(s.index, s.count).release();
   }
 };
 template <>
@@ -63,22 +84,6 @@ void ball_options(C& c) {
   TRIBOLAB_OPT(c, ball.ball.inertia);
 }
 
-/// --model --K --n --D --restitution --friction --mu --slip-scale --k-t --c-t --tol.
-template <class C>
-void law_options(C& c) {
-  TRIBOLAB_OPT(c, law.model);
-  TRIBOLAB_OPT(c, law.K);
-  TRIBOLAB_OPT(c, law.n);
-  TRIBOLAB_OPT(c, law.D);
-  TRIBOLAB_OPT(c, law.restitution);
-  TRIBOLAB_OPT(c, law.friction);
-  TRIBOLAB_OPT(c, law.mu);
-  TRIBOLAB_OPT(c, law.slip_scale);
-  TRIBOLAB_OPT(c, law.k_t);
-  TRIBOLAB_OPT(c, law.c_t);
-  TRIBOLAB_OPT(c, law.tol);
-}
-
 /// Samples with a t and a bounce::BodyState `state` as arrays t, x, y, theta, vx, vy, omega.
 template <class S>
 py::dict body_states(const std::vector<S>& v) {
@@ -102,14 +107,7 @@ void bind_bounce(py::module_& m) {
     Command<app::BounceContactTimeOptions> c(m, "contact_time",
         "First contact of a ball released at an apex (`tribolab bounce contact-time`, the rugby-ball study's "
         "table 4): time, collision angle and state at the touch.");
-    ball_options(c);
-    TRIBOLAB_OPT(c, height);
-    TRIBOLAB_OPT(c, omega);
-    TRIBOLAB_OPT(c, theta_deg);
-    TRIBOLAB_OPT(c, direction);
-    TRIBOLAB_OPT(c, g);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::bounce_contact_time_fields());
     c.def(&app::bounce_contact_time,
           [](const app::BounceContactTimeResult& r, py::dict& d) {
             py::dict f = body_states(r.samples);
@@ -123,16 +121,7 @@ void bind_bounce(py::module_& m) {
     Command<app::BounceSimulateOptions> c(m, "simulate",
         "One impact from first touch until the ball flies free (`tribolab bounce simulate`, seed "
         "001 exp. 4): restitution, spin change, contact time.");
-    ball_options(c);
-    law_options(c);
-    TRIBOLAB_OPT(c, vx);
-    TRIBOLAB_OPT(c, vy);
-    TRIBOLAB_OPT(c, omega);
-    TRIBOLAB_OPT(c, theta_deg);
-    TRIBOLAB_OPT(c, g);
-    TRIBOLAB_OPT(c, history);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::bounce_simulate_fields());
     c.def(&app::bounce_simulate,
           [](const app::BounceSimulateResult& r, py::dict& d) {
             py::dict h = body_states(r.history);
@@ -150,21 +139,7 @@ void bind_bounce(py::module_& m) {
   {
     Command<app::BounceDropOptions> c(m, "drop",
         "Release, flight and several bounces until rest (`tribolab bounce drop`).");
-    ball_options(c);
-    law_options(c);
-    TRIBOLAB_OPT(c, height);
-    TRIBOLAB_OPT(c, theta_deg);
-    TRIBOLAB_OPT(c, omega);
-    TRIBOLAB_OPT(c, vx);
-    TRIBOLAB_OPT(c, vy);
-    TRIBOLAB_OPT(c, bounces);
-    TRIBOLAB_OPT(c, rest_height);
-    TRIBOLAB_OPT(c, g);
-    TRIBOLAB_OPT(c, trajectory);
-    TRIBOLAB_OPT(c, sample_dt);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
-    TRIBOLAB_OPT(c, keep_trajectory);
+    c.declared(app::bounce_drop_fields());
     c.def(&app::bounce_drop,
           [](const app::BounceDropResult& r, py::dict& d) { d["samples"] = body_states(r.trajectory); },
           std::string("samples: dict of arrays ") + kStates +
@@ -231,6 +206,50 @@ void bind_bounce(py::module_& m) {
           "(m), theta (rad)");
   }
   {
+    Command<app::BounceSynthVideoOptions> c(m, "synth_video",
+        "A synthetic Tracker export of one bounce, tips A and B, with its truth (`tribolab bounce synth-video`).");
+    c.declared(app::bounce_synth_video_fields());
+    c.def(&app::bounce_synth_video,
+          [](const app::BounceSynthVideoResult& r, py::dict& d) {
+            using track::TrackPoint;
+            for (const auto* t : {&r.video.tip_a, &r.video.tip_b}) {
+              d[py::str("tip_" + t->name)] = columns(t->points, field("frame", &TrackPoint::frame), field("t", &TrackPoint::t),
+                                                     field("x", &TrackPoint::x), field("y", &TrackPoint::y));
+            }
+          },
+          "tip_A, tip_B: dicts of arrays frame, t (s, file time), x, y (m, with noise)");
+  }
+  {
+    Command<app::BounceRenderOptions> c(m, "render",
+        "Films a simulated throw (flight, bounce, flight) to a video with its truth (`tribolab bounce render`).");
+    c.declared(app::bounce_render_fields());
+    c.def(&app::bounce_render,
+          [](const app::BounceRenderResult& r, py::dict& d) {
+            using track::TrackPoint;
+            py::dict tracks;
+            for (const auto& t : r.truth.tracks) {
+              tracks[py::str(t.name)] = columns(t.points, field("frame", &TrackPoint::frame), field("t", &TrackPoint::t),
+                                                field("x", &TrackPoint::x), field("y", &TrackPoint::y));
+            }
+            d["truth_tracks"] = tracks;
+          },
+          "truth_tracks: dict track name (ball, ball.A, ball.B) -> dict of arrays frame, t (s, video time), x, y (m)");
+  }
+  {
+    using analysis::BounceRow;
+    Command<app::BounceSynthTableOptions> c(m, "synth_table",
+        "A synthetic bounce table for `bounce fit` with known truth (`tribolab bounce synth-table`).");
+    c.declared(app::bounce_synth_table_fields());
+    c.def(&app::bounce_synth_table,
+          [](const app::BounceSynthTableResult& r, py::dict& d) {
+            d["table"] = columns(r.rows, field("theta_deg", &BounceRow::theta_deg), field("vx_in", &BounceRow::vx_in),
+                                 field("vy_in", &BounceRow::vy_in), field("omega_in", &BounceRow::omega_in),
+                                 field("vx_out", &BounceRow::vx_out), field("vy_out", &BounceRow::vy_out),
+                                 field("omega_out", &BounceRow::omega_out));
+          },
+          "table: dict of arrays theta_deg, vx_in, vy_in, omega_in, vx_out, vy_out, omega_out (deg, m/s, rad/s)");
+  }
+  {
     Command<app::BounceFitOptions> c(m, "fit",
         "The contact law (K, n, D or e, mu) fitted to a table of measured bounces (`tribolab bounce fit`).");
     TRIBOLAB_ARG(c, file);
@@ -268,6 +287,12 @@ void bind_bounce(py::module_& m) {
           "omega_pred");
   }
   {
+    Command<app::BounceMergeOptions> c(m, "merge",
+        "Joins the shard files of one sweep into the full map, exactly (`tribolab bounce merge`).");
+    c.declared(app::bounce_merge_fields());
+    c.def(&app::bounce_merge, [](const app::BounceMergeResult&, py::dict&) {}, "");
+  }
+  {
     Command<app::BounceSweepOptions> c(m, "sweep",
         "The rebound over a grid of impact angle x spin (and speed, mu) (`tribolab bounce sweep`, "
         "the rugby-ball study's figure 53): the map as arrays shaped by the axes, resumable, in parallel.");
@@ -277,6 +302,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, speed);
     TRIBOLAB_OPT(c, mu);
     TRIBOLAB_OPT(c, out);
+    TRIBOLAB_OPT(c, shard);
     TRIBOLAB_OPT(c, threads);
     TRIBOLAB_OPT(c, restart);
     TRIBOLAB_OPT(c, contour);
@@ -303,7 +329,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, cell.angle);
     c.def(+[](const app::BounceSweepOptions& o) {
             app::BounceSweepOptions with_map = o;
-            with_map.return_map = true;  // a notebook wants the arrays
+            with_map.return_map = o.shard.count == 1;  // a notebook wants the arrays; a shard is not the map
             return app::bounce_sweep(with_map);
           },
           [](const app::BounceSweepResult& r, py::dict& d) {
@@ -324,7 +350,7 @@ void bind_bounce(py::module_& m) {
           },
           "axes: dict of 1-D arrays, the values of each swept quantity (grid order); map: dict of "
           "arrays, one per output of a cell (e, vx_out, vy_out, omega_out, ...), shaped by the axes "
-          "(the last axis fastest, as in the CSV)");
+          "(the last axis fastest, as in the CSV); none for a shard (merge the shards, then read the file)");
   }
 
 }

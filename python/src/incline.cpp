@@ -2,6 +2,7 @@
 // (src/app/incline_*.hpp) through the mechanism of bind.hpp.
 #include "bind.hpp"
 
+#include "app/incline_analysis.hpp"
 #include "app/incline_analyze.hpp"
 #include "app/incline_forward.hpp"
 #include "app/incline_stop.hpp"
@@ -38,9 +39,7 @@ void bind_incline(py::module_& m) {
     Command<app::InclinePredictOptions> c(m, "predict",
         "A launch across the incline in closed form (`tribolab incline predict`, model B, the incline study's "
         "eqs 7-9 (七-九)): regime, stop point and time, accelerations.");
-    launch_options(c);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::incline_predict_fields());
     c.def(&app::incline_predict,
           [](const app::InclinePredictResult& r, py::dict& d) { d["trajectory"] = states(r.trajectory); },
           std::string("trajectory: dict of arrays ") + kStates + ", 401 samples (none if the duration is infinite)");
@@ -48,15 +47,7 @@ void bind_incline(py::module_& m) {
   {
     Command<app::InclineSimulateOptions> c(m, "simulate",
         "A slide across the incline, model B or A, closed form or numeric (`tribolab incline simulate`).");
-    launch_options(c);
-    TRIBOLAB_OPT(c, model);
-    TRIBOLAB_OPT(c, normal_accel);
-    TRIBOLAB_OPT(c, method);
-    TRIBOLAB_OPT(c, dt);
-    TRIBOLAB_OPT(c, t_end);
-    TRIBOLAB_OPT(c, out);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::incline_simulate_fields());
     c.def(&app::incline_simulate,
           [](const app::InclineSimulateResult& r, py::dict& d) { d["trajectory"] = states(r.trajectory); },
           std::string("trajectory: dict of arrays ") + kStates);
@@ -86,16 +77,44 @@ void bind_incline(py::module_& m) {
     Command<app::InclineMuFromStopOptions> c(m, "mu_from_stop",
         "The friction coefficient from the stopping point alone (`tribolab incline mu-from-stop`, "
         "incline study eq 10A (十A)), with its uncertainty and the best-angle advice.");
+    c.declared(app::incline_mu_from_stop_fields());
+    c.def(&app::incline_mu_from_stop, [](const app::InclineMuFromStopResult&, py::dict&) {}, "");
+  }
+  {
+    Command<app::InclineNormalFrictionTestOptions> c(m, "normal_friction_test",
+        "cos theta_c against tan phi over runs at several angles (`tribolab incline normal-friction-test`, the "
+        "incline study's figure 3-2 (圖三-2), eq c): a line through the origin with slope 1/mu without normal friction.");
+    TRIBOLAB_ARG(c, files);
     TRIBOLAB_OPT(c, phi_deg);
-    TRIBOLAB_OPT(c, x_stop);
-    TRIBOLAB_OPT(c, y_stop);
-    TRIBOLAB_OPT(c, sigma_phi_deg);
-    TRIBOLAB_OPT(c, sigma_pos);
+    TRIBOLAB_OPT(c, table);
     TRIBOLAB_OPT(c, g);
-    TRIBOLAB_OPT(c, plate_size);
+    TRIBOLAB_OPT(c, input.track);
+    TRIBOLAB_OPT(c, input.time_scale);
     TRIBOLAB_OPT(c, report);
     TRIBOLAB_OPT(c, plotly);
-    c.def(&app::incline_mu_from_stop, [](const app::InclineMuFromStopResult&, py::dict&) {}, "");
+    c.def(&app::incline_normal_friction_test,
+          [](const app::InclineNormalFrictionTestResult& r, py::dict& d) {
+            py::dict p;
+            p["tan_phi"] = array_1d(r.tan_phi);
+            p["cos_theta_c"] = array_1d(r.cos_theta_c);
+            d["points"] = p;
+          },
+          "points: dict of arrays tan_phi, cos_theta_c (one per run)");
+  }
+  {
+    Command<app::InclineSynthOptions> c(m, "synth",
+        "A synthetic tracked run from the simulators, with noise (`tribolab incline synth`): the file a "
+        "tracked disc would give, and the truth beside it.");
+    c.declared(app::incline_synth_fields());
+    c.def(&app::incline_synth,
+          [](const app::InclineSynthResult& r, py::dict& d) {
+            using track::TrackPoint;
+            d["track_points"] = columns(r.run.track.points, field("frame", &TrackPoint::frame), field("t", &TrackPoint::t),
+                                        field("x", &TrackPoint::x), field("y", &TrackPoint::y));
+            d["truth"] = states(r.run.truth);
+          },
+          std::string("track_points: dict of arrays frame, t (s, file time), x, y (m, with noise); truth: dict of "
+                      "arrays ") + kStates + " (noise-free, at each point)");
   }
   {
     Command<app::InclineAnalyzeOptions> c(m, "analyze",

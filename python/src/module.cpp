@@ -23,7 +23,7 @@ py::object to_python(const nlohmann::json& j) {
       const double v = j.get<double>();
       return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());
     }
-    case T::string: return py::str(j.get_ref<const std::string&>());
+    case T::string: return py::str(plain_fields(j.get_ref<const std::string&>()));  // field("floor_y") -> floor_y
     case T::array: {
       py::list l;
       for (const auto& e : j) l.append(to_python(e));

@@ -89,3 +89,26 @@ def test_report_plotly_keyword(tmp_path):
     with pytest.raises(ValueError, match="--plotly"):
         tribolab.incline.predict(**LAUNCH, report=str(tmp_path / "x.html"), plotly="web")
     assert not (tmp_path / "x.html").exists()
+
+
+def test_synth_equals_cli(cli, tmp_path):
+    # `incline synth` in Python (issue 23): the same file and keys as the command line.
+    a, b = tmp_path / "py.txt", tmp_path / "cli.txt"
+    r = tribolab.incline.synth(mu=0.634, phi_deg=20.96, v0=2.62, seed=3, out=str(a))
+    c = cli("incline", "synth", "--mu", 0.634, "--phi-deg", 20.96, "--v0", 2.62, "--seed", 3, "--out", b)
+    assert {k: v for k, v in r.items() if k in c and k != "out"} == {k: v for k, v in c.items() if k != "out"}
+    assert a.read_text() == b.read_text()
+    assert r["track_points"]["t"].shape == (r["points"],) == r["truth"]["x"].shape
+    with pytest.raises(ValueError, match="^fps: "):
+        tribolab.incline.synth(mu=0.634, phi_deg=20.96, v0=2.62, fps=0)
+
+
+def test_normal_friction_test_equals_cli(cli, demo):
+    # `incline normal-friction-test` in Python (issue 23): the same keys and numbers.
+    runs = [("run_12deg.csv", 12), ("run_16deg.txt", 16), ("run_20.96deg.txt", 20.96), ("run_25deg.txt", 25)]
+    files = [str(demo / "incline" / f) for f, _ in runs]
+    angles = [a for _, a in runs]
+    r = tribolab.incline.normal_friction_test(files, phi_deg=angles)
+    c = cli("incline", "normal-friction-test", *files, "--phi-deg", ",".join(str(a) for a in angles))
+    assert_same_as_cli(r, c)
+    assert r["points"]["tan_phi"].shape == (len(runs),)

@@ -40,7 +40,10 @@ def _doc(spec):
     for o in spec["options"]:
         default = "" if o["positional"] else ", default " + repr(o["default"])
         lines.append(f"{o['keyword']} : {o['type']}{default}")
-        text = option_help(spec["options_struct"], o["path"])
+        if "help" in o:  # a declared field (src/app/option_fields.hpp)
+            text = o["help"] + (", " + o["unit"] if o["unit"] else "")
+        else:
+            text = option_help(spec["options_struct"], o["path"])
         if text:
             lines.append("    " + text)
     lines += ["", "Returns", "-------",

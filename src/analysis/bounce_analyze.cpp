@@ -128,10 +128,10 @@ void check_gravity(const std::vector<track::RigidBodyRow>& rows, BounceAnalysis&
         "the flights fall at g = " + fmt(g, g < 1 ? 3 : 2) + " +- " + fmt(r.sigma_gravity, g < 1 ? 3 : 2) +
         " m/s^2, not 9.8: " +
         (gross ? "the times or the lengths are wrong. If the lengths are right, the file's times must be multiplied by " +
-                     fmt(factor, 3) + " (e.g. --time-scale " + fmt(factor, 3) +
+                     fmt(factor, 3) + " (e.g. " + field("time_scale") + " " + fmt(factor, 3) +
                      " times the one used; 240 fps slow motion played at 30 fps needs 0.125)"
-               : std::string("check the frame rate (--time-scale; an error of k % in it changes g by 2k %) "
-                             "and the length calibration")));
+               : "check the frame rate (" + field("time_scale") + "; an error of k % in it changes g by 2k %) "
+                 "and the length calibration"));
   }
   if (std::abs(r.gravity_tilt_deg) > 3 * r.sigma_gravity_tilt_deg)
     r.warnings.push_back("gravity is tilted by " + fmt(r.gravity_tilt_deg, 2) + " +- " + fmt(r.sigma_gravity_tilt_deg, 2) +

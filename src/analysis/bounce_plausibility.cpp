@@ -1,5 +1,6 @@
 // docs/theory.md#plausibility-checks.
 #include "analysis/bounce_plausibility.hpp"
+#include "numerics/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -60,27 +61,31 @@ void wild_frames(const SegmentFit& f, const BounceAnalysis& r, double limit, std
 void check_bounce_plausibility(const bounce::Ball& ball, BounceAnalysis& r) {
   const double E_pre = r.pre.energy.total(), E_post = r.post.energy.total();
   if (!std::isfinite(E_pre) || !std::isfinite(E_post) || E_pre < 0 || E_post < 0) {
-    r.warnings.push_back(format("the kinetic energies are not finite positive numbers (before %.4g J, after "
-                                     "%.4g J): check --mass and --inertia and that both flights were fitted",
-                                     E_pre, E_post));
+    r.warnings.push_back(format(("the kinetic energies are not finite positive numbers (before %.4g J, after "
+                                 "%.4g J): check " + field("mass") + " and " + field("inertia") +
+                                 " and that both flights were fitted").c_str(),
+                                E_pre, E_post));
   } else {
     const EnergyGain g = energy_gain(ball, r);
     // 3 sd of the gain, and at least 0.1 % of the arrival's energy (exact data: sd ~ 0).
     if (g.gain > 3 * g.sigma + 1e-3 * E_pre) {
       r.warnings.push_back(format(
-          "the ball leaves with more kinetic energy than it arrives with (%.4g J after, %.4g J before, "
-          "translation + rotation with mass %.4g kg and inertia %.4g kg m^2; gain %.2g +- %.2g J): no passive "
-          "bounce does that, and e_velocity = %.3f is above the %.3f the energy allows. Check that both tips are "
-          "the ball's (not swapped or another object between flights), the length calibration, and --inertia",
+          ("the ball leaves with more kinetic energy than it arrives with (%.4g J after, %.4g J before, "
+           "translation + rotation with mass %.4g kg and inertia %.4g kg m^2; gain %.2g +- %.2g J): no passive "
+           "bounce does that, and e_velocity = %.3f is above the %.3f the energy allows. Check that both tips are "
+           "the ball's (not swapped or another object between flights), the length calibration, and " +
+           field("inertia")).c_str(),
           E_post, E_pre, ball.mass, ball.inertia, g.gain, g.sigma, r.e_velocity, g.e_allowed));
     }
   }
   if (!std::isfinite(r.collision_angle_deg))
-    r.warnings.push_back("the collision angle could not be computed at the first touch: check the tips' tracks and --a/--b");
+    r.warnings.push_back("the collision angle could not be computed at the first touch: check the tips' tracks and " +
+                         field("a") + "/" + field("b"));
   if (std::isfinite(r.contact_duration) && r.contact_duration < 0)
-    r.warnings.push_back(format("the ball separates %.2f ms before it first touches the floor: the flights do not "
-                                     "meet the floor in order; check --floor-y (file frame, m) and --contact-duration",
-                                     -1e3 * r.contact_duration));
+    r.warnings.push_back(format(("the ball separates %.2f ms before it first touches the floor: the flights do not "
+                                 "meet the floor in order; check " + field("floor_y") + " (file frame, m) and " +
+                                 field("contact_duration")).c_str(),
+                                -1e3 * r.contact_duration));
   // Wild frames: a hand, a shadow or the tracker jumping puts a point centimetres off the
   // flight. 8 robust noise sds (a Gaussian never reaches that in a few hundred frames) plus
   // 2 mm for the air drag a free-flight fit leaves (docs/theory.md#plausibility-checks).
@@ -117,13 +122,13 @@ std::vector<std::string> bound_warnings(const std::vector<std::string>& names, c
     const std::string& n = names[k];
     if (n == "e" && at_high)
       why = "the rebounds want more than a lossless normal contact returns: check the table's signs (vy_in < 0 < "
-            "vy_out), the spin's sign (counter-clockwise positive), and --inertia";
+            "vy_out), the spin's sign (counter-clockwise positive), and " + field("inertia");
     else if (n == "mu" && at_high)
       why = "no friction coefficient up to 3 explains the change of vx and spin: check the spin's sign and units "
             "(rad/s) and the orientation theta_deg";
     else
       why = "the data want a value outside the law's range: the law does not describe them, or a column is in other "
-            "units; fix the parameter with --fix or try another --model";
+            "units; fix the parameter with " + field("fix") + " or try another " + field("model");
     out.push_back("the fitted " + n + " sits at its " + (at_high ? "upper" : "lower") + " bound: " + why +
                   "; its uncertainty is not meaningful");
   }

@@ -3,6 +3,7 @@
 #include "analysis/bounce_plausibility.hpp"
 #include "analysis/bounce_synth.hpp"
 
+#include "numerics/error.hpp"
 #include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
@@ -119,7 +120,7 @@ TEST(BouncePlausibility, AnInertiaTooSmallShowsAsAnEnergyGain) {
   ao.ball.inertia /= 10;
   const auto r = analyze_bounce(v.tip_a, v.tip_b, ao);
   ASSERT_GT(energy_gain(ao.ball, r).gain, 0) << d_trans << " " << d_rot;
-  EXPECT_TRUE(has_warning(r.warnings, "--inertia")) << all(r.warnings);
+  EXPECT_TRUE(has_warning(r.warnings, field("inertia"))) << all(r.warnings);
 }
 
 // A hand in the picture: three consecutive frames of the pre-impact flight where tip A was

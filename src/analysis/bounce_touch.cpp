@@ -232,8 +232,8 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
                       &r.sigma_collision_angle_deg, &r.sigma_vy_touch, &r.sigma_vy_separation, &r.sigma_e_velocity,
                       &r.sigma_contact_point_vx, &r.sigma_contact_point_vy, &r.sigma_contact_point_speed})
       *v = kNaN;
-    r.warnings.push_back("floor not known (no --floor-y or --contact-duration): touch and separation located on a "
-                         "bracketed floor, uncertainties of the touch quantities (angle, e_velocity) not stated");
+    r.warnings.push_back("floor not known (no " + field("floor_y") + " or " + field("contact_duration") +
+                         "): touch and separation located on a bracketed floor, uncertainties of the touch quantities (angle, e_velocity) not stated");
     return;
   }
   r.force_duration_method = std::isfinite(T_given) ? ForceDurationMethod::given : ForceDurationMethod::located;

@@ -496,11 +496,11 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
                             std::abs(a.frame_rotation_check->value) > 3 * a.frame_rotation_check->sigma;
   if (frame_turned) {
     const Estimate& p = *a.frame_rotation_check;
-    a.warnings.push_back("the camera frame is held aligned with the incline (--frame-rotation none), but the data show it "
-                         "turned by " + fmt(to_deg(p.value), 3) + " +- " + fmt(to_deg(p.sigma), 2) + " deg (fitted with model " +
+    a.warnings.push_back("the camera frame is held aligned with the incline (" + field("frame_rotation") +
+                         " none), but the data show it turned by " + fmt(to_deg(p.value), 3) + " +- " + fmt(to_deg(p.sigma), 2) + " deg (fitted with model " +
                          (o.fit_model_a ? "A" : "B, which also turns by any normal friction") +
                          "): a turned frame biases mu, v0 and g and is mistaken for normal friction; check the axes "
-                         "against a plumb line or analyse with --frame-rotation fit");
+                         "against a plumb line or analyse with " + field("frame_rotation") + " fit");
   }
   a.gravity = check_gravity(track, o, b);
   if (a.gravity && a.gravity->implausible) {
@@ -508,7 +508,7 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     a.warnings.push_back("the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) +
                          " m/s^2, not " + fmt(o.g) + ": the times, the lengths or the incline angle are wrong. "
                          "If lengths and angle are right, the file's times must be multiplied by " +
-                         fmt(c.time_factor, 3) + " (e.g. --time-scale " + fmt(c.time_factor, 3) +
+                         fmt(c.time_factor, 3) + " (e.g. " + field("time_scale") + " " + fmt(c.time_factor, 3) +
                          " times the one used; slow motion analysed as real time gives 1/8 at 240 fps played at 30)");
   } else if (a.gravity && std::abs(a.gravity->g.value - o.g) > 3 * a.gravity->g.sigma + 0.03) {
     // Not gross but significant (3 sd, and beyond the 9.78-9.83 m/s^2 of the Earth's
@@ -516,7 +516,7 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
     // stated uncertainty (docs/theory.md#plausibility-checks).
     const GravityCheck& c = *a.gravity;
     a.warnings.push_back("the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " +
-                         fmt(o.g) + ": check the frame rate (--time-scale; an error of k % in it changes g by 2k %), "
+                         fmt(o.g) + ": check the frame rate (" + field("time_scale") + "; an error of k % in it changes g by 2k %), "
                          "the length calibration and the incline angle; mu and v0 are fitted with g = " + fmt(o.g) +
                          " and are off by more than their uncertainties until this is fixed" +
                          (frame_turned ? std::string(" (or the turned camera frame warned about above)") : std::string()));

@@ -269,7 +269,7 @@ SlideSeriesSummary summarize_slide_series(const std::vector<std::optional<double
     }
   }
   if (x.empty()) {
-    r.note = "no run has mu with an uncertainty (give --phi-deg)";
+    r.note = "no run has mu with an uncertainty (give " + field("phi_deg") + ")";
     return r;
   }
   r.mu = weighted_mean(x, s);

@@ -1,5 +1,6 @@
 // docs/theory.md#plausibility-checks.
 #include "analysis/series_plausibility.hpp"
+#include "numerics/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +54,7 @@ std::vector<std::string> bounce_series_warnings(const std::vector<const BounceAn
     if (std::abs(r->gravity / g_med - 1) > 0.05 && std::abs(r->gravity - g_med) > 5 * r->sigma_gravity)
       out.push_back(files[i] + ": its flights fall at g = " + num(r->gravity, 3) + " m/s^2 while the series' median is " +
                     num(g_med, 3) + ": this file's time scale (frame rate) differs from the others'; correct it "
-                    "(--time-scale per file) before comparing the runs");
+                    "(" + field("time_scale") + " per file) before comparing the runs");
     // The ball's length: the same ball gives the same tip distance in every file; 3 % is
     // 8 mm on a 28 cm ball, far beyond the mean's noise (0.1 mm at 1 mm per tip).
     if (std::abs(r->body.length_mean / len_med - 1) > 0.03)

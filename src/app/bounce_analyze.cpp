@@ -1,4 +1,5 @@
 #include "app/study_citation.hpp"
+#include "app/result_keys.hpp"
 #include "app/bounce_analyze.hpp"
 
 #include "app/output_paths.hpp"
@@ -243,4 +244,32 @@ BounceFitResult bounce_fit(const BounceFitOptions& opts) {
   return res;
 }
 
+
+const ResultKeys& bounce_analyze_result_keys() {
+  static const ResultKeys k = {
+      {"impact_time", "s", ""},
+      {"pre.vx", "m/s", ""}, {"pre.vy", "m/s", ""}, {"pre.omega", "rad/s", ""},
+      {"pre.ay", "m/s^2", "vertical acceleration of the fitted parabola"},
+      {"pre.r_squared.x", "", "R^2 of the x-t line"}, {"pre.r_squared.y", "", "R^2 of the y-t parabola"},
+      {"pre.n_points", "", ""}, {"pre.apex_time", "s", ""}, {"pre.apex_height", "m", ""},
+      {"pre.energy.*", "J", "translational_x, translational_y, rotational, total"},
+      {"post.vx", "m/s", ""}, {"post.vy", "m/s", ""}, {"post.omega", "rad/s", ""},
+      {"post.ay", "m/s^2", "vertical acceleration of the fitted parabola"},
+      {"post.r_squared.x", "", "R^2 of the x-t line"}, {"post.r_squared.y", "", "R^2 of the y-t parabola"},
+      {"post.n_points", "", ""}, {"post.apex_time", "s", ""}, {"post.apex_height", "m", ""},
+      {"post.energy.*", "J", "translational_x, translational_y, rotational, total"},
+      {"e_velocity", "", "restitution from the velocities"},
+      {"e_height", "", "restitution from the apex heights"},
+      {"floor_y", "m", ""}, {"floor_given", "", ""}, {"floor_half_width", "m", ""}, {"floor_method", "", ""},
+      {"theta_impact_deg", "deg", ""}, {"collision_angle_deg", "deg", ""}, {"collision_angle_impact_deg", "deg", ""},
+      {"t_touch", "s", ""}, {"t_separation", "s", ""}, {"contact_duration", "s", ""}, {"theta_touch_deg", "deg", ""},
+      {"vy_touch", "m/s", ""}, {"vy_separation", "m/s", ""}, {"e_velocity_common", "", ""},
+      {"contact_point_vx", "m/s", ""}, {"contact_point_vy", "m/s", ""}, {"contact_point_speed", "m/s", ""},
+      {"energy_pre", "J", ""}, {"energy_post", "J", ""}, {"n_impacts", "", ""}, {"noise", "m", "position noise"},
+      {"tip_distance_mean", "m", ""}, {"tip_distance_sd", "m", ""}, {"gravity", "m/s^2", "fitted g"},
+      {"gravity_tilt_deg", "deg", ""}, {"warnings", "", ""}, {"mean_normal_force", "N", ""},
+      {"force_duration_method", "", ""}, {"bounces_out", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

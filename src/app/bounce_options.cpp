@@ -84,4 +84,48 @@ ContactOptions LawOptions::contact(double g) const {
   return o;
 }
 
+const Fields<BallOptions>& ball_fields() {
+  static const Fields<BallOptions> f = [] {
+    Fields<Ball> b;  // the core's ball, its defaults the seed's rugby ball (bounce::Ball)
+    b.add("a", &Ball::a, "m", "semi-major axis").in(ranges::size).group = "ball";
+    b.add("b", &Ball::b, "m", "semi-minor axis").in(ranges::size).group = "ball";
+    b.add("mass", &Ball::mass, "kg", "mass").in(ranges::mass).group = "ball";
+    b.add("inertia", &Ball::inertia, "kg m^2", "moment of inertia about the centre").in(ranges::inertia).group = "ball";
+    Fields<BallOptions> o;
+    o.group(&BallOptions::ball, b);
+    return o;
+  }();
+  return f;
+}
+
+const Fields<LawOptions>& law_fields() {
+  static const Fields<LawOptions> f = [] {
+    Fields<LawOptions> l;
+    auto law = [](FieldDecl& d) -> FieldDecl& { d.group = "law"; return d; };
+    law(l.add("model", &LawOptions::model, "", "normal law"))
+        .one_of({"hooke", "hertz", "hunt-crossley", "flores", "lankarani-nikravesh", "gonthier"});
+    law(l.add("K", &LawOptions::K, "N/m^n", "stiffness; unset: the rugby-ball study's fit, 101054")).in(ranges::stiffness);
+    law(l.add("n", &LawOptions::n, "", "exponent in [1, 3]; unset: the rugby-ball study's fit 1.51 (hertz 1.5, hooke 1)"));
+    law(l.add("D", &LawOptions::D, "N s/m^(n+1)",
+              "damping (hooke: N s/m); unset: the rugby-ball study's fit 60423 (hertz, hooke 0)")).in(ranges::damping);
+    law(l.add("restitution", &LawOptions::restitution, "", "target central-impact restitution in (0, 1], instead of D"));
+    law(l.add("mu", &LawOptions::mu, "", "friction coefficient")).in(ranges::friction);
+    law(l.add("friction", &LawOptions::friction, "", "friction model")).one_of({"coulomb", "regularized", "spring"});
+    law(l.add("slip_scale", &LawOptions::slip_scale, "m/s", "v_s of the regularized law"))
+        .in(PhysicalRange{0, 1e3, "m/s", true});
+    law(l.add("k_t", &LawOptions::k_t, "N/m", "tangential stiffness of the spring model")).in(ranges::tangential_stiffness);
+    law(l.add("c_t", &LawOptions::c_t, "N s/m", "tangential damping of the spring model")).in(ranges::tangential_damping);
+    law(l.add("tol", &LawOptions::tol, "", "integrator tolerance, absolute and relative")).in(ranges::tolerance);
+    return l;
+  }();
+  return f;
+}
+
+ResultKeys law_result_keys(const std::string& prefix) {
+  return {{prefix + "model", "", "normal law used"},
+          {prefix + "K", "N/m^n", "stiffness used"},
+          {prefix + "n", "", "exponent used"},
+          {prefix + "D", "N s/m^(n+1)", "damping used (resolved from the restitution when given)"}};
+}
+
 }  // namespace tribolab::app

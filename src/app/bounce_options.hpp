@@ -11,6 +11,8 @@
 #include "bounce/geometry.hpp"
 #include "bounce/normal_law.hpp"
 
+#include "app/option_fields.hpp"
+
 #include <optional>
 #include <string>
 
@@ -61,5 +63,13 @@ struct LawOptions {
   bounce::FrictionModel friction_model() const { return friction_model(mu); }
   bounce::ContactOptions contact(double g) const;
 };
+
+/// The declarations of --a --b --mass --inertia (group "ball"; app/option_fields.hpp).
+const Fields<BallOptions>& ball_fields();
+/// The declarations of the contact-law options (group "law"; a command that owns --mu itself,
+/// as the sweep's axis, leaves it out with Fields::group's `except`).
+const Fields<LawOptions>& law_fields();
+/// The declarations of the key `law` {model, K, n, D} every contact result carries, under `prefix`.
+ResultKeys law_result_keys(const std::string& prefix);
 
 }  // namespace tribolab::app

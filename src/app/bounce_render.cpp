@@ -1,4 +1,5 @@
 // `bounce render` (src/app/bounce_synth.hpp): film a simulated throw to a video with its truth
+#include "app/result_keys.hpp"
 
 #include "app/output_paths.hpp"
 // (docs/cli.md#bounce-render, docs/theory.md#rendering).
@@ -175,4 +176,19 @@ BounceRenderResult bounce_render(const BounceRenderOptions& opts) {
   return res;
 }
 
+
+const ResultKeys& bounce_render_result_keys() {
+  static const ResultKeys k = {
+      {"out", "", ""}, {"truth_file", "", ""}, {"write_trk", "", ""}, {"frames", "", ""}, {"fps", "1/s", ""},
+      {"width", "px", "frame width"}, {"height", "px", "frame height"},
+      {"scale_m_per_px", "m/px", "length of a pixel"}, {"origin_px", "px", "world origin in the image"},
+      {"t0", "s", "time of the first frame"}, {"ball_in_view", "", ""}, {"ball_start_px", "px", ""},
+      {"track_video_options", "", ""},
+      {"truth.t_touch", "s", ""}, {"truth.t_separation", "s", ""}, {"truth.vx_in", "m/s", ""}, {"truth.vy_in", "m/s", ""},
+      {"truth.omega_in", "rad/s", ""}, {"truth.theta_touch_deg", "deg", ""}, {"truth.vx_out", "m/s", ""},
+      {"truth.vy_out", "m/s", ""}, {"truth.omega_out", "rad/s", ""}, {"truth.e_velocity", "", ""},
+      {"truth.release_apex", "m", ""}, {"truth.post_apex", "m", ""}, {"truth.e_height", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

@@ -139,9 +139,7 @@ json bounce_impact_json(const Ball& ball, const ImpactResult& r, NormalModel mod
 BounceContactTimeResult bounce_contact_time(const BounceContactTimeOptions& o) {
   check_output_paths({}, {{"report", o.report}});  // before any work (app/output_paths.hpp)
   const Ball ball = o.ball.get();
-  check_range(o.height, ranges::height, field("height"));  // docs/cli.md#physical-ranges
-  check_range(o.omega, ranges::spin, field("omega"));
-  check_range(o.theta_deg, ranges::angle_deg, field("theta_deg"));
+  check_ranges(o, bounce_contact_time_fields());  // docs/cli.md#physical-ranges
   if (o.direction != 1 && o.direction != -1) throw InputError(field("direction"), "must be 1 or -1");
   FlightOptions fo;
   fo.g = checked_g(o.g);
@@ -177,9 +175,7 @@ BounceContactTimeResult bounce_contact_time(const BounceContactTimeOptions& o) {
 BounceSimulateResult bounce_simulate(const BounceSimulateOptions& o) {
   check_output_paths({}, {{"history", o.history}, {"report", o.report}});  // before any work (app/output_paths.hpp)
   const Ball ball = o.ball.get();
-  for (auto [v, r, name] : {std::tuple{o.vx, ranges::velocity, field("vx")}, {o.vy, ranges::velocity, field("vy")},
-                            {o.omega, ranges::spin, field("omega")}, {o.theta_deg, ranges::angle_deg, field("theta_deg")}})
-    check_range(v, r, name);  // docs/cli.md#physical-ranges
+  check_ranges(o, bounce_simulate_fields());  // docs/cli.md#physical-ranges
   const NormalLawSpec spec = o.law.law();
   const FrictionModel fr = o.law.friction_model();
   const ContactOptions copt = o.law.contact(checked_g(o.g, /*zero_allowed=*/true));  // starts at touch
@@ -212,14 +208,7 @@ BounceSimulateResult bounce_simulate(const BounceSimulateOptions& o) {
 BounceDropResult bounce_drop(const BounceDropOptions& o) {
   check_output_paths({}, {{"trajectory", o.trajectory}, {"report", o.report}});  // before any work (app/output_paths.hpp)
   const Ball ball = o.ball.get();
-  for (auto [v, r, name] :
-       {std::tuple{o.height, ranges::height, field("height")}, {o.omega, ranges::spin, field("omega")},
-        {o.theta_deg, ranges::angle_deg, field("theta_deg")}, {o.vx, ranges::velocity, field("vx")},
-        {o.vy, ranges::velocity, field("vy")}, {o.rest_height, PhysicalRange{0, 1e3, "m"}, field("rest_height")},
-        {o.sample_dt, PhysicalRange{0, 10, "s"}, field("sample_dt")}})
-    check_range(v, r, name);  // docs/cli.md#physical-ranges
-  if (o.bounces < 1 || o.bounces > 10000) throw InputError(field("bounces"), "must lie in 1..10000");
-  if (!(o.rest_height >= 0)) throw InputError(field("rest_height"), "must be >= 0");
+  check_ranges(o, bounce_drop_fields());  // docs/cli.md#physical-ranges
   const bool sampled = !(o.trajectory.empty() && o.report.empty()) || o.keep_trajectory;
   if (sampled && !(o.sample_dt > 0)) throw InputError(field("sample_dt"), "must be positive");
   const NormalLawSpec spec = o.law.law();
@@ -259,6 +248,112 @@ BounceDropResult bounce_drop(const BounceDropOptions& o) {
                                                                : json(nullptr)},
               {"bounces", bounces}};
   return res;
+}
+
+namespace {
+
+/// The keys of one contact or impact object (contact_json, bounce_impact_json), under `p`.
+ResultKeys impact_keys() {
+  ResultKeys k = {
+      {"status", "", "separated or max_duration, of the last contact"},
+      {"impact_status", "", "free_flight or rest"},
+      {"contacts", "", "number of contacts of the impact"},
+      {"vx", "m/s", "centre velocity after the last separation"},
+      {"vy", "m/s", "centre velocity after the last separation"},
+      {"omega", "rad/s", "spin after the last separation"},
+      {"theta_out_deg", "deg", "orientation at the last separation"},
+      {"e", "", "restitution -vy_out/vy_in"},
+      {"contact_duration", "s", "first touch to the last separation"},
+      {"peak_force", "N", "largest normal force"},
+      {"t_peak", "s", "time of the peak force from the first touch"},
+      {"max_penetration", "m", "largest penetration"},
+      {"impulse_normal", "N s", "integral of N over all contacts"},
+      {"impulse_tangential", "N s", "integral of f over all contacts"},
+      {"v_in_normal", "m/s", "approach speed of the contact point at touch"},
+      {"slip_velocity_in", "m/s", "v_t at the first touch"},
+      {"slip_velocity_out", "m/s", "v_t at the last separation"},
+      {"collision_angle_deg", "deg", "the study's collision angle at touch"},
+      {"energy_in", "J", "kinetic energy at the first touch"},
+      {"energy_out", "J", "kinetic energy at the last separation"},
+      {"energy_in_parts.*", "J", "translational_x, translational_y, rotational, total"},
+      {"energy_out_parts.*", "J", "translational_x, translational_y, rotational, total"},
+      {"work_gravity", "J", "work of gravity over the impact"},
+      {"dissipated_normal", "J", "energy taken by normal damping"},
+      {"dissipated_friction", "J", "energy taken by friction"},
+      {"energy_residual", "J", "numerical residual of the energy balance"},
+      {"n_phases", "", "number of friction phases"},
+      {"phases.kind", "", "slip+, slip-, stick or smooth"},
+      {"phases.t_start", "s", "from the first touch"},
+      {"phases.t_end", "s", "from the first touch"},
+      {"steps", "", "accepted integrator steps"},
+      {"first_phase.vx", "m/s", ""},
+      {"first_phase.vy", "m/s", ""},
+      {"first_phase.omega", "rad/s", ""},
+      {"first_phase.e", "", ""},
+      {"first_phase.contact_duration", "s", ""},
+      {"first_phase.peak_force", "N", ""},
+      {"first_phase.energy_out", "J", ""},
+      {"contact_list.t_touch", "s", "from the first touch"},
+      {"contact_list.t_separation", "s", "from the first touch"},
+      {"contact_list.vy_in", "m/s", ""},
+      {"contact_list.vy_out", "m/s", ""},
+      {"contact_list.peak_force", "N", ""},
+  };
+  for (ResultKey& l : law_result_keys("law.")) k.push_back(std::move(l));
+  return k;
+}
+
+}  // namespace
+
+const ResultKeys& bounce_contact_time_result_keys() {
+  static const ResultKeys k = {
+      {"t_contact", "s", "time from the apex to first contact"},
+      {"theta_contact_deg", "deg", "orientation at contact"},
+      {"contact_point", "m", "[x, y] of the contact point relative to the centre"},
+      {"vx", "m/s", "centre velocity at contact"},
+      {"vy", "m/s", "centre velocity at contact"},
+      {"omega", "rad/s", "spin at contact"},
+      {"contact_point_velocity", "m/s", "[vx, vy] of the material contact point"},
+      {"collision_angle_deg", "deg", "the study's collision angle"},
+      {"t_min", "s", "earliest possible contact"},
+      {"t_max", "s", "latest possible contact"},
+      {"grazing", "", "true when the gap only touched zero"},
+  };
+  return k;
+}
+
+const ResultKeys& bounce_simulate_result_keys() {
+  static const ResultKeys k = impact_keys();
+  return k;
+}
+
+const ResultKeys& bounce_drop_result_keys() {
+  static const ResultKeys k = {
+      {"status", "", "max_bounces or rest"},
+      {"release_apex", "m", "highest centre height before the first touch"},
+      {"n_bounces", "", "contacts simulated"},
+      {"apex_heights", "m", "centre apex after each contact"},
+      {"rebounds_above_release", "", "true when some apex exceeds release_apex"},
+      {"first_above_release", "", "1-based index of the first such bounce"},
+      {"t_above_release", "s", "time the centre first rises through release_apex"},
+      {"bounces.t_touch", "s", ""},
+      {"bounces.theta_touch_deg", "deg", ""},
+      {"bounces.vx_in", "m/s", ""},
+      {"bounces.vy_in", "m/s", ""},
+      {"bounces.omega_in", "rad/s", ""},
+      {"bounces.collision_angle_deg", "deg", ""},
+      {"bounces.vx_out", "m/s", ""},
+      {"bounces.vy_out", "m/s", ""},
+      {"bounces.omega_out", "rad/s", ""},
+      {"bounces.e", "", "restitution"},
+      {"bounces.contact_duration", "s", ""},
+      {"bounces.peak_force", "N", ""},
+      {"bounces.t_apex", "s", ""},
+      {"bounces.apex_height", "m", ""},
+      {"bounces.above_release", "", ""},
+      {"bounces.t_cross_release", "s", "or null"},
+  };
+  return k;
 }
 
 }  // namespace tribolab::app

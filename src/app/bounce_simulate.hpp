@@ -7,6 +7,7 @@
 #pragma once
 
 #include "app/bounce_options.hpp"
+#include "app/option_fields.hpp"
 
 #include "bounce/contact.hpp"
 #include "bounce/drop.hpp"
@@ -33,6 +34,26 @@ struct BounceContactTimeOptions {
   std::string report;        ///< HTML report path; empty = none
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
+
+/// The declaration of every option of `bounce contact-time` (app/option_fields.hpp).
+inline const Fields<BounceContactTimeOptions>& bounce_contact_time_fields() {
+  using O = BounceContactTimeOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("height", &O::height, "m", "centre height at the apex").in(ranges::height).needed();
+    d.add("omega", &O::omega, "rad/s", "spin, counter-clockwise positive").in(ranges::spin);
+    d.add("theta_deg", &O::theta_deg, "deg", "major axis from the horizontal at the apex").in(ranges::angle_deg);
+    d.add("direction", &O::direction, "", "direction of motion for the collision angle: 1 (+x) or -1");
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity);
+    d.group(&O::ball, ball_fields());
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
+/// The keys of `bounce contact-time --json` (docs/cli.md#bounce-contact-time).
+const ResultKeys& bounce_contact_time_result_keys();
 
 /// One sample of the free flight from the apex to the first contact.
 struct FlightSample {
@@ -63,6 +84,28 @@ struct BounceSimulateOptions {
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
+/// The declaration of every option of `bounce simulate` (app/option_fields.hpp).
+inline const Fields<BounceSimulateOptions>& bounce_simulate_fields() {
+  using O = BounceSimulateOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("vx", &O::vx, "m/s", "centre velocity at first touch").in(ranges::velocity);
+    d.add("vy", &O::vy, "m/s", "centre velocity at first touch (< 0)").in(ranges::velocity).needed();
+    d.add("omega", &O::omega, "rad/s", "spin at first touch, CCW positive").in(ranges::spin);
+    d.add("theta_deg", &O::theta_deg, "deg", "major axis from the horizontal at first touch").in(ranges::angle_deg);
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity_or_zero);
+    d.add("history", &O::history, "", "write the time history to this CSV file").as(FieldRole::output_path);
+    d.group(&O::ball, ball_fields());
+    d.group(&O::law, law_fields());
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
+/// The keys of `bounce simulate --json`: an impact (docs/cli.md#bounce-simulate).
+const ResultKeys& bounce_simulate_result_keys();
+
 struct BounceSimulateResult {
   nlohmann::json json;                          ///< exactly what `--json` prints
   bounce::ImpactResult impact;                  ///< the core's result
@@ -90,6 +133,35 @@ struct BounceDropOptions {
   /// Sample the trajectory even without a trajectory file or report (for a notebook).
   bool keep_trajectory = false;
 };
+
+/// The declaration of every option of `bounce drop` (app/option_fields.hpp).
+inline const Fields<BounceDropOptions>& bounce_drop_fields() {
+  using O = BounceDropOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("height", &O::height, "m", "centre height at release").in(ranges::height).needed();
+    d.add("theta_deg", &O::theta_deg, "deg", "major axis from the horizontal at release").in(ranges::angle_deg);
+    d.add("omega", &O::omega, "rad/s", "spin at release, CCW positive").in(ranges::spin);
+    d.add("vx", &O::vx, "m/s", "horizontal speed at release").in(ranges::velocity);
+    d.add("vy", &O::vy, "m/s", "vertical speed at release; 0: released at the apex").in(ranges::velocity);
+    d.add("bounces", &O::bounces, "", "number of contacts to simulate").in(PhysicalRange{1, 1e4, ""});
+    d.add("rest_height", &O::rest_height, "m", "energy (as a height) below which the ball is at rest")
+        .in(PhysicalRange{0, 1e3, "m"});
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity);
+    d.add("trajectory", &O::trajectory, "", "write the sampled trajectory to this CSV file").as(FieldRole::output_path);
+    d.add("sample_dt", &O::sample_dt, "s", "flight sampling step of the trajectory").in(PhysicalRange{0, 10, "s"});
+    d.group(&O::ball, ball_fields());
+    d.group(&O::law, law_fields());
+    d.add_report(&O::report, &O::plotly);
+    d.add("keep_trajectory", &O::keep_trajectory, "", "sample the trajectory even without a file or report")
+        .as(FieldRole::notebook);
+    return d;
+  }();
+  return f;
+}
+
+/// The keys of `bounce drop --json` (docs/cli.md#bounce-drop).
+const ResultKeys& bounce_drop_result_keys();
 
 struct BounceDropResult {
   nlohmann::json json;                                ///< exactly what `--json` prints

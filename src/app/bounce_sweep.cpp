@@ -198,4 +198,9 @@ BounceMergeResult bounce_merge(const BounceMergeOptions& a) {
   return result;
 }
 
+const ResultKeys& bounce_merge_result_keys() {
+  static const ResultKeys k = {{"out", "", ""}, {"shards", "", "shard files joined"}, {"cells", "", "cells of the map"}};
+  return k;
+}
+
 }  // namespace tribolab::app

@@ -4,6 +4,7 @@
 // printed, progress goes to a callback. docs/cli.md#bounce-sweep.
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "app/bounce_cell.hpp"
 #include "app/sweep_command.hpp"
 #include "report/plotly_script.hpp"
@@ -81,6 +82,21 @@ struct BounceMergeOptions {
   std::string report;              ///< --report: HTML report ("" = none)
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
+
+/// The declaration of every option of `bounce merge` (app/option_fields.hpp).
+inline const Fields<BounceMergeOptions>& bounce_merge_fields() {
+  using O = BounceMergeOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("files", &O::files, "", "shard files (every shard i/N exactly once, any order)").as(FieldRole::input_files).needed();
+    d.add("out", &O::out, "", "merged output CSV").as(FieldRole::output_path).needed();
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+/// The keys of `bounce merge --json`: the merged file, its shards and cells. In bounce_sweep.cpp.
+const ResultKeys& bounce_merge_result_keys();
 
 struct BounceMergeResult {
   nlohmann::json json;  ///< exactly what `bounce merge --json` prints

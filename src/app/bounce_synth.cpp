@@ -80,4 +80,25 @@ BounceSynthTableResult bounce_synth_table(const BounceSynthTableOptions& opts) {
   return res;
 }
 
+const ResultKeys& bounce_synth_video_result_keys() {
+  static const ResultKeys k = {
+      {"out", "", ""}, {"frames", "", ""}, {"t_touch", "s", "real time from release"},
+      {"t_separation", "s", "real time from release"}, {"vx_in", "m/s", ""}, {"vy_in", "m/s", ""},
+      {"omega_in", "rad/s", ""}, {"theta_touch_deg", "deg", ""}, {"vx_out", "m/s", ""}, {"vy_out", "m/s", ""},
+      {"omega_out", "rad/s", ""}, {"release_apex", "m", ""}, {"post_apex", "m", ""}, {"e_height", "", ""},
+  };
+  return k;
+}
+
+const ResultKeys& bounce_synth_table_result_keys() {
+  static const ResultKeys k = {
+      {"out", "", ""}, {"rows", "", ""}, {"truth.model", "", ""}, {"truth.K", "N/m^n", ""}, {"truth.n", "", ""},
+      {"truth.D", "N s/m^(n+1)", ""}, {"truth.restitution", "", ""}, {"truth.friction", "", ""}, {"truth.mu", "", ""},
+      {"truth.a", "m", ""}, {"truth.b", "m", ""}, {"truth.mass", "kg", ""}, {"truth.inertia", "kg m^2", ""},
+      {"truth.noise_v", "m/s", ""}, {"truth.noise_omega", "rad/s", ""}, {"truth.outlier_fraction", "", ""},
+      {"truth.slip_scale", "m/s", ""},
+  };
+  return k;
+}
+
 }  // namespace tribolab::app

@@ -5,6 +5,7 @@
 // that it is written once. Errors are InputError naming the option; nothing is printed.
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "app/bounce_options.hpp"
 #include "app/bounce_truth_law.hpp"
 
@@ -40,6 +41,21 @@ void apply_throw(const Opts& opts, analysis::SynthVideoOptions& m) {
   m.seed = opts.seed;
 }
 
+/// The declarations of a filmed throw (`synth-video`, `render`): the ball, the truth law and the
+/// release --height --theta-deg --omega --vx --vy --after (and --fps: `fps_help`).
+template <class O>
+void add_throw_fields(Fields<O>& d) {
+  d.group(&O::ball, ball_fields());
+  d.group(&O::law, truth_law_fields());
+  d.add("height", &O::height, "m", "centre height at release").in(ranges::height);
+  d.add("theta_deg", &O::theta_deg, "deg", "orientation at release").in(ranges::angle_deg);
+  d.add("omega", &O::omega, "rad/s", "spin at release").in(ranges::spin);
+  d.add("vx", &O::vx, "m/s", "horizontal speed").in(ranges::velocity);
+  d.add("vy", &O::vy, "m/s", "vertical speed at release").in(ranges::velocity);
+  d.add("after", &O::after, "s", "seconds of video after the separation");
+  d.add("fps", &O::fps, "1/s", "camera frame rate").in(ranges::frame_rate);
+}
+
 /// `bounce synth-video`: a synthetic Tracker export of one bounce (tips A and B).
 struct BounceSynthVideoOptions {
   BallOptions ball;
@@ -56,6 +72,23 @@ struct BounceSynthVideoOptions {
   double time_factor = analysis::SynthVideoOptions{}.time_factor;  ///< file time = real time x this
   std::uint64_t seed = analysis::SynthVideoOptions{}.seed;         ///< random seed
 };
+
+/// The declaration of every option of `bounce synth-video` (app/option_fields.hpp).
+inline const Fields<BounceSynthVideoOptions>& bounce_synth_video_fields() {
+  using O = BounceSynthVideoOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("out", &O::out, "", "output file (Tracker Export Data text)").as(FieldRole::output_path).needed();
+    add_throw_fields(d);
+    d.add("noise", &O::noise, "m", "position noise sd of each tip coordinate").in(ranges::noise);
+    d.add("time_factor", &O::time_factor, "", "file time = real time x this (8: 240 fps shown at 30)");
+    d.add("seed", &O::seed, "", "random seed");
+    return d;
+  }();
+  return f;
+}
+/// The keys of `bounce synth-video --json`. In bounce_synth.cpp.
+const ResultKeys& bounce_synth_video_result_keys();
 
 struct BounceSynthVideoResult {
   nlohmann::json json;           ///< exactly what `--json` prints
@@ -80,6 +113,31 @@ struct BounceSynthTableOptions {
   double outlier_v = analysis::SynthTableOptions{}.outlier_v;             ///< size of a gross error, m/s (omega: v/b)
   std::uint64_t seed = analysis::SynthTableOptions{}.seed;                ///< random seed
 };
+
+/// The declaration of every option of `bounce synth-table` (app/option_fields.hpp).
+inline const Fields<BounceSynthTableOptions>& bounce_synth_table_fields() {
+  using O = BounceSynthTableOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("out", &O::out, "", "output CSV").as(FieldRole::output_path).needed();
+    d.group(&O::ball, ball_fields());
+    d.group(&O::law, truth_law_fields());
+    d.add("rows", &O::rows, "", "bounces");
+    d.add("speed_min", &O::speed_min, "m/s", "smallest incoming |vy|");
+    d.add("speed_max", &O::speed_max, "m/s", "largest incoming |vy|");
+    d.add("vx_max", &O::vx_max, "m/s", "incoming vx in [-vx-max, vx-max]");
+    d.add("omega_max", &O::omega_max, "rad/s", "incoming omega in [-omega-max, omega-max]");
+    d.add("noise_v", &O::noise_v, "m/s", "noise sd of the outgoing vx, vy");
+    d.add("noise_omega", &O::noise_omega, "rad/s", "noise sd of the outgoing omega");
+    d.add("outlier_fraction", &O::outlier_fraction, "", "fraction of rows with a gross error on one outgoing value");
+    d.add("outlier_v", &O::outlier_v, "m/s", "size of a gross error: uniform in [v, 2v], random sign; omega: v/b");
+    d.add("seed", &O::seed, "", "random seed");
+    return d;
+  }();
+  return f;
+}
+/// The keys of `bounce synth-table --json`. In bounce_synth.cpp.
+const ResultKeys& bounce_synth_table_result_keys();
 
 struct BounceSynthTableResult {
   nlohmann::json json;                 ///< exactly what `--json` prints
@@ -113,6 +171,34 @@ struct BounceRenderOptions {
   int supersample = video::RenderOptions{}.supersample;         ///< anti-aliasing sub-pixels per axis
   std::uint64_t seed = analysis::SynthVideoOptions{}.seed;      ///< first frame's phase, texture and noise
 };
+
+/// The declaration of every option of `bounce render` (app/option_fields.hpp).
+inline const Fields<BounceRenderOptions>& bounce_render_fields() {
+  using O = BounceRenderOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("out", &O::out, "", "output video: .avi (MJPG) or .mp4 (mp4v)").as(FieldRole::output_path).needed();
+    d.add("truth", &O::truth, "", "CSV of the true tracks ball, ball.A, ball.B (track,frame,t,x,y; m, s)")
+        .as(FieldRole::output_path);
+    d.add("write_trk", &O::write_trk, "",
+          "a Tracker project (.trk): the video, its clip, time base, calibration and the truth as tracks truth, truth.A, "
+          "truth.B")
+        .as(FieldRole::output_path);
+    add_throw_fields(d);
+    d.add("size", &O::size, "px", "image size WIDTHxHEIGHT");
+    d.add("scale", &O::scale, "m/px", "length of a pixel, as track video --scale takes it (unset: fit the throw in view)");
+    d.add("background", &O::background, "", "background").one_of({"plain", "gradient", "texture"});
+    d.add("no_floor", &O::no_floor, "", "no dark floor band below the floor line");
+    d.add("sticker", &O::sticker, "", "a 3x3 checker sticker on the ball, half-way to tip B");
+    d.add("noise", &O::noise, "", "Gaussian sensor noise, grey levels");
+    d.add("shutter", &O::shutter, "", "exposure as a fraction of the frame period, 0..1");
+    d.add("blur_samples", &O::blur_samples, "", "sub-frames averaged across the exposure");
+    d.add("supersample", &O::supersample, "", "anti-aliasing sub-pixels per axis");
+    d.add("seed", &O::seed, "", "random seed: the first frame's phase, the texture and the noise");
+    return d;
+  }();
+  return f;
+}
 
 struct BounceRenderResult {
   nlohmann::json json;     ///< exactly what `--json` prints

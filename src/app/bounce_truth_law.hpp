@@ -6,6 +6,7 @@
 // (src/app/bounce_options.hpp); CLI11-free.
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "app/bounce_options.hpp"
 
 #include <optional>
@@ -27,5 +28,8 @@ struct TruthLawOptions {
   /// Checks every field (InputError naming the option) and fills the core's law and friction.
   void apply(bounce::NormalLawSpec& law, bounce::FrictionModel& friction_model) const;
 };
+
+/// The declarations of the generators' law options (group "truth law"; app/option_fields.hpp).
+const Fields<TruthLawOptions>& truth_law_fields();
 
 }  // namespace tribolab::app

@@ -97,6 +97,15 @@ InclineSynthResult incline_synth(const InclineSynthOptions& s) {
   return res;
 }
 
+const ResultKeys& incline_synth_result_keys() {
+  static const ResultKeys k = {
+      {"points", "", "marked points written"}, {"t_launch", "s", "launch instant in the file's time"},
+      {"t_stop", "s", "stop instant in the file's time"}, {"x_stop", "m", ""}, {"y_stop", "m", ""},
+      {"model", "", "A or B"}, {"format", "", ""}, {"track", "", ""}, {"out", "", ""},
+  };
+  return k;
+}
+
 // ---- normal-friction-test -------------------------------------------------------------
 
 InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormalFrictionTestOptions& s) {

@@ -3,6 +3,7 @@
 // command line's defaults, results holding the command's JSON and the arrays a notebook wants.
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "analysis/incline_diagnostics.hpp"
 #include "analysis/incline_fit.hpp"
 #include "analysis/incline_synthetic.hpp"
@@ -53,6 +54,40 @@ struct InclineSynthOptions {
   double frame_rotation_deg = 0;
   std::string out;                ///< file to write; empty = none
 };
+
+/// The declaration of every option of `incline synth` (app/option_fields.hpp).
+inline const Fields<InclineSynthOptions>& incline_synth_fields() {
+  using O = InclineSynthOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("mu", &O::mu, "", "kinetic friction coefficient (> 0)").in(ranges::friction).needed();
+    d.add("phi_deg", &O::phi_deg, "deg", "incline angle, in [0, 90)").needed();
+    d.add("v0", &O::v0, "m/s", "launch speed along +x (>= 0; 0 = released from rest: a straight slide down the slope)")
+        .in(ranges::speed).needed();
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity);
+    d.add("normal_accel", &O::normal_accel, "m/s^2",
+          "model A: normal friction / mass, positive left of the velocity (0 = model B; see incline analyze --help)")
+        .in(ranges::accel);
+    d.add("fps", &O::fps, "1/s", "frame rate").in(ranges::frame_rate);
+    d.add("noise", &O::noise, "m", "standard deviation of the position noise").in(ranges::noise);
+    d.add("seed", &O::seed, "", "noise seed, integer >= 0");
+    d.add("t_offset", &O::t_offset, "s", "launch instant in the file's time").in(ranges::duration);
+    d.add("x0", &O::x0, "m", "launch point x").in(ranges::position);
+    d.add("y0", &O::y0, "m", "launch point y").in(ranges::position);
+    d.add("duration", &O::duration, "s", "recording length (unset: until 0.3 s after the stop, or 1.5 s after the launch)")
+        .in(ranges::duration);
+    d.add("format", &O::format, "", "export (Tracker Export Data text, tab delimited) or csv (track,frame,t,x,y)")
+        .one_of({"export", "csv"});
+    d.add("track_name", &O::track_name, "", "name of the track");
+    d.add("frame_rotation_deg", &O::frame_rotation_deg, "deg",
+          "camera axes turned against the incline: points rotated CCW about the launch point (within +-20)");
+    d.add("out", &O::out, "", "output file").as(FieldRole::output_path).needed();
+    return d;
+  }();
+  return f;
+}
+/// The keys of `incline synth --json` (docs/cli.md#incline-synth). In incline_analysis.cpp.
+const ResultKeys& incline_synth_result_keys();
 
 struct InclineSynthResult {
   nlohmann::json json;                ///< exactly what `incline synth --json` prints

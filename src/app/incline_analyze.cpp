@@ -1,4 +1,5 @@
 #include "app/study_citation.hpp"
+#include "app/result_keys.hpp"
 #include "app/incline_analyze.hpp"
 
 #include "app/output_paths.hpp"
@@ -297,4 +298,13 @@ InclineMuFromSlideResult incline_mu_from_slide(const InclineMuFromSlideOptions& 
   return res;
 }
 
+
+const ResultKeys& incline_mu_from_slide_result_keys() {
+  static const ResultKeys k = {
+      {"a", "m/s^2", "acceleration along the slide (y-t parabola)"}, {"mu", "", ""}, {"r_squared", "", ""},
+      {"n_points", "", ""}, {"a_velocity_line", "m/s^2", "acceleration from the v-t line"},
+      {"direction_deg", "deg", ""}, {"straightness_rms", "m", ""}, {"track", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

@@ -99,7 +99,7 @@ Counts analyse_turned(const std::string& tag, int runs, std::uint64_t first_seed
     k.warned += other_warning;
     bool frame_warning = false;
     for (const auto& w : j["warnings"])
-      frame_warning |= w.get<std::string>().find("--frame-rotation fit") != std::string::npos;
+      frame_warning |= w.get<std::string>().find(field("frame_rotation") + " fit") != std::string::npos;
     k.frame_warned += frame_warning;
     if (i == 0) for (const auto& w : j["warnings"]) std::printf("warning: %s\n", w.get<std::string>().c_str());
     k.sum_psi += psi;
@@ -186,7 +186,7 @@ TEST(InclineAnalyze, WarnsWhenAFrameHeldAlignedIsTurned) {
     bool warned = false;
     for (const auto& w : j["warnings"]) {
       const std::string text = w.get<std::string>();
-      warned |= text.find("--frame-rotation fit") != std::string::npos && text.find("model B") != std::string::npos;
+      warned |= text.find(field("frame_rotation") + " fit") != std::string::npos && text.find("model B") != std::string::npos;
     }
     EXPECT_TRUE(warned) << j["warnings"];
     fs::remove_all(dir);

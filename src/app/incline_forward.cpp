@@ -239,4 +239,23 @@ InclineFamiliesResult incline_families(const InclineFamiliesOptions& s) {
   return res;
 }
 
+
+const ResultKeys& incline_predict_result_keys() {
+  static const ResultKeys k = {
+      {"k", "", "tan(phi)/mu"}, {"regime", "", "stops, terminal_speed or accelerates"},
+      {"t_stop", "s", ""}, {"x_stop", "m", ""}, {"y_stop", "m", ""}, {"x_limit", "m", "lateral limit, null when unbounded"},
+      {"v_terminal", "m/s", ""}, {"a_x0", "m/s^2", "at launch"}, {"a_y0", "m/s^2", "at launch"},
+      {"a_x_final", "m/s^2", ""}, {"a_y_final", "m/s^2", ""}, {"stays_at_rest", "", ""},
+  };
+  return k;
+}
+
+const ResultKeys& incline_simulate_result_keys() {
+  static const ResultKeys k = {
+      {"model", "", ""}, {"method", "", ""}, {"rows", "", "samples written"}, {"t_end", "s", ""}, {"dt", "s", ""},
+      {"t_stop", "s", "within t_end, else null"}, {"x_stop", "m", ""}, {"y_stop", "m", ""},
+      {"steps", "", "integrator steps (numeric)"}, {"out", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

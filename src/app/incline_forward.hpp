@@ -36,6 +36,20 @@ struct InclinePredictResult {
 
 InclinePredictResult incline_predict(const InclinePredictOptions& o);
 
+/// The declaration of every option of `incline predict` (app/option_fields.hpp).
+inline const Fields<InclinePredictOptions>& incline_predict_fields() {
+  using O = InclinePredictOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.group(&O::launch, incline_launch_fields(true));
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+/// The keys of `incline predict --json` (docs/cli.md#incline-predict). In incline_forward.cpp.
+const ResultKeys& incline_predict_result_keys();
+
 // ---- simulate -------------------------------------------------------------------------
 
 struct InclineSimulateOptions {
@@ -53,6 +67,28 @@ struct InclineSimulateOptions {
   std::string report;                ///< HTML report to write; empty = none
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
+
+/// The declaration of every option of `incline simulate` (app/option_fields.hpp).
+inline const Fields<InclineSimulateOptions>& incline_simulate_fields() {
+  using O = InclineSimulateOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.group(&O::launch, incline_launch_fields(true));
+    d.add("model", &O::model, "", "A (normal friction component) or B").one_of({"A", "B"});
+    d.add("normal_accel", &O::normal_accel, "m/s^2", "model A: normal friction / mass, positive left of the velocity (unset: 0)")
+        .in(ranges::accel);
+    d.add("method", &O::method, "", "analytic (closed form, model B only) or numeric; unset: analytic for B, numeric for A")
+        .one_of({"analytic", "numeric"});
+    d.add("dt", &O::dt, "s", "sample interval (unset: t-end/500)").in(ranges::step);
+    d.add("t_end", &O::t_end, "s", "duration (unset: 1.25 t_stop if it stops, else 2 v0/(g mu cos phi), else 1)").in(ranges::step);
+    d.add("out", &O::out, "", "output CSV file").as(FieldRole::output_path).needed();
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+/// The keys of `incline simulate --json` (docs/cli.md#incline-simulate). In incline_forward.cpp.
+const ResultKeys& incline_simulate_result_keys();
 
 struct InclineSimulateResult {
   nlohmann::json json;                     ///< exactly what `incline simulate --json` prints

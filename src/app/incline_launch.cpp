@@ -35,4 +35,21 @@ incline::Parameters incline_launch_parameters(const InclineLaunchOptions& o, con
   return p;
 }
 
+const Fields<InclineLaunchOptions>& incline_launch_fields(bool required) {
+  auto make = [](bool req) {
+    using O = InclineLaunchOptions;
+    Fields<O> d;
+    auto need = [req](FieldDecl& f) -> FieldDecl& { return req ? f.needed() : f; };
+    need(d.add("mu", &O::mu, "", "kinetic friction coefficient (>= 0)")).in(ranges::friction);
+    need(d.add("phi_deg", &O::phi_deg, "deg", "incline angle, in [0, 90)"));
+    need(d.add("v0", &O::v0, "m/s", "launch speed along +x (>= 0)")).in(ranges::speed);
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity);
+    d.add("mu_static", &O::mu_static, "", "static friction coefficient deciding whether a disc at rest stays (unset: mu)")
+        .in(ranges::friction);
+    return d;
+  };
+  static const Fields<InclineLaunchOptions> with_required = make(true), optional = make(false);
+  return required ? with_required : optional;
+}
+
 }  // namespace tribolab::app

@@ -4,6 +4,7 @@
 // option as the command line spells it.
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "incline/params.hpp"
 #include "numerics/units.hpp"
 
@@ -24,6 +25,11 @@ struct InclineLaunchOptions {
   /// Static friction coefficient deciding whether a disc at rest stays; unset = mu.
   std::optional<double> mu_static;
 };
+
+/// The declarations of --mu --phi-deg --v0 --g --mu-static (app/option_fields.hpp); `required`:
+/// mu, phi_deg and v0 must be given (predict, simulate; not families, which varies one). The
+/// ranges are checked by incline_launch_parameters (phi in [0, 90) has an open end).
+const Fields<InclineLaunchOptions>& incline_launch_fields(bool required);
 
 /// The checked core parameters of a launch; `skip` names the one option ("--v0", "--phi-deg"
 /// or "--mu") that may be unset because a family varies it. Throws InputError naming the option.

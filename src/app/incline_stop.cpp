@@ -58,4 +58,12 @@ InclineMuFromStopResult incline_mu_from_stop(const InclineMuFromStopOptions& s) 
   return res;
 }
 
+
+const ResultKeys& incline_mu_from_stop_result_keys() {
+  static const ResultKeys k = {
+      {"mu", "", ""}, {"k", "", "tan(phi)/mu"}, {"r", "", "|x_stop / y_stop|"}, {"v0", "m/s", "launch speed"},
+      {"best_phi_deg", "deg", "the angle that minimises sigma_mu"}, {"best_sigma_mu", "", "sigma_mu at that angle"},
+  };
+  return k;
+}
 }  // namespace tribolab::app

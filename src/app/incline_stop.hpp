@@ -2,6 +2,7 @@
 // the friction coefficient from the stopping point alone, with the best-angle advice.
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "incline/inverse.hpp"
 #include "numerics/units.hpp"
 #include "report/plotly_script.hpp"
@@ -27,6 +28,26 @@ struct InclineMuFromStopOptions {
   std::string report;               ///< HTML report to write; empty = none
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
+
+/// The declaration of every option of `incline mu-from-stop` (app/option_fields.hpp).
+inline const Fields<InclineMuFromStopOptions>& incline_mu_from_stop_fields() {
+  using O = InclineMuFromStopOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("phi_deg", &O::phi_deg, "deg", "incline angle, in (0, 90)").needed();
+    d.add("x_stop", &O::x_stop, "m", "stop position across the slope (> 0)").needed();
+    d.add("y_stop", &O::y_stop, "m", "stop position up the slope (< 0)").needed();
+    d.add("sigma_phi_deg", &O::sigma_phi_deg, "deg", "uncertainty of the angle").in(ranges::angle_sigma_deg);
+    d.add("sigma_pos", &O::sigma_pos, "m", "uncertainty of x-stop and of y-stop").in(ranges::noise);
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity);
+    d.add("plate_size", &O::plate_size, "m", "largest usable stop distance: enables the best-angle advice").in(ranges::distance);
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+/// The keys of `incline mu-from-stop --json` (docs/cli.md#incline-mu-from-stop). In incline_stop.cpp.
+const ResultKeys& incline_mu_from_stop_result_keys();
 
 struct InclineMuFromStopResult {
   nlohmann::json json;                         ///< exactly what `incline mu-from-stop --json` prints

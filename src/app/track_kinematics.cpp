@@ -1,4 +1,5 @@
 #include "app/track_kinematics.hpp"
+#include "app/result_keys.hpp"
 
 #include "app/output_paths.hpp"
 
@@ -41,7 +42,7 @@ std::string gravity_warning(const track::SegmentAcceleration& a, std::size_t ind
   if (a.magnitude_off) {
     const double factor = std::sqrt(a.magnitude / g);  // times off by c scale every acceleration by 1/c^2
     w += "The times or the lengths are wrong: if the lengths are right, the file's times must be multiplied by " +
-         g3(factor) + " (--time-scale " + g3(factor) +
+         g3(factor) + " (" + field("time_scale") + " " + g3(factor) +
          " times the one used; 240 fps slow motion played at 30 fps needs 0.125; an error of k % in the frame rate "
          "changes g by 2k %); else check the length calibration (the scale stick, the unit). ";
   }
@@ -168,4 +169,22 @@ TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options) {
   return result;
 }
 
+
+const ResultKeys& track_kinematics_result_keys() {
+  static const ResultKeys k = {
+      {"track", "", ""}, {"method", "", ""}, {"points", "", ""}, {"window", "", ""}, {"order", "", ""},
+      {"velocities_defined", "", "rows with a velocity"}, {"accelerations_defined", "", "rows with an acceleration"},
+      {"segments", "", ""}, {"impacts.frame", "", ""}, {"impacts.t", "s", ""}, {"impacts.dvx", "m/s", ""},
+      {"impacts.dvy", "m/s", ""}, {"impacts.significance", "", ""}, {"noise_x", "m", ""}, {"noise_y", "m", ""},
+      {"residual_sigma_x", "m", ""}, {"residual_sigma_y", "m", ""}, {"time_scale", "", ""}, {"g", "m/s^2", ""},
+      {"segment_fits.segment", "", ""}, {"segment_fits.frame_first", "", ""}, {"segment_fits.frame_last", "", ""},
+      {"segment_fits.t_first", "s", ""}, {"segment_fits.t_last", "s", ""}, {"segment_fits.points", "", ""},
+      {"segment_fits.ax", "m/s^2", ""}, {"segment_fits.ay", "m/s^2", ""}, {"segment_fits.acceleration", "m/s^2", ""},
+      {"segment_fits.tilt_deg", "deg", ""}, {"segment_fits.rms_residual_x", "m", ""},
+      {"segment_fits.rms_residual_y", "m", ""}, {"segment_fits.free_flight", "", ""},
+      {"segment_fits.not_free_flight_because", "", ""}, {"segment_fits.gravity_plausible", "", ""},
+      {"warnings", "", ""}, {"out", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

@@ -177,7 +177,7 @@ TEST(TrackKinematics, AFrameRateWrongByTwoOrEightIsWarned) {
     const std::string w = r.json["warnings"][0];
     EXPECT_NE(w.find("segment 1 of 1 (frames 0-143"), std::string::npos) << w;
     EXPECT_NE(w.find("not g = 9.8"), std::string::npos) << w;
-    EXPECT_NE(w.find("--time-scale " + std::string(factor) + " "), std::string::npos) << w;
+    EXPECT_NE(w.find(field("time_scale") + " " + std::string(factor) + " "), std::string::npos) << w;
     EXPECT_NE(w.find("length calibration"), std::string::npos) << w;
     // The measured |a| is g (240/fps)^-2 within 5 of its standard errors.
     const double expected = 9.8 * std::pow(fps / 240, 2);
@@ -227,7 +227,7 @@ TEST(TrackKinematics, TrackersBallTossFallsAtGAndHalvedTimesAreWarned) {
   // sqrt(4 x 10.27 / 9.8) = 2.05 (the toss shows |a| = 10.27 +- 0.04 m/s^2 as it is).
   const auto half = kinematics_of(toss, dir, 0.5);
   ASSERT_EQ(half.json["warnings"].size(), 1u) << all_warnings(half);
-  EXPECT_NE(half.json["warnings"][0].get<std::string>().find("--time-scale 2.05 "), std::string::npos) << all_warnings(half);
+  EXPECT_NE(half.json["warnings"][0].get<std::string>().find(field("time_scale") + " 2.05 "), std::string::npos) << all_warnings(half);
 }
 
 TEST(TrackKinematics, TheDemosSlideFromRestIsNotWarned) {
@@ -260,7 +260,7 @@ TEST(TrackKinematics, TheDemosFilmedBounceNeedsItsSlowMotionFactor) {
     if (scale == 1.0) {
       ASSERT_EQ(r.json["warnings"].size(), 1u) << all_warnings(r);
       EXPECT_NE(all_warnings(r).find("segment 2 of 2"), std::string::npos) << all_warnings(r);
-      EXPECT_NE(all_warnings(r).find("--time-scale 0.125 "), std::string::npos) << all_warnings(r);
+      EXPECT_NE(all_warnings(r).find(field("time_scale") + " 0.125 "), std::string::npos) << all_warnings(r);
     } else {
       EXPECT_TRUE(r.json["warnings"].empty()) << all_warnings(r);
       // 9.75 +- 0.02 m/s^2 measured: within the 10 % the check allows, not within 3 sds of

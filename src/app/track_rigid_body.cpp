@@ -109,13 +109,13 @@ TrackRigidBodyResult track_rigid_body(const TrackRigidBodyOptions& options) {
   // A drift within 3 standard errors of zero is noise, however large (few noisy frames).
   if (std::abs(drift_fraction) > options.max_drift && std::abs(len.drift) > 3 * len.sigma_drift) {
     warnings.push_back("the distance between '" + a.name + "' and '" + b.name + "' changes by " +
-                       percent(drift_fraction) + " over the record (more than --max-drift " + percent(options.max_drift) +
+                       percent(drift_fraction) + " over the record (more than " + field("max_drift") + " " + percent(options.max_drift) +
                        "): a rigid body keeps it; check the calibration (a tilted or moving scale) and that both "
                        "tracks follow points of the same body");
   }
   if (scatter_fraction > options.max_drift) {
     warnings.push_back("the distance between '" + a.name + "' and '" + b.name + "' scatters by " +
-                       percent(scatter_fraction) + " of its mean from frame to frame (more than --max-drift " +
+                       percent(scatter_fraction) + " of its mean from frame to frame (more than " + field("max_drift") + " " +
                        percent(options.max_drift) + "): check for mislabelled or swapped marks");
   }
   double max_turn = 0;

@@ -1,4 +1,5 @@
 #include "app/track_video.hpp"
+#include "app/result_keys.hpp"
 
 #include "app/output_paths.hpp"
 
@@ -191,4 +192,24 @@ TrackVideoResult track_video(const TrackVideoOptions& options) {
   return result;
 }
 
+
+const ResultKeys& track_video_result_keys() {
+  static const ResultKeys k = {
+      {"input", "", ""}, {"video.path", "", ""}, {"video.width", "px", ""}, {"video.height", "px", ""},
+      {"video.frame_count", "", ""}, {"video.fps", "1/s", "as the container says"}, {"video.codec", "", ""},
+      {"clip.start_frame", "", ""}, {"clip.step_size", "", ""}, {"clip.step_count", "", ""}, {"frames", "", ""},
+      {"fps", "1/s", "frames per second of the time base"}, {"time_base.start_frame", "", ""},
+      {"time_base.start_time", "s", ""}, {"time_base.frame_duration", "s", ""}, {"time_base.time_scale", "", ""},
+      {"calibration.calibrated", "", ""}, {"calibration.unit", "", "m, or px without a scale"},
+      {"calibration.m_per_px", "m/px", "length of a pixel"}, {"calibration.origin_px", "px", ""},
+      {"calibration.axes_deg", "deg", ""}, {"calibration.key_frames", "", ""},
+      {"track_names", "", ""}, {"tracks.*.kind", "", ""}, {"tracks.*.start_frame", "", ""}, {"tracks.*.rows", "", ""},
+      {"tracks.*.tracked", "", ""}, {"tracks.*.lost", "", ""}, {"tracks.*.lost_ranges", "", "[first, last] frames"},
+      {"tracks.*.refound_frames", "", ""}, {"tracks.*.median_score", "", ""},
+      {"tracks.*.vs_human.frames", "", ""}, {"tracks.*.vs_human.median_px", "px", ""},
+      {"tracks.*.vs_human.max_px", "px", ""}, {"tracks.*.vs_human", "", "null without human marks"},
+      {"warnings", "", ""}, {"out", "", ""}, {"write_trk", "", ""}, {"report", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

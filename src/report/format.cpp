@@ -1,5 +1,7 @@
 #include "report/format.hpp"
 
+#include "numerics/error.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -136,7 +138,14 @@ std::string format_uncertain(double value, double sigma) {
 
 namespace {
 
-std::string escape(std::string_view text, bool quotes) {
+std::string escape(std::string_view raw, bool quotes) {
+  // A field the core names in a message (field("floor_y"), a warning shown in a report) reads
+  // as the command line's flag: the reports print their commands as command lines.
+  const std::string text = spell_fields(raw, [](std::string_view name) {
+    std::string flag = "--" + std::string(name);
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    return flag;
+  });
   std::string out;
   out.reserve(text.size() + text.size() / 8);
   for (char c : text) {

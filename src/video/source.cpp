@@ -203,7 +203,7 @@ Calibration plain_calibration(const SourceOptions& o, const VideoInfo& info,
   cal.metres_per_unit = 1;
   cal.calibrated = px_per_m > 0;
   if (!cal.calibrated) {
-    warnings.push_back("no scale (--scale or --calibrate): positions x, y are in pixels (y up)");
+    warnings.push_back("no scale (" + field("scale") + " or " + field("calibrate") + "): positions x, y are in pixels (y up)");
   }
   return cal;
 }
@@ -266,7 +266,7 @@ void apply_project(VideoInput& in, const io::TrkProject& p, const SourceOptions&
   in.time.frame_duration_s = p.clip.frame_duration_ms / 1000;
   in.time.time_scale = o.time_scale;
   if (o.fps > 0) {
-    in.warnings.push_back("--fps " + io::format_number(o.fps) + " overrides the project's frame duration of " +
+    in.warnings.push_back(field("fps") + " " + io::format_number(o.fps) + " overrides the project's frame duration of " +
                           io::format_number(p.clip.frame_duration_ms) + " ms");
     in.time.frame_duration_s = 1 / o.fps;
   }

@@ -337,7 +337,7 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
     std::snprintf(buf, sizeof buf, "%.1f px (median over %d frames)", s.vs_human->median_px, s.vs_human->frames);
     result.warnings.push_back("track '" + s.name + "' lies " + buf +
                               " from the project's own marks: it has followed something else; check the report, "
-                              "start on a textured mark or use --ellipse for a ball");
+                              "start on a textured mark or use " + field("ellipse") + " for a ball");
   }
   return result;
 }

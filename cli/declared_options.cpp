@@ -1,0 +1,30 @@
+#include "declared_options.hpp"
+
+#include "text_listing.hpp"
+
+namespace tribolab::cli {
+
+std::map<const CLI::App*, DeclaredCommand>& declared_commands() {
+  static std::map<const CLI::App*, DeclaredCommand> commands;
+  return commands;
+}
+
+void declare_results(const CLI::App& cmd, const app::ResultKeys& keys) { declared_commands()[&cmd].results = &keys; }
+
+std::string declared_help(const app::FieldDecl& f) {
+  std::string h = f.help;
+  if (!f.choices.empty()) {
+    h += ": ";
+    for (std::size_t i = 0; i < f.choices.size(); ++i) h += (i ? "|" : "") + f.choices[i];
+  }
+  if (!f.unit.empty()) h += ", " + f.unit;
+  return h;
+}
+
+void print_declared(const CLI::App& cmd, const nlohmann::json& result, bool as_json) {
+  const auto it = declared_commands().find(&cmd);
+  if (it == declared_commands().end() || !it->second.results) throw std::logic_error("print_declared: command not declared");
+  print_result(result, as_json, it->second.results);
+}
+
+}  // namespace tribolab::cli

@@ -1,0 +1,23 @@
+// The declared JSON result keys (app/option_fields.hpp, ResultKey) of the commands whose options
+// are not declared yet: their text listings print these units (cli/text_listing.hpp), and
+// cli/schema_test.cpp requires every key their sample run prints to be declared here. Each
+// table is defined beside the code that writes the keys; a command whose options get declared
+// moves its declaration beside its options struct (as app/bounce_simulate.hpp's).
+#pragma once
+
+#include "app/option_fields.hpp"
+
+namespace tribolab::app {
+
+/// `bounce analyze FILE` (one file; docs/cli.md#bounce-analyze). In bounce_analyze.cpp.
+const ResultKeys& bounce_analyze_result_keys();
+/// `bounce render` (docs/cli.md#bounce-render). In bounce_render.cpp.
+const ResultKeys& bounce_render_result_keys();
+/// `track video` (docs/cli.md#track-video). In track_video.cpp.
+const ResultKeys& track_video_result_keys();
+/// `track kinematics` (docs/cli.md#track-kinematics). In track_kinematics.cpp.
+const ResultKeys& track_kinematics_result_keys();
+/// `incline mu-from-slide FILE` (one file; docs/cli.md#incline-mu-from-slide). In incline_analyze.cpp.
+const ResultKeys& incline_mu_from_slide_result_keys();
+
+}  // namespace tribolab::app
