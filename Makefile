@@ -26,7 +26,7 @@ DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
 # pinned in report/vendor/package-lock.json; the build embeds it into the tribolab binary
 # (docs/design.md#reports). npm comes from Debian's `npm` package when none is installed.
 VENDOR    := report/vendor
-PLOTLY_JS := $(VENDOR)/node_modules/plotly.js-dist-min/plotly.min.js
+PLOTLY_JS := $(VENDOR)/node_modules/plotly.js-cartesian-dist-min/plotly-cartesian.min.js
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 

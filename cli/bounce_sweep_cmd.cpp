@@ -157,6 +157,8 @@ void register_bounce_sweep(CLI::App& bounce_area) {
   cmd->add_option("--threshold", opts->threshold, "Write the spin threshold and energy ratio per angle to this CSV");
   cmd->add_option("--contour-tol", opts->contour_tol,
                   "Root tolerance of boundary points, fraction of the grid spacing");
+  cmd->add_option("--plain-csv", opts->plain_csv,
+                  "Also write the map for spreadsheets: no comment lines, the metadata in FILE.meta.txt");
   add_report_option(*cmd, opts->report, opts->plotly);
   add_json_flag(*cmd, text->json);
   // The physics of a cell: the options of `bounce simulate` except --mu (a sweep axis).
@@ -177,6 +179,8 @@ void register_bounce_sweep(CLI::App& bounce_area) {
   merge->add_option("files", merge_opts->files, "Shard files (every shard i/N exactly once, any order)")
       ->required();
   merge->add_option("--out", merge_opts->out, "Merged output CSV")->required();
+  merge->add_option("--plain-csv", merge_opts->plain_csv,
+                    "Also write the merged map for spreadsheets: no comment lines, the metadata in FILE.meta.txt");
   add_report_option(*merge, merge_opts->report, merge_opts->plotly);
   add_json_flag(*merge, *merge_json);
   merge->callback([merge_opts, merge_json] { print_result(app::bounce_merge(*merge_opts).json, *merge_json); });

@@ -31,7 +31,7 @@ struct BounceSweepOptions {
   std::optional<sweep::Axis> ratio;  ///< --ratio: spin/speed omega/|vy| axis, rad/m
   ValueOrAxis speed{4.0, std::nullopt};  ///< --speed: incoming vertical speed |vy|, m/s (seed 001 figure 53)
   ValueOrAxis mu{0.5, std::nullopt};     ///< --mu: friction coefficient (docs/cli.md, default of every --mu)
-  std::string out;         ///< --out: the output CSV (required); FILE.partial while running
+  std::string out;         ///< --out: the output CSV (required by the command; Python without it returns the map only); FILE.partial while running
   sweep::Shard shard;      ///< --shard i/N: only cells with index % N == i; default the whole grid
   int threads = 0;         ///< --threads: worker threads, 0 = all cores
   bool restart = false;    ///< --restart: discard an existing checkpoint or output
@@ -39,6 +39,8 @@ struct BounceSweepOptions {
   std::string threshold;   ///< --threshold: spin threshold per angle CSV ("" = none)
   /// --contour-tol: root tolerance of boundary points, fraction of the grid spacing
   double contour_tol = 1e-9;
+  /// --plain-csv: also the map for spreadsheets, no comment lines (its metadata in FILE.meta.txt)
+  std::string plain_csv;
   std::string report;      ///< --report: HTML report ("" = none)
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   BounceCellOptions cell;  ///< the physics of a cell (--angle --vx ball, law, --g)
@@ -78,6 +80,8 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& options);
 struct BounceMergeOptions {
   std::vector<std::string> files;  ///< shard files, every shard i/N exactly once, any order
   std::string out;                 ///< --out: merged output CSV
+  /// --plain-csv: also the merged map for spreadsheets, no comment lines (metadata in FILE.meta.txt)
+  std::string plain_csv;
   std::string report;              ///< --report: HTML report ("" = none)
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
