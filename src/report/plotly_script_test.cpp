@@ -67,8 +67,8 @@ TEST(EmbeddedPlotly, HoldsEveryTraceTypeTheReportsDraw) {
   // be registered in it, else the page draws nothing for that trace.
   Figure f;
   f.title = "every kind";
-  f.x.title = "x";
-  f.y.title = "y";
+  f.x_axis.title = "x";
+  f.y_axis.title = "y";
   HeatMap h;
   h.x = {0, 1};
   h.y = {0, 1};

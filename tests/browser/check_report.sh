@@ -74,8 +74,9 @@ bad=$(printf '%s\n' "$dom" | grep -Eo '<figcaption>Figure [0-9]+\. [Ff]igure [0-
 bad=$(printf '%s\n' "$dom" | grep -Eo '<tr><td>[^<]*\([^()<]*\), [^<]*</td><td>[^<]+</td>' | head -n 1)
 [ -z "$bad" ] || fail "a table label holds a unit in its middle: '$bad'"
 # Labels: tribolab's notation subscripts one character (x_N); a longer subscript needs braces
-# (ω_{out}). Plotly titles, axis and colour-bar labels carry the notation as <sub> in the file.
-bad=$(grep -Eo '.{0,12}<sub>[^<]</sub>[a-z]{2}.{0,12}' "$html" | head -n 1)
+# (ω_{out}). Plotly titles, axis and colour-bar labels carry the notation as <sub> in the file
+# (inside the figures' JSON as \u003csub\u003e).
+bad=$(sed 's/\\u003c/</g; s/\\u003e/>/g' "$html" | grep -Eo '.{0,12}<sub>[^<]</sub>[a-z]{2}.{0,12}' | head -n 1)
 [ -z "$bad" ] || fail "a one-letter subscript runs into letters (use braces): '$bad'"
 for internal in '_test\.cpp' 'truth \(make\.sh\)' 'src/[a-z]*/[a-z_]*\.cpp'; do
   bad=$(printf '%s\n' "$dom" | sed 's/<script[^>]*>.*<\/script>//' | grep -Eo ".{0,30}$internal" | head -n 1)
