@@ -128,12 +128,13 @@ TEST(DemoErrata, MuAtMostTanPhiIsCitedWhereTheSeedPrintsIt) {
   EXPECT_NE(theory_errata().find("**伍-三-(三)-4 (3)**, on the v_y of\n  圖七-3"), std::string::npos);
 }
 
-/// The demo's errata page as HTML (both studies).
+/// The demo's errata page as HTML (both studies), without the plotting library (its code is
+/// not the page's text).
 std::string errata_page() {
   report::Report rep;
   std::ostringstream log;
   add_errata_section(rep, log);
-  return report::to_html(rep);
+  return report::to_html(rep, report::PlotlyMode::cdn);
 }
 
 TEST(DemoErrata, RefereeCorrectionsAreOnThePageAndInTheory) {
