@@ -25,7 +25,7 @@ DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
 # pinned in report/vendor/package-lock.json; the build embeds it into the tribolab binary
 # (docs/design.md#reports). npm comes from Debian's `npm` package when none is installed.
 VENDOR    := report/vendor
-PLOTLY_JS := $(VENDOR)/node_modules/plotly.js-dist-min/plotly.min.js
+PLOTLY_JS := $(VENDOR)/node_modules/plotly.js-cartesian-dist-min/plotly-cartesian.min.js
 
 # -g1 (line tables: file:line in stack traces, sanitizer reports and perf) instead of full -g:
 # GCC's code does not depend on the debug level, so results are bit-identical, and the build

@@ -154,6 +154,8 @@ void register_bounce_sweep(CLI::App& bounce_area) {
   cmd->add_option("--threshold", opts->threshold, "Write the spin threshold and energy ratio per angle to this CSV");
   cmd->add_option("--contour-tol", opts->contour_tol,
                   "Root tolerance of boundary points, fraction of the grid spacing");
+  cmd->add_option("--plain-csv", opts->plain_csv,
+                  "Also write the map for spreadsheets: no comment lines, the metadata in FILE.meta.txt");
   add_report_option(*cmd, opts->report, opts->plotly);
   add_json_flag(*cmd, text->json);
   // The physics of a cell: the options of `bounce simulate` except --mu (a sweep axis).

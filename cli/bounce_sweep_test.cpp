@@ -196,6 +196,32 @@ TEST(BounceSweepCli, MergedShardsEqualTheWholeSweep) {
   EXPECT_EQ(slurp(dir + "/merged.csv"), slurp(dir + "/all.csv"));
 }
 
+TEST(BounceSweepCli, PlainCsvOpensInASpreadsheetAndTheMapStaysMergeable) {
+  // --plain-csv: the map without its '#' metadata lines (a spreadsheet or csv.reader sees the
+  // column names first), the metadata verbatim in FILE.meta.txt; the sweep file is unchanged,
+  // so merge still reads it.
+  const std::string dir = temp_dir("bsweep_plain");
+  run_json(kMap + " --out " + dir + "/all.csv");
+  run_json(kMap + " --out " + dir + "/again.csv --plain-csv " + dir + "/plain.csv");
+  const std::string map = slurp(dir + "/all.csv"), plain = slurp(dir + "/plain.csv");
+  EXPECT_EQ(slurp(dir + "/again.csv"), map);
+  std::string metadata, rest;
+  std::istringstream in(map);
+  for (std::string line; std::getline(in, line);) (line.rfind('#', 0) == 0 && rest.empty() ? metadata : rest) += line + "\n";
+  ASSERT_FALSE(metadata.empty());
+  EXPECT_EQ(plain, rest);
+  EXPECT_EQ(count_lines(plain), 41);  // columns, 40 cells
+  EXPECT_EQ(plain.find('#'), std::string::npos);
+  EXPECT_EQ(slurp(dir + "/plain.csv.meta.txt"), metadata);
+  // Merge writes one too.
+  run_json(kMap + " --shard 1/2 --out " + dir + "/p1.csv");
+  run_json(kMap + " --shard 0/2 --out " + dir + "/p0.csv");
+  run_json("bounce merge " + dir + "/p1.csv " + dir + "/p0.csv --out " + dir + "/merged.csv --plain-csv " + dir +
+           "/merged_plain.csv");
+  EXPECT_EQ(slurp(dir + "/merged_plain.csv"), plain);
+  expect_error(run_tribolab(kMap + " --out " + dir + "/x.csv --plain-csv " + dir + "/x.csv"), "--plain-csv");
+}
+
 // A version-1 file (written before whole impacts: the first contact phase only, outputs vx vy
 // omega_out e, model bounce-contact) is still read: merged, and reported with the physics
 // rebuilt from its header. It is made here from a v2 file's first-phase columns, which are

@@ -55,7 +55,7 @@ TEST(DemoContent, Figure8TableShowsOursAndThePrintedSlopes) {
   report::Report r;
   std::ostringstream log;
   add_incline_case_study(r, log);
-  const report::Table* t = find_table(r, "Figure 8 (八) slopes");
+  const report::Table* t = find_table(r, "The study's figure 8 (八) slopes");
   ASSERT_NE(t, nullptr);
   ASSERT_EQ(t->rows.size(), 4u);
   EXPECT_EQ(t->rows[0][1], "0.2242");  // printed
@@ -73,10 +73,12 @@ TEST(DemoContent, ErrataPageListsEveryErratumOfBothSeeds) {
   ASSERT_NE(t1, nullptr);
   EXPECT_EQ(t0->rows.size(), incline::seed000_case_study().errata.size());
   EXPECT_EQ(t1->rows.size(), seed001_errata().size());
-  // docs/theory.md lists 11 seed 001 errata (2 analysis, 5 bounce, 2 sweep, 2 experiment 2).
-  EXPECT_EQ(seed001_errata().size(), 11u);
+  // docs/theory.md lists 12 seed 001 errata (2 analysis, 5 bounce, 2 sweep, 2 experiment 2, and
+  // the referee's eqs 5, 9 and 17).
+  EXPECT_EQ(seed001_errata().size(), 12u);
   // Seed 000: the 13 of the first reading and 4 of the second (k = 1, x limit, appendix
-  // typos, figure 八's mu), each also in docs/theory.md.
+  // typos, figure 八's mu), each also in docs/theory.md; the referee removed 圖五-4Y's (the
+  // study's g is 9.79) and added eq (1.3)'s.
   EXPECT_EQ(incline::seed000_case_study().errata.size(), 17u);
   for (const Erratum& e : seed001_errata()) {
     EXPECT_FALSE(e.where.empty());

@@ -38,6 +38,10 @@ TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
   EXPECT_NE(slurp(dir + "/film_tracking.html").find("<script src=\"" + script + "\"></script>"), std::string::npos);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
   EXPECT_NE(html.find(script + " beside them"), std::string::npos);  // the index says so
+  // And README.md says so (it said the library was inside every report file).
+  const std::string readme = slurp(std::string(TRIBOLAB_SOURCE_DIR) + "/README.md");
+  EXPECT_NE(readme.find("share one `plotly-VERSION.min.js` beside them"), std::string::npos);
+  EXPECT_EQ(script, "plotly-" + std::string(report::plotly_version()) + ".min.js");
   EXPECT_NE(html.find("About this report"), std::string::npos);
   for (const char* heading : {"The incline study: table 1", "Incline runs: tracked launches analysed",
                               "Bounce: table 4", "Errata found in the two studies"})

@@ -31,16 +31,20 @@ void set_types(CLI::App* cmd) {
     if (n == "help" || n == "json" || n == "no-model-a") continue;
     if (n == "out" || n == "table") o->type_name("FILE");
     else if (n == "track" || n == "track-name") o->type_name("NAME");
+    else if (n == "length-unit") o->type_name("UNIT");
     else if (n == "format") o->type_name("export|csv");
     else o->type_name("NUM");
   }
 }
 
-/// `--track` and `--time-scale` of the commands that read tracked data.
+/// `--track`, `--time-scale` and `--length-unit` of the commands that read tracked data.
 void add_track_input(CLI::App* cmd, InclineTrackInput& in) {
   cmd->add_option("--track", in.track, "Track to analyse (required when the file holds several)");
   add_number(*cmd, "--time-scale", in.time_scale,
              "Real seconds per file second (slow motion 240 fps shown at 30 fps: 0.125)");
+  cmd->add_option("--length-unit", in.length_unit,
+                  "Unit of the file's lengths, overriding what the file says: m, cm, mm, km, um, in, ft (when not "
+                  "given: the file's unit, else m)");
 }
 
 // ---- synth ---------------------------------------------------------------------------

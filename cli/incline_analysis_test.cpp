@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace tribolab::cli::testing {
@@ -180,6 +181,42 @@ TEST(InclineAnalysisCli, BadInput) {
 
 namespace tribolab::cli::testing {
 namespace {
+
+/// The synthetic run `src` (Tracker Export Data text, t x y in s and m) rewritten as a plain
+/// CSV t,x,y with the lengths multiplied by `factor` and no unit in its header.
+void rewrite_lengths(const std::string& src, const std::string& dst, double factor) {
+  std::ifstream in(src);
+  std::ofstream out(dst);
+  out << "t,x,y\n";
+  out.precision(17);
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream cells(line);
+    double t, x, y;
+    if (!(cells >> t >> x >> y)) continue;  // the name and header rows
+    out << t << ',' << factor * x << ',' << factor * y << '\n';
+    ++rows;
+  }
+  ASSERT_GT(rows, 50);
+}
+
+TEST(InclineAnalysisCli, LengthUnitConvertsTheFilesLengths) {
+  // The same run written in cm: read as metres it shows gravity 100x too strong (the warning);
+  // with --length-unit cm it gives the metre file's fit to rounding (17 digits written).
+  const std::string dir = temp_dir("incline_length_unit");
+  run_json("incline synth" + kSeedRun + "--fps 120 --seed 11 --out " + dir + "/run.txt");
+  rewrite_lengths(dir + "/run.txt", dir + "/m.csv", 1);
+  rewrite_lengths(dir + "/run.txt", dir + "/cm.csv", 100);
+  const json m = run_json("incline analyze " + dir + "/m.csv --phi-deg 20.96 --no-model-a");
+  const json cm = run_json("incline analyze " + dir + "/cm.csv --phi-deg 20.96 --no-model-a --length-unit cm");
+  EXPECT_NEAR(cm["mu"].get<double>(), m["mu"].get<double>(), 1e-9);
+  EXPECT_NEAR(cm["v0"].get<double>(), m["v0"].get<double>(), 1e-9);
+  EXPECT_NEAR(cm["gravity"]["g"].get<double>(), m["gravity"]["g"].get<double>(), 1e-9);
+  const json as_m = run_json("incline analyze " + dir + "/cm.csv --phi-deg 20.96 --no-model-a");
+  EXPECT_NEAR(as_m["gravity"]["g"].get<double>(), 100 * m["gravity"]["g"].get<double>(), 1e-6 * 980);
+  expect_error(run_tribolab("incline analyze " + dir + "/cm.csv --phi-deg 20.96 --length-unit furlong"),
+               "furlong");
+}
 
 TEST(InclineAnalysisCli, AWrongTimeScaleIsCalledOutNotAnalysedWithConfidence) {
   // Real-time data analysed as slow motion's opposite: --time-scale 8 makes every time 8x too

@@ -7,6 +7,13 @@
 #include "app/bounce_simulate.hpp"
 #include "app/bounce_sweep.hpp"
 #include "app/bounce_synth.hpp"
+#include "numerics/error.hpp"
+
+#include <stdlib.h>  // mkdtemp (POSIX)
+
+#include <filesystem>
+#include <string>
+#include <system_error>
 
 // A sweep axis from Python: (lo, hi, count), as the command line's LO:HI:N; a quantity that is
 // one value or an axis (speed, mu): a number or (lo, hi, count).
@@ -308,6 +315,7 @@ void bind_bounce(py::module_& m) {
     TRIBOLAB_OPT(c, contour);
     TRIBOLAB_OPT(c, threshold);
     TRIBOLAB_OPT(c, contour_tol);
+    TRIBOLAB_OPT(c, plain_csv);
     TRIBOLAB_OPT(c, report);
     TRIBOLAB_OPT(c, plotly);
     TRIBOLAB_OPT(c, cell.ball.ball.a);
@@ -330,7 +338,23 @@ void bind_bounce(py::module_& m) {
     c.def(+[](const app::BounceSweepOptions& o) {
             app::BounceSweepOptions with_map = o;
             with_map.return_map = o.shard.count == 1;  // a notebook wants the arrays; a shard is not the map
-            return app::bounce_sweep(with_map);
+            if (!o.out.empty()) return app::bounce_sweep(with_map);
+            if (o.shard.count != 1) throw InputError(::tribolab::field("out"), "a shard is kept only in its file: give out=");
+            // No out=: the map is returned as arrays, so the CSV (which the sweep writes as it
+            // goes) lives in a private temporary folder, removed afterwards even on an error.
+            std::string dir = (std::filesystem::temp_directory_path() / "tribolab-sweep-XXXXXX").string();
+            if (!::mkdtemp(dir.data())) throw InputError(::tribolab::field("out"), "cannot create a temporary folder for the map");
+            struct Remove {
+              std::string dir;
+              ~Remove() {
+                std::error_code ignored;
+                std::filesystem::remove_all(dir, ignored);
+              }
+            } remove{dir};
+            with_map.out = dir + "/map.csv";
+            app::BounceSweepResult r = app::bounce_sweep(with_map);
+            r.json["out"] = nullptr;  // nothing was kept
+            return r;
           },
           [](const app::BounceSweepResult& r, py::dict& d) {
             if (!r.map) return;

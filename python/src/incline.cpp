@@ -129,6 +129,7 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, frame_rotation);
     TRIBOLAB_OPT(c, input.track);
     TRIBOLAB_OPT(c, input.time_scale);
+    TRIBOLAB_OPT(c, input.length_unit);
     TRIBOLAB_OPT(c, series.threads);
     TRIBOLAB_OPT(c, report);
     TRIBOLAB_OPT(c, plotly);
@@ -166,6 +167,7 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, g);
     TRIBOLAB_OPT(c, input.track);
     TRIBOLAB_OPT(c, input.time_scale);
+    TRIBOLAB_OPT(c, input.length_unit);
     TRIBOLAB_OPT(c, series.threads);
     TRIBOLAB_OPT(c, report);
     TRIBOLAB_OPT(c, plotly);

@@ -132,6 +132,30 @@ def test_sweep_map_is_shaped_by_its_axes(cli, tmp_path):
         tribolab.bounce.sweep(out=str(tmp_path / "x.csv"), theta_deg="100:160:4", omega=(30, 50, 3))
 
 
+def test_sweep_without_out_returns_the_same_map_and_keeps_no_file(tmp_path, monkeypatch):
+    """out= is optional: the map comes back as arrays, its CSV lived in a removed temporary
+    folder (before, the sweep refused to run: "out: an output file is required")."""
+    import tempfile
+    monkeypatch.setenv("TMPDIR", str(tmp_path))  # std::filesystem::temp_directory_path reads it
+    tempfile.tempdir = None
+    kw = dict(theta_deg=(100, 160, 4), omega=(30, 50, 3), threads=1)
+    r = tribolab.bounce.sweep(**kw)
+    kept = tribolab.bounce.sweep(out=str(tmp_path / "kept.csv"), **kw)
+    assert r["out"] is None
+    assert r["map"]["e"].tolist() == kept["map"]["e"].tolist()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["kept.csv"]
+
+
+def test_sweep_plain_csv_reads_with_a_naive_csv_reader(tmp_path):
+    """plain_csv= (--plain-csv): csv.DictReader reads it as it is, cell for cell the map."""
+    import csv
+    r = tribolab.bounce.sweep(theta_deg=(100, 160, 4), omega=(30, 50, 3), threads=1,
+                              plain_csv=str(tmp_path / "plain.csv"))
+    rows = list(csv.DictReader(open(tmp_path / "plain.csv")))
+    assert [float(x["e"]) for x in rows] == r["map"]["e"].ravel().tolist()
+    assert (tmp_path / "plain.csv.meta.txt").read_text().startswith("# tribolab-sweep v")
+
+
 def without_paths(j):
     """A sweep's JSON without the arrays, the key naming its output file and its timing (they
     differ by design)."""

@@ -20,3 +20,23 @@ def test_every_snippet_of_the_python_doc_runs(monkeypatch):
     namespace = {}
     for i, snippet in enumerate(code):
         exec(compile(snippet, f"docs/python.md snippet {i + 1}", "exec"), namespace)
+
+
+def test_the_sweep_colour_recipe_saturates_no_cell(monkeypatch):
+    """The sweep figure's colours: e = 1 neutral and every cell inside the colour scale (the
+    recipe vmin = 2 - e.max() clipped every cell below 2 - e.max() to one colour)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    monkeypatch.chdir(SOURCE_DIR)
+    code = [c for c in snippets() if "tribolab.bounce.sweep(" in c]
+    assert len(code) == 1
+    namespace = {"os": __import__("os"), "plt": __import__("matplotlib.pyplot").pyplot,
+                 "tribolab": __import__("tribolab")}
+    import tempfile
+    with tempfile.TemporaryDirectory() as folder:
+        namespace["folder"] = folder
+        exec(compile(code[0], "docs/python.md sweep snippet", "exec"), namespace)
+    e, norm = namespace["e"], namespace["c"].norm
+    assert e.min() < 2 - e.max()  # the old recipe's vmin: it would have clipped cells here
+    assert norm.vmin <= e.min() and e.max() <= norm.vmax
+    assert abs(norm(1.0) - 0.5) < 1e-12

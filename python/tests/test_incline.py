@@ -75,6 +75,25 @@ def test_mu_from_slide_equals_cli(cli, demo):
     assert s["t"].shape == s["s"].shape and s["v"].shape == s["v_t"].shape == (len(s["t"]) - 2,)
 
 
+def test_length_unit_keyword(cli, demo, tmp_path):
+    """length_unit= as --length-unit: a slide written in cm, declared so, gives the metre file's a."""
+    f = demo / "incline" / "slide_41.09deg.txt"
+    rows = []
+    for line in open(f, encoding="utf-8"):
+        try:
+            rows.append([float(c) for c in line.split()[:3]])
+        except ValueError:
+            pass  # the name and header rows
+    rows = [r for r in rows if len(r) == 3]
+    assert len(rows) > 20
+    cm = tmp_path / "slide_cm.csv"
+    cm.write_text("t,x,y\n" + "".join("%r,%r,%r\n" % (t, 100 * x, 100 * y) for t, x, y in rows))
+    metres = tribolab.incline.mu_from_slide([str(f)], phi_deg=[41.09])
+    r = tribolab.incline.mu_from_slide([str(cm)], phi_deg=[41.09], length_unit="cm")
+    assert r["a"] == pytest.approx(metres["a"], rel=1e-6)
+    assert_same_as_cli(r, cli("incline", "mu-from-slide", cm, "--phi-deg", 41.09, "--length-unit", "cm"))
+
+
 def test_report_plotly_keyword(tmp_path):
     # plotly="file": the page links plotly-<version>.min.js written once beside it (as --plotly file).
     page = tmp_path / "p.html"

@@ -123,7 +123,10 @@ sweep::CellModel model_of_sweep_file(const std::string& path) {
 }  // namespace
 
 BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
-  check_output_paths({}, {{"out", a.out}, {"contour", a.contour}, {"threshold", a.threshold}, {"report", a.report}});  // before any work (app/output_paths.hpp)
+  check_output_paths({}, {{"out", a.out}, {"contour", a.contour}, {"threshold", a.threshold}, {"report", a.report},
+                          {"plain_csv", a.plain_csv}});  // before any work (app/output_paths.hpp)
+  if (!a.plain_csv.empty() && a.plain_csv == a.out)
+    throw InputError(field("plain_csv"), "must not be the same file as " + field("out"));
   const SweepCommandOptions o = to_run_options(a);
   const BounceCell cell = make_bounce_cell(a.cell);
   check_theta_range(cell, *a.theta_deg);
@@ -161,6 +164,7 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
     d.command = "bounce sweep";
     report::write_html(with_study_source(sweep_report(d), Study::rugby_ball), a.report, a.plotly);
   }
+  if (!a.plain_csv.empty() && !o.out.empty()) write_plain_csv(o.out, a.plain_csv);
   if (a.return_map) result.map = map_of(o.grid, model, r.values);
   r.values = {};
   r.boundary.reset();
@@ -170,7 +174,9 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
 }
 
 BounceMergeResult bounce_merge(const BounceMergeOptions& a) {
-  check_output_paths(a.files, {{"out", a.out}, {"report", a.report}});  // before any work (app/output_paths.hpp)
+  check_output_paths(a.files, {{"out", a.out}, {"report", a.report}, {"plain_csv", a.plain_csv}});  // before any work (app/output_paths.hpp)
+  if (!a.plain_csv.empty() && a.plain_csv == a.out)
+    throw InputError(field("plain_csv"), "must not be the same file as " + field("out"));
   // The physics is rebuilt from the first shard's header before anything is written, so a
   // file this tribolab cannot report on fails without output.
   std::optional<sweep::CellModel> model;
@@ -193,6 +199,7 @@ BounceMergeResult bounce_merge(const BounceMergeOptions& a) {
     d.command = "bounce merge";
     report::write_html(with_study_source(sweep_report(d), Study::rugby_ball), a.report, a.plotly);
   }
+  if (!a.plain_csv.empty()) write_plain_csv(r.out, a.plain_csv);
   BounceMergeResult result;
   result.json = nlohmann::json{{"out", r.out}, {"shards", r.shards}, {"cells", r.cells}};
   return result;

@@ -32,7 +32,7 @@ struct BounceSweepOptions {
   std::optional<sweep::Axis> ratio;  ///< --ratio: spin/speed omega/|vy| axis, rad/m
   ValueOrAxis speed{4.0, std::nullopt};  ///< --speed: incoming vertical speed |vy|, m/s (seed 001 figure 53)
   ValueOrAxis mu{0.5, std::nullopt};     ///< --mu: friction coefficient (docs/cli.md, default of every --mu)
-  std::string out;         ///< --out: the output CSV (required); FILE.partial while running
+  std::string out;         ///< --out: the output CSV (required by the command; Python without it returns the map only); FILE.partial while running
   sweep::Shard shard;      ///< --shard i/N: only cells with index % N == i; default the whole grid
   int threads = 0;         ///< --threads: worker threads, 0 = all cores
   bool restart = false;    ///< --restart: discard an existing checkpoint or output
@@ -40,6 +40,8 @@ struct BounceSweepOptions {
   std::string threshold;   ///< --threshold: spin threshold per angle CSV ("" = none)
   /// --contour-tol: root tolerance of boundary points, fraction of the grid spacing
   double contour_tol = 1e-9;
+  /// --plain-csv: also the map for spreadsheets, no comment lines (its metadata in FILE.meta.txt)
+  std::string plain_csv;
   std::string report;      ///< --report: HTML report ("" = none)
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   BounceCellOptions cell;  ///< the physics of a cell (--angle --vx ball, law, --g)
@@ -79,6 +81,8 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& options);
 struct BounceMergeOptions {
   std::vector<std::string> files;  ///< shard files, every shard i/N exactly once, any order
   std::string out;                 ///< --out: merged output CSV
+  /// --plain-csv: also the merged map for spreadsheets, no comment lines (metadata in FILE.meta.txt)
+  std::string plain_csv;
   std::string report;              ///< --report: HTML report ("" = none)
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
@@ -90,6 +94,9 @@ inline const Fields<BounceMergeOptions>& bounce_merge_fields() {
     Fields<O> d;
     d.add("files", &O::files, "", "shard files (every shard i/N exactly once, any order)").as(FieldRole::input_files).needed();
     d.add("out", &O::out, "", "merged output CSV").as(FieldRole::output_path).needed();
+    d.add("plain_csv", &O::plain_csv, "",
+          "also write the merged map for spreadsheets: no comment lines, the metadata in FILE.meta.txt")
+        .as(FieldRole::output_path);
     d.add_report(&O::report, &O::plotly);
     return d;
   }();

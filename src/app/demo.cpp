@@ -58,7 +58,7 @@ DemoSummary run_demo(const std::string& out, std::ostream& log) {
   }
   summary.report = (std::filesystem::path(out) / "report.html").string();
   // The demo writes several reports into one folder: they share one plotly-<version>.min.js
-  // beside them (--plotly file) instead of 4.8 MB of Plotly.js each.
+  // beside them (--plotly file) instead of 1.5 MB of Plotly.js each (README.md says so).
   report::write_html(r, summary.report, report::PlotlyMode::file);
   summary.sections = r.sections.size();
   summary.figures = r.figure_count();

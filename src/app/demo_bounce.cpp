@@ -244,7 +244,7 @@ double max_of(const std::vector<double>& values, std::size_t n_out, int idx, std
 void add_maps(report::Section& s, std::ostream& log) {
   const Ball ball;
   s.add_paragraph("e = −v_y,out/v_y,in over the study's collision angle 100–170 deg × spin 30–50 rad/s, "
-                  "for v_y = −4 and −8 m/s (figures 53, 54), computed with the contact solver in every cell "
+                  "for v_y = −4 and −8 m/s (the study's figures 53, 54), computed with the contact solver in every cell "
                   "(36 × 11 cells per map; ball moving to +x with v_x = 0, clockwise spin, Coulomb μ = 0.5). "
                   "Blue: e > 1, the ball rebounds above the height it fell from. The black curve is the e = 1 "
                   "boundary traced by marching squares and refined by root finding on the solver itself "

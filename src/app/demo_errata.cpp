@@ -14,32 +14,40 @@ std::vector<Erratum> seed001_errata() {
       {"rugby-ball study, experiment 1 (實驗一), group 2 arithmetic",
        "The y–t fit before the impact, −4.05 t² + 0.45 t − 0.06, has derivative −8.10 t + 0.45, but the summary and e "
        "use −8.10 t + 0.50 (e = 1.35 with 0.50, 1.33 with 0.45); the printed Δv_y = 6.98 matches neither (6.91, "
-       "6.96). Groups 1 and 3 and all four spins follow from the printed fits and periods.",
-       "test Seed001Experiment1 in src/analysis/seed001_experiment1_test.cpp"},
+       "6.96). The pre-impact fit itself is suspect: its a = −8.10 m/s² is 17 % below g, and at the impact "
+       "(t = 0.425 s) it puts the centre at y = −0.600 m, the post-impact fit at −0.512 m, 8.8 cm apart (group 1's "
+       "fits agree to 0.45 cm): e = 1.35 is unreliable beyond the 0.45/0.50 slip. Group 1's e computes to 1.2071 "
+       "(1.21; printed ≈ 1.20). Group 3 and all four spins follow from the printed fits and periods.",
+       "recomputed from the printed fits and periods"},
       {"rugby-ball study, tables 2 and 3 (表二, 表三), row 3",
        "The centre is printed (0.710, 0.299) but the midpoint of A (0.825, 0.124) and B (0.594, 0.295) is "
        "(0.7095, 0.2095); table 3 (表三) used the wrong centre and gives θ = 0.9868 rad instead of 0.637 rad, which would "
        "reverse the spin seen in rows 1–2.",
-       "test Seed001Table3.AnglesFromTipOffsets in src/analysis/seed001_experiment1_test.cpp"},
+       "recomputed from the printed tip coordinates"},
       {"rugby-ball study, eq 15 and the formula for Y (experiment 3 (實驗三) 5–7)",
        "The printed depth of the lowest point, Y = |−b[cos²θ + (a/b)² sin²θ]|, gives a²/b (0.221 m for the default "
        "ball) at θ = 90 deg instead of a (0.145 m). The correct depth is Y = sqrt(a² sin²θ + b² cos²θ), which the "
        "the study's own eq 20 uses (as Y²).",
-       "Figure 'Depth of the lowest point' in this report (brute-force minimisation over the ellipse); test "
-       "Geometry.SeedEquation18IsWrongAtNinetyDegrees"},
+       "the figure 'Depth of the lowest point' in this report (brute-force minimisation over the ellipse)"},
+      {"rugby-ball study, experiment 3 (實驗三) 6–7, eqs 5, 9 and 17",
+       "Differentiating eq 4 implicitly gives dy/dx = −(A₁ + A₂)/(B₁ + B₂) (eq 5 drops the minus sign; harmless "
+       "where it is set to 0); B₂ = (1/b²)[2y cos²θ + 2x sinθ cosθ] (eq 9 prints −2x sinθ cosθ); the middle member of "
+       "eq 17 is r sin(φ+θ) cosθ − r sinθ cos(φ+θ) (printed +; its last member y′ cosθ − x′ sinθ is right).",
+       "symbolic differentiation and finite differences on the ellipse"},
       {"rugby-ball study, experiment 3 (實驗三) 10–11 (bounds on the contact time)",
        "With sin²θ = 1 the ball lands on a tip of the major axis (Y = a), not the minor one; the bounds are "
        "sqrt(2(H−a)/g) ≤ t ≤ sqrt(2(H−b)/g), not the reverse.",
-       "test Flight.ContactTimeLiesBetweenTheCorrectedBounds (200 random cases)"},
+       "simulated flights (200 random cases)"},
       {"rugby-ball study, table 4",
        "Row 1 (0.350 s) is reproduced (0.3491 s, clockwise spin). Rows 2 and 3 (0.335, 0.356 s) and all three "
        "measured times exceed the latest possible contact sqrt(2(H−b)/g) from an apex at H, so they are not "
        "times from the apex and the 97–98 % 'similarity' compares inconsistent quantities.",
-       "Table 4 in this report; test Flight.SeedTable4"},
+       "Table 4 in this report"},
       {"rugby-ball study, research methods 6 (研究方法 六): the contact law",
        "F = K δ^n + D δ' is called Hunt–Crossley; that is a nonlinear spring with a linear dashpot. Hunt–Crossley "
        "(1975) is K δ^n + D δ^n δ', which is also the form of the study's own fit (101054 x^1.51 + 60423 x^1.51 v). "
-       "δ is the instantaneous, not the maximum, deformation.",
+       "δ is the instantaneous, not the maximum, deformation. Its n = 1.51 differs from Hertz's 3/2 by 0.67 % "
+       "(printed 0.66 %, which divides by 1.51).",
        "docs/theory.md#bounce-normal-laws (Hunt & Crossley 1975, J. Appl. Mech. 42)"},
       {"rugby-ball study, discussion 4 (討論 四): fitted law vs heat maps",
        "In SI units the fitted law N = 101054 d^1.51 (1 + 0.598 d′) gives a central restitution of 0.364 at 4 m/s "
@@ -51,8 +59,8 @@ std::vector<Erratum> seed001_errata() {
        "edge), and e > 1 occurs somewhere on it only for D < 11749 N s/m^2.51 (1.17e4, a fifth of the study's "
        "60423). With counter-clockwise spin: 0.532, 0.328, 1.310 and D < 10920. (Our earlier 0.44, 1.25 and "
        "about 9e3 were wrong.)",
-       "tests SeedLawErrata and SeedMapErrata in src/bounce/seed_errata_test.cpp (whole map, refined between "
-       "grid points, bisection on D); independent Python in docs/errata_checks/; figures 53 and 54 in this report"},
+       "bounce sweep over the whole map, refined between grid points, bisection on D; an independent rigid-ellipse "
+       "contact in Python (docs/errata_checks/); the maps 'As the study's figure 53' and '... 54' in this report"},
       {"rugby-ball study (sweep), the energy-ratio threshold 2.56",
        "Rebound above the drop height is said to need about 35 rad/s at v_y = 4 m/s and a rotational to vertical "
        "kinetic energy ratio above 2.56. Since I ≤ m a², the ratio is at most (a ω / v_y)² = 1.61 for a = 0.145 m "
@@ -62,7 +70,7 @@ std::vector<Erratum> seed001_errata() {
        "The text of experiment 4 (section 6-4-(2) 8 (陸、四(二) 8)) calls it initial over final speed; the poster and the z = 1 "
        "discussion of figure 56 use final over initial. tribolab's maps use e = −v_y,out / v_y,in. The slides "
        "also invert its y axis (initial centre speed over spin; the text: spin over speed, ω/|v_y|).",
-       "Figure 55 in this report (e = −v_y,out / v_y,in)"},
+       "the map 'As the study's figure 55' in this report (e = −v_y,out / v_y,in)"},
       {"rugby-ball study, section 5-2 (2) (伍-二 (二)) 1–3 (figure 32)",
        "Item 1 says e < 1 for 180° > θ > 0°, which contains the 100–160° where item 2 says e > 1 in most throws; "
        "item 3 repeats 170–180°. Item 1 presumably means 100° > θ > 0°.",
@@ -73,7 +81,8 @@ std::vector<Erratum> seed001_errata() {
        "separation is sqrt((H′ − Y_out)/(H − Y_in)): for H = H′ = 0.7 m it is 1.044 or 0.958 when the ball touches "
        "on a tip and leaves on its side or the reverse, a ±4 % difference at the e = 1 boundary of figure 32. "
        "sqrt(H′/H) answers the study's question (does the centre rise higher?) but is not the e of the maps.",
-       "docs/errata_checks/seed000.py (heights); bounce analyze reports both (e_velocity, e_height)"},
+       "centre heights against velocities at touch and separation; bounce analyze reports both (e_velocity, "
+       "e_height)"},
   };
 }
 
@@ -89,8 +98,7 @@ void add_errata_section(report::Report& r, std::ostream& log) {
   for (const std::string& e : cs.errata)
     t0.rows.push_back({std::to_string(++i), e,
                        "recomputed in 'Incline: printed numbers checked' and table 1 above where a number is "
-                       "involved; tests in src/incline/case_study_test.cpp, inverse_test.cpp and seed_errata_test.cpp; "
-                       "independent scripts in docs/errata_checks/"});
+                       "involved; independent scripts in docs/errata_checks/"});
   s.add_table(std::move(t0));
   report::Table t1;
   t1.caption = "The rugby-ball study";

@@ -105,13 +105,13 @@ void add_figure8(report::Section& s, std::ostream& log) {
   for (int i = 0; i <= 12; ++i) v0s.push_back(0.5 + 0.25 * i);
   struct Panel { std::string title, x_title, y_title; double ours, printed; bool squared, yx; double phi_deg; };
   const Panel panels[] = {
-      {"Figure 8-2 (八-2): t_f ∝ v_0", "v_0 (m/s)", "t_f (s)", st, pt, false, false, phi_deg},
-      {"Figure 8-4 (八-4): x_f ∝ v_0^2", "v_0^2 (m^2/s^2)", "x_f (m)", sx, px, true, false, phi_deg},
-      {"Figure 8-4 (八-4): y_f ∝ v_0^2", "v_0^2 (m^2/s^2)", "y_f (m)", sy, py, true, false, phi_deg},
-      {"Figure 8-5 (八-5): y_f vs x_f (φ 10.46 deg)", "x_f (m)", "y_f (m)", syx, pyx, false, true, phi5_deg},
+      {"The study's figure 8-2 (八-2): t_f ∝ v_0", "v_0 (m/s)", "t_f (s)", st, pt, false, false, phi_deg},
+      {"The study's figure 8-4 (八-4): x_f ∝ v_0^2", "v_0^2 (m^2/s^2)", "x_f (m)", sx, px, true, false, phi_deg},
+      {"The study's figure 8-4 (八-4): y_f ∝ v_0^2", "v_0^2 (m^2/s^2)", "y_f (m)", sy, py, true, false, phi_deg},
+      {"The study's figure 8-5 (八-5): y_f vs x_f (φ 10.46 deg)", "x_f (m)", "y_f (m)", syx, pyx, false, true, phi5_deg},
   };
   report::Table t;
-  t.caption = "Figure 8 (八) slopes (μ = 0.585, φ = 10.37 deg; 8-5 (八-5) at 10.46 deg): tribolab (closed form, eqs 7–10 (七–十)) vs printed";
+  t.caption = "The study's figure 8 (八) slopes (μ = 0.585, φ = 10.37 deg; 8-5 (八-5) at 10.46 deg): tribolab (closed form, eqs 7–10 (七–十)) vs printed";
   t.header = {"slope", "printed", "tribolab", "difference"};
   for (const Panel& p : panels) {
     report::Figure f;
@@ -173,7 +173,7 @@ void add_incline_case_study(report::Report& r, std::ostream& log) {
                    "and on a smooth one (μ = 0, a projectile on the incline: x = v0 t, y = −g sin φ t^2/2). "
                    "The rough disc stops at t = " + format_value(*incline::ClosedForm(rough).predict().t_stop, 4) +
                    " s and rests.");
-  add_incline_kinematics(f2, "Figure 2 (二) (φ 23.20 deg, v0 2.30 m/s)",
+  add_incline_kinematics(f2, "The study's figure 2 (二) (φ 23.20 deg, v0 2.30 m/s)",
                          closed_form_curves({{"rough, μ = 0.634", rough}, {"smooth, μ = 0", smooth}}, t2));
   // Figure 四: model B's curves, closed form vs the independent numerical integration.
   const std::vector<double> times = even_times(t2, kSamples);
@@ -191,18 +191,18 @@ void add_incline_case_study(report::Report& r, std::ostream& log) {
   }
   f2.add_paragraph("Figure 4 (四): model B on the rough incline, the closed form and a numerical integration of the "
                    "equations of motion overlaid; largest position difference " + format_value(max_diff, 2) + " m.");
-  add_incline_kinematics(f2, "Figure 4 (四) (model B, μ 0.634)", model_b);
+  add_incline_kinematics(f2, "The study's figure 4 (四) (model B, μ 0.634)", model_b);
 
   auto& f5 = r.add_section("Incline: figures 5, 6, 7 (五, 六, 七), families of curves");
   f5.add_paragraph("Closed-form curves over one parameter with the others fixed (incline families). k = tan φ/μ: "
                    "k < 1 stops, k = 1 tends to the terminal speed v0/2, k > 1 accelerates.");
-  add_family(f5, "Figure 5 (五) (over v0; φ 20.96 deg, μ 0.634)", setup(0.634, 20.96, 2.62),
+  add_family(f5, "The study's figure 5 (五) (over v0; φ 20.96 deg, μ 0.634)", setup(0.634, 20.96, 2.62),
              incline::FamilyParameter::v0, {1.0, 1.5, 2.0, 2.62, 3.0}, "t_f ∝ v0, x_f and y_f ∝ v0^2 (figure 8 (八)).");
-  add_family(f5, "Figure 6 (六) (over φ; v0 2.620 m/s, μ 0.634)", setup(0.634, 20.96, 2.62),
+  add_family(f5, "The study's figure 6 (六) (over φ; v0 2.620 m/s, μ 0.634)", setup(0.634, 20.96, 2.62),
              incline::FamilyParameter::phi,
              {to_rad(10.0), to_rad(20.96), std::atan(0.634), to_rad(40.0)},
              "φ = atan 0.634 = 32.37 deg is the k = 1 boundary.");
-  add_family(f5, "Figure 7 (七) (over μ; φ 20.96 deg, v0 2.620 m/s)", setup(0.634, 20.96, 2.62),
+  add_family(f5, "The study's figure 7 (七) (over μ; φ 20.96 deg, v0 2.620 m/s)", setup(0.634, 20.96, 2.62),
              incline::FamilyParameter::mu, {0.0, 0.2, std::tan(to_rad(20.96)), 0.5, 0.634},
              "μ = tan 20.96 deg = 0.383 is the k = 1 boundary; μ = 0 is the smooth incline.");
 

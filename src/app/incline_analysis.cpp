@@ -23,6 +23,7 @@ using nlohmann::json;
 track::Track read_incline_track(const std::string& file, const InclineTrackInput& in) {
   io::ImportOptions o;
   o.time_scale = check_range(in.time_scale, ranges::time_scale, field("time_scale"));
+  o.length_unit = in.length_unit;
   if (!in.track.empty()) o.tracks = {in.track};
   const track::TrackSet set = io::read_tracks(file, o);
   if (!in.track.empty()) return set.find(in.track);

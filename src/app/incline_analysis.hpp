@@ -24,6 +24,9 @@ namespace tribolab::app {
 struct InclineTrackInput {
   std::string track;        ///< track to analyse; empty = the only one with points
   double time_scale = 1;    ///< real seconds per file second (240 fps shown at 30 fps: 0.125)
+  /// Unit of the file's lengths (m, cm, mm, km, um, in, ft), overriding the file's; empty: the
+  /// file's, else m (as `track kinematics --length-unit`).
+  std::string length_unit;
 };
 
 /// Reads the one track `in` selects from `file` (Tracker .trk/.trz, Export Data text, CSV);

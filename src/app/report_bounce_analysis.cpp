@@ -354,16 +354,17 @@ int add_bounce_fit_figures(report::Section& s, const std::string& title,
                            const std::vector<analysis::BounceRow>& rows, const analysis::BounceFitResult& r) {
   struct Quantity {
     const char* name;
+    const char* axis_name;  ///< in the axes' notation: a subscript longer than one letter in braces
     const char* unit;
     double analysis::BounceRow::*measured;
     double analysis::BounceFitRow::*predicted;
   };
-  const Quantity qs[] = {{"v_x,out", "m/s", &analysis::BounceRow::vx_out, &analysis::BounceFitRow::vx_pred},
-                         {"v_y,out", "m/s", &analysis::BounceRow::vy_out, &analysis::BounceFitRow::vy_pred},
-                         {"ω_out", "rad/s", &analysis::BounceRow::omega_out, &analysis::BounceFitRow::omega_pred}};
+  const Quantity qs[] = {{"v_x,out", "v_{x,out}", "m/s", &analysis::BounceRow::vx_out, &analysis::BounceFitRow::vx_pred},
+                         {"v_y,out", "v_{y,out}", "m/s", &analysis::BounceRow::vy_out, &analysis::BounceFitRow::vy_pred},
+                         {"ω_out", "ω_{out}", "rad/s", &analysis::BounceRow::omega_out, &analysis::BounceFitRow::omega_pred}};
   for (const Quantity& q : qs) {
-    Figure f = figure(title + ": " + q.name + " measured vs fitted", std::string("measured ") + q.name + " (" + q.unit + ")",
-                      std::string("fitted model ") + q.name + " (" + q.unit + ")");
+    Figure f = figure(title + ": " + q.name + " measured vs fitted", std::string("measured ") + q.axis_name + " (" + q.unit + ")",
+                      std::string("fitted model ") + q.axis_name + " (" + q.unit + ")");
     Series pts = named("bounces");
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t i = 0; i < rows.size(); ++i) {

@@ -142,8 +142,9 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     one.x = {0, 180};
     one.y = {1, 1};
     f.series.push_back(std::move(one));
-    f.caption = "Each run at its collision angle at first touch (rugby-ball study, figure 30: the angle at the centre between "
-                "the contact point and the rear tip). Above the dashed line the ball rose higher than it fell.";
+    f.caption = "The rugby-ball study's figure 32 redrawn: each run at its collision angle at first touch (the angle at "
+                "the centre between the contact point and the rear tip, as the study's figure 30 defines it). Above the "
+                "dashed line the ball rose higher than it fell.";
     e.add_figure(std::move(f));
     ++figures;
   }

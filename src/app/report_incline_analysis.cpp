@@ -53,7 +53,7 @@ Table estimate_table(std::string caption, bool with_truth) {
   t.caption = std::move(caption);
   t.header = {"parameter", "fit ± standard error", "95 % interval"};
   if (with_truth) {
-    t.header.push_back("truth (make.sh)");
+    t.header.push_back("truth (the simulation's)");
     t.header.push_back("truth in the interval");
   }
   return t;
@@ -228,7 +228,8 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
   if (a.theta_c) {
     const auto& c = *a.theta_c;
     diag.rows.push_back({"cos θ_c (data)", format_uncertain(c.cos_theta_c, c.sigma_cos_theta_c)});
-    diag.rows.push_back({"θ_c (deg), at t_c (s)", format_value(c.theta_c_deg, 4) + ", " + format_value(c.t_c, 4)});
+    diag.rows.push_back({"θ_c (deg)", format_value(c.theta_c_deg, 4)});
+    diag.rows.push_back({"t_c, the time of θ_c (s)", format_value(c.t_c, 4)});
     diag.rows.push_back({"cos θ_c = k, model B fit (eq c')", format_value(a.cos_theta_c_model, 4)});
   }
   if (!diag.rows.empty()) s.add_table(std::move(diag));
@@ -308,8 +309,8 @@ int add_slide_analysis(report::Section& s, const std::string& title, const analy
   Table t;
   t.caption = title + ": acceleration and friction";
   t.header = {"quantity", "value"};
-  t.rows = {{"a along the path (m/s^2), parabola", format_uncertain(r.a, r.sigma_a)},
-            {"a from the v–t line (m/s^2), the study's method", format_uncertain(r.a_velocity_line, r.sigma_a_velocity_line)},
+  t.rows = {{"a along the path, parabola (m/s^2)", format_uncertain(r.a, r.sigma_a)},
+            {"a from the v–t line, the study's method (m/s^2)", format_uncertain(r.a_velocity_line, r.sigma_a_velocity_line)},
             {"μ (eq a)", r.mu ? format_uncertain(*r.mu, *r.sigma_mu) : "— (needs --phi-deg)"},
             {"φ (deg)", !o.phi                ? "—"
                         : o.sigma_phi > 0 ? format_uncertain(to_deg(*o.phi), to_deg(o.sigma_phi))

@@ -299,7 +299,7 @@ report::Report sweep_report(const SweepReportData& d) {
                              " points (" + std::to_string(d.boundary.unrefined) + " not refined by root finding)"},
       {"angles with a spin threshold (e reaches 1 inside the grid)",
        std::to_string(found) + " of " + std::to_string(d.thresholds.size())},
-      {"smallest energy ratio E_rot/E_y at a threshold (seed: 2.56)",
+      {"smallest energy ratio E_rot/E_y at a threshold (the study: 2.56)",
        er_at ? v4(er_min) + " at theta_deg = " + io::format_number_exact(er_at->theta_deg) : "—"},
   };
   const int contacts = index_of("contacts"), e_first = index_of("e_first");
@@ -369,7 +369,7 @@ report::Report sweep_report(const SweepReportData& d) {
       st.title = "Outgoing spin ω_out" + (label.empty() ? std::string() : ", " + label);
       st.x_title = x_title;
       st.y_title = y_title;
-      st.colorbar_title = "ω_out (rad/s)";
+      st.colorbar_title = "ω_{out} (rad/s)";
       st.quantity = "ω_out";
       st.unit = "rad/s";
       st.colorscale = report::ColorScale::PuOr;  // the sign is the spin's sense: white at no spin

@@ -101,7 +101,9 @@ Table video_table(const TrackVideoResult& r) {
                                          std::to_string(c.coords.size()) + " key frame(s))"});
     if (c.metres_per_unit != 1)
       t.rows.push_back({"length unit", format_value(c.metres_per_unit, 6) + " m per unit; positions below in m"});
-    t.rows.push_back({"origin (px), axes (deg)", "(" + v4(k.origin_x) + ", " + v4(k.origin_y) + "), " + v4(k.angle_deg)});
+    // One quantity per row, its unit last: "origin (px), axes (deg)" put "deg" under both.
+    t.rows.push_back({"origin x, y (px)", v4(k.origin_x) + ", " + v4(k.origin_y)});
+    t.rows.push_back({"axes' angle (deg)", v4(k.angle_deg)});
   } else {
     t.rows.push_back({"calibration", "none: positions in pixels, y up (no scale given)"});
   }

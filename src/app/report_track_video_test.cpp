@@ -128,7 +128,8 @@ TEST(TrackVideoReport, SummaryShowsTheVideoTimeBaseAndCalibrationWithUnits) {
   EXPECT_EQ(cell(*t, "frame duration Δt (s)"), "0.00416667");
   EXPECT_EQ(cell(*t, "time scale (real s per video s)"), "1");
   EXPECT_EQ(cell(*t, "calibration"), "500 px per m along x, 500 along y (from frame 0; 1 key frame(s))");
-  EXPECT_EQ(cell(*t, "origin (px), axes (deg)"), "(0, 240), 0");
+  EXPECT_EQ(cell(*t, "origin x, y (px)"), "0, 240");
+  EXPECT_EQ(cell(*t, "axes' angle (deg)"), "0");
   const auto figs = figures(rep);
   ASSERT_EQ(figs.size(), 4u);  // x, y, orientation, score
   EXPECT_EQ(figs[0]->y_axis.title, "x (m)");

@@ -255,6 +255,27 @@ MergeResult run_merge_command(const std::vector<std::string>& inputs, const std:
   return MergeResult{out, n, total};
 }
 
+std::string plain_csv_metadata_path(const std::string& plain_csv) { return plain_csv + ".meta.txt"; }
+
+void write_plain_csv(const std::string& sweep_file, const std::string& plain_csv) {
+  std::ifstream in(sweep_file, std::ios::binary);
+  if (!in) throw InputError(sweep_file, "cannot be read");
+  AtomicFile table(plain_csv);
+  AtomicFile meta(plain_csv_metadata_path(plain_csv));
+  bool columns = false;
+  for (std::string line; std::getline(in, line);) {
+    if (!columns && !line.empty() && line.front() == '#') {
+      meta.stream() << line << '\n';
+      continue;
+    }
+    columns = true;
+    table.stream() << line << '\n';
+  }
+  if (!columns) throw InputError(sweep_file, "holds no column line");
+  meta.commit();
+  table.commit();
+}
+
 nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommandOptions& o) {
   nlohmann::json j;
   j["status"] = to_string(r.status);

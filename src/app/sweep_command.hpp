@@ -110,6 +110,16 @@ nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommand
 
 /// Writes the polylines as CSV: line,closed,<slice quantities>,theta_deg,<omega|ratio>,refined.
 void write_contour_csv(std::ostream& out, const sweep::ContourResult& contour);
+
+/// The sidecar path of a plain CSV: "FILE.csv" -> "FILE.csv.meta.txt".
+std::string plain_csv_metadata_path(const std::string& plain_csv);
+
+/// Copies the finished sweep file `sweep_file` for spreadsheets and naive CSV readers: the
+/// column line and the rows to `plain_csv` (no comment lines: its first row names the columns),
+/// the `#` metadata lines (grid, shard, model: what resume and merge read) verbatim to the
+/// sidecar plain_csv_metadata_path(plain_csv). Both written atomically; the sweep file itself
+/// is left as it is (docs/design.md#spreadsheets).
+void write_plain_csv(const std::string& sweep_file, const std::string& plain_csv);
 /// Writes thresholds as CSV: <slice quantities>,theta_deg,status,omega,ratio,energy_ratio,refined.
 void write_threshold_csv(std::ostream& out, const sweep::GridSpec& grid,
                          const std::vector<sweep::Threshold>& rows);

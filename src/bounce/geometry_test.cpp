@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace tribolab::bounce {
 namespace {
@@ -60,6 +61,46 @@ TEST(Geometry, SeedEquation18IsWrongAtNinetyDegrees) {
   const Lowest lo = brute_force_lowest(ball, kPi / 2);
   EXPECT_NEAR(-lo.y, ball.a, 1e-12);
   EXPECT_GT(std::abs(seed_Y + lo.y), 0.07);  // a^2/b - a = 0.076 m
+}
+
+TEST(Geometry, SeedEquations5And9And17) {
+  // seed 001, experiment 3 (實驗三) 6-7: the ellipse of eq 4, F(x, y) = 1 with
+  // F = ((x c - y s)/a)^2 + ((y c + x s)/b)^2, differentiated implicitly. On points of the
+  // ellipse (x' = a cos u, y' = b sin u rotated back) central differences (h = 1e-6, error
+  // ~1e-10) give dF/dx = A1 + A2 as printed, dF/dy = B1 + B2 only with B2's +2x sin cos
+  // (eq 9 prints -), and the curve's slope dy/dx = -(A1 + A2)/(B1 + B2) (eq 5 drops the minus).
+  const double a = 0.145, b = 0.095, h = 1e-6;
+  for (double th : {0.3, 1.1, 2.0}) {
+    const double c = std::cos(th), s = std::sin(th);
+    auto F = [&](double x, double y) {
+      const double p = (x * c - y * s) / a, q = (y * c + x * s) / b;
+      return p * p + q * q;
+    };
+    auto point = [&](double u) {  // inverse of eqs 2-3
+      const double xp = a * std::cos(u), yp = b * std::sin(u);
+      return std::pair{xp * c + yp * s, yp * c - xp * s};
+    };
+    for (double u : {0.4, 2.5, 4.0}) {
+      const auto [x, y] = point(u);
+      ASSERT_NEAR(F(x, y), 1, 1e-12);
+      const double A = (2 * x * c * c - 2 * y * s * c) / (a * a) + (2 * x * s * s + 2 * y * s * c) / (b * b);
+      const double B1 = (2 * y * s * s - 2 * x * s * c) / (a * a);
+      const double B2_right = (2 * y * c * c + 2 * x * s * c) / (b * b);
+      const double B2_printed = (2 * y * c * c - 2 * x * s * c) / (b * b);
+      const double Fx = (F(x + h, y) - F(x - h, y)) / (2 * h), Fy = (F(x, y + h) - F(x, y - h)) / (2 * h);
+      EXPECT_NEAR(Fx, A, 1e-6 * std::abs(A) + 1e-6);
+      EXPECT_NEAR(Fy, B1 + B2_right, 1e-6 * std::abs(Fy) + 1e-6);
+      EXPECT_GT(std::abs(Fy - (B1 + B2_printed)), 0.1);  // 4 |x s c| / b^2 >= 0.36 at these points
+      const auto [x1, y1] = point(u + h);
+      const auto [x0, y0] = point(u - h);
+      const double slope = (y1 - y0) / (x1 - x0);
+      EXPECT_NEAR(slope, -A / (B1 + B2_right), 1e-6 * std::abs(slope) + 1e-6);
+    }
+    // Eq 17: r sin(phi + theta - theta) = r sin(phi + theta) cos theta - r sin theta cos(phi + theta).
+    const double r = 0.12, phi = 0.7;
+    EXPECT_NEAR(r * std::sin(phi + th) * c - r * s * std::cos(phi + th), r * std::sin(phi), 1e-15);
+    EXPECT_GT(std::abs(r * std::sin(phi + th) * c + r * s * std::cos(phi + th) - r * std::sin(phi)), 0.01);
+  }
 }
 
 TEST(Geometry, DerivativesMatchFiniteDifferences) {

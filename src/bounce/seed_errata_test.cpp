@@ -105,8 +105,8 @@ TEST(SeedLawErrata, CentralRestitutionAtFourMetresPerSecond) {
   const ContactResult r0 = simulate_contact(ball, seed_law_with_damping(kDSeed), FrictionModel{}, s, o);
   EXPECT_NEAR(r0.restitution, e, 1e-9);
   // With g = 9.8 during the contact (what `bounce simulate` and the maps use by default), e
-  // of the centre velocities drops to 0.3444: gravity takes m g T = 0.094 N s of the 2.37 N s
-  // impulse in T = 22 ms. Independent RK4 in Python (h = 1e-7 and 5e-8 s agree to 1e-15):
+  // of the centre velocities drops to 0.3444: the floor's impulse is then m v (1 + e) + m g T =
+  // 2.339 + 0.094 = 2.43 N s in T = 22 ms (2.37 N s at g = 0). Independent RK4 in Python (h = 1e-7 and 5e-8 s agree to 1e-15):
   // 0.34437609337213. Tolerance 1e-9: integrator tolerance 1e-12 plus the event location.
   o.g = 9.8;
   const ContactResult r = simulate_contact(ball, seed_law_with_damping(kDSeed), FrictionModel{}, s, o);

@@ -2,12 +2,12 @@
 
 // The build defines these from report/vendor (see src/report/embed_plotly.cmake).
 #if !defined(TRIBOLAB_PLOTLY_JS_PATH) || !defined(TRIBOLAB_PLOTLY_VERSION) || \
-    !defined(TRIBOLAB_PLOTLY_SHA384) || \
+    !defined(TRIBOLAB_PLOTLY_SHA384) || !defined(TRIBOLAB_PLOTLY_PACKAGE) || !defined(TRIBOLAB_PLOTLY_FILE) || \
     !defined(TRIBOLAB_VERSION)
 #error "build through CMake: src/report/embed_plotly.cmake defines the vendored Plotly.js path"
 #endif
 
-// The assembler copies the file into read-only data: no 4.8 MB C array for the compiler to
+// The assembler copies the file into read-only data: no 1.5 MB C array for the compiler to
 // parse, and the build re-runs when the file changes (OBJECT_DEPENDS in CMake).
 asm(".section .rodata\n"
     ".balign 16\n"
@@ -34,6 +34,10 @@ std::string_view plotly_js() {
 std::string_view plotly_version() { return TRIBOLAB_PLOTLY_VERSION; }
 
 std::string_view plotly_sha384_hex() { return TRIBOLAB_PLOTLY_SHA384; }
+
+std::string_view plotly_package() { return TRIBOLAB_PLOTLY_PACKAGE; }
+
+std::string_view plotly_package_file() { return TRIBOLAB_PLOTLY_FILE; }
 
 std::string_view tribolab_version() { return TRIBOLAB_VERSION; }
 

@@ -7,11 +7,16 @@
 
 namespace tribolab::report {
 
-/// The minified Plotly.js source (about 4.8 MB), exactly as vendored by `npm ci`.
+/// The minified Plotly.js source (Plotly's cartesian partial bundle, about 1.5 MB), exactly as
+/// vendored by `npm ci`.
 std::string_view plotly_js();
 
-/// Plotly.js version, from the vendored package.json (e.g. "4.1.2").
+/// Plotly.js version, from the vendored package.json (e.g. "4.1.1").
 std::string_view plotly_version();
+
+/// The npm package vendored ("plotly.js-cartesian-dist-min") and its file ("plotly-cartesian.min.js").
+std::string_view plotly_package();
+std::string_view plotly_package_file();
 
 /// SHA-384 of plotly_js() as 96 lower-case hex digits, computed by CMake from the vendored
 /// file (embed_plotly.cmake); the integrity attribute of `--plotly cdn` is made from it.

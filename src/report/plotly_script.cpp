@@ -31,7 +31,8 @@ PlotlyMode parse_plotly_mode(std::string_view text) {
 std::string plotly_file_name() { return "plotly-" + std::string(plotly_version()) + ".min.js"; }
 
 std::string plotly_cdn_url() {
-  return "https://cdn.jsdelivr.net/npm/plotly.js-dist-min@" + std::string(plotly_version()) + "/plotly.min.js";
+  return "https://cdn.jsdelivr.net/npm/" + std::string(plotly_package()) + "@" + std::string(plotly_version()) + "/" +
+         std::string(plotly_package_file());
 }
 
 std::string plotly_integrity() {

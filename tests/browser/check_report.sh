@@ -4,7 +4,10 @@
 # (<div id="tribolab-status">) must read "ok N", N = the number of plot elements in the file
 # (and = EXPECTED when given). Name resolution is disabled, so a report that needed the
 # network would fail; a script may only come from a relative path that exists (`--plotly
-# file`). Saves a screenshot to SCREENSHOT.PNG.
+# file`). Then what a reader sees, in the rendered page: no caption numbered twice ("Figure 3.
+# Figure 2 (二)"), no table label holding a unit in its middle ("θ_c (deg), at t_c" over the
+# unit "s"), no subscript of one letter run into more letters ("ω_out" drawn as "ω" + "o" +
+# "ut"), no internal names (test files, "truth (make.sh)"). Saves a screenshot to SCREENSHOT.PNG.
 #
 #   sh tests/browser/check_report.sh REPORT.html SCREENSHOT.png [EXPECTED_PLOTS]
 set -eu
@@ -63,6 +66,22 @@ fi
 if printf '%s\n' "$dom" | grep -q 'data-title="Share chart'; then
   fail "Plotly's 'share chart' (upload) button is shown; the report must work offline"
 fi
+# What a reader sees. Captions: ours number the figures; a study's figure is "the study's figure".
+bad=$(printf '%s\n' "$dom" | grep -Eo '<figcaption>Figure [0-9]+\. [Ff]igure [0-9][^<]{0,40}' | head -n 1)
+[ -z "$bad" ] || fail "a caption is numbered twice: '$bad'"
+# Units: a parameter table's label "q (unit), more" puts the unit in the middle of the label,
+# and the unit column then shows the unit of the last quantity only.
+bad=$(printf '%s\n' "$dom" | grep -Eo '<tr><td>[^<]*\([^()<]*\), [^<]*</td><td>[^<]+</td>' | head -n 1)
+[ -z "$bad" ] || fail "a table label holds a unit in its middle: '$bad'"
+# Labels: tribolab's notation subscripts one character (x_N); a longer subscript needs braces
+# (ω_{out}). Plotly titles, axis and colour-bar labels carry the notation as <sub> in the file
+# (inside the figures' JSON as \u003csub\u003e).
+bad=$(sed 's/\\u003c/</g; s/\\u003e/>/g' "$html" | grep -Eo '.{0,12}<sub>[^<]</sub>[a-z]{2}.{0,12}' | head -n 1)
+[ -z "$bad" ] || fail "a one-letter subscript runs into letters (use braces): '$bad'"
+for internal in '_test\.cpp' 'truth \(make\.sh\)' 'src/[a-z]*/[a-z_]*\.cpp'; do
+  bad=$(printf '%s\n' "$dom" | sed 's/<script[^>]*>.*<\/script>//' | grep -Eo ".{0,30}$internal" | head -n 1)
+  [ -z "$bad" ] || fail "the report shows an internal name: '$bad'"
+done
 
 rm -f "$png"
 browse --screenshot="$png" --window-size=1280,2000 >/dev/null ||

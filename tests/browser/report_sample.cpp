@@ -4,6 +4,9 @@
 // (a free-fall parabola, a power law, a smooth function on a grid), not measurements.
 //
 //   report_sample OUT.html             the test report
+//   report_sample OUT.html --defect=K  the test report with one defect a reader would see, which
+//     check_report.sh must catch: K = caption ("Figure 1. Figure 2 (二)"), unit (a label with a
+//     unit in its middle), subscript (ω_out for ω_{out}), internal (a test file's name)
 //   report_sample OUT.html --readme    the report pictured in README.md (docs/img/report.png:
 //     chromium --headless --no-sandbox --hide-scrollbars --virtual-time-budget=10000
 //              --window-size=1100,1250 --screenshot=docs/img/report.png file://OUT.html)
@@ -163,6 +166,32 @@ rpt::Report sample() {
   return r;
 }
 
+/// sample() with one defect of kind `kind` (see the file's header).
+rpt::Report with_defect(const std::string& kind) {
+  rpt::Report r = sample();
+  auto& s = r.add_section("A defect");
+  if (kind == "caption") {
+    rpt::Figure f = parabola_with_gap();
+    f.caption = "Figure 2 (二) of the study, redrawn";
+    s.add_figure(std::move(f));
+  } else if (kind == "unit") {
+    rpt::Table t;
+    t.caption = "Diagnostics";
+    t.header = {"quantity", "value"};
+    t.rows = {{"θ_c (deg), at t_c (s)", "52.09, 0.4317"}};
+    s.add_table(std::move(t));
+  } else if (kind == "subscript") {
+    rpt::Figure f = heatmap_with_boundary();
+    f.heatmap->colorbar_title = "ω_out (rad/s)";
+    s.add_figure(std::move(f));
+  } else if (kind == "internal") {
+    s.add_paragraph("checked by test Foo in src/bounce/foo_test.cpp");
+  } else {
+    throw std::invalid_argument("unknown defect '" + kind + "'");
+  }
+  return r;
+}
+
 /// The picture in README.md (docs/img/report.png): the figures alone, under a plain title.
 rpt::Report readme_picture() {
   rpt::Report r;
@@ -177,15 +206,16 @@ rpt::Report readme_picture() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool readme = argc == 3 && std::string(argv[2]) == "--readme";
-  if (argc != 2 && !readme) {
-    std::cerr << "usage: report_sample OUT.html [--readme]\n";
+  const std::string mode = argc == 3 ? argv[2] : "";
+  const bool readme = mode == "--readme", defect = mode.rfind("--defect=", 0) == 0;
+  if (argc != 2 && !readme && !defect) {
+    std::cerr << "usage: report_sample OUT.html [--readme | --defect=caption|unit|subscript|internal]\n";
     return 2;
   }
   try {
     const std::filesystem::path out(argv[1]);
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-    const rpt::Report r = readme ? readme_picture() : sample();
+    const rpt::Report r = readme ? readme_picture() : defect ? with_defect(mode.substr(9)) : sample();
     rpt::write_html(r, out.string());
     std::cout << out.string() << ": " << r.figure_count() << " figures\n";
   } catch (const std::exception& e) {
