@@ -132,6 +132,14 @@ def test_sweep_map_is_shaped_by_its_axes(cli, tmp_path):
         tribolab.bounce.sweep(out=str(tmp_path / "x.csv"), theta_deg="100:160:4", omega=(30, 50, 3))
 
 
+
+def test_sweep_refuses_more_threads_than_it_may_start(cli, tmp_path):
+    # Issue 26: threads=100000 killed the interpreter (std::terminate); now the CLI's error.
+    with pytest.raises(ValueError, match=r"threads: must be 0 \(all cores\) to 1024, got 100000"):
+        tribolab.bounce.sweep(out=str(tmp_path / "t.csv"), theta_deg=(100, 160, 4), omega=(30, 50, 3),
+                              threads=100000)
+    assert not list(tmp_path.iterdir())
+
 def without_paths(j):
     """A sweep's JSON without the arrays, the key naming its output file and its timing (they
     differ by design)."""
