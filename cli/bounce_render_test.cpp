@@ -131,6 +131,11 @@ TEST(BounceRenderCli, BadInputIsOneLineAndNoFile) {
   const std::string video = dir + "/v.avi", truth = dir + "/t.csv";
   const std::string out = " --out " + video + " --truth " + truth;
   expect_error(kSmall + " --size 320by240" + out, "--size");
+  // Issue 26: 0x0 was refused naming a `--width` the command does not have; 16384x16384
+  // printed FFmpeg's own log lines and 16000x16000 an OpenCV out-of-memory text.
+  expect_error(kSmall + " --size 0x0" + out, "--size: width and height must lie in [8, 4096] px, got 0x0");
+  expect_error(kSmall + " --size 16384x16384" + out, "--size: width and height must lie in [8, 4096] px");
+  expect_error(kSmall + " --size 640x4097" + out, "--size: width and height must lie in [8, 4096] px");
   expect_error(kSmall + " --background stripes" + out, "--background");
   expect_error(kSmall + " --shutter 1.5" + out, "--shutter");
   expect_error(kSmall + " --blur-samples 0" + out, "--blur-samples");

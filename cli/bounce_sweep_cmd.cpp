@@ -22,6 +22,7 @@
 #include "app/sweep_mpi.hpp"
 #include "bounce_options.hpp"
 #include "io/sweep_file.hpp"
+#include "io/temp_files.hpp"
 #include "numerics/error.hpp"
 #include "report_option.hpp"
 #include "sweep_cmd.hpp"
@@ -37,6 +38,7 @@ static_assert(std::atomic<bool>::is_always_lock_free);
 
 extern "C" void on_interrupt(int sig) {
   if (g_interrupted.exchange(true)) {
+    io::remove_registered_temps();
     std::signal(sig, SIG_DFL);
     std::raise(sig);
   }

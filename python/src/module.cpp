@@ -77,6 +77,13 @@ PYBIND11_MODULE(_tribolab, m) {
   // Ceres logs through glog to stderr; the results carry every failure, as in cli/main.cpp.
   FLAGS_minloglevel = google::GLOG_FATAL;
   m.doc() = "tribolab's C++ extension; use the package `tribolab` (tribolab.incline, .bounce, .track).";
+  // numpy's C API now, while the import of this module serialises us. pybind11 2.10 looks it
+  // up lazily in a function-local static (npy_api::get); a first lookup in one thread while
+  // another waits on that static holding the GIL deadlocked (issue 26: two threads calling
+  // tribolab before anyone imported numpy).
+  py::module_::import("numpy");
+  py::array_t<double> warm_up(0);
+  (void)warm_up;
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

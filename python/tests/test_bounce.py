@@ -156,6 +156,14 @@ def test_sweep_plain_csv_reads_with_a_naive_csv_reader(tmp_path):
     assert (tmp_path / "plain.csv.meta.txt").read_text().startswith("# tribolab-sweep v")
 
 
+def test_sweep_refuses_more_threads_than_it_may_start(cli, tmp_path):
+    # Issue 26: threads=100000 killed the interpreter (std::terminate); now the CLI's error.
+    with pytest.raises(ValueError, match=r"threads: must be 0 \(all cores\) to 1024, got 100000"):
+        tribolab.bounce.sweep(out=str(tmp_path / "t.csv"), theta_deg=(100, 160, 4), omega=(30, 50, 3),
+                              threads=100000)
+    assert not list(tmp_path.iterdir())
+
+
 def without_paths(j):
     """A sweep's JSON without the arrays, the key naming its output file and its timing (they
     differ by design)."""

@@ -80,3 +80,26 @@ def test_help_reads_well():
 
 def test_package_imports_every_area():
     assert {"incline", "bounce", "track"} <= set(dir(tribolab))
+
+
+def test_threads_calling_before_numpy_is_imported_do_not_deadlock():
+    # Issue 26: two threads calling tribolab before anyone imported numpy hung forever (pybind11
+    # looked numpy's C API up lazily, in a static that one thread initialised under a released GIL
+    # while the other waited on it holding the GIL). A fresh interpreter: pytest has numpy loaded.
+    import subprocess
+    import sys
+    script = (
+        "import sys, threading\n"
+        "from tribolab import _selftest\n"
+        "out = []\n"
+        "def call():\n"
+        "    for _ in range(20):\n"
+        "        out.append(_selftest.echo([], rows=3, cols=2)['grid'].shape)\n"
+        "ts = [threading.Thread(target=call) for _ in range(4)]\n"
+        "[t.start() for t in ts]\n"
+        "[t.join() for t in ts]\n"
+        "print(len(out))\n")
+    # 60 s: the script takes ~0.3 s; a deadlock never ends, so any generous bound tells them apart.
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "80"

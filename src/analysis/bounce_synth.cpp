@@ -165,16 +165,37 @@ std::vector<BounceRow> synth_table(const SynthTableOptions& o) {
   std::uniform_real_distribution<double> u(0, 1);
   std::normal_distribution<double> n(0, 1);
   std::vector<BounceRow> rows;
+  // A draw whose contact point does not approach the floor, or whose contact does not end in
+  // a separation, is drawn again. A law that never bounces the ball back hung here (K =
+  // 1e-310: every contact failed; K = 1e-6, D = 0: the ball sinks for the whole
+  // max_duration); so 200 draws in a row without a bounce end it with an error.
+  constexpr int kMaxMisses = 200;
+  int misses = 0, no_approach = 0, stuck = 0, failed = 0;
   while (static_cast<int>(rows.size()) < o.rows) {
+    if (misses == kMaxMisses) {
+      throw InputError(std::to_string(kMaxMisses) + " random drops in a row gave no bounce (" +
+                       std::to_string(stuck) + " still in contact after the maximum duration, " +
+                       std::to_string(failed) + " failed, " + std::to_string(no_approach) +
+                       " not approaching the floor; " + std::to_string(rows.size()) + " of " +
+                       std::to_string(o.rows) +
+                       " rows made): these law parameters and speeds give no bounce table");
+    }
+    ++misses;
     bounce::BodyState s;
     s.theta = (u(rng) - 0.5) * std::numbers::pi;
     s.vx = (2 * u(rng) - 1) * o.vx_max;
     s.vy = -(o.speed_min + (o.speed_max - o.speed_min) * u(rng));
     s.omega = (2 * u(rng) - 1) * o.omega_max;
     const auto sp = bounce::support(o.ball, s.theta);
-    if (!(s.vy + s.omega * sp.X < -0.2)) continue;  // the contact point must approach the floor
+    if (!(s.vy + s.omega * sp.X < -0.2)) {  // the contact point must approach the floor
+      ++no_approach;
+      continue;
+    }
     const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, s);
-    if (c.status != bounce::ContactStatus::separated) continue;
+    if (c.status != bounce::ContactStatus::separated) {
+      ++(c.status == bounce::ContactStatus::max_duration ? stuck : failed);
+      continue;
+    }
     BounceRow r;
     r.theta_deg = to_deg(s.theta);
     r.vx_in = s.vx;
@@ -195,6 +216,7 @@ std::vector<BounceRow> synth_table(const SynthTableOptions& o) {
       }
     }
     rows.push_back(r);
+    misses = no_approach = stuck = failed = 0;
   }
   return rows;
 }

@@ -89,5 +89,27 @@ TEST(ThrowMotion, ContactIntegrationThatGivesUpIsASolverError) {
   }
 }
 
+TEST(SynthTable, ALawThatNeverBouncesIsAnErrorNotAHang) {
+  // Issue 26: `bounce synth-table --K 1e-310` (inside the stated range) ran for over 400 s:
+  // no drop ever separated, and the draws were repeated without end.
+  SynthTableOptions o;
+  // K = 1e-310 made every contact fail (chi = D/K overflows); K = 1e-6 N/m^n without damping
+  // lets the ball sink for the whole max_duration: either way no drop ever bounces.
+  o.law.K = 1e-6;
+  o.law.D = 0;
+  try {
+    synth_table(o);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("200 random drops in a row gave no bounce ("), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("0 of 40 rows made): these law parameters and speeds give no "
+                                         "bounce table"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(synth_table(SynthTableOptions{}).size(), 40u);  // the defaults still make their table
+}
+
 }  // namespace
 }  // namespace tribolab::analysis

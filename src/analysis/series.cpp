@@ -10,7 +10,7 @@
 namespace tribolab::analysis {
 
 std::string SeriesOptions::validate() const {
-  if (threads < 0) return "threads must be >= 0 (0 = all cores), got " + std::to_string(threads);
+  if (auto e = sweep::threads_error(threads); !e.empty()) return e;
   return {};
 }
 

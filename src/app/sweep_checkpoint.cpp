@@ -9,9 +9,11 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "app/sweep_command.hpp"
+#include "io/output_path.hpp"
 #include "numerics/error.hpp"
 
 namespace tribolab::app {
@@ -94,6 +96,35 @@ void sync_directory_of(const std::string& path) {
   }
 }
 
+/// Opens FILE.partial (creating it if missing) and takes its exclusive lock, so that no
+/// other sweep writes it or renames it while we hold it. `created` tells whether we made it.
+/// The lock is held on an inode: if another run renamed or removed the name between our
+/// open() and flock(), the lock is on a stray file and the name is opened again.
+int open_locked(const std::string& partial, bool& created) {
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    created = true;
+    int raw = ::open(partial.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (raw < 0 && errno == EEXIST) {
+      created = false;
+      raw = ::open(partial.c_str(), O_WRONLY | O_CLOEXEC);
+      if (raw < 0 && errno == ENOENT) continue;  // removed meanwhile: create it
+    }
+    Fd fd(raw);
+    if (fd.get() < 0) throw InputError(partial, std::string("cannot write: ") + std::strerror(errno));
+    if (::flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
+      throw InputError(partial, "is being written by another running sweep on the same " + field("out") +
+                                    "; wait for it to finish or stop it (a second writer would "
+                                    "mix the two runs' rows)");
+    }
+    struct stat held {}, named {};
+    if (::fstat(fd.get(), &held) == 0 && ::stat(partial.c_str(), &named) == 0 &&
+        held.st_dev == named.st_dev && held.st_ino == named.st_ino) {
+      return fd.release();
+    }
+  }
+  throw InputError(partial, "keeps being replaced by another process; is a second sweep running?");
+}
+
 }  // namespace
 
 std::string header_difference(const SweepHeader& a, const SweepHeader& b, bool with_shard_index) {
@@ -101,11 +132,26 @@ std::string header_difference(const SweepHeader& a, const SweepHeader& b, bool w
 }
 
 SweepCheckpoint::SweepCheckpoint(const SweepCommandOptions& o, const SweepHeader& header)
-    : out_(o.out), partial_(o.out + ".partial"), fsync_interval_s_(o.fsync_interval_s) {
+    : out_(resolve_file_output(o.out, "a sweep is checkpointed in FILE.partial, then renamed to FILE")),
+      partial_(out_ + ".partial"),
+      fsync_interval_s_(o.fsync_interval_s) {
+  // 0. The lock first: nothing below (not even --restart's deletions) may touch the files
+  // of a sweep that another process is running.
+  bool created = false;
+  Fd fd(open_locked(partial_, created));
+  // A checkpoint we made only to hold the lock goes again if we do not write it.
+  struct RemoveIfUnused {
+    const std::string& path;
+    bool armed;
+    ~RemoveIfUnused() {
+      if (armed) ::unlink(path.c_str());
+    }
+  } unused{partial_, created};
   std::error_code ec;
+  bool resume = !created;
   if (o.restart) {
     fs::remove(out_, ec);
-    fs::remove(partial_, ec);
+    resume = false;
   }
   // 1. A finished output of this very sweep is reused; any other file there is kept.
   if (fs::exists(out_)) {
@@ -128,13 +174,8 @@ SweepCheckpoint::SweepCheckpoint(const SweepCommandOptions& o, const SweepHeader
     return;
   }
 
-  // 2. Open (resume) or create the checkpoint.
-  const bool resume = fs::exists(partial_);
-  Fd fd(::open(partial_.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644));
-  if (fd.get() < 0) throw InputError(partial_, std::string("cannot write: ") + std::strerror(errno));
-  if (::flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
-    throw InputError(partial_, "is being written by another running sweep");
-  }
+  // 2. Resume or create the checkpoint.
+  unused.armed = false;
   // A checkpoint killed while its first two lines were being written holds a prefix of
   // them: start it afresh.
   const std::string preamble = format_header(header) + format_columns(header);
@@ -196,12 +237,12 @@ void SweepCheckpoint::finish(bool complete) {
   Fd fd(fd_);
   fd_ = -1;
   sync_fd(fd.get(), partial_);
-  fd.close(partial_);
-  if (!complete) return;
-  if (std::rename(partial_.c_str(), out_.c_str()) != 0) {
+  // Renamed while still locked: no other run can take the checkpoint over in between.
+  if (complete && std::rename(partial_.c_str(), out_.c_str()) != 0) {
     throw InputError(out_, std::string("cannot rename the finished checkpoint: ") + std::strerror(errno));
   }
-  sync_directory_of(out_);
+  fd.close(complete ? out_ : partial_);
+  if (complete) sync_directory_of(out_);
 }
 
 }  // namespace tribolab::app

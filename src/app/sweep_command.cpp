@@ -46,7 +46,18 @@ void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& mo
   const bool thresholds = !o.threshold_out.empty() || o.keep_derived;
   if (!boundary && !thresholds && !o.keep_values) return;
   std::vector<double> values;
-  scan_sweep_file(o.out, &values);
+  // Checked again although the sweep just wrote or verified it: the maps index `values` by
+  // cell, and a file replaced meanwhile (by hand; a second sweep is refused by the lock)
+  // must be an error, not a wrong map.
+  const SweepFileScan scan = scan_sweep_file(o.out, &values);
+  const SweepHeader header{o.grid, o.shard, model.output_names, model.description};
+  if (format_header(scan.header) != format_header(header) || scan.complete_cells != scan.expected_cells ||
+      scan.torn_tail) {
+    throw InputError(o.out, "changed while the contour/threshold maps were made (holds " +
+                                std::to_string(scan.complete_cells) + " of " +
+                                std::to_string(o.grid.cell_count()) +
+                                " cells of this sweep); rerun the sweep");
+  }
   sweep::ContourOptions co = o.contour;
   co.threads = o.threads;
   if (boundary) {
@@ -88,7 +99,7 @@ std::string SweepCommandOptions::validate() const {
   if (auto e = grid.validate(); !e.empty()) return with_option_names(e);
   if (auto e = shard.validate(); !e.empty()) return field("shard") + ": " + e;
   if (out.empty()) return field("out") + ": an output file is required";
-  if (threads < 0) return field("threads") + ": must be >= 0 (0 = all cores), got " + std::to_string(threads);
+  if (auto e = sweep::threads_error(threads); !e.empty()) return field("threads") + ": " + e.substr(e.find("must"));
   if (chunk_cells < 0) return "chunk_cells must be >= 0";
   if (!(fsync_interval_s > 0)) return "fsync_interval_s must be > 0";
   const bool maps = !contour_out.empty() || !threshold_out.empty();

@@ -10,8 +10,10 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include "app/sweep_checkpoint.hpp"
 #include "io/sweep_file.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
@@ -269,6 +271,76 @@ TEST(SweepCommand, RefusesACheckpointLockedByAnotherRun) {
                 .find("is being written by another running sweep"),
             std::string::npos);
   ::close(fd);
+}
+
+TEST(SweepCommand, RefusesASecondWriterEvenWithRestart) {
+  // Issue 26: a second sweep started with --restart deleted the running one's checkpoint,
+  // wrote its own under the same name, and the first then renamed the second's unfinished
+  // rows to FILE and said "completed".
+  const std::string dir = temp_dir("second_writer");
+  const sweep::CellModel m = sweep::synthetic::wave_model();
+  const SweepCommandOptions o = options_for(dir + "/map.csv");
+  const SweepHeader header{o.grid, o.shard, m.output_names, m.description};
+  SweepCheckpoint first(o, header);
+  SweepCommandOptions second = o;
+  second.restart = true;
+  EXPECT_NE(message_of([&] { run_sweep_command(second, m, nullptr); })
+                .find("map.csv.partial: is being written by another running sweep"),
+            std::string::npos);
+  first.append("");
+  first.finish(true);
+  // The first run's file, whole: its header, untouched by the refused second run.
+  EXPECT_EQ(read_file(o.out), format_header(header) + format_columns(header));
+  EXPECT_FALSE(fs::exists(o.out + ".partial"));
+}
+
+TEST(SweepCommand, ALockOnlyCheckpointLeavesNoFileBehind) {
+  // The lock is taken on FILE.partial before FILE is looked at; a run that then reuses
+  // FILE removes the checkpoint it created only to hold the lock.
+  const std::string dir = temp_dir("lock_only");
+  const sweep::CellModel m = sweep::synthetic::wave_model();
+  const SweepCommandOptions o = options_for(dir + "/map.csv");
+  ASSERT_EQ(run_sweep_command(o, m, nullptr).status, SweepStatus::completed);
+  EXPECT_EQ(run_sweep_command(o, m, nullptr).status, SweepStatus::reused);
+  EXPECT_FALSE(fs::exists(o.out + ".partial"));
+}
+
+TEST(SweepCommand, MapsOfAFileChangedUnderneathAreAnErrorNotACrash) {
+  // The contour indexes the map by cell; a file holding fewer cells than the grid (another
+  // writer, a hand edit) aborted on an assertion (contour.cpp, "values size").
+  const std::string dir = temp_dir("changed_underneath");
+  const sweep::CellModel m = sweep::synthetic::wave_model();
+  SweepCommandOptions o = options_for(dir + "/map.csv");
+  ASSERT_EQ(run_sweep_command(o, m, nullptr).status, SweepStatus::completed);
+  std::string text = read_file(o.out);
+  text.resize(text.rfind('\n', text.size() - 2) + 1);  // drop the last cell
+  write_text(o.out, text);
+  o.contour_out = dir + "/boundary.csv";
+  SweepCommandResult r;
+  EXPECT_NE(message_of([&] { write_derived_maps(o, m, r); })
+                .find("map.csv: changed while the contour/threshold maps were made (holds 269 of 270"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(o.contour_out));
+}
+
+TEST(SweepCommand, OutputThroughASymlinkKeepsTheLinkAndADeviceIsRefused) {
+  // Issue 26: `--out /dev/full` (as root) grew /dev/full.partial in /dev to 2.1 GB and would
+  // have renamed it over the device; a symlink was replaced by a plain file.
+  const std::string dir = temp_dir("out_kinds");
+  const sweep::CellModel m = sweep::synthetic::wave_model();
+  fs::create_directories(dir + "/real");
+  fs::create_symlink("real/map.csv", dir + "/link.csv");
+  SweepCommandOptions o = options_for(dir + "/link.csv");
+  ASSERT_EQ(run_sweep_command(o, m, nullptr).status, SweepStatus::completed);
+  EXPECT_TRUE(fs::is_symlink(dir + "/link.csv"));
+  EXPECT_EQ(read_file(dir + "/real/map.csv").substr(0, 16), "# tribolab-sweep");
+  EXPECT_EQ(run_sweep_command(o, m, nullptr).status, SweepStatus::reused);  // found through the link
+  ASSERT_EQ(::mkfifo((dir + "/pipe").c_str(), 0600), 0);
+  o.out = dir + "/pipe";
+  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); })
+                .find("pipe: is a device or FIFO, not a regular file (a sweep is checkpointed"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(dir + "/pipe.partial"));
 }
 
 TEST(SweepCommand, WritesContourAndThresholdMaps) {

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -62,13 +63,26 @@ std::vector<std::string> split(std::string_view line, char delim) {
   }
 }
 
-std::string read_file(const std::string& path) {
+std::string read_file(const std::string& path, std::uint64_t max_bytes) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
+  auto too_large = [&] {
+    const std::string bound = max_bytes >= (1u << 20) ? std::to_string(max_bytes >> 20) + " MB"
+                                                       : std::to_string(max_bytes) + " bytes";
+    return InputError(path, "too large: over " + bound + ", the most a text input may hold");
+  };
+  std::string text;
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);  // a regular file's: read it at once
+  if (!ec && size > max_bytes) throw too_large();
+  if (!ec) text.reserve(static_cast<std::size_t>(size));
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    if (text.size() + static_cast<std::uint64_t>(in.gcount()) > max_bytes) throw too_large();
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) throw InputError(path, "read error");
-  return ss.str();
+  return text;
 }
 
 std::string format_number(double v) {

@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
 namespace tribolab::io {
 namespace {
 
@@ -47,6 +52,32 @@ TEST(Text, FormatNumberIsShortestRoundTrip) {
   EXPECT_EQ(format_number(0.1), "0.1");
   EXPECT_EQ(format_number(1e-9), "1e-09");
   EXPECT_EQ(format_number(2.0), "2");
+}
+
+}  // namespace
+}  // namespace tribolab::io
+
+namespace tribolab::io {
+namespace {
+
+TEST(ReadFile, ReadsWholeAndRefusesMoreThanItsBound) {
+  // Issue 26: a plain 677 MB .trk was read with no bound (a .trk inside a .trz had one),
+  // through a buffer that grew to 3-4x the file. Now one bound for both, and a device or
+  // pipe (no size to check first) is cut off at the same bound while being read.
+  namespace fs = std::filesystem;
+  const std::string path = (fs::temp_directory_path() / ("tribolab_read_file_" + std::to_string(::getpid()))).string();
+  std::ofstream(path, std::ios::binary) << std::string(100000, 'x');
+  EXPECT_EQ(read_file(path).size(), 100000u);
+  EXPECT_EQ(read_file(path, 100000).size(), 100000u);  // exactly the bound: accepted
+  try {
+    read_file(path, 99999);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": too large: over 99999 bytes, the most a text input may hold");
+  }
+  fs::remove(path);
+  EXPECT_THROW(read_file("/dev/zero", 1 << 20), InputError);  // endless: stops at the bound
+  EXPECT_EQ(kMaxTextInputBytes, 512ull << 20);
 }
 
 }  // namespace

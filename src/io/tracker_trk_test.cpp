@@ -158,6 +158,32 @@ TEST(TrackerTrk, TrzOnDiskIsReadAndItsEntriesExtracted) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(TrackerTrk, AVideoEntryInflatingLikeAZipBombIsRefusedEarly) {
+  // Issue 26: a 6 MB .trz wrote 6 GB of "video" to $TMPDIR (the only cap was 16 GB). A video
+  // deflates by ~1 %; 24 MiB of zeros deflate ~1000x, past the bound of 16 MiB + 100x the
+  // compressed bytes (~24 KB: 16 + 2.3 MiB), so extraction stops after ~18.3 MiB written.
+  const auto dir = std::filesystem::temp_directory_path() / ("tribolab_bomb_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string zip = (dir / "bomb.trz").string();
+  {
+    std::ofstream out(zip, std::ios::binary);
+    out << write_trz(write_trk(world_tracks(), spec()), "p.trk", {{"v.mp4", std::string(24u << 20, '\0')}});
+  }
+  ASSERT_LT(std::filesystem::file_size(zip), 1u << 20);
+  const std::string out = (dir / "v.mp4").string();
+  try {
+    extract_zip_entry(zip, "v.mp4", out);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(zip + ":v.mp4: entry too large (over 18 MB, 100 times its "),
+              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("compressed bytes: a video inflates ~1x; a zip bomb?)"),
+              std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::filesystem::file_size(out), 19u << 20);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(TrackerTrk, LengthUnitCentimetresIsConvertedToMetres) {
   TrkWriteSpec s = spec();
   s.length_unit = "cm";

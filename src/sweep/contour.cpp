@@ -8,6 +8,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
+#include "sweep/runner.hpp"
 
 namespace tribolab::sweep {
 namespace {
@@ -123,7 +124,7 @@ std::string ContourOptions::validate() const {
   if (output.empty()) return "contour output name is empty";
   if (!std::isfinite(level)) return "contour level must be finite";
   if (!(x_tol_rel > 0 && x_tol_rel < 1)) return "x_tol_rel must be in (0, 1)";
-  if (threads < 0) return "threads must be >= 0";
+  if (auto e = threads_error(threads); !e.empty()) return e;
   return {};
 }
 

@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 #include "numerics/error.hpp"
@@ -28,7 +29,31 @@ bool valid_name(const std::string& s) {
   return true;
 }
 
+/// Starts `n` threads running `work`. When the system refuses one (std::system_error: a
+/// thread or address-space limit), `abandon(started)` must make the started ones return;
+/// they are joined and an InputError says how many could be started.
+template <class Work, class Abandon>
+std::vector<std::thread> start_threads(int n, const Work& work, const Abandon& abandon) {
+  std::vector<std::thread> pool;
+  pool.reserve(static_cast<std::size_t>(n));
+  try {
+    for (int i = 0; i < n; ++i) pool.emplace_back(work);
+  } catch (const std::system_error& e) {
+    const int started = static_cast<int>(pool.size());
+    abandon(started);
+    for (std::thread& t : pool) t.join();
+    throw InputError(field("threads") + ": the system refused to start thread " + std::to_string(started + 1) +
+                     " of " + std::to_string(n) + " (" + e.what() + "); ask for fewer");
+  }
+  return pool;
+}
+
 }  // namespace
+
+std::string threads_error(int threads) {
+  if (threads >= 0 && threads <= kMaxThreads) return {};
+  return "threads must be 0 (all cores) to " + std::to_string(kMaxThreads) + ", got " + std::to_string(threads);
+}
 
 std::string CellModel::validate() const {
   if (output_names.empty() || output_names.size() > kMaxOutputs) {
@@ -61,7 +86,7 @@ int CellModel::output_index(const std::string& name) const {
 }
 
 std::string RunOptions::validate() const {
-  if (threads < 0) return "threads must be >= 0 (0 = all cores), got " + std::to_string(threads);
+  if (auto e = threads_error(threads); !e.empty()) return e;
   if (chunk_cells < 0) return "chunk_cells must be >= 0 (0 = automatic)";
   if (!(progress_interval_s > 0)) return "progress_interval_s must be > 0";
   return {};
@@ -174,9 +199,14 @@ RunSummary run_cells(const GridSpec& grid, const CellModel& model, const Shard& 
     cv_window.notify_all();
   };
 
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<std::size_t>(n_threads));
-  for (int i = 0; i < n_threads; ++i) pool.emplace_back(worker);
+  std::vector<std::thread> pool = start_threads(n_threads, worker, [&](int started) {
+    {
+      std::lock_guard lock(mutex);
+      stop = true;
+      workers_running -= n_threads - started;  // the never started never decrement it
+    }
+    cv_window.notify_all();
+  });
 
   auto report = [&](std::int64_t done_chunks) {
     if (!options.progress) return;
@@ -281,8 +311,7 @@ void parallel_for(std::int64_t n, int threads, const std::function<void(std::int
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n_threads; ++t) pool.emplace_back(work);
+  std::vector<std::thread> pool = start_threads(n_threads - 1, work, [&](int) { failed = true; });
   work();
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);

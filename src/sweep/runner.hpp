@@ -55,7 +55,7 @@ struct Progress {
 };
 
 struct RunOptions {
-  /// Worker threads; 0 = std::thread::hardware_concurrency() (all cores).
+  /// Worker threads, 0 to kMaxThreads; 0 = std::thread::hardware_concurrency() (all cores).
   int threads = 0;
   /// Cells per work unit; 0 = automatic (enough units for load balance, at most 1024 cells).
   std::int64_t chunk_cells = 0;
@@ -108,6 +108,13 @@ std::vector<double> evaluate_grid(const GridSpec& grid, const CellModel& model,
 /// Calls f(i) for i in [0, n) on `threads` threads (0 = all cores); rethrows the first
 /// exception. For small independent jobs such as refining contour points.
 void parallel_for(std::int64_t n, int threads, const std::function<void(std::int64_t)>& f);
+
+/// The most worker threads a run may ask for. More gain nothing on any machine tribolab
+/// targets, and each costs a stack (8 MiB of address space by default): 100000 exhausted it.
+inline constexpr int kMaxThreads = 1024;
+/// Empty when 0 <= threads <= kMaxThreads, else the message ("threads must be 0 (all cores)
+/// to 1024, got 100000"). Every option struct with a thread count validates with it.
+std::string threads_error(int threads);
 
 /// threads, or hardware_concurrency() (at least 1) when threads <= 0.
 int resolve_threads(int threads);

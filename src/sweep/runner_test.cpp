@@ -3,7 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <string>
+
+#include <sys/resource.h>
 #include <stdexcept>
 
 #include "numerics/error.hpp"
@@ -180,6 +185,51 @@ TEST(Runner, EmptyRemainderCompletesImmediately) {
   EXPECT_EQ(s.status, RunSummary::Status::completed);
   EXPECT_EQ(s.cells_computed, 0);
 }
+
+TEST(Runner, ThreadCountIsBounded) {
+  // Issue 26: --threads 100000 ended in std::terminate. 1024 is kMaxThreads.
+  RunOptions o;
+  o.threads = 100000;
+  EXPECT_EQ(o.validate(), "threads must be 0 (all cores) to 1024, got 100000");
+  o.threads = kMaxThreads;
+  EXPECT_EQ(o.validate(), "");
+  o.threads = -1;
+  EXPECT_EQ(o.validate(), "threads must be 0 (all cores) to 1024, got -1");
+}
+
+#if !defined(__SANITIZE_ADDRESS__)
+/// In a death test's child: limits the address space to ~100 MiB above what is used (room
+/// for a few 8 MiB thread stacks only), asks for 1000 threads, prints the InputError.
+void start_1000_threads_under_a_limit() {
+  long vm_kb = 0;
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("VmSize:", 0) == 0) vm_kb = std::stol(line.substr(7));
+  }
+  const auto limit = static_cast<rlim_t>(vm_kb + 100 * 1024) * 1024;
+  const rlimit rl{limit, limit};
+  if (vm_kb == 0 || setrlimit(RLIMIT_AS, &rl) != 0) std::_Exit(3);
+  RunOptions o;
+  o.threads = 1000;
+  o.chunk_cells = 1;
+  try {
+    evaluate_grid(grid_4d(), synthetic::wave_model(), o);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    std::_Exit(0);
+  }
+  std::_Exit(1);
+}
+
+TEST(RunnerDeathTest, ThreadsTheSystemRefusesAreOneErrorNotATerminate) {
+  // Starting 1000 threads under the limit fails part-way: the started ones must be joined
+  // and an InputError thrown (before: std::terminate from a vector of joinable threads,
+  // rc 134). In a forked child (a death test), so the limit stays there. Not under ASan,
+  // whose shadow memory needs far more address space than any such limit.
+  EXPECT_EXIT(start_1000_threads_under_a_limit(), ::testing::ExitedWithCode(0),
+              "threads: the system refused to start thread [0-9]+ of 1000 \\(.*\\); ask for fewer");
+}
+#endif
 
 TEST(CellModel, ValidateChecksOutputNames) {
   CellModel m = synthetic::wave_model();

@@ -5,6 +5,8 @@
 // resolution; boxes that overlap are merged so that shapes in front occlude those behind.
 #include "video/render.hpp"
 
+#include "io/output_path.hpp"
+#include "io/temp_files.hpp"
 #include "numerics/error.hpp"
 
 #include <opencv2/imgproc.hpp>
@@ -163,8 +165,10 @@ struct Placed {
 }  // namespace
 
 std::string RenderOptions::validate() const {
-  if (width < 8 || width > 16384) return "width: must lie in [8, 16384] px, got " + std::to_string(width);
-  if (height < 8 || height > 16384) return "height: must lie in [8, 16384] px, got " + std::to_string(height);
+  if (width < kMinSide || width > kMaxSide || height < kMinSide || height > kMaxSide) {
+    return "size: width and height must lie in [" + std::to_string(kMinSide) + ", " + std::to_string(kMaxSide) +
+           "] px, got " + std::to_string(width) + "x" + std::to_string(height);
+  }
   if (!std::isfinite(fps) || fps <= 0 || fps > 1e6) return "fps: must lie in (0, 1e6], got " + std::to_string(fps);
   if (!std::isfinite(shutter_fraction) || shutter_fraction < 0 || shutter_fraction > 1) {
     return "shutter: must lie in [0, 1] (a fraction of the frame period), got " + std::to_string(shutter_fraction);
@@ -266,13 +270,14 @@ void write_video(const std::string& path, const Scene& scene, int frames, const 
   } else {
     throw InputError(path, "unknown video type '" + ext + "' (expected .avi or .mp4)");
   }
-  if (fs::is_directory(target)) throw InputError(path, "is a directory, expected a file name");
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir)) throw InputError(path, "directory does not exist");
-  // Written beside the target and renamed when complete: no partial video on failure.
-  const fs::path tmp = dir / ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + ext);
+  // Written beside the target (symbolic links followed) and renamed when complete: no
+  // partial video on failure.
+  const fs::path file(io::resolve_file_output(path, "a video is written whole, then renamed into place"));
+  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  const fs::path tmp = dir / ("." + file.stem().string() + ".tmp" + std::to_string(::getpid()) + ext);
   struct Remove {
     fs::path p;
+    io::TempRegistration on_signal{p.string()};  // a signal removes it as well
     bool keep = false;
     ~Remove() {
       std::error_code ec;
@@ -291,7 +296,7 @@ void write_video(const std::string& path, const Scene& scene, int frames, const 
   }
   std::error_code ec;
   if (!fs::exists(tmp, ec) || fs::file_size(tmp, ec) == 0) throw InputError(path, "writing the video failed");
-  fs::rename(tmp, target, ec);
+  fs::rename(tmp, file, ec);
   if (ec) throw InputError(path, "cannot write: " + ec.message());
   guard.keep = true;
 }

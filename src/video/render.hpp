@@ -34,8 +34,13 @@ struct ShapePose {
 using Scene = std::function<std::vector<ShapePose>(double t)>;
 
 struct RenderOptions {
-  int width = 640;               ///< px
-  int height = 480;              ///< px
+  /// The largest frame side, px. Larger ones cannot be made: a float frame costs 12 bytes a
+  /// pixel several times over (8000x6000 needed 2 GB), FFmpeg refuses 16384x16384 with its own
+  /// log lines, OpenCV ran out of memory at 16000x16000. 4096 is DCI 4K.
+  static constexpr int kMaxSide = 4096;
+  static constexpr int kMinSide = 8;  ///< the smallest frame side, px
+  int width = 640;               ///< px, kMinSide to kMaxSide
+  int height = 480;              ///< px, kMinSide to kMaxSide
   double fps = 240;              ///< frames per second of the video's time base
   double shutter_fraction = 0.5; ///< exposure as a fraction of the frame period (0 = no blur)
   int blur_samples = 8;          ///< sub-frames integrated across the exposure (>= 1)

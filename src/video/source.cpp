@@ -1,6 +1,7 @@
 // Opening a video or a Tracker project for tracking (source.hpp).
 #include "video/source.hpp"
 
+#include "io/temp_files.hpp"
 #include "io/text.hpp"
 #include "io/track_import.hpp"
 #include "numerics/error.hpp"
@@ -215,6 +216,7 @@ bool calibration_given(const SourceOptions& o) {
 /// A temporary file removed when the last VideoInput or FrameReader using it is gone.
 struct TempFile {
   std::string path;
+  std::unique_ptr<io::TempRegistration> on_signal;  // a signal removes it as well
   ~TempFile() {
     std::error_code ec;
     fs::remove(path, ec);
@@ -225,11 +227,12 @@ std::shared_ptr<TempFile> make_temp_file(const std::string& extension) {
   std::string name = (fs::temp_directory_path() / "tribolab_video_XXXXXX").string() + extension;
   std::vector<char> buf(name.begin(), name.end());
   buf.push_back('\0');
+  auto t = std::make_shared<TempFile>();
   const int fd = ::mkstemps(buf.data(), static_cast<int>(extension.size()));
   if (fd < 0) throw InputError(name, "cannot create a temporary file for the video");
-  ::close(fd);
-  auto t = std::make_shared<TempFile>();
+  t->on_signal = std::make_unique<io::TempRegistration>(buf.data());
   t->path = buf.data();
+  ::close(fd);
   return t;
 }
 
