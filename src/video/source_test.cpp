@@ -304,7 +304,7 @@ TEST(FrameReader, VariableFrameRateTakesTheTimestamps) {
   for (int k = 11; k < 14; ++k) EXPECT_NEAR(t[k], (10 + 2 * (k - 10)) / 30.0, 1e-3) << k;
   ASSERT_EQ(reader.warnings().size(), 1u);
   EXPECT_THAT(reader.warnings()[0], HasSubstr("variable frame rate: 3 frame(s) take their timestamps"));
-  EXPECT_THAT(reader.warnings()[0], HasSubstr("from frame 11 at t = 0.4 s, not 0.366667 s"));
+  EXPECT_THAT(reader.warnings()[0], HasSubstr("from frame 11 at t = 0.4 s, not 0.366666666667 s"));
 
   // --fps imposes a constant rate: the grid everywhere, no warning.
   SourceOptions fixed;
