@@ -64,6 +64,11 @@ void check_distinct_files(const std::vector<app::OutputPath>& files) {
 
 }  // namespace
 
+std::string empty_value_problem(const std::string& flag, const std::string& value) {
+  if (value.find_first_not_of(" \t\n\r\v\f") != std::string::npos) return {};
+  return "option '" + flag + "' is given an empty value; give a value, or leave the option out for its default";
+}
+
 std::string full_name(const CLI::App& app) {
   std::string name = app.get_name();
   for (const CLI::App* p = app.get_parent(); p != nullptr; p = p->get_parent()) {
@@ -114,10 +119,16 @@ CLI::App* check_command_line(CLI::App& root, int argc, char** argv) {
       }
       // Skip the option's value when it is the next argument.
       std::string value;
+      bool has_value = false;
       if (const auto eq = arg.find('='); eq != std::string::npos) {
         value = arg.substr(eq + 1);
+        has_value = true;
       } else if (opt->get_items_expected_max() > 0 && i + 1 < argc) {
         value = argv[++i];
+        has_value = true;
+      }
+      if (has_value) {
+        if (auto e = empty_value_problem(name, value); !e.empty()) throw UsageError(e);
       }
       if (opt->get_type_name().rfind("FILE", 0) == 0 && !value.empty()) {
         files.push_back({name.substr(2), value});  // "--bounces-out" -> "bounces-out" (flag_of spells it back)

@@ -18,6 +18,13 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The rule for every option's value, whatever its type (docs/cli.md#empty-values): an
+/// option given is given something. An empty or blank value (`--mu ''`, `--out=`) is never
+/// read as 0, as "unset" or as no file: it is a malformed command line (UsageError, exit 2).
+/// Empty when `value` may be given to `flag`, else the message. (One function so that a
+/// declaration mechanism for options can call it for each value it binds.)
+std::string empty_value_problem(const std::string& flag, const std::string& value);
+
 /// The command's whole path, e.g. "tribolab incline simulate".
 std::string full_name(const CLI::App& app);
 

@@ -156,7 +156,11 @@ void add_normal_friction_test(CLI::App* area) {
   set_types(cmd);
   add_report_option(*cmd, s->report, s->plotly);
   cmd->get_option("--phi-deg")->type_name("NUM[,NUM...]");
-  cmd->callback([s, as_json] { print_result(incline_normal_friction_test(*s).json, *as_json); });
+  cmd->callback([s, as_json] {
+    const InclineNormalFrictionTestResult r = incline_normal_friction_test(*s);
+    print_result(r.json, *as_json);
+    finish_series(s->files.size(), r.errors);  // exit 1 after the output when a run failed
+  });
 }
 
 }  // namespace

@@ -277,5 +277,47 @@ TEST(InclineAnalysisCli, AThetaCFromFewPointsIsCalledOut) {
       << t["warnings"];
 }
 
+// Regression (issue 26): one bad file among the runs lost every result (no JSON at all).
+TEST(InclineAnalysisCli, NormalFrictionTestKeepsTheGoodRunsWhenOneFileIsBad) {
+  const std::string dir = temp_dir("incline_nft_bad");
+  std::string files;
+  int seed = 40;
+  for (const char* phi : {"10", "15", "20"}) {
+    const std::string f = dir + "/run" + phi + ".txt";
+    run_json(std::string("incline synth --mu 0.634 --v0 2.62 --fps 120 --phi-deg ") + phi + " --seed " +
+             std::to_string(++seed) + " --out " + f);
+    files += " " + f;
+  }
+  write(dir + "/bad.csv", "t,x,y\n0,0,0\n0.0125,zz,0\n");
+  const auto r = run_tribolab("incline normal-friction-test" + files + " " + dir + "/bad.csv --phi-deg 10,15,20,25 --json");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("tribolab: error: 1 of 4 runs failed (" + dir + "/bad.csv:3"), std::string::npos) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["n_runs"], 3);
+  EXPECT_EQ(j["n_failed"], 1);
+  EXPECT_TRUE(std::isfinite(j["mu"].get<double>()));
+  ASSERT_EQ(j["runs"].size(), 4u);
+  EXPECT_EQ(j["runs"][3]["source"], dir + "/bad.csv");
+  EXPECT_NE(j["runs"][3]["error"].get<std::string>().find("bad.csv:3"), std::string::npos) << j["runs"][3];
+}
+
+// Regression (issue 26): one 1e308 in a good run gave mu 0.3996 (0.3001 clean), sigma null, exit 0.
+TEST(InclineAnalysisCli, AValueNoRunHasIsRefusedWithItsLine) {
+  const std::string dir = temp_dir("incline_huge");
+  const std::string f = dir + "/run.csv";
+  run_json("incline synth" + kSeedRun + "--fps 120 --format csv --out " + f);
+  std::ifstream in(f);
+  std::string text, line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (n == 10) line = line.substr(0, line.rfind(',')) + ",1e308";  // y of the 9th point
+    text += line + "\n";
+  }
+  write(f, text);
+  const auto r = run_tribolab("incline analyze " + f + " --phi-deg 20.96");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(f + ":10: y = 1e+308 is beyond"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+}
+
 }  // namespace
 }  // namespace tribolab::cli::testing

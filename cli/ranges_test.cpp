@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <regex>
 #include <string>
 #include <vector>
@@ -90,6 +91,32 @@ TEST(PhysicalRanges, EdgesOfTheRangesComputeFiniteNumbers) {
   expect_finite("bounce simulate --vy -4 --mass 1e-6 --inertia 1e-12", {"/energy_in", "/energy_out", "/e"});
   expect_finite("bounce contact-time --height 1000 --g 0.01", {"/t_contact", "/collision_angle_deg"});
   expect_finite("bounce contact-time --height 0.5 --b 0.001", {"/t_contact", "/collision_angle_deg"});
+}
+
+// Regression (issue 26): `bounce sweep --K 1e-320` marked every cell NaN and said "completed";
+// `bounce render --scale 1e-320` printed `--origin -inf ... ball=-nan,-inf`. A subnormal input
+// is refused as such wherever a range or a finiteness check looks at it.
+TEST(PhysicalRanges, SubnormalInputsAreRefusedAsSubnormal) {
+  const std::string dir = temp_dir("subnormal");
+  for (const std::string& args : std::vector<std::string>{
+           "bounce sweep --K 1e-320 --theta-deg 0:90:3 --omega 0:10:3 --out " + dir + "/m.csv",
+           "bounce render --scale 1e-320 --out " + dir + "/f.avi",
+           "bounce simulate --vx 0.5 --vy -4 --K 1e-320"}) {
+    const auto r = run_tribolab(args);
+    expect_error(r, "is subnormal", args);
+    EXPECT_EQ(r.err.find("non-finite"), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+// Regression (issue 26): `track video --fps 0` and `--scale 0` were taken as "not given".
+TEST(PhysicalRanges, ZeroForAnOptionWhoseDefaultIsUnsetIsRefused) {
+  const std::string dir = temp_dir("zero_unset");
+  for (const char* opt : {"--fps", "--scale", "--search"}) {
+    const auto r = run_tribolab(std::string("track video missing.avi --start A=1,1 ") + opt + " 0 --out " + dir + "/t.csv");
+    expect_error(r, std::string(opt) + ": must be > 0, got 0", opt);
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
 }  // namespace

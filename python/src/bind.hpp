@@ -141,6 +141,36 @@ template <class T> struct TypeName<std::vector<T>> {
 /// "tribolab::app::InclinePredictOptions" -> "InclinePredictOptions".
 std::string unqualified(const std::string& name);
 
+template <class T> struct IsNumber : std::bool_constant<std::is_arithmetic_v<T> && !std::is_same_v<T, bool>> {};
+template <class T> struct IsNumber<std::optional<T>> : IsNumber<T> {};
+template <class T> struct IsNumber<std::vector<T>> : IsNumber<T> {};
+template <class T> struct IsText : std::is_same<T, std::string> {};
+template <class T> struct IsText<std::optional<T>> : IsText<T> {};
+template <class T> struct IsText<std::vector<T>> : IsText<T> {};
+
+/// The Python side of the command line's rule for option values (docs/python.md, "Keyword
+/// values"; cli/command_line_check.hpp, empty_value_problem): a number keyword refuses a bool
+/// (True is not 1.0; TypeError), a str keyword refuses a NUL character (a path would be cut
+/// at it; ValueError). Applies to the items of a list keyword as well.
+template <class T>
+void check_keyword_value(const std::string& command, const std::string& keyword, py::handle value) {
+  auto check_one = [&](py::handle v) {
+    if constexpr (IsNumber<T>::value) {
+      if (py::isinstance<py::bool_>(v))
+        throw py::type_error(command + "(): " + keyword + " must be " + TypeName<T>::get() + ", got bool");
+    }
+    if constexpr (IsText<T>::value) {
+      if (py::isinstance<py::str>(v) && v.cast<std::string>().find('\0') != std::string::npos)
+        throw py::value_error(command + "(): " + keyword + " contains a NUL character");
+    }
+  };
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    for (py::handle v : value) check_one(v);
+  } else {
+    check_one(value);
+  }
+}
+
 /// Adds `spec` to the `_specs` list of module `m` (created on first use).
 void add_spec(py::module_& m, const py::dict& spec);
 
@@ -255,6 +285,7 @@ class Command {
     options_.append(o);
     std::string name = name_;
     setters_[keyword] = [get, name, keyword](O& options, py::handle value) {
+      detail::check_keyword_value<T>(name, keyword, value);
       try {
         get(options) = value.cast<T>();
       } catch (const py::cast_error&) {

@@ -45,3 +45,27 @@ def test_output_paths_are_checked_before_any_work(tmp_path):
     m = _raises_naming("out", tribolab.track.load, THROW, out=THROW)
     assert "is also the input file" in m
     assert not (tmp_path / "same.html").exists() and not (tmp_path / "r.txt").exists()
+
+
+def test_a_bool_is_no_number(tmp_path):
+    # Regression (issue 26): mu=True was taken as 1.0.
+    with pytest.raises(TypeError, match=r"simulate\(\): mu must be float, got bool"):
+        tribolab.bounce.simulate(vx=0.5, vy=-4, mu=True)
+    with pytest.raises(TypeError, match="got bool"):
+        tribolab.incline.predict(mu=0.634, phi_deg=False, v0=2.62)
+    assert tribolab.bounce.simulate(vx=0.5, vy=-4, mu=1)["e"] > 0  # an int is a number
+
+
+def test_a_path_with_a_nul_is_refused_not_cut_short(tmp_path):
+    # Regression (issue 26): "run.csv\0.txt" opened (or wrote) "run.csv".
+    out = str(tmp_path / "k.csv")
+    with pytest.raises(ValueError, match="out contains a NUL character"):
+        tribolab.incline.simulate(mu=0.3, phi_deg=20, v0=2, out=out + "\0.txt")
+    assert not (tmp_path / "k.csv").exists()
+    with pytest.raises(ValueError, match="NUL"):
+        tribolab.track.kinematics(THROW + "\0x", track="A", out=out)
+
+
+def test_a_subnormal_is_a_value_error(tmp_path):
+    # Regression (issue 26): K=1e-320 raised RuntimeError where ValueError is documented.
+    _raises_naming("K", tribolab.bounce.simulate, vx=0.5, vy=-4, K=1e-320)

@@ -427,5 +427,21 @@ TEST(NormalAccelDiagnostic, ModelARunIsStillCalledPresent) {
   }
 }
 
+// Regression (issue 26): a valid 50 kHz run was refused ("local fit: the x values cannot
+// determine a degree-4 fit"; it worked with --block 50): the a_N blocks' truncation check fits
+// degree 4 over 25 frames = 0.5 ms, whose raw powers of t QR took for dependent
+// (numerics/polyfit.cpp now fits in t / max|t|).
+TEST(NormalAccelDiagnostic, FiftyKilohertzRunIsAnalysedWithTheAutomaticBlock) {
+  InclineSynthOptions s = run_options(20.96, 1e-5, 3, 0, 5e4);
+  s.params.v0 = 0.15;  // a short slide: ~1,000 frames, 5 times the automatic block of 25 x 8
+  InclineFitOptions o;
+  o.phi = s.params.phi;
+  o.fit_model_a = false;  // not needed here, and the slow part at this many frames
+  const InclineAnalysis a = analyze_incline_run(synthesize_incline_run(s).track, o);
+  ASSERT_TRUE(a.a_n.has_value());
+  EXPECT_EQ(a.a_n->block, 25);
+  // Model B's mu from the whole track (the fit, not the diagnostic): the truth within 4 sigma.
+  EXPECT_NEAR(a.model_b.mu.value, 0.634, 4 * a.model_b.mu.sigma);
+}
 }  // namespace
 }  // namespace tribolab::analysis

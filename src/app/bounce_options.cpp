@@ -26,6 +26,7 @@ FrictionKind parsed_friction(const std::string& name) {
 
 void check_finite(double v, const std::string& option) {
   if (!std::isfinite(v)) throw InputError(option, "must be a finite number");
+  if (auto e = subnormal_error(v); !e.empty()) throw InputError(option, e);
 }
 
 void invalid(const std::string& message) { throw input_error_of(message); }

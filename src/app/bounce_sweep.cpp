@@ -170,6 +170,9 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
   r.boundary.reset();
   r.thresholds.reset();
   result.json = sweep_result_json(r, o);
+  if (result.json["status"] == "no_result")
+    result.json["warnings"] = {"no cell of the sweep gave a result: every value in " + r.out +
+                               " is NaN (no contact or a failed solve in every cell; see the cell model's inputs)"};
   return result;
 }
 

@@ -1,6 +1,7 @@
 #include "app/incline_analysis.hpp"
 
 #include "app/output_paths.hpp"
+#include "app/series_json.hpp"
 
 #include "app/incline_launch.hpp"
 #include "app/report_incline_analysis.hpp"
@@ -115,6 +116,8 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
   check_output_paths(inputs, {{"report", s.report}});  // before any work (app/output_paths.hpp)
   std::vector<analysis::ThetaCPoint> pts;
   std::vector<std::string> warnings;  // each run's, with its file (as `incline series` prints them)
+  InclineNormalFrictionTestResult res;
+  json failed_rows = json::array();  // {"source", "phi_deg", "error"} of the runs that failed
   if (!s.table.empty()) {
     if (!s.files.empty() || !s.phi_deg.empty())
       throw InputError(field("table"), "give either " + field("table") + " or tracked files with " + field("phi_deg") + ", not both");
@@ -126,22 +129,39 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
       throw InputError(field("phi_deg"), "gives " + std::to_string(s.phi_deg.size()) + " angles for " +
                                         std::to_string(s.files.size()) + " files");
     const double g = check_range(s.g, ranges::gravity, field("g"));
-    for (std::size_t i = 0; i < s.files.size(); ++i) {
+    std::vector<double> phi(s.files.size());
+    for (std::size_t i = 0; i < s.files.size(); ++i)
+      phi[i] = to_rad(check_incline_angle_deg(s.phi_deg[i], field("phi_deg"), false));
+    // A series (docs/cli.md#several-runs): a bad file becomes its row's error, the fit uses
+    // the others.
+    struct Run {
+      analysis::ThetaCPoint point;
+      std::vector<std::string> warnings;
+    };
+    const auto runs = analysis::run_series<Run>(s.files, [&](std::size_t i, const std::string& file) {
       // Model B only: theta_c of each run, at its v_y extremum (seed 000, 圖三-2).
       analysis::InclineFitOptions o;
-      o.phi = to_rad(check_incline_angle_deg(s.phi_deg[i], field("phi_deg"), false));
+      o.phi = phi[i];
       o.g = g;
       o.fit_model_a = false;
-      const track::Track t = read_incline_track(s.files[i], s.input);
+      const track::Track t = read_incline_track(file, s.input);
       const analysis::InclineAnalysis a = analysis::analyze_incline_run(t, o);
       if (!a.theta_c)
-        throw InputError(s.files[i], "no v_y extremum found (" +
-                                         (a.notes.empty() ? std::string("the disc does not stop") : a.notes.back()) + ")");
-      pts.push_back({o.phi, a.theta_c->cos_theta_c, a.theta_c->sigma_cos_theta_c, s.files[i]});
-      for (const auto& w : a.warnings) warnings.push_back(s.files[i] + ": " + w);
+        throw InputError(file, "no v_y extremum found (" +
+                                   (a.notes.empty() ? std::string("the disc does not stop") : a.notes.back()) + ")");
+      return Run{{o.phi, a.theta_c->cos_theta_c, a.theta_c->sigma_cos_theta_c, file}, a.warnings};
+    });
+    for (const auto& r : runs) {
+      if (!r.ok()) {
+        failed_rows.push_back({{"source", r.source}, {"phi_deg", to_deg(phi[&r - runs.data()])}, {"error", r.located_error()}});
+        continue;
+      }
+      pts.push_back(r.result->point);
+      for (const auto& w : r.result->warnings) warnings.push_back(r.source + ": " + w);
     }
+    res.errors = series_errors(runs);
+    if (pts.empty()) throw InputError(res.errors.front() + (runs.size() > 1 ? " (and every other run failed)" : ""));
   }
-  InclineNormalFrictionTestResult res;
   const analysis::NormalFrictionTest& r = res.test = analysis::normal_friction_test(pts);
   json runs = json::array();
   for (const auto& p : r.points) {
@@ -167,7 +187,9 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
   j["meaning"] = "present when the 95 % interval of the intercept of cos(theta_c) against tan(phi) excludes 0 "
                  "(eq c): about one series in twenty without normal friction is called present";
   j["n_runs"] = r.points.size();
+  for (auto& row : failed_rows) runs.push_back(std::move(row));
   j["runs"] = runs;
+  j["n_failed"] = res.errors.size();
   j["warnings"] = warnings;
   if (!s.report.empty()) report::write_html(incline_normal_test_report(r), s.report, s.plotly);
   return res;

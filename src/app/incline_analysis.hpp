@@ -116,6 +116,9 @@ struct InclineNormalFrictionTestResult {
   analysis::NormalFrictionTest test;     ///< the fit of eq c and its points
   /// Per point: tan(phi) and cos(theta_c), the line the fit draws through them.
   std::vector<double> tan_phi, cos_theta_c;
+  /// The failed runs' located errors (files given; docs/cli.md#several-runs): their rows in
+  /// json["runs"] hold "error", the fit used the other runs.
+  std::vector<std::string> errors;
 };
 
 InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormalFrictionTestOptions& o);

@@ -1,5 +1,6 @@
 #include "app/sweep_command.hpp"
 
+#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -157,8 +158,17 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
   // Compute the missing cells; each chunk's lines are written as soon as every earlier
   // chunk is written, so the file is always a prefix of the final file.
   sweep::ResultSink sink;
+  std::atomic<std::int64_t> with_result{0};  // computed cells with a finite output
   sink.encode = [&](const sweep::ChunkView& c, std::string& buf) {
     append_cell_lines(buf, o.grid, c);
+    std::int64_t n = 0;
+    for (std::int64_t i = 0; i < c.count; ++i)
+      for (std::size_t k = 0; k < c.n_outputs; ++k)
+        if (std::isfinite(c.outputs[static_cast<std::size_t>(i) * c.n_outputs + k])) {
+          ++n;
+          break;
+        }
+    with_result += n;
   };
   sink.commit = [&](const sweep::ChunkView&, const std::string& buf) { file.append(buf); };
   sweep::RunOptions ro;
@@ -168,6 +178,7 @@ SweepCommandResult run_sweep_command(const SweepCommandOptions& o, const sweep::
   ro.progress = progress;
   const sweep::RunSummary s = sweep::run_cells(o.grid, model, o.shard, file.first_local(), ro, sink);
   r.cells_computed = s.cells_computed;
+  r.cells_computed_with_result = with_result.load();
   r.seconds = s.seconds;
   r.threads = s.threads;
   const bool complete = s.status == sweep::RunSummary::Status::completed;
@@ -289,7 +300,11 @@ void write_plain_csv(const std::string& sweep_file, const std::string& plain_csv
 
 nlohmann::json sweep_result_json(const SweepCommandResult& r, const SweepCommandOptions& o) {
   nlohmann::json j;
-  j["status"] = to_string(r.status);
+  // Every cell computed gave NaN (no contact, failed solves): the file is complete but holds no
+  // result, which is not what "completed" promises.
+  const bool no_result = r.status == SweepStatus::completed && r.cells_resumed == 0 && r.cells_computed > 0 &&
+                         r.cells_computed_with_result == std::int64_t{0};
+  j["status"] = no_result ? std::string("no_result") : to_string(r.status);
   j["out"] = r.out;
   j["cells_grid"] = r.cells_grid;
   j["cells_shard"] = r.cells_shard;

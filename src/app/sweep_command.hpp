@@ -62,6 +62,8 @@ struct SweepCommandResult {
   std::int64_t cells_shard = 0;      ///< cells in this shard
   std::int64_t cells_resumed = 0;    ///< cells found in the checkpoint (not recomputed)
   std::int64_t cells_computed = 0;   ///< cells computed by this run
+  /// Of those, cells with a finite output (counted by run_sweep_command; unset under MPI).
+  std::optional<std::int64_t> cells_computed_with_result;
   int threads = 0;
   double seconds = 0;                ///< wall time of the computation, s
   std::int64_t contour_lines = 0, contour_points = 0, contour_evaluations = 0;

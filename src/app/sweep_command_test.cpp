@@ -450,5 +450,24 @@ TEST(SweepCommand, JsonResultHasTheDocumentedKeys) {
   EXPECT_EQ(j["threshold"]["file"], o.threshold_out);
 }
 
+// Regression (issue 26): a sweep whose every cell was NaN said "completed".
+TEST(SweepCommand, EveryCellNaNIsNoResultNotCompleted) {
+  const std::string dir = temp_dir("nan");
+  sweep::CellModel m = sweep::synthetic::wave_model();
+  m.evaluate = [](const sweep::CellInput&) { return sweep::CellOutputs{NAN, NAN, NAN, NAN}; };
+  SweepCommandOptions o = options_for(dir + "/nan.csv");
+  const SweepCommandResult r = run_sweep_command(o, m, nullptr);
+  EXPECT_EQ(r.cells_computed_with_result, std::int64_t{0});
+  EXPECT_EQ(sweep_result_json(r, o)["status"], "no_result");
+  // One finite output in one cell is a result.
+  m.evaluate = [](const sweep::CellInput& in) {
+    return sweep::CellOutputs{in.omega == 30 && in.theta_deg == 100 && in.mu == 0.3 ? 1.0 : NAN, NAN, NAN, NAN};
+  };
+  o.restart = true;
+  const SweepCommandResult one = run_sweep_command(o, m, nullptr);
+  EXPECT_EQ(one.cells_computed_with_result, std::int64_t{1});
+  EXPECT_EQ(sweep_result_json(one, o)["status"], "completed");
+}
+
 }  // namespace
 }  // namespace tribolab::app

@@ -62,16 +62,24 @@ bool ends_with_trk(const std::string& path) {
   return e == ".trk";
 }
 
+/// The value of an optional option whose core field reads 0 as "unset": a value given is
+/// checked here, so that 0 (or what rounds to it) is refused instead of taken for unset.
+template <class T>
+T given_or_unset(const std::optional<T>& v, const std::string& name) {
+  if (v && !(*v > 0)) throw InputError(field(name), "must be > 0, got " + io::format_number(static_cast<double>(*v)) + " (leave it out for the default)");
+  return v.value_or(T{0});
+}
+
 video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
   video::TrackVideoOptions o;
-  o.source.scale_m_per_px = a.scale.value_or(0);
+  o.source.scale_m_per_px = given_or_unset(a.scale, "scale");
   o.source.axes_deg = a.axes_deg;
-  o.source.fps = a.fps.value_or(0);
+  o.source.fps = given_or_unset(a.fps, "fps");
   o.source.time_scale = a.time_scale;
   o.source.zip_entry = a.entry;
   o.point.min_score = a.min_score;
   o.point.patch_px = a.patch;
-  o.point.search_px = a.search.value_or(0);
+  o.point.search_px = given_or_unset(a.search, "search");
   o.point.max_turn_deg = a.max_turn_deg;
   o.point.max_gap_frames = a.max_gap;
   o.ellipse.min_score = a.ellipse_min_score;

@@ -2,6 +2,7 @@
 
 #include "numerics/cpu_dispatch.hpp"
 #include "numerics/error.hpp"
+#include "numerics/message_number.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -215,7 +216,7 @@ State state_at_touch(const Ball& ball, const BodyState& touch, ContactResult& r)
   r.v_t_in = pv.vx;
   if (!(pv.vy < 0)) {
     throw InputError("incoming state", "the contact point must approach the floor at first touch "
-                                       "(vy + omega X = " + std::to_string(pv.vy) + " m/s, need < 0)");
+                                       "(vy + omega X = " + message_number(pv.vy) + " m/s, need < 0)");
   }
   State x{};
   x[iX] = r.in.x;

@@ -1,6 +1,7 @@
 #include "bounce/drop.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/message_number.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,8 +60,8 @@ DropResult simulate_drop(const Ball& ball, const NormalLawSpec& law, const Frict
   s.vy = release.vy;
   if (!(s.y > support(ball, s.theta).Y)) {
     throw InputError("height", "the ball touches the floor at release (centre height " +
-                                   std::to_string(s.y) + " m, lowest point needs > " +
-                                   std::to_string(support(ball, s.theta).Y) + " m)");
+                                   message_number(s.y) + " m, lowest point needs > " +
+                                   message_number(support(ball, s.theta).Y) + " m)");
   }
   DropResult r;
   r.release_apex = s.y + (s.vy > 0 ? s.vy * s.vy / (2 * g) : 0.0);

@@ -1,6 +1,7 @@
 #include "bounce/flight.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/message_number.hpp"
 #include "numerics/roots.hpp"
 
 #include <algorithm>
@@ -78,8 +79,8 @@ FlightResult first_contact(const Ball& ball, const BodyState& s0, const FlightOp
   if (!(gap0 > 0) && !leaving) {
     r.status = FlightStatus::touching_start;
     r.message = "the ball touches or penetrates the floor at the start (centre height " +
-                std::to_string(s0.y) + " m <= support depth " +
-                std::to_string(support(ball, s0.theta).Y) + " m)";
+                message_number(s0.y) + " m <= support depth " +
+                message_number(support(ball, s0.theta).Y) + " m)";
     r.state = s0;
     return r;
   }

@@ -131,8 +131,8 @@ double hooke_damping_ratio(double e) {
   const double e_min = hooke_restitution(zeta_max);
   if (e <= e_min) {
     throw InputError("restitution", "the linear spring-dashpot cannot reach e = " +
-                                        std::to_string(e) + " without overdamping (minimum " +
-                                        std::to_string(e_min) + ")");
+                                        message_number(e) + " without overdamping (minimum " +
+                                        message_number(e_min) + ")");
   }
   auto f = [e](double zeta) { return hooke_restitution(zeta) - e; };
   const numerics::RootResult r = numerics::find_root(f, 0.0, zeta_max);

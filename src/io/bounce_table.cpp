@@ -2,6 +2,7 @@
 
 #include "io/text.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 
 #include <array>
 #include <charconv>
@@ -79,6 +80,10 @@ std::vector<analysis::BounceRow> parse_bounce_table(std::string_view text, const
     for (std::size_t c = 0; c < kColumns.size(); ++c) {
       v[c] = parse_double(trim(fields[col[c]]), where + " (" + kColumns[c] + ")");
       if (!std::isfinite(v[c])) throw InputError(where, std::string(kColumns[c]) + " is not finite");
+      // A value no bounce has (1e308: a typo, a lost decimal point) is refused here: the fit
+      // cannot carry it (docs/cli.md#physical-ranges).
+      const PhysicalRange& r = c == 0 ? ranges::angle_deg : (c == 3 || c == 6) ? ranges::spin : ranges::velocity;
+      if (auto e = range_error(v[c], r, kColumns[c]); !e.empty()) throw InputError(where, e);
     }
     analysis::BounceRow row{v[0], v[1], v[2], v[3], v[4], v[5], v[6]};
     for (std::size_t c = 0; c < kSigmaColumns.size() && sigma_col[0] >= 0; ++c) {

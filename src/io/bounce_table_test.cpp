@@ -46,6 +46,10 @@ TEST(BounceTable, ErrorsNameFileAndLine) {
   EXPECT_THAT(error_of(h), HasSubstr("no data rows"));
   EXPECT_THAT(error_of(""), HasSubstr("empty table"));
   EXPECT_THAT(error_of(h + "1,2,3,4,5,6,nan\n"), HasSubstr("t.csv:2"));
+  // Regression (issue 26): one 1e308 among good rows: refused with its line, not fitted.
+  EXPECT_THAT(error_of(h + "1,2,3,4,5,6,7\n1,2,1e308,4,5,6,7\n"),
+              HasSubstr("t.csv:3: vy_in: 1e+308 m/s is outside the physical range [-1000, 1000] m/s"));
+  EXPECT_THAT(error_of(h + "400,2,3,4,5,6,7\n"), HasSubstr("t.csv:2: theta_deg: 400 deg is outside"));
 }
 
 // The sigma columns bounce analyze --bounces-out writes (issue 27): written when every row

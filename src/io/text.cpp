@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -83,6 +84,42 @@ std::string read_file(const std::string& path, std::uint64_t max_bytes) {
   }
   if (in.bad()) throw InputError(path, "read error");
   return text;
+}
+
+double check_track_value(double v, double max, const std::string& where, std::string_view what) {
+  if (std::abs(v) <= max) return v;
+  throw InputError(where, std::string(what) + " = " + format_number(v) + " is beyond +-" + format_number(max) +
+                              " (the file's units): no tracked run has it (a typo, a lost decimal point, a "
+                              "glitch?), and the fits cannot carry it");
+}
+
+std::string name_text_problem(std::string_view s) {
+  auto byte_at = [&](std::size_t i, const char* what) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s (byte 0x%02x at character %zu)", what,
+                  static_cast<unsigned>(static_cast<unsigned char>(s[i])), i + 1);
+    return std::string(buf);
+  };
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c == 0x7f) return byte_at(i, "contains a control character");
+    // UTF-8 (RFC 3629): lead byte, then 0-3 continuation bytes 10xxxxxx; no overlong forms,
+    // no surrogates, nothing above U+10FFFF.
+    std::size_t n = 0;
+    unsigned lo = 0x80, hi = 0xbf;  // allowed range of the first continuation byte
+    if (c < 0x80) n = 0;
+    else if (c >= 0xc2 && c <= 0xdf) n = 1;
+    else if (c >= 0xe0 && c <= 0xef) { n = 2; if (c == 0xe0) lo = 0xa0; if (c == 0xed) hi = 0x9f; }
+    else if (c >= 0xf0 && c <= 0xf4) { n = 3; if (c == 0xf0) lo = 0x90; if (c == 0xf4) hi = 0x8f; }
+    else return byte_at(i, "is not valid UTF-8");
+    for (std::size_t k = 1; k <= n; ++k) {
+      if (i + k >= s.size()) return byte_at(i, "is not valid UTF-8");
+      const auto d = static_cast<unsigned char>(s[i + k]);
+      if (d < (k == 1 ? lo : 0x80) || d > (k == 1 ? hi : 0xbf)) return byte_at(i + k, "is not valid UTF-8");
+    }
+    i += n + 1;
+  }
+  return {};
 }
 
 std::string format_number(double v) {

@@ -35,6 +35,23 @@ std::string read_file(const std::string& path, std::uint64_t max_bytes = kMaxTex
 /// Formats a double with up to 12 significant digits, shortest form ("0.1", "1e-09").
 std::string format_number(double v);
 
+/// Largest |x|, |y| of a tracked point in its file's units (m, cm, mm, px) and largest |t|
+/// (s or ms): far beyond any tracked run (1e6 mm is a kilometre, 1e6 px a 1000-megapixel
+/// side, 1e8 ms a day), far below where a fit's sums of squares lose every digit. A value
+/// beyond them is a typo, a lost decimal point or a glitch that the fits cannot carry (one
+/// 1e308 among metres gave mu 0.3996 for 0.3001 and no uncertainty): refused with file:line.
+inline constexpr double kMaxTrackCoordinate = 1e6;
+inline constexpr double kMaxTrackTime = 1e8;
+
+/// `v`, or InputError(where, "<what> = V is beyond +-MAX, ...") when |v| > max.
+double check_track_value(double v, double max, const std::string& where, std::string_view what);
+
+/// Empty when `s` can be a name tribolab passes on (a track name, a unit: into JSON, CSV,
+/// reports): valid UTF-8 without control characters (a NUL would cut it short, an invalid
+/// byte stops every JSON writer). Else what is wrong, naming the byte and its position:
+/// "is not valid UTF-8 (byte 0xff at character 3)". The readers throw it with file:line.
+std::string name_text_problem(std::string_view s);
+
 /// A CSV cell for `s`: as it is, or in double quotes (inner quotes doubled) when it holds a
 /// comma, a quote or a line break (RFC 4180).
 std::string csv_quote(const std::string& s);

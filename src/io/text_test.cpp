@@ -54,6 +54,18 @@ TEST(Text, FormatNumberIsShortestRoundTrip) {
   EXPECT_EQ(format_number(2.0), "2");
 }
 
+
+TEST(NameText, AcceptsUtf8AndRefusesControlsAndInvalidBytes) {
+  EXPECT_EQ(name_text_problem("tip A"), "");
+  EXPECT_EQ(name_text_problem("\xc2\xb5m \xe2\x82\xac \xf0\x9f\x8e\xbe"), "");  // µm € and a 4-byte character
+  EXPECT_EQ(name_text_problem(std::string("a\0b", 3)), "contains a control character (byte 0x00 at character 2)");
+  EXPECT_EQ(name_text_problem("a\tb"), "contains a control character (byte 0x09 at character 2)");
+  EXPECT_EQ(name_text_problem("\xff"), "is not valid UTF-8 (byte 0xff at character 1)");
+  EXPECT_EQ(name_text_problem("\xc0\xaf"), "is not valid UTF-8 (byte 0xc0 at character 1)");        // overlong '/'
+  EXPECT_EQ(name_text_problem("\xed\xa0\x80"), "is not valid UTF-8 (byte 0xa0 at character 2)");    // a surrogate
+  EXPECT_EQ(name_text_problem("ab\xe2\x82"), "is not valid UTF-8 (byte 0xe2 at character 3)");      // cut short
+}
+
 }  // namespace
 }  // namespace tribolab::io
 

@@ -44,6 +44,12 @@ std::vector<analysis::ThetaCPoint> parse_theta_c_table(const std::string& text, 
       p.phi = to_rad(phi_deg);
       p.cos_theta_c = parse_double(trim(cells[col_cos]), where);
       if (col_sigma >= 0) p.sigma_cos_theta_c = parse_double(trim(cells[col_sigma]), where);
+      // cos(theta_c) = |v_y|/|v| lies in [0, 1]; a value outside (1e308: a typo) is no
+      // measurement, and the fit cannot carry it.
+      if (!(p.cos_theta_c >= 0 && p.cos_theta_c <= 1))
+        throw InputError(where, "cos_theta_c must be in [0, 1], got " + format_number(p.cos_theta_c));
+      if (!(p.sigma_cos_theta_c >= 0 && p.sigma_cos_theta_c <= 1))
+        throw InputError(where, "sigma_cos_theta_c must be in [0, 1], got " + format_number(p.sigma_cos_theta_c));
       p.source = where;
       pts.push_back(p);
     }

@@ -46,6 +46,8 @@ track::TrackSet parse_tidy_csv(std::string_view text, const std::string& source)
   if (!header) throw InputError(source, "no data: the file holds only blank or # lines");
   const char d = tidy_delimiter(header->text);
   const auto head = cells(header->text, d);
+  std::size_t ncols = head.size();
+  while (ncols > 0 && head[ncols - 1].empty()) --ncols;  // a trailing delimiter
   std::map<std::string, std::size_t> col;
   std::string length_unit;
   double tscale = 1;
@@ -85,6 +87,14 @@ track::TrackSet parse_tidy_csv(std::string_view text, const std::string& source)
     if (tl.empty() || tl.front() == '#') continue;
     const std::string where = at(source, line.number);
     const auto cs = cells(line.text, d);
+    // A cell beyond the header's columns: the row is shifted (a decimal comma in a
+    // comma-separated file, a stray delimiter), never read as if aligned (as the export reader).
+    for (std::size_t k = ncols; k < cs.size(); ++k) {
+      if (!cs[k].empty()) {
+        throw InputError(where, std::to_string(cs.size()) + " cells but the header has " +
+                                    std::to_string(ncols) + " columns (a decimal comma in a comma-separated file?)");
+      }
+    }
     auto cell = [&](const char* name) {
       const std::size_t k = col.at(name);
       if (k >= cs.size()) throw InputError(where, std::string("missing value for '") + name + "'");
@@ -92,6 +102,7 @@ track::TrackSet parse_tidy_csv(std::string_view text, const std::string& source)
     };
     const std::string name(cell("track"));
     if (name.empty()) throw InputError(where, "empty track name");
+    if (auto e = name_text_problem(name); !e.empty()) throw InputError(where, "the track name " + e);
     const double f = parse_double(cell("frame"), where + " (frame)", decimal_comma);
     if (f != std::floor(f) || f < 0 || f > 1e8) {
       throw InputError(where, "frame must be a whole number from 0 to 1e8, got " + format_number(f));
@@ -102,9 +113,9 @@ track::TrackSet parse_tidy_csv(std::string_view text, const std::string& source)
     }
     track::TrackPoint p;
     p.frame = static_cast<int>(f);
-    p.t = parse_double(cell("t"), where + " (t)", decimal_comma) * tscale;
-    p.x = parse_double(cell("x"), where + " (x)", decimal_comma);
-    p.y = parse_double(cell("y"), where + " (y)", decimal_comma);
+    p.t = check_track_value(parse_double(cell("t"), where + " (t)", decimal_comma), kMaxTrackTime, where, "t") * tscale;
+    p.x = check_track_value(parse_double(cell("x"), where + " (x)", decimal_comma), kMaxTrackCoordinate, where, "x");
+    p.y = check_track_value(parse_double(cell("y"), where + " (y)", decimal_comma), kMaxTrackCoordinate, where, "y");
     auto [it, fresh] = index.emplace(name, set.tracks.size());
     if (fresh) {
       set.tracks.push_back({name, {}});

@@ -94,5 +94,37 @@ TEST(KinematicsCsv, EmptyCellsWhereUndefined) {
   EXPECT_EQ(b.str(), "t,x,y,vx,vy,ax,ay,sigma_vx,sigma_vy,sigma_ax,sigma_ay\n0.5,1,2,3,,,,0.1,,,\n");
 }
 
+
+/// The InputError's message for `text` read as s.csv ("" when it is accepted).
+std::string csv_error(const std::string& text) {
+  try {
+    parse_tracks(text, "s.csv");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Regression (issue 26): "...,0,5,..." from a decimal comma was read as x = 0, y = 5.
+TEST(TidyCsv, RowWithACellTooManyIsRefusedWithItsLine) {
+  EXPECT_THAT(csv_error("track,frame,t,x,y\na,0,0,1,2\na,1,0.1,0,5,3\n"), HasSubstr("s.csv:3: 6 cells but the header has 5 columns"));
+  EXPECT_EQ(csv_error("track,frame,t,x,y,\na,0,0,1,2,\na,1,0.1,1,3\n"), "");  // trailing delimiters are no cells
+}
+
+// Regression (issue 26): a NUL in a track name lost the point; invalid UTF-8 stopped the JSON writer.
+TEST(TidyCsv, TrackNameWithNulOrInvalidUtf8IsRefusedWithItsLine) {
+  EXPECT_THAT(csv_error(std::string("track,frame,t,x,y\na,0,0,1,2\na") + '\0' + "b,1,0.1,1,3\n"),
+              HasSubstr("s.csv:3: the track name contains a control character (byte 0x00 at character 2)"));
+  EXPECT_THAT(csv_error("track,frame,t,x,y\nb\xff,0,0,1,2\n"), HasSubstr("s.csv:2: the track name is not valid UTF-8 (byte 0xff"));
+  EXPECT_EQ(csv_error("track,frame,t,x,y\n\xce\xbc-tip,0,0,1,2\n"), "");  // UTF-8 is welcome
+}
+
+// Regression (issue 26): one 1e308 in a good run gave mu 0.3996 (0.3001 without it), sigma null.
+TEST(TidyCsv, ValueNoRunHasIsRefusedWithItsLine) {
+  EXPECT_THAT(csv_error("track,frame,t,x,y\na,0,0,1,2\na,1,0.1,1e308,3\n"), HasSubstr("s.csv:3: x = 1e+308 is beyond"));
+  EXPECT_THAT(csv_error("track,frame,t,x,y\na,0,0,1,2\na,1,1e9,1,3\n"), HasSubstr("s.csv:3: t = 1000000000 is beyond +-100000000"));
+  EXPECT_EQ(csv_error("track,frame,t,x (mm),y (mm)\na,0,0,-999999,2\n"), "");  // a kilometre in mm: accepted
+}
+
 }  // namespace
 }  // namespace tribolab::io

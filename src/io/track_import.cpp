@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 namespace tribolab::io {
 
@@ -64,6 +65,15 @@ double metres_per_unit(const std::string& unit, const std::string& where) {
 
 void finish_import(track::TrackSet& set, const ImportOptions& options) {
   if (const auto err = options.validate(); !err.empty()) throw InputError(err);
+  // Two tracks of one name: --track could pick only the first, a series would mix them up.
+  std::map<std::string, std::size_t> first_of;
+  for (std::size_t i = 0; i < set.tracks.size(); ++i) {
+    const auto [it, fresh] = first_of.emplace(set.tracks[i].name, i);
+    if (!fresh)
+      throw InputError(set.source, "two tracks are named '" + set.tracks[i].name + "' (tracks " +
+                                       std::to_string(it->second + 1) + " and " + std::to_string(i + 1) +
+                                       "): rename one");
+  }
   // track selection (before the checks, so unwanted broken tracks do not matter)
   if (!options.tracks.empty()) {
     std::vector<track::Track> chosen;

@@ -95,7 +95,10 @@ track::TrackSet parse_export_text(std::string_view text, const std::string& sour
   if (name_row) {
     const auto nc = cells(name_row->text, *delim, ncols);
     for (std::size_t k = 0; k < nc.size(); ++k) {
-      if (!nc[k].empty()) names.emplace_back(k, std::string(nc[k]));
+      if (nc[k].empty()) continue;
+      if (auto e = name_text_problem(nc[k]); !e.empty())
+        throw InputError(at(source, name_row->number), "the track name in column " + std::to_string(k + 1) + " " + e);
+      names.emplace_back(k, std::string(nc[k]));
     }
   }
   std::vector<std::pair<std::size_t, std::size_t>> ranges;  // [begin, end) of each group
@@ -167,6 +170,9 @@ track::TrackSet parse_export_text(std::string_view text, const std::string& sour
         throw InputError(where, "track '" + gr.name + "' has " + (x ? "x but no y" : "y but no x"));
       }
       if (!t) throw InputError(where, "a point of track '" + gr.name + "' has no time");
+      check_track_value(*t, kMaxTrackTime, where, "t");
+      check_track_value(*x, kMaxTrackCoordinate, where, "x of track '" + gr.name + "'");
+      check_track_value(*y, kMaxTrackCoordinate, where, "y of track '" + gr.name + "'");
       long long frame = row;
       if (gr.frame) {
         const auto f = parse_optional_double(cell(*gr.frame), where, decimal_comma);

@@ -136,5 +136,21 @@ TEST(TrackerExport, ClearErrorsWithFileAndLine) {
   expect_error("#multi:\n", "no data");
 }
 
+
+// Regression (issue 26): a non-UTF-8 track name and a 1e308 value: refused with file:line.
+TEST(TrackerExport, InvalidNameOrValueIsRefusedWithItsLine) {
+  auto error = [](const std::string& text) {
+    try {
+      parse_tracks(text, "e.txt");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_THAT(error("A\xff\t\t\nt\tx\ty\n0\t1\t2\n0.1\t1\t3\n"), HasSubstr("e.txt:1: the track name in column 1 is not valid UTF-8"));
+  EXPECT_THAT(error("A\t\t\nt\tx\ty\n0\t1\t2\n0.1\t1e308\t3\n"), HasSubstr("e.txt:4: x of track 'A' = 1e+308 is beyond"));
+  EXPECT_THAT(error("A\t\t\tA\t\t\nt\tx\ty\tt\tx\ty\n0\t1\t2\t0\t1\t2\n"), HasSubstr("two tracks are named 'A'"));
+}
+
 }  // namespace
 }  // namespace tribolab::io

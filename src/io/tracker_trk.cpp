@@ -65,7 +65,12 @@ class Reader {
 
   double req_double(pugi::xml_node obj, const char* name, const std::string& path) {
     const auto v = opt_double(obj, name, path);
-    if (!v) fail(path + "/" + name, "missing element (a number is required here)");
+    if (!v) {
+      const pugi::xml_node p = property(obj, name);
+      fail(path + "/" + name, !p ? "missing element (a number is required here)"
+                              : trim(p.child_value()).empty() ? "empty element (a number is required here)"
+                                                              : "NaN where a number is required");
+    }
     return *v;
   }
 
@@ -288,6 +293,7 @@ TrkProject parse_trk_project(std::string_view xml, const std::string& source) {
     track::Track tr;
     tr.name = std::string(trim(property(obj, "name").child_value()));
     if (tr.name.empty()) tr.name = "track " + std::to_string(item);
+    if (auto e = name_text_problem(tr.name); !e.empty()) r.fail(base + "/name", "the track name " + e);
     const std::string path = base + "(" + tr.name + ")/framedata";
     const pugi::xml_node fd = property(obj, "framedata");
     std::size_t dropped = 0;
@@ -297,7 +303,9 @@ TrkProject parse_trk_project(std::string_view xml, const std::string& source) {
       const std::string p = path + "/[" + std::to_string(n) + "]";
       const pugi::xml_node f = object_of(entry);
       if (!f) r.fail(p, "missing element object");
-      marks[n] = {r.req_double(f, "x", p), r.req_double(f, "y", p)};
+      const std::pair<double, double> xy{check_track_value(r.req_double(f, "x", p), kMaxTrackCoordinate, r.source() + ": " + p, "x (px)"),
+                                         check_track_value(r.req_double(f, "y", p), kMaxTrackCoordinate, r.source() + ": " + p, "y (px)")};
+      if (!marks.emplace(n, xy).second) r.fail(p, "frame " + std::to_string(n) + " is marked twice in this track");
     }
     for (const auto& [n, px] : marks) {
       if (!clip.on_step(n)) {

@@ -262,5 +262,47 @@ TEST(TrackerTrk, FixedCoordinateSystemTakesTheLastKeyEverywhere) {
   EXPECT_EQ(coord_at(p.coords, 11).frame, 11);
 }
 
+
+// Regression (issue 26): a frame marked twice in one track kept the last mark silently.
+TEST(TrackerTrk, FrameMarkedTwiceInATrackIsRefused) {
+  const std::string xml = write_trk(world_tracks(), spec());
+  expect_error(replace(xml, "name=\"[5]\"", "name=\"[3]\""), "(mass A)/framedata/[3]: frame 3 is marked twice");
+}
+
+// Regression (issue 26): "NaN" where a number is required was called a "missing element".
+TEST(TrackerTrk, NaNWhereANumberIsRequiredIsCalledNaN) {
+  const std::string xml = write_trk(world_tracks(), spec());
+  expect_error(replace(xml, ">400.0<", ">NaN<"), "xscale: NaN where a number is required");
+}
+
+// Regression (issue 26): a non-UTF-8 name ended in "[json.exception.type_error.316]" without a file.
+TEST(TrackerTrk, TrackNameOfInvalidUtf8IsRefusedWithItsElement) {
+  const std::string xml = write_trk(world_tracks(), spec());
+  expect_error(replace(xml, ">mass A<", ">mass \xe9<"), "/name: the track name is not valid UTF-8 (byte 0xe9");
+}
+
+TEST(TrackerTrk, MarkBeyondAMillionPixelsIsRefused) {
+  const std::string xml = write_trk(world_tracks(), spec());
+  const std::string mark = "name=\"x\" type=\"double\">";
+  const auto x = xml.find(mark);
+  ASSERT_NE(x, std::string::npos);
+  const auto begin = x + mark.size(), end = xml.find('<', begin);
+  std::string bad = xml;
+  bad.replace(begin, end - begin, "1e308");
+  expect_error(bad, "x (px) = 1e+308 is beyond");
+}
+
+// Regression (issue 26): two tracks of one name: --track picked the first, silently.
+TEST(TrackImport, TwoTracksOfOneNameAreRefused) {
+  std::vector<Track> tracks = world_tracks();
+  tracks[1].name = tracks[0].name;
+  try {
+    parse_tracks(write_trk(tracks, spec()), "twins.trk");
+    FAIL() << "two tracks named 'mass A' accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("twins.trk: two tracks are named 'mass A' (tracks 1 and 2)"));
+  }
+}
+
 }  // namespace
 }  // namespace tribolab::io

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "numerics/error.hpp"
+#include "numerics/message_number.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -50,14 +51,25 @@ inline constexpr PhysicalRange time_scale{1e-5, 1e3, ""};            ///< real s
 }  // namespace ranges
 
 /// Shortest round-trip-ish form of v for messages ("1e+308", "1000", "0.5").
-inline std::string range_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
+inline std::string range_number(double v) { return message_number(v); }
+
+/// Empty when v is a normal number or zero; else why not ("is subnormal ..."). A subnormal
+/// (0 < |v| < 2.2e-308) keeps fewer than 53 bits and turns into inf or NaN at the first
+/// division (a stiffness of 1e-320 N/m^n makes every sweep cell NaN, a scale of 1e-320 m/px
+/// an origin of -inf px): no physical input is that small, so it is refused rather than
+/// carried (docs/cli.md#physical-ranges).
+inline std::string subnormal_error(double v) {
+  if (v == 0 || !std::isfinite(v) || std::isnormal(v)) return {};
+  char typed[16];  // 3 digits: what was typed (1e-320 is stored as 9.99989e-321)
+  std::snprintf(typed, sizeof typed, "%.3g", v);
+  return std::string(typed) + " is subnormal (closer to 0 than 2.2e-308, where doubles lose their "
+                           "precision): give 0 or a normal number";
 }
 
-/// Empty when v is finite and within r; else "V UNIT is outside the physical range [LO, HI] UNIT".
+/// Empty when v is finite, not subnormal and within r; else "V UNIT is outside the physical
+/// range [LO, HI] UNIT" (or the subnormal_error).
 inline std::string range_error(double v, const PhysicalRange& r) {
+  if (std::string e = subnormal_error(v); !e.empty()) return e;
   const std::string unit = r.unit.empty() ? "" : " " + std::string(r.unit);
   if (std::isfinite(v) && (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi) return {};
   return range_number(v) + unit + " is outside the physical range " + (r.lo_open ? "(" : "[") +

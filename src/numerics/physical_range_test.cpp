@@ -38,5 +38,23 @@ TEST(PhysicalRange, CheckRangeThrowsNamingTheOption) {
   EXPECT_EQ(check_range(-4, ranges::velocity, "--vy"), -4);
 }
 
+// Regression (issue 26): `bounce sweep --K 1e-320` made every cell NaN and `bounce render
+// --scale 1e-320` printed an origin of -inf px; a subnormal passed every range with lo = 0.
+TEST(PhysicalRange, SubnormalIsRefusedEvenInsideTheRange) {
+  EXPECT_EQ(range_error(1e-320, ranges::stiffness, "K"),
+            "K: 1e-320 is subnormal (closer to 0 than 2.2e-308, where doubles lose their precision): give 0 or a normal number");
+  EXPECT_FALSE(range_error(-1e-320, ranges::velocity).empty());
+  EXPECT_EQ(range_error(std::numeric_limits<double>::min(), ranges::stiffness), "");  // the smallest normal
+  EXPECT_EQ(range_error(0.0, ranges::velocity), "");
+}
+
+// Regression (issue 26): `--max-turn-deg 1e308` was echoed with 309 digits (std::to_string).
+TEST(MessageNumber, SixSignificantDigits) {
+  EXPECT_EQ(message_number(1e308), "1e+308");
+  EXPECT_EQ(message_number(1e-7), "1e-07");
+  EXPECT_EQ(message_number(0.5), "0.5");
+  EXPECT_EQ(message_number(-std::numeric_limits<double>::infinity()), "-inf");
+}
+
 }  // namespace
 }  // namespace tribolab

@@ -4,6 +4,7 @@
 
 #include <boost/math/distributions/students_t.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -31,15 +32,23 @@ PolyFit fit_polynomial(std::span<const double> x, std::span<const double> y, int
     throw InputError(what + ": a degree-" + std::to_string(degree) + " fit needs at least " +
                      std::to_string(p + 1) + " points, got " + std::to_string(n));
   }
-  Eigen::MatrixXd A(n, p);
-  Eigen::VectorXd b(n);
+  // The columns are powers of x / scale (|x / scale| <= 1), the coefficients scaled back
+  // below: in raw units the columns of a local fit over 25 frames at 50 kHz (|x| <= 2.5e-4 s)
+  // span 1 to 4e-15 for degree 4, and QR's rank test took them for dependent (docs/theory.md#fitting).
+  double scale = 0;
   for (int i = 0; i < n; ++i) {
     require_finite(x[i], what + " x value");
     require_finite(y[i], what + " y value");
+    scale = std::max(scale, std::abs(x[i]));
+  }
+  if (!(scale > 1e-60 && scale < 1e60)) scale = 1;  // scale^degree stays finite
+  Eigen::MatrixXd A(n, p);
+  Eigen::VectorXd b(n);
+  for (int i = 0; i < n; ++i) {
     double xk = 1.0;
     for (int k = 0; k < p; ++k) {
       A(i, k) = xk;
-      xk *= x[i];
+      xk *= x[i] / scale;
     }
     b(i) = y[i];
   }
@@ -53,7 +62,9 @@ PolyFit fit_polynomial(std::span<const double> x, std::span<const double> y, int
   PolyFit f;
   f.n = n;
   f.dof = n - p;
-  f.coef.assign(c.data(), c.data() + p);
+  std::vector<double> unscale(p, 1.0);  // 1 / scale^k
+  for (int k = 1; k < p; ++k) unscale[k] = unscale[k - 1] / scale;
+  for (int k = 0; k < p; ++k) f.coef.push_back(c(k) * unscale[k]);
   const double ss_res = r.squaredNorm();
   const double mean = b.mean();
   const double ss_tot = (b.array() - mean).square().sum();
@@ -67,6 +78,8 @@ PolyFit fit_polynomial(std::span<const double> x, std::span<const double> y, int
   const Eigen::MatrixXd cov_perm = Rinv * Rinv.transpose();
   const auto& perm = qr.colsPermutation();
   f.covariance = perm * cov_perm * perm.transpose() * (f.noise * f.noise);
+  for (int j = 0; j < p; ++j)
+    for (int k = 0; k < p; ++k) f.covariance(j, k) *= unscale[j] * unscale[k];
   for (int k = 0; k < p; ++k) f.sigma.push_back(std::sqrt(std::max(0.0, f.covariance(k, k))));
   return f;
 }

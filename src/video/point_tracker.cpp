@@ -5,6 +5,7 @@
 #include "video/point_tracker.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/message_number.hpp"
 #include "numerics/units.hpp"
 #include "video/motion_model.hpp"
 
@@ -151,10 +152,10 @@ std::string PointTrackerOptions::validate() const {
   }
   if (search_px < 0) return "search_px must be >= 0, got " + std::to_string(search_px);
   if (!(min_score > 0 && min_score < 1)) {
-    return "min_score must lie in (0, 1), got " + std::to_string(min_score);
+    return "min_score must lie in (0, 1), got " + message_number(min_score);
   }
   if (!(max_turn_deg >= 0 && max_turn_deg <= 90)) {
-    return "max_turn_deg must lie in [0, 90], got " + std::to_string(max_turn_deg);
+    return "max_turn_deg must lie in [0, 90], got " + message_number(max_turn_deg);
   }
   if (max_gap_frames < 0) {
     return "max_gap_frames must be >= 0, got " + std::to_string(max_gap_frames);

@@ -572,6 +572,9 @@ TEST(PointTracker, ValidatesItsOptions) {
   o = {};
   o.max_turn_deg = -1;
   EXPECT_THROW(PointTracker{o}, InputError);
+  // Regression (issue 26): 1e308 was echoed with 309 digits (std::to_string).
+  o.max_turn_deg = 1e308;
+  EXPECT_EQ(o.validate(), "max_turn_deg must lie in [0, 90], got 1e+308");
 }
 
 TEST(PointTracker, RejectsAStartOutsideTheImage) {

@@ -305,6 +305,7 @@ VideoInput open_plain(const std::string& path, const SourceOptions& o) {
     throw InputError(path, "the video states no frame rate: give it with " + field("fps"));
   }
   in.time.time_scale = o.time_scale;
+  in.frame_times_from_timestamps = !(o.fps > 0);
   in.calibration = plain_calibration(o, in.info, in.warnings);
   return in;
 }
@@ -384,6 +385,41 @@ struct FrameReader::Impl {
   int next_index = 0;  // video index of the frame the next grab() returns
   int steps_done = 0;
   bool finished = false;
+  double last_t = -INFINITY;  // s, the previous frame's time
+  int timestamped = 0;        // frames whose time is their timestamp, not the frame grid's
+  int first_timestamped = -1;
+  double first_nominal = 0, first_stamp = 0;  // s, of that first frame
+  std::vector<std::string> warnings;
+
+  /// The time of the frame just decoded (docs/theory.md#video-input-and-the-track-video-workflow):
+  /// the frame grid's t(index) until a frame's timestamp departs from it by more than a
+  /// quarter of a frame (a variable-frame-rate video: phones drop and stretch frames); from
+  /// that frame on, every frame's timestamp. (Below a quarter frame the grid is the better
+  /// clock: Matroska rounds timestamps to 1 ms, a third of a millisecond off at 30 fps.)
+  double frame_time(int index) {
+    const double nominal = input.time.t(index);
+    if (!input.frame_times_from_timestamps) return nominal;
+    const double ms = cap.get(cv::CAP_PROP_POS_MSEC);
+    const double stamp = (input.time.start_time_s + ms / 1000) * input.time.time_scale;
+    const double tol = 0.25 * input.time.frame_duration_s * input.time.time_scale;
+    if (!std::isfinite(ms) || !(stamp > last_t)) return nominal;
+    if (timestamped == 0 && !(std::abs(stamp - nominal) > tol)) return nominal;
+    if (timestamped++ == 0) {
+      first_timestamped = index;
+      first_nominal = nominal;
+      first_stamp = stamp;
+    }
+    return stamp;
+  }
+
+  void note_timestamps() {
+    if (timestamped == 0 || !warnings.empty()) return;
+    warnings.push_back("variable frame rate: " + std::to_string(timestamped) +
+                       " frame(s) take their timestamps, not the average frame time's grid (from frame " +
+                       std::to_string(first_timestamped) + " at t = " + io::format_number(first_stamp) +
+                       " s, not " + io::format_number(first_nominal) + " s); give " + field("fps") +
+                       " to impose a constant rate");
+  }
 
   /// End of the decodable frames at `needed`: a clip that asks for more, or a video that
   /// stops well short of what its container announced, is truncated.
@@ -424,7 +460,10 @@ FrameReader::~FrameReader() = default;
 bool FrameReader::next(Frame& frame) {
   Impl& m = *impl_;
   const Clip& clip = m.input.clip;
-  if (m.finished || (clip.step_count > 0 && m.steps_done >= clip.step_count)) return false;
+  if (m.finished || (clip.step_count > 0 && m.steps_done >= clip.step_count)) {
+    m.note_timestamps();
+    return false;
+  }
   const int target = clip.start_frame + m.steps_done * clip.step_size;
   try {
     while (m.next_index < target) {  // frames outside the clip: demuxed, never converted
@@ -434,7 +473,10 @@ bool FrameReader::next(Frame& frame) {
     // a fresh Mat each frame: trackers may keep (shallow copies of) earlier frames, which
     // decoding into a reused buffer would overwrite
     cv::Mat bgr;
-    if (!m.cap.read(bgr) || bgr.empty()) return m.end(target);
+    if (!m.cap.read(bgr) || bgr.empty()) {
+      m.note_timestamps();
+      return m.end(target);
+    }
     frame.bgr = bgr;
   } catch (const cv::Exception&) {
     throw InputError(m.input.input, "decoding failed at frame " + std::to_string(target));
@@ -442,11 +484,13 @@ bool FrameReader::next(Frame& frame) {
   ++m.next_index;
   ++m.steps_done;
   frame.index = target;
-  frame.t = m.input.time.t(target);
+  frame.t = m.last_t = m.frame_time(target);
   frame.gray = cv::Mat();
   make_gray(frame);
   return true;
 }
+
+const std::vector<std::string>& FrameReader::warnings() const { return impl_->warnings; }
 
 int FrameReader::expected_steps() const {
   const Clip& c = impl_->input.clip;

@@ -100,6 +100,10 @@ struct VideoInput {
   std::vector<track::Track> marks_px;
   std::vector<std::string> warnings;  ///< e.g. "no scale: positions are in pixels"
   std::shared_ptr<void> temp_owner;   ///< keeps an extracted temporary video alive
+  /// A plain video without --fps: from the first frame whose timestamp (the container's
+  /// presentation time) departs from time.t(frame) by more than a quarter frame, frames take
+  /// their timestamps (variable frame rate; FrameReader::warnings() says so).
+  bool frame_times_from_timestamps = false;
 };
 
 /// Opens `path` (video, .trk or .trz), reads the container's facts and the project's clip,
@@ -119,6 +123,8 @@ class FrameReader {
   bool next(Frame& frame);
   /// Steps the clip holds (an estimate from the container when step_count is 0).
   int expected_steps() const;
+  /// What the decoding found out, e.g. a variable frame rate (after the frames are read).
+  const std::vector<std::string>& warnings() const;
 
  private:
   struct Impl;

@@ -3,6 +3,7 @@
 #include "io/track_import.hpp"
 #include "io/tracker_trk.hpp"
 #include "numerics/error.hpp"
+#include "numerics/source_dir_test_util.hpp"
 #include "video/test_videos.hpp"
 
 #include <gmock/gmock.h>
@@ -287,5 +288,30 @@ TEST(Source, TruncatedVideoIsAnErrorNotAShortTrack) {
   expect_input_error(dir + "/head.avi", {}, "head.avi");
 }
 
+// Regression (issue 26): a variable-frame-rate video was timed by one average frame time
+// (frame 39 at t = 1.973 s, its real timestamp 1.27 s), without a warning.
+TEST(FrameReader, VariableFrameRateTakesTheTimestamps) {
+  const std::string path = test_source_dir() + "/src/video/testdata/vfr.mkv";  // make_vfr.sh
+  const VideoInput in = open_input(path, SourceOptions{});
+  FrameReader reader(in);
+  std::vector<double> t;
+  Frame f;
+  while (reader.next(f)) t.push_back(f.t);
+  ASSERT_EQ(t.size(), 14u);
+  // Frames 0-10 on the 30 fps grid (their 1 ms-rounded timestamps are within a quarter frame).
+  for (int k = 0; k <= 10; ++k) EXPECT_DOUBLE_EQ(t[k], k / 30.0) << k;
+  // Then the timestamps, 2/30 s apart, to Matroska's 1 ms.
+  for (int k = 11; k < 14; ++k) EXPECT_NEAR(t[k], (10 + 2 * (k - 10)) / 30.0, 1e-3) << k;
+  ASSERT_EQ(reader.warnings().size(), 1u);
+  EXPECT_THAT(reader.warnings()[0], HasSubstr("variable frame rate: 3 frame(s) take their timestamps"));
+  EXPECT_THAT(reader.warnings()[0], HasSubstr("from frame 11 at t = 0.4 s, not 0.366666666667 s"));
+
+  // --fps imposes a constant rate: the grid everywhere, no warning.
+  SourceOptions fixed;
+  fixed.fps = 30;
+  FrameReader grid(open_input(path, fixed));
+  for (int k = 0; grid.next(f); ++k) EXPECT_DOUBLE_EQ(f.t, k / 30.0) << k;
+  EXPECT_TRUE(grid.warnings().empty());
+}
 }  // namespace
 }  // namespace tribolab::video

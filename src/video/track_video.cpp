@@ -316,6 +316,7 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
     result.thumbnails.push_back(std::move(t));
   }
   result.warnings = in.warnings;
+  for (const auto& w : reader.warnings()) result.warnings.push_back(w);
   for (const Follower& w : followers) {  // an ellipse's ends are lost with its centre
     const TrackedSeries& s = result.series[w.series[0]];
     if (s.lost_ranges.empty()) continue;
