@@ -19,7 +19,6 @@ std::string ImpactOptions::validate() const {
   if (!(threshold > 0) || !std::isfinite(threshold)) return "impact threshold must be positive";
   if (!(min_jump >= 0) || !std::isfinite(min_jump)) return "impact min_jump must be >= 0 m/s";
   if (!(min_noise >= 0) || !std::isfinite(min_noise)) return "impact min_noise must be >= 0 m";
-  if (!(smooth_p > 0 && smooth_p < 1)) return "impact smooth_p must lie in (0, 1)";
   return "";
 }
 
@@ -47,6 +46,10 @@ double robust_noise(const std::vector<double>& t, const std::vector<double>& v) 
 }
 
 namespace {
+
+/// Size of the F test that keeps a candidate only when smooth turning motion does not explain
+/// its windows as well as two parabolas with a jump (docs/theory.md#impacts).
+constexpr double kSmoothP = 1e-3;
 
 struct SplitTest {
   double dvx = 0, dvy = 0, sig = 0, t = 0;
@@ -206,7 +209,7 @@ ImpactResult detect_impacts(const Track& track, const ImpactOptions& options) {
     // disagree by far more than the noise: no impact unless smooth turning motion fails too
     if (candidate[k]) {
       candidate[k] = !smooth_motion_explains(t, x, y, tests[k], 0.5 * (t[k] + t[k + 1]), std::max(sx, floor),
-                                             std::max(sy, floor), options.smooth_p);
+                                             std::max(sy, floor), kSmoothP);
     }
   }
   // keep the most significant split of each run of candidates closer than `window`

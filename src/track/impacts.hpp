@@ -8,11 +8,7 @@
 // noise sigma estimated robustly from the whole track (median absolute third divided
 // difference). A split is an impact when the jump is both significant (|dv|/sd above
 // `threshold`, combining x and y) and large (|dv| above `min_jump`); of neighbouring
-// candidates the most significant wins. A candidate is dropped when a smooth turning motion
-// (uniform translation plus uniform rotation of a point: a mark on a wheel, any arc of
-// constant curvature) fits its two windows as well as the two parabolas do (F test at
-// `smooth_p`): parabolas cannot follow a circle sampled at 20+ degrees per frame, and their
-// extrapolations then "jump" by many noise sigmas without any impact.
+// candidates the most significant wins.
 #pragma once
 
 #include "track/track.hpp"
@@ -28,9 +24,6 @@ struct ImpactOptions {
   double threshold = 10;    ///< significance of the jump, in standard deviations, e.g. 10
   double min_jump = 0.3;    ///< smallest velocity jump counted as an impact, m/s, e.g. 0.3
   double min_noise = 1e-6;  ///< floor of the estimated position noise, m (exact synthetic data)
-  /// Size of the F test that keeps a candidate only when smooth turning motion does not explain
-  /// its windows as well as two parabolas with a jump (docs/theory.md#impacts), e.g. 0.001
-  double smooth_p = 1e-3;
   /// Empty when valid, else a message naming the bad field.
   std::string validate() const;
 };

@@ -2,6 +2,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/least_squares.hpp"
+#include "track/local_spin.hpp"
 
 #include <Eigen/Dense>
 
@@ -37,6 +38,21 @@ struct PivotModel {
       const T th = p[5] + p[6] * ui + 0.5 * p[7] * ui * ui;
       res[2 * i] = (*x)[i] - (p[0] + p[2] * ui + p[4] * cos(th));
       res[2 * i + 1] = (*y)[i] - (p[1] + p[3] * ui + p[4] * sin(th));
+    }
+    return true;
+  }
+};
+
+/// Geometric circle: residuals |p_i - c| - r for p = [x_c, y_c, r] (no time dependence).
+struct CircleModel {
+  const std::vector<double>* x;  ///< m
+  const std::vector<double>* y;  ///< m
+  template <class T>
+  bool operator()(const T* p, T* res) const {
+    using std::sqrt;
+    for (std::size_t i = 0; i < x->size(); ++i) {
+      const T dx = (*x)[i] - p[0], dy = (*y)[i] - p[1];
+      res[i] = sqrt(dx * dx + dy * dy) - p[2];
     }
     return true;
   }
@@ -166,8 +182,27 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
       {"pivot_vx", vx, {}, {}, !options.moving_pivot}, {"pivot_vy", vy, {}, {}, !options.moving_pivot},
       {"radius", r0, 0.0, {}, false},               {"theta_ref", th0, {}, {}, false},
       {"omega", w0, {}, {}, false},                 {"alpha", 0, {}, {}, false}};
-  const numerics::FitResult fit =
+  numerics::FitResult fit =
       numerics::fit_least_squares_autodiff(PivotModel{&u, &x, &y}, static_cast<int>(2 * n), params);
+  // A pendulum's angle swings: no quadratic theta(t) follows it and the joint fit's residuals
+  // exceed the noise. The circle alone (geometric fit, no time) then places the pivot, and the
+  // angle model is refitted about it (omega, alpha only summarise; the local spins hold).
+  numerics::FitResult circle;
+  if (fit_pivot && !options.moving_pivot) {
+    circle = numerics::fit_least_squares_autodiff(
+        CircleModel{&x, &y}, static_cast<int>(n),
+        {{"pivot_x", px, {}, {}, false}, {"pivot_y", py, {}, {}, false}, {"radius", r0, 0.0, {}, false}});
+    const auto rms = [](const numerics::FitResult& f) { return f.dof > 0 ? std::sqrt(2 * f.cost / f.dof) : nan; };
+    // per coordinate and radially both estimate the noise sigma; twice it is a clear misfit
+    if (circle.ok() && (!fit.ok() || rms(fit) > 2 * rms(circle))) {
+      out.pivot_from_circle = true;
+      for (auto& q : params) {
+        if (q.name == "pivot_x" || q.name == "pivot_y" || q.name == "radius") q.initial = circle.value(q.name);
+        if (q.name == "pivot_x" || q.name == "pivot_y") q.fixed = true;
+      }
+      fit = numerics::fit_least_squares_autodiff(PivotModel{&u, &x, &y}, static_cast<int>(2 * n), params);
+    }
+  }
   const std::string where = "track '" + track.name + "'";
   const auto deg = [](double rad) { return rad * 180 / std::numbers::pi; };
   const double arc_start = th.back() - th.front();
@@ -180,8 +215,8 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
   }
   out.pivot_x = fit.value("pivot_x");
   out.pivot_y = fit.value("pivot_y");
-  out.sigma_pivot_x = fit.sigma_of("pivot_x");
-  out.sigma_pivot_y = fit.sigma_of("pivot_y");
+  out.sigma_pivot_x = out.pivot_from_circle ? circle.sigma_of("pivot_x") : fit.sigma_of("pivot_x");
+  out.sigma_pivot_y = out.pivot_from_circle ? circle.sigma_of("pivot_y") : fit.sigma_of("pivot_y");
   out.pivot_vx = fit.value("pivot_vx");
   out.pivot_vy = fit.value("pivot_vy");
   out.sigma_pivot_vx = fit.sigma_of("pivot_vx");
@@ -220,14 +255,20 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
   // the data must determine the pivot: a short arc fits circles of any radius nearly as well
   if (fit_pivot) {
     const double worst = std::max({out.sigma_pivot_x, out.sigma_pivot_y, out.sigma_radius});
+    if (!(worst <= options.max_pivot_sigma * out.radius) && out.rms_residual > 0.3 * out.radius) {
+      throw InputError(where, "its points do not lie on a circle about one pivot: they stray from the best one by " +
+                                  num(out.rms_residual, 2) + " m rms, " + num(100 * out.rms_residual / out.radius, 2) +
+                                  " % of its radius " + num(out.radius) + " m (a point that does not turn, or " +
+                                  "moves otherwise); with a pivot known, give it with " + field("pivot_x") + "/" +
+                                  field("pivot_y"));
+    }
     if (!(worst <= options.max_pivot_sigma * out.radius)) {
       throw InputError(where, "the arc of " + num(std::round(deg(std::abs(out.arc))), 6) +
                                   " deg it covers does not determine its pivot: the fitted radius " + num(out.radius) +
                                   " +- " + num(out.sigma_radius, 2) + " m, pivot (" + num(out.pivot_x) + " +- " +
                                   num(out.sigma_pivot_x, 2) + ", " + num(out.pivot_y) + " +- " +
                                   num(out.sigma_pivot_y, 2) + ") m (standard errors above " +
-                                  num(100 * options.max_pivot_sigma) + " % of the radius, " + field("max_pivot_sigma") +
-                                  "); give the pivot with " + field("pivot_x") + "/" + field("pivot_y") +
+                                  num(100 * options.max_pivot_sigma) + " % of the radius); give the pivot with " + field("pivot_x") + "/" + field("pivot_y") +
                                   ", or track more of the turn");
     }
   }

@@ -8,8 +8,10 @@
 // to all 2n coordinates (Ceres, numerics/least_squares.hpp), so that the standard errors of
 // omega and alpha include the uncertainty of the pivot and the radius (the noise level from
 // the residuals, the same on x and y). v_x = v_y = 0 unless the pivot moves; x_p, y_p fixed
-// when given. The angle of every point about the fitted pivot is then unwrapped against the
-// fitted theta(t), and local spins come from sliding linear fits (track/rigid_body.hpp).
+// when given. When that fit leaves residuals above twice those of a geometric circle fit
+// (|p_i - c| - r, no time: a pendulum's angle swings, no quadratic follows it), the circle
+// places the pivot and the angle model is refitted about it. The angle of every point about the fitted pivot is then unwrapped against the
+// fitted theta(t), and local spins come from sliding linear fits (track/local_spin.hpp).
 //
 // Aliasing: the point must turn by less than pi between consecutive points.
 #pragma once
@@ -74,6 +76,9 @@ struct PivotRotation {
   double alpha = 0, sigma_alpha = 0;  ///< angular acceleration, rad/s^2
   double rms_residual = 0;            ///< per coordinate, m (the noise estimate)
   int dof = 0;                        ///< 2n - free parameters
+  /// True when theta(t) is not quadratic (a pendulum swings): the pivot then comes from the
+  /// geometric circle fit alone and omega, alpha only summarise the spin
+  bool pivot_from_circle = false;
   double arc = 0;                     ///< theta_last - theta_first, rad
   double max_turn = 0;                ///< largest |theta_i+1 - theta_i|, rad
 };

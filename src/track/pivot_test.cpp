@@ -127,6 +127,33 @@ TEST(Pivot, RollingWheelMarkAboutAMovingAxle) {
   EXPECT_NEAR(p.pivot_vy, 0, 4 * p.sigma_pivot_vy);
 }
 
+TEST(Pivot, APendulumBobsPivotComesFromItsCircle) {
+  // A bob 0.5 m below a pivot at (0, 1) swinging +-0.5 rad with a 1.4 s period, 60 fps for
+  // 2 s, 1 mm noise: no quadratic theta(t) follows the swing, so the pivot comes from the circle
+  // alone (within 4 of its sigmas) and the local spins follow dtheta/dt (7 points, 5 sigmas,
+  // interior rows; the window's curvature bias, A Omega^3 h^2 w^2/24 ~ 0.03 rad/s, is well
+  // below them).
+  const double len = 0.5, amp = 0.5, big_omega = 2 * std::numbers::pi / 1.4, fps = 60;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> e(0, 0.001);
+  Track t{"bob", {}};
+  for (int i = 0; i < 120; ++i) {
+    const double ti = i / fps, th = -std::numbers::pi / 2 + amp * std::sin(big_omega * ti);
+    t.points.push_back({i, ti, len * std::cos(th) + e(rng), 1 + len * std::sin(th) + e(rng)});
+  }
+  const PivotRotation p = rotation_about_pivot(t);
+  EXPECT_TRUE(p.pivot_from_circle);
+  EXPECT_NEAR(p.pivot_x, 0, 4 * p.sigma_pivot_x);
+  EXPECT_NEAR(p.pivot_y, 1, 4 * p.sigma_pivot_y);
+  EXPECT_NEAR(p.radius, len, 4 * p.sigma_radius);
+  for (std::size_t i = 3; i + 3 < p.rows.size(); ++i) {
+    const double truth = amp * big_omega * std::cos(big_omega * p.rows[i].t);
+    EXPECT_NEAR(p.rows[i].omega, truth, 5 * p.rows[i].sigma_omega + 0.03) << "t = " << p.rows[i].t;
+  }
+  // the wheel's uniformly accelerated angle keeps the joint fit
+  EXPECT_FALSE(rotation_about_pivot(Wheel{}.track(0)).pivot_from_circle);
+}
+
 TEST(Pivot, AShortArcDoesNotDetermineThePivot) {
   // 12 degrees of a 0.3 m circle with 2 mm noise: circles of very different radii fit it;
   // refused, naming the pivot options. With the pivot given, the same arc gives the spin.

@@ -2,6 +2,7 @@
 
 #include "numerics/error.hpp"
 #include "track/check.hpp"
+#include "track/local_spin.hpp"
 
 #include <algorithm>
 #include <cmath>

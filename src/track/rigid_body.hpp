@@ -56,12 +56,6 @@ RigidBody rigid_body_from_points(const Track& a, const Track& b, const RigidBody
 /// Linear fit of theta(t) over rows [begin, end) (e.g. one flight segment).
 SpinFit fit_spin(const std::vector<RigidBodyRow>& rows, std::size_t begin, std::size_t end);
 
-/// Local spins: omega and sigma_omega of every row from the slope of theta(t) over `window`
-/// rows about it (shifted at the ends), the noise pooled over all windows; rows keep NaN when
-/// fewer than 3 rows exist. Used for two points (rigid_body_from_points) and for one point
-/// about a pivot (track/pivot.hpp).
-void local_spins(std::vector<RigidBodyRow>& rows, int window);
-
 /// The centre as a Track (for kinematics and impact detection), named "<a>+<b>".
 Track centre_track(const RigidBody& body);
 
