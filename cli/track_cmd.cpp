@@ -10,6 +10,7 @@
 #include "app/track_import.hpp"
 #include "app/track_kinematics.hpp"
 #include "app/track_rigid_body.hpp"
+#include "app/track_rotation.hpp"
 
 #include <memory>
 
@@ -28,6 +29,12 @@ void add_input_options(CLI::App& cmd, TrackInputOptions& in) {
   cmd.add_option("--entry", in.entry, "For a .trz: the .trk inside to read (when not given: the first)");
 }
 
+/// --from/--to (also spelled --t-from/--t-to, the fields' names in messages and Python).
+void add_time_range(CLI::App& cmd, double& t_from, double& t_to, const std::string& what) {
+  cmd.add_option("--from,--t-from", t_from, "First time used, s (when not given: the first point): " + what);
+  cmd.add_option("--to,--t-to", t_to, "Last time used, s (when not given: the last point)");
+}
+
 /// `keys`: the command's declared result keys (the listing's units), when declared.
 template <class Options, class Run>
 void bind(CLI::App& cmd, std::shared_ptr<Options> o, std::shared_ptr<bool> as_json, Run run,
@@ -42,7 +49,8 @@ void bind(CLI::App& cmd, std::shared_ptr<Options> o, std::shared_ptr<bool> as_js
 void register_track(CLI::App& root) {
   auto* area = root.add_subcommand(
       "track", "Tracked video data: track points and balls in video, read Tracker files and exports, "
-               "velocities and accelerations, the motion of a body from two of its points");
+               "velocities and accelerations, the motion of a body from two of its points, the spin of one "
+               "point about a pivot");
   area->require_subcommand(1);
 
   // track video (cli/track_video_cmd.cpp)
@@ -76,6 +84,7 @@ void register_track(CLI::App& root) {
     cmd->add_option("--g", o->g,
                     "Gravitational acceleration, m/s^2: segments that move like a free flight are checked "
                     "against it (docs/theory.md#free-flight-check)");
+    add_time_range(*cmd, o->t_from, o->t_to, "e.g. only the free fall before a landing");
     cmd->add_option("--out", o->out, "Output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)")->required();
     add_report_option(*cmd, o->report, o->plotly);
     bind(*cmd, o, std::make_shared<bool>(false), track_kinematics, &track_kinematics_result_keys());
@@ -97,6 +106,23 @@ void register_track(CLI::App& root) {
     cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,omega,sigma_omega,length (s, m, rad, rad/s)");
     add_report_option(*cmd, o->report, o->plotly);
     bind(*cmd, o, std::make_shared<bool>(false), track_rigid_body);
+  }
+
+  // track rotation
+  {
+    auto* cmd = area->add_subcommand(
+        "rotation", "Spin (with standard errors) of ONE tracked point about a fixed, given or uniformly moving "
+                    "pivot: a mark on a wheel, a pendulum bob (docs/theory.md#rotation-about-a-pivot)");
+    auto o = std::make_shared<TrackRotationOptions>();
+    add_input_options(*cmd, o->input);
+    cmd->add_option("--track", o->track, "Track of the turning point (required when the file has several)");
+    cmd->add_option("--pivot-x", o->pivot_x, "Pivot x, m, with --pivot-y (when not given: fitted to the track)");
+    cmd->add_option("--pivot-y", o->pivot_y, "Pivot y, m, with --pivot-x");
+    cmd->add_flag("--moving-pivot", o->moving_pivot, "Fit a pivot moving uniformly (a rolling wheel's axle)");
+    cmd->add_option("--window", o->window, "Points per local linear fit of the angle (the spin at each frame), >= 3");
+    add_time_range(*cmd, o->t_from, o->t_to, "only the part of the record that turns about the pivot");
+    cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,radius,omega,sigma_omega (s, m, rad, rad/s)");
+    bind(*cmd, o, std::make_shared<bool>(false), track_rotation);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -199,6 +200,48 @@ TEST(TrackCli, KinematicsWarnsWhenAFreeFlightDoesNotFallAtG) {
   const auto quiet = run_tribolab("track kinematics '" + csv + "' --g 0.153125 --out '" + out + "'");
   ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
   EXPECT_EQ(quiet.err, "");
+}
+
+TEST(TrackCli, KinematicsFromToKeepsOnlyThoseTimes) {
+  const Files f = files("from_to");
+  const std::string out = f.dir + "/k.csv";
+  const auto r = run_tribolab("track kinematics '" + f.txt + "' --track B --from 0.1 --to 0.3 --impacts none --out '" +
+                              out + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["points"], 3);
+  EXPECT_DOUBLE_EQ(j["t_from"].get<double>(), 0.1);
+  EXPECT_EQ(slurp(out), "t,x,y,vx,vy,ax,ay\n0.1,2,0.1,,,,\n0.2,2,0.2,0,1,,\n0.3,2,0.3,,,,\n");
+  // the fields' own spelling works too, and a reversed range is one error line naming them
+  const auto bad = run_tribolab("track kinematics '" + f.txt + "' --track B --t-from 0.3 --t-to 0.1 --out '" +
+                                f.dir + "/bad.csv'");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--t-from/--t-to: must be times in s"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(f.dir + "/bad.csv"));
+}
+
+TEST(TrackCli, RotationGivesTheSpinOfOnePointAboutItsPivot) {
+  // An exact circle of radius 0.2 m about (1, 2) at 5 rad/s, 30 fps, 20 frames.
+  const std::string dir = temp_dir("track_rotation");
+  const std::string csv = dir + "/mark.csv";
+  {
+    std::ofstream o(csv);
+    o.precision(17);
+    o << "track,frame,t,x,y\n";
+    for (int i = 0; i < 20; ++i) {
+      const double t = i / 30.0;
+      o << "mark," << i << ',' << t << ',' << 1 + 0.2 * std::cos(5 * t) << ',' << 2 + 0.2 * std::sin(5 * t) << '\n';
+    }
+  }
+  const auto r = run_tribolab("track rotation '" + csv + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["omega"].get<double>(), 5, 1e-9);  // exact data: round-off only
+  EXPECT_NEAR(j["pivot_x"].get<double>(), 1, 1e-9);
+  EXPECT_NEAR(j["radius"].get<double>(), 0.2, 1e-9);
+  const auto half = run_tribolab("track rotation '" + csv + "' --pivot-x 1");
+  EXPECT_EQ(half.exit_code, 1);
+  EXPECT_NE(half.err.find("--pivot-x and --pivot-y go together"), std::string::npos) << half.err;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "app/track_import.hpp"
 #include "app/track_kinematics.hpp"
 #include "app/track_rigid_body.hpp"
+#include "app/track_rotation.hpp"
 #include "app/track_video.hpp"
 
 namespace tribolab::python {
@@ -54,6 +55,8 @@ void bind_track(py::module_& m) {
     TRIBOLAB_OPT(c, order);
     TRIBOLAB_OPT(c, impacts);
     TRIBOLAB_OPT(c, g);
+    TRIBOLAB_OPT(c, t_from);
+    TRIBOLAB_OPT(c, t_to);
     TRIBOLAB_OPT(c, out);
     TRIBOLAB_OPT(c, report);
     TRIBOLAB_OPT(c, plotly);
@@ -96,6 +99,30 @@ void bind_track(py::module_& m) {
           },
           "rows: dict of arrays frame, t (s), xc, yc (m), theta (rad, unwrapped), length (m), "
           "omega, sigma_omega (rad/s; NaN where the window does not fit)");
+  }
+  {
+    using track::PivotRow;
+    Command<app::TrackRotationOptions> c(m, "rotation",
+        "The spin of one tracked point about a fixed, given or uniformly moving pivot (`tribolab "
+        "track rotation`): pivot, radius, omega and alpha with standard errors, local spins.");
+    input_options(c);
+    TRIBOLAB_OPT(c, track);
+    TRIBOLAB_OPT(c, pivot_x);
+    TRIBOLAB_OPT(c, pivot_y);
+    TRIBOLAB_OPT(c, moving_pivot);
+    TRIBOLAB_OPT(c, window);
+    TRIBOLAB_OPT(c, t_from);
+    TRIBOLAB_OPT(c, t_to);
+    TRIBOLAB_OPT(c, out);
+    c.def(&app::track_rotation,
+          [](const app::TrackRotationResult& r, py::dict& d) {
+            d["rows"] = columns(r.rotation.rows, field("frame", &PivotRow::frame), field("t", &PivotRow::t),
+                                field("x", &PivotRow::x), field("y", &PivotRow::y),
+                                field("theta", &PivotRow::theta), field("radius", &PivotRow::radius),
+                                field("omega", &PivotRow::omega), field("sigma_omega", &PivotRow::sigma_omega));
+          },
+          "rows: dict of arrays frame, t (s), x, y (m), theta (rad, unwrapped about the pivot), "
+          "radius (m), omega, sigma_omega (rad/s; NaN where the window does not fit)");
   }
   {
     using video::TrackedRow;

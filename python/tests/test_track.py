@@ -48,6 +48,31 @@ def test_rigid_body_equals_cli():
     assert np.allclose(rows["length"].mean(), cli_json["length_mean"], rtol=1e-12, atol=0)  # same sum, m
 
 
+def test_kinematics_time_range_equals_cli(tmp_path):
+    out = str(tmp_path / "k.csv")
+    r = tribolab.track.kinematics(THROW, track="A", t_from=1.0, t_to=3.0, out=out)
+    cli_json = __import__("conftest").Cli()("track", "kinematics", THROW, "--track", "A",
+                                           "--from", "1.0", "--to", "3.0", "--out", out)
+    assert_same_as_cli(r, cli_json)
+    assert r["rows"]["t"].min() >= 1.0 and r["rows"]["t"].max() <= 3.0
+
+
+def test_rotation_equals_cli(tmp_path):
+    import math
+    marks = tmp_path / "wheel.csv"
+    lines = ["track,frame,t,x,y"]
+    for i in range(40):  # a mark 0.3 m from (0.4, 0.5) at 22.7 rad/s, 30 fps, a 1 mm wobble
+        t = i / 30
+        lines.append(f"mark,{i},{t!r},{0.4 + 0.3 * math.cos(22.7 * t) + 0.001 * math.sin(7 * i)!r},"
+                     f"{0.5 + 0.3 * math.sin(22.7 * t) + 0.001 * math.cos(5 * i)!r}")
+    marks.write_text("\n".join(lines) + "\n")
+    r = tribolab.track.rotation(str(marks))
+    cli_json = __import__("conftest").Cli()("track", "rotation", str(marks))
+    assert_same_as_cli(r, cli_json)
+    assert abs(r["omega"] - 22.7) < 4 * r["sigma_omega"]
+    assert r["rows"]["theta"].shape == (40,)
+
+
 def test_bad_input_is_value_error_with_the_cli_message(tmp_path, cli):
     out = str(tmp_path / "k.csv")
     with pytest.raises(ValueError) as e:

@@ -104,7 +104,7 @@ TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options) {
   std::vector<std::string> wanted;
   if (!options.track.empty()) wanted = {options.track};
   const track::TrackSet set = io::read_tracks(options.input.file, import_options(options.input, wanted));
-  const track::Track& tr = choose_track(set, options.track);
+  const track::Track tr = restrict_times(choose_track(set, options.track), options.t_from, options.t_to, 3, set.source);
   if (tr.points.size() < 3) {
     throw InputError(set.source, "track '" + tr.name + "' has " + std::to_string(tr.points.size()) +
                                      " point(s); at least 3 are needed for derivatives");
@@ -160,6 +160,8 @@ TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options) {
   j["residual_sigma_x"] = json_number(k.residual_sigma_x);
   j["residual_sigma_y"] = json_number(k.residual_sigma_y);
   j["time_scale"] = set.time_scale;
+  j["t_from"] = json_number(options.t_from);  // null: not given
+  j["t_to"] = json_number(options.t_to);
   j["g"] = options.g;
   nlohmann::json fits = nlohmann::json::array();
   for (std::size_t i = 0; i < result.segment_fits.size(); ++i) fits.push_back(segment_json(result.segment_fits[i], i));

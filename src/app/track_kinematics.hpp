@@ -4,12 +4,14 @@
 #pragma once
 
 #include "app/track_import.hpp"
+#include "app/track_time_range.hpp"
 #include "track/free_flight.hpp"
 #include "track/kinematics.hpp"
 #include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <limits>
 #include <string>
 
 namespace tribolab::app {
@@ -23,6 +25,10 @@ struct TrackKinematicsOptions {
   std::string impacts = "auto";  ///< auto: never difference across detected impacts; none: straight through
   /// Gravity a free-flight segment is held against, m/s^2 (docs/theory.md#free-flight-check)
   double g = kDefaultG;
+  /// First time used, s (--from: fit only part of a record, e.g. the free fall before a landing)
+  double t_from = -kNoTimeLimit;
+  /// Last time used, s (--to)
+  double t_to = kNoTimeLimit;
   std::string out;               ///< CSV t,x,y,vx,vy,ax,ay (+ sigmas for savgol); required
   std::string report;            ///< HTML report; empty: not written
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
@@ -38,8 +44,8 @@ struct TrackKinematicsResult {
   std::vector<std::string> warnings;  ///< the JSON's "warnings": importer's, then the g check's
 };
 
-/// Validates (InputError naming --method, --window/--order, --impacts, --g, --out or the
-/// file), differentiates, checks the free-flight segments against g, writes the CSV (and the
+/// Validates (InputError naming --method, --window/--order, --impacts, --g, --from/--to, --out
+/// or the file), keeps the points from t_from to t_to, differentiates, checks the free-flight segments against g, writes the CSV (and the
 /// report when asked) and summarises.
 TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options);
 

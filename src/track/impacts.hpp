@@ -8,7 +8,11 @@
 // noise sigma estimated robustly from the whole track (median absolute third divided
 // difference). A split is an impact when the jump is both significant (|dv|/sd above
 // `threshold`, combining x and y) and large (|dv| above `min_jump`); of neighbouring
-// candidates the most significant wins.
+// candidates the most significant wins. A candidate is dropped when a smooth turning motion
+// (uniform translation plus uniform rotation of a point: a mark on a wheel, any arc of
+// constant curvature) fits its two windows as well as the two parabolas do (an F test of size
+// 0.001): parabolas cannot follow a circle sampled at 20+ degrees per frame, and their
+// extrapolations then "jump" by many noise sigmas without any impact.
 #pragma once
 
 #include "track/track.hpp"

@@ -2,6 +2,7 @@
 
 #include "numerics/error.hpp"
 #include "track/check.hpp"
+#include "track/local_spin.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +51,33 @@ SpinFit fit_spin(const std::vector<RigidBodyRow>& rows, std::size_t begin, std::
   return f;
 }
 
+void local_spins(std::vector<RigidBodyRow>& rows, int window) {
+  const std::size_t n = rows.size();
+  // local fits: slope of theta(t) over `window` rows (centred, shifted at the ends), with the
+  // noise pooled from all windows' residuals
+  const int w = std::min<int>(window, static_cast<int>(n));
+  if (w >= 3) {
+    double rss = 0;
+    long long dof = 0;
+    std::vector<double> unit(n, nan);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t lo = static_cast<std::size_t>(
+          std::clamp<long long>(static_cast<long long>(i) - w / 2, 0, static_cast<long long>(n) - w));
+      const SpinFit f = fit_spin(rows, lo, lo + static_cast<std::size_t>(w));
+      rows[i].omega = f.omega;
+      double stt = 0;
+      for (std::size_t k = lo; k < lo + static_cast<std::size_t>(w); ++k) {
+        stt += (rows[k].t - f.t_ref) * (rows[k].t - f.t_ref);
+      }
+      unit[i] = 1 / std::sqrt(stt);
+      rss += f.rms_residual * f.rms_residual * f.points;
+      dof += f.points - 2;
+    }
+    const double s = std::sqrt(rss / static_cast<double>(dof));
+    for (std::size_t i = 0; i < n; ++i) rows[i].sigma_omega = s * unit[i];
+  }
+}
+
 RigidBody rigid_body_from_points(const Track& a, const Track& b, const RigidBodyOptions& options) {
   if (const auto err = options.validate(); !err.empty()) throw InputError("rigid body", err);
   validate_track(a, "");
@@ -90,29 +118,7 @@ RigidBody rigid_body_from_points(const Track& a, const Track& b, const RigidBody
   for (const auto& r : body.rows) lv += (r.length - lm) * (r.length - lm);
   body.length_mean = lm;
   body.length_sd = std::sqrt(lv / static_cast<double>(n - 1));
-  // local fits: slope of theta(t) over `window` rows (centred, shifted at the ends), with the
-  // noise pooled from all windows' residuals
-  const int w = std::min<int>(options.window, static_cast<int>(n));
-  if (w >= 3) {
-    double rss = 0;
-    long long dof = 0;
-    std::vector<double> unit(n, nan);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t lo = static_cast<std::size_t>(
-          std::clamp<long long>(static_cast<long long>(i) - w / 2, 0, static_cast<long long>(n) - w));
-      const SpinFit f = fit_spin(body.rows, lo, lo + static_cast<std::size_t>(w));
-      body.rows[i].omega = f.omega;
-      double stt = 0;
-      for (std::size_t k = lo; k < lo + static_cast<std::size_t>(w); ++k) {
-        stt += (body.rows[k].t - f.t_ref) * (body.rows[k].t - f.t_ref);
-      }
-      unit[i] = 1 / std::sqrt(stt);
-      rss += f.rms_residual * f.rms_residual * f.points;
-      dof += f.points - 2;
-    }
-    const double s = std::sqrt(rss / static_cast<double>(dof));
-    for (std::size_t i = 0; i < n; ++i) body.rows[i].sigma_omega = s * unit[i];
-  }
+  local_spins(body.rows, options.window);
   return body;
 }
 
