@@ -9,8 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 namespace tribolab::video {
@@ -279,7 +277,6 @@ void PathTracker::Impl::update(const Frame& f) {
     const cv::Point2d at = lead[1] + k * (lead[1] - lead[0]);
     if (at.x >= 0 && at.y >= 0 && at.x < size.width && at.y < size.height) anchors.push_back({at, 1});
   }
-  if (std::getenv("TRIBOLAB_PATH_DEBUG")) std::fprintf(stderr, "frame %d p %d r %.1f anchors %zu\n", f.index, p, radius, anchors.size());
   StepCandidates out;
   out.index = f.index;
   const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
@@ -377,7 +374,9 @@ std::vector<Observation> PathTracker::Impl::finish() {
   auto pos = [&](int t, int k) { return cv::Point2d(steps[t].c[k].x, steps[t].c[k].y); };
   auto gate = [&](int t0, int k0, int t1, int k1) {
     const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
-    return std::hypot(d.x, d.y) <= reach * (t1 - t0);
+    // From the start (no velocity known) a gap does not widen the reach: the object was
+    // clicked where it is, and something far away found frames later is something else.
+    return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
   };
   // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
   auto accel = [&](int ta, int ka, int tb, int kb, int tc, int kc) -> double {
@@ -389,6 +388,12 @@ std::vector<Observation> PathTracker::Impl::finish() {
     const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
                                       : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
     const double sigma = kAccAbs + kAccRel * speed;
+    if (tc - tb > 1) {
+      // Found again after a gap: within reach of where the motion before it leads (linear
+      // extrapolation), else something else has been found.
+      const cv::Point2d d = pos(tc, kc) - (pos(tb, kb) + v1 * (tc - tb));
+      if (std::hypot(d.x, d.y) > 2 * radius + kAccRel * std::hypot(v1.x, v1.y) * (tc - tb)) return kInf;
+    }
     const double z = std::hypot(a.x, a.y) / sigma;
     return z > kAccGate ? kInf : 0.5 * z * z;
   };
@@ -530,9 +535,6 @@ std::vector<Observation> PathTracker::Impl::finish() {
       continue;
     }
     const Candidate& c = steps[t].c[k];
-    if (std::getenv("TRIBOLAB_PATH_DEBUG")) {
-      for (const Candidate& q : steps[t].c) std::fprintf(stderr, "  %d: (%.1f %.1f) ncc %.2f cost %.2f%s\n", steps[t].index, q.x, q.y, q.ncc, q.cost, &q == &c ? " *" : "");
-    }
     o.x_px = c.x;
     o.y_px = c.y;
     o.score = std::clamp(c.ncc, 0.0, 1.0);

@@ -38,6 +38,7 @@ void check(const RealTrack& r) {
   t.from_track = r.track;
   o.targets.push_back(t);
   o.thumbnails = 0;
+  // FILM_BEFORE=1: the frame tracker, for the "before" table of docs/benchmarks.md.
   if (std::getenv("FILM_BEFORE")) o.offline_points = false;
   const TrackVideoResult res = track_video(path, o);
   ASSERT_EQ(res.series.size(), 1u);
@@ -61,19 +62,26 @@ TEST(RealFilm, SmallBallRollingOnARailIsFollowed) {
   check({"uniform-motion-ball-slow.trz", "mass A"});
 }
 
-#ifndef __SANITIZE_ADDRESS__
 TEST(RealFilm, JmoljanaIsFollowed) {
-  // 1920x1080, 150 frames. One frame lies 11.7 px from the human's mark (the frame tracker:
-  // 11.6 px), inside the 12 px a user corrects at this width but over the 10 px bar: allowed
-  // here so that a second such frame fails, and reported as not yet met.
+  // 1920x1080, 150 frames: 10-30 s on the shared machine (the path tracker is not yet fast at
+  // full HD, docs/benchmarks.md#tracking-on-real-film), minutes under ASan, too slow for
+  // make test: run with TRIBOLAB_SLOW_TESTS=1.
+  if (!std::getenv("TRIBOLAB_SLOW_TESTS")) GTEST_SKIP() << "slow (150 full-HD frames): set TRIBOLAB_SLOW_TESTS=1";
+  // One frame lies 11.7 px from the human's mark (the frame tracker: 11.6 px), inside the
+  // 12 px a user corrects at this width but over the 10 px bar: allowed here so that a second
+  // such frame fails, and reported as not yet met.
   check({"jmoljana.trz", "mass A", 1});
 }
-#endif  // under ASan the 150 full-HD frames take minutes; the rendered cases cover the code
 
-TEST(RealFilm, CarInLoop) {
-  // An image sequence (videos/Car in a loop with friction00.jpg ...): only its first image is
-  // read today, so the clip cannot be tracked.
-  GTEST_SKIP() << "image sequences inside a .trz are not read yet (issue 24, open)";
+// Not yet met (issue 24 open), so disabled rather than loosened: the image sequence is read
+// (53 frames, 1280x720) and the plain car's start is taken, but the car moves ~70 px per
+// frame, blurred, and turns into the loop; the unrotated 51 px template slides along it.
+// Measured: frames 1-3 reported 20-56 px from the human's marks (confidently wrong), 4-52
+// lost. Run with --gtest_also_run_disabled_tests.
+TEST(RealFilm, DISABLED_PlainCarInAnImageSequenceIsFollowed) {
+  // masa A: a toy car with little texture (refused by the frame tracker) in a loop, filmed as
+  // numbered JPEG images inside the .trz.
+  check({"CarInLoop.trz", "masa A"});
 }
 
 }  // namespace
