@@ -74,7 +74,12 @@ void register_track_video(CLI::App& track_area) {
                   "Real seconds per video second: 240 fps slow motion played at 30 fps is 0.125");
   cmd->add_option("--entry", o->entry, "For a .trz: the .trk inside to use (when not given: the first)");
   cmd->add_option("--min-score", o->min_score, "Points: below this match score (0..1) a point is lost");
-  cmd->add_option("--patch", o->patch, "Points: template side, px, odd");
+  cmd->add_option("--patch", o->patch,
+                  "Points: template side, px, odd (when not given: the object's size with the path "
+                  "tracker, 21 with the frame tracker)");
+  cmd->add_option("--point-tracker", o->point_tracker,
+                  "Points: path (offline: best path through candidates in every frame, default) or "
+                  "frame (frame to frame, with rotation search)");
   cmd->add_option("--search", o->search,
                   "Points: search half-width around the prediction, px (when not given: automatic)");
   cmd->add_option("--max-turn-deg", o->max_turn_deg,

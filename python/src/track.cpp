@@ -143,6 +143,7 @@ void bind_track(py::module_& m) {
     TRIBOLAB_OPT(c, entry);
     TRIBOLAB_OPT(c, min_score);
     TRIBOLAB_OPT(c, patch);
+    TRIBOLAB_OPT(c, point_tracker);
     TRIBOLAB_OPT(c, search);
     TRIBOLAB_OPT(c, max_turn_deg);
     TRIBOLAB_OPT(c, ellipse_min_score);

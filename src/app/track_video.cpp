@@ -78,8 +78,18 @@ video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
   o.source.time_scale = a.time_scale;
   o.source.zip_entry = a.entry;
   o.point.min_score = a.min_score;
-  o.point.patch_px = a.patch;
-  o.point.search_px = given_or_unset(a.search, "search");
+  const int search_px = given_or_unset(a.search, "search");
+  const int patch_px = given_or_unset(a.patch, "patch");  // 0: the tracker's own choice
+  o.point.patch_px = patch_px > 0 ? patch_px : video::PointTrackerOptions{}.patch_px;
+  o.point.search_px = search_px;
+  o.path.patch_px = patch_px;
+  o.path.search_px = search_px;
+  o.path.min_score = a.min_score;
+  o.path.max_gap_frames = a.max_gap;
+  if (a.point_tracker != "path" && a.point_tracker != "frame") {
+    throw InputError(field("point_tracker") + " " + a.point_tracker.substr(0, 60), "expected path or frame");
+  }
+  o.offline_points = a.point_tracker == "path";
   o.point.max_turn_deg = a.max_turn_deg;
   o.point.max_gap_frames = a.max_gap;
   o.ellipse.min_score = a.ellipse_min_score;
@@ -160,7 +170,12 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
     if (s.vs_human) {
       t["vs_human"] = {{"frames", s.vs_human->frames},
                        {"median_px", s.vs_human->median_px},
-                       {"max_px", s.vs_human->max_px}};
+                       {"max_px", s.vs_human->max_px},
+                       {"marks", s.vs_human->marks},
+                       {"p90_px", s.vs_human->p90_px},
+                       {"correct_px", s.vs_human->correct_px},
+                       {"to_correct", s.vs_human->to_correct},
+                       {"confidently_wrong", s.vs_human->confidently_wrong}};
     } else {
       t["vs_human"] = nullptr;
     }

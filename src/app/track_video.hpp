@@ -30,7 +30,8 @@ struct TrackVideoOptions {
   double time_scale = video::SourceOptions{}.time_scale;  ///< real s per video s (slow motion)
   std::string entry;                   ///< .trz: the .trk inside to use; empty: the first
   double min_score = video::PointTrackerOptions{}.min_score;  ///< points: lost below this match score (0..1)
-  int patch = video::PointTrackerOptions{}.patch_px;          ///< points: template side, px, odd
+  std::optional<int> patch;            ///< points: template side, px, odd; unset: 21 (frame), the object's size (path)
+  std::string point_tracker = "path";  ///< points: "path" (offline, best path) or "frame" (frame to frame)
   std::optional<int> search;           ///< points: search half-width around the prediction, px; unset: automatic
   double max_turn_deg = video::PointTrackerOptions{}.max_turn_deg;  ///< points: largest rotation per frame, degrees
   double ellipse_min_score = video::EllipseTrackerOptions{}.min_score;  ///< ellipses: lost below this fit quality (0..1)

@@ -6,6 +6,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/message_number.hpp"
+#include "video/correlation_peak.hpp"
 #include "numerics/units.hpp"
 #include "video/motion_model.hpp"
 
@@ -52,13 +53,6 @@ double weakest_gradient_energy(const cv::Mat& patch) {
   return tr / 2 - std::sqrt(std::max(0.0, tr * tr / 4 - det));
 }
 
-// Vertex of the parabola through (-1, fm), (0, f0), (1, fp), clamped to [-1, 1].
-double parabola_vertex(double fm, double f0, double fp) {
-  const double curv = fm - 2 * f0 + fp;
-  if (curv >= 0) return 0;
-  return std::clamp(0.5 * (fm - fp) / curv, -1.0, 1.0);
-}
-
 // Where the maximum of f over [-1, 1] lies, from f(-1), f(0), f(1): the parabola's vertex
 // when it has one, else the best of the three samples. (A parabola without a maximum, as the
 // peak correlations of a sharp object at exposures 0, 1/4, 1/2 decreasing ever faster, gave
@@ -67,41 +61,6 @@ double parabola_vertex(double fm, double f0, double fp) {
 double best_vertex(double fm, double f0, double fp) {
   if (fm - 2 * f0 + fp < 0) return parabola_vertex(fm, f0, fp);
   return fm > f0 && fm >= fp ? -1.0 : fp > f0 && fp > fm ? 1.0 : 0.0;
-}
-
-// Sub-pixel offset of the maximum of `r` near integer peak p: least-squares quadratic
-// f = a + b x + c y + d x^2 + e x y + g y^2 over the 3x3 neighbourhood, stationary point;
-// `value` (if given) receives the fitted maximum. Falls back to a parabola per axis when
-// that surface has no maximum within a pixel, and to 0 on the border of r.
-cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p, double* value = nullptr) {
-  if (value) *value = r.at<float>(p);
-  if (p.x < 1 || p.y < 1 || p.x > r.cols - 2 || p.y > r.rows - 2) return {0, 0};
-  double a = 0, b = 0, c = 0, d = 0, e = 0, g = 0;
-  for (int j = -1; j <= 1; ++j) {
-    for (int i = -1; i <= 1; ++i) {
-      const double f = r.at<float>(p.y + j, p.x + i);
-      a += f / 9;
-      b += i * f / 6;
-      c += j * f / 6;
-      e += i * j * f / 4;
-      d += (i * i - 2.0 / 3) * f / 2;  // x^2 - 2/3 is orthogonal to 1 and to y^2 - 2/3
-      g += (j * j - 2.0 / 3) * f / 2;
-    }
-  }
-  // Gradient zero: [2d e; e 2g] [x y]^T = -[b c]^T; a maximum needs a negative-definite Hessian.
-  const double det = 4 * d * g - e * e;
-  if (d < 0 && g < 0 && det > 0) {
-    const double x = (-b * 2 * g + c * e) / det, y = (-c * 2 * d + b * e) / det;
-    if (std::abs(x) <= 1 && std::abs(y) <= 1) {
-      if (value) {
-        *value = a + b * x + c * y + d * (x * x - 2.0 / 3) + e * x * y + g * (y * y - 2.0 / 3);
-      }
-      return {x, y};
-    }
-  }
-  // Otherwise one parabola per axis through the peak row and column.
-  const auto at = [&](int dx, int dy) { return static_cast<double>(r.at<float>(p.y + dy, p.x + dx)); };
-  return {parabola_vertex(at(-1, 0), at(0, 0), at(1, 0)), parabola_vertex(at(0, -1), at(0, 0), at(0, 1))};
 }
 
 // Normalised cross-correlation of template t over every placement in img (both CV_32F), as
@@ -145,6 +104,48 @@ void ncc_direct(const cv::Mat& img, const cv::Mat& t, cv::Mat& r) {
 }
 
 }  // namespace
+
+// Vertex of the parabola through (-1, fm), (0, f0), (1, fp), clamped to [-1, 1].
+double parabola_vertex(double fm, double f0, double fp) {
+  const double curv = fm - 2 * f0 + fp;
+  if (curv >= 0) return 0;
+  return std::clamp(0.5 * (fm - fp) / curv, -1.0, 1.0);
+}
+
+// Sub-pixel offset of the maximum of `r` near integer peak p: least-squares quadratic
+// f = a + b x + c y + d x^2 + e x y + g y^2 over the 3x3 neighbourhood, stationary point;
+// `value` (if given) receives the fitted maximum. Falls back to a parabola per axis when
+// that surface has no maximum within a pixel, and to 0 on the border of r.
+cv::Point2d subpixel_peak(const cv::Mat& r, cv::Point p, double* value) {
+  if (value) *value = r.at<float>(p);
+  if (p.x < 1 || p.y < 1 || p.x > r.cols - 2 || p.y > r.rows - 2) return {0, 0};
+  double a = 0, b = 0, c = 0, d = 0, e = 0, g = 0;
+  for (int j = -1; j <= 1; ++j) {
+    for (int i = -1; i <= 1; ++i) {
+      const double f = r.at<float>(p.y + j, p.x + i);
+      a += f / 9;
+      b += i * f / 6;
+      c += j * f / 6;
+      e += i * j * f / 4;
+      d += (i * i - 2.0 / 3) * f / 2;  // x^2 - 2/3 is orthogonal to 1 and to y^2 - 2/3
+      g += (j * j - 2.0 / 3) * f / 2;
+    }
+  }
+  // Gradient zero: [2d e; e 2g] [x y]^T = -[b c]^T; a maximum needs a negative-definite Hessian.
+  const double det = 4 * d * g - e * e;
+  if (d < 0 && g < 0 && det > 0) {
+    const double x = (-b * 2 * g + c * e) / det, y = (-c * 2 * d + b * e) / det;
+    if (std::abs(x) <= 1 && std::abs(y) <= 1) {
+      if (value) {
+        *value = a + b * x + c * y + d * (x * x - 2.0 / 3) + e * x * y + g * (y * y - 2.0 / 3);
+      }
+      return {x, y};
+    }
+  }
+  // Otherwise one parabola per axis through the peak row and column.
+  const auto at = [&](int dx, int dy) { return static_cast<double>(r.at<float>(p.y + dy, p.x + dx)); };
+  return {parabola_vertex(at(-1, 0), at(0, 0), at(1, 0)), parabola_vertex(at(0, -1), at(0, 0), at(0, 1))};
+}
 
 std::string PointTrackerOptions::validate() const {
   if (patch_px < 7 || patch_px % 2 == 0) {

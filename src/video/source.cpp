@@ -14,9 +14,11 @@
 #include <atomic>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
+#include <regex>
 #include <unistd.h>
 
 namespace tribolab::video {
@@ -149,7 +151,8 @@ void require_regular_file(const std::string& path, const std::string& where) {
 /// frame (truncated, wrong codec) is refused here, before any tracking.
 VideoInfo probe_video(const std::string& path, const std::string& where) {
   quiet_decoder_logs();
-  require_regular_file(path, where);
+  // (an image sequence is an FFmpeg pattern such as frame%04d.jpg, not one file)
+  if (path.find('%') == std::string::npos) require_regular_file(path, where);
   cv::VideoCapture cap;
   try {
     cap.open(path, cv::CAP_FFMPEG);
@@ -234,6 +237,49 @@ std::shared_ptr<TempFile> make_temp_file(const std::string& extension) {
   t->path = buf.data();
   ::close(fd);
   return t;
+}
+
+/// A temporary folder removed, with what it holds, when the last user is gone.
+struct TempDir {
+  std::string path;
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+/// Tracker's ImageVideo: numbered images (NAME00.jpg, NAME01.jpg, ...) are the frames. When
+/// `entry` is one, the archive's images of the same folder, name and number width are
+/// extracted in number order as frame%0Nd.EXT into a temporary folder, and the FFmpeg
+/// pattern naming them is returned with the folder's owner; otherwise "".
+std::pair<std::string, std::shared_ptr<TempDir>> extract_image_sequence(const std::string& trz, const std::string& entry,
+                                                                       const std::vector<std::string>& entries) {
+  static const std::regex numbered(R"(^(.*?)(\d+)\.(jpe?g|png|bmp|gif)$)", std::regex::icase);
+  std::smatch m;
+  if (!std::regex_match(entry, m, numbered)) return {"", nullptr};
+  const std::string prefix = m[1], ext = m[3];
+  const std::size_t width = static_cast<std::size_t>(m[2].length());
+  std::vector<std::pair<long, std::string>> frames;
+  for (const auto& e : entries) {
+    std::smatch k;
+    if (std::regex_match(e, k, numbered) && k[1] == prefix && static_cast<std::size_t>(k[2].length()) == width && k[3] == ext) {
+      frames.emplace_back(std::stol(k[2]), e);
+    }
+  }
+  std::sort(frames.begin(), frames.end());
+  std::string dir = (fs::temp_directory_path() / "tribolab_frames_XXXXXX").string();
+  std::vector<char> buf(dir.begin(), dir.end());
+  buf.push_back('\0');
+  if (::mkdtemp(buf.data()) == nullptr) throw InputError(trz, "cannot create a temporary folder for the image sequence");
+  auto owner = std::make_shared<TempDir>();
+  owner->path = buf.data();
+  const int digits = std::clamp(static_cast<int>(width), 4, 9);  // names stay short
+  char name[64];
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    std::snprintf(name, sizeof name, "frame%0*d.", digits, static_cast<int>(i));
+    io::extract_zip_entry(trz, frames[i].second, owner->path + "/" + name + ext);
+  }
+  return {owner->path + "/frame%0" + std::to_string(digits) + "d." + ext, owner};
 }
 
 std::string normalise(std::string p) {
@@ -357,6 +403,9 @@ VideoInput open_trz(const std::string& path, const SourceOptions& o) {
     }
     in.info = probe_video(beside, beside);
     in.video_file = beside;
+  } else if (auto [pattern, dir] = extract_image_sequence(path, entry, z.entries); dir) {
+    in.info = probe_video(pattern, path + ":" + entry);
+    in.temp_owner = dir;
   } else {
     auto temp = make_temp_file(lower_extension(entry));
     io::extract_zip_entry(path, entry, temp->path);

@@ -81,15 +81,18 @@ inline Frame rendered_frame(const Scene& scene, int index, const RenderOptions& 
   return f;
 }
 
-/// Tracker's example project BallToss.trz beside the repository (../shared/data/tracker, not
-/// in git; docs/theory.md#tracker-files), or "" when absent.
-inline std::string ball_toss_path() {
+/// A real Tracker project with human marks beside the repository (../shared/data/tracker/FILE,
+/// not in git; docs/theory.md#tracker-files), or "" when absent.
+inline std::string tracker_project_path(const std::string& file) {
   std::string path;
   for (const char* root : {"/../shared", "/../../shared"}) {
-    const std::string p = tribolab::test_source_dir() + root + "/data/tracker/BallToss.trz";
+    const std::string p = tribolab::test_source_dir() + root + "/data/tracker/" + file;
     if (std::filesystem::exists(p)) path = p;
   }
   return path;
 }
+
+/// Tracker's example project BallToss.trz (tracker_project_path), or "" when absent.
+inline std::string ball_toss_path() { return tracker_project_path("BallToss.trz"); }
 
 }  // namespace tribolab::video::testing

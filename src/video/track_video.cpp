@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <type_traits>
 #include <variant>
 
 namespace tribolab::video {
@@ -35,6 +36,7 @@ std::vector<std::string> output_names(const Target& t) {
 std::string TrackVideoOptions::validate() const {
   if (auto e = source.validate(); !e.empty()) return e;
   if (auto e = point.validate(); !e.empty()) return e;
+  if (auto e = path.validate(); !e.empty()) return e;
   if (auto e = ellipse.validate(); !e.empty()) return e;
   if (targets.empty()) return "nothing to track: give " + field("start") + ", " + field("ellipse") + " or " + field("from_track");
   if (thumbnails < 0 || thumbnails > kMaxThumbnails) return "thumbnails must be from 0 to 100";
@@ -65,8 +67,9 @@ struct Follower {
   Target target;
   int start_frame = 0;
   double start_x = 0, start_y = 0;
-  std::variant<PointTracker, EllipseTracker> tracker;
+  std::variant<PointTracker, EllipseTracker, PathTracker> tracker;
   bool started = false;
+  std::vector<Frame> pending;  // PathTracker: the frames (index, t; no image) it answers at the end
   std::vector<std::size_t> series;  // indices into the result's series
 };
 
@@ -217,26 +220,40 @@ double median(std::vector<double> v) {
   return m;
 }
 
-/// Distance from the project's further human marks (the start mark excluded), px.
-HumanComparison compare_with_human(const TrackedSeries& s, const track::Track& human, int start_frame) {
+}  // namespace
+
+HumanComparison compare_with_human(const TrackedSeries& s, const track::Track& human, int start_frame,
+                                   int image_width_px) {
+  // A user corrects a point farther than 4 px from the mark per 640 px of image width
+  // (12 px at 1080p, issue 24); farther than 10 px with a score is a confident wrong answer.
+  constexpr double kCorrectPxPer640 = 4, kConfidentlyWrongPx = 10;
   HumanComparison c;
+  c.correct_px = kCorrectPxPer640 * image_width_px / 640.0;
   std::vector<double> d;
   std::size_t j = 0;
   for (const track::TrackPoint& p : human.points) {
     if (p.frame == start_frame) continue;
     while (j < s.rows.size() && s.rows[j].frame < p.frame) ++j;
-    if (j == s.rows.size() || s.rows[j].frame != p.frame || s.rows[j].lost) continue;
-    d.push_back(std::hypot(s.rows[j].x_px - p.x, s.rows[j].y_px - p.y));
+    if (j == s.rows.size() || s.rows[j].frame != p.frame) continue;
+    ++c.marks;
+    if (s.rows[j].lost) {
+      ++c.to_correct;
+      continue;
+    }
+    const double dist = std::hypot(s.rows[j].x_px - p.x, s.rows[j].y_px - p.y);
+    d.push_back(dist);
+    if (dist > c.correct_px) ++c.to_correct;
+    if (dist > kConfidentlyWrongPx) ++c.confidently_wrong;
   }
   c.frames = static_cast<int>(d.size());
   if (!d.empty()) {
     c.max_px = *std::max_element(d.begin(), d.end());
     c.median_px = median(d);
+    std::sort(d.begin(), d.end());
+    c.p90_px = d[static_cast<std::size_t>(std::ceil(0.9 * static_cast<double>(d.size()))) - 1];
   }
   return c;
 }
-
-}  // namespace
 
 TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options) {
   if (const auto err = options.validate(); !err.empty()) throw InputError(err);
@@ -245,8 +262,12 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
   const VideoInput& in = result.input;
   std::vector<Follower> followers;
   for (const Target& t : options.targets) {
-    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}};
-    if (w.target.kind == Target::Kind::ellipse) w.tracker = EllipseTracker(options.ellipse);
+    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}, {}};
+    if (w.target.kind == Target::Kind::ellipse) {
+      w.tracker = EllipseTracker(options.ellipse);
+    } else if (options.offline_points) {
+      w.tracker = PathTracker(options.path);
+    }
     resolve_start(w, in);
     for (const std::string& n : output_names(t)) {
       w.series.push_back(result.series.size());
@@ -269,11 +290,17 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
       if (!w.started && f.index != w.start_frame) continue;
       std::visit(
           [&](auto& tracker) {
-            if (w.started) {
-              record(w, f, in, result.series, tracker.update(f));
-            } else {
+            if (!w.started) {
               record(w, f, in, result.series, tracker.start(f, w.start_x, w.start_y, w.target.name));
               w.started = true;
+            } else if constexpr (std::is_same_v<std::decay_t<decltype(tracker)>, PathTracker>) {
+              tracker.update(f);  // answers in finish(), after the last frame
+              Frame meta;
+              meta.index = f.index;
+              meta.t = f.t;
+              w.pending.push_back(std::move(meta));
+            } else {
+              record(w, f, in, result.series, tracker.update(f));
             }
           },
           w.tracker);
@@ -296,12 +323,22 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
                            std::to_string(result.frames) + " frames decoded)");
     }
   }
+  std::vector<std::string> hints;  // per follower: why a path track lost frames
+  for (Follower& w : followers) {
+    std::string hint;
+    if (auto* path = std::get_if<PathTracker>(&w.tracker)) {
+      const std::vector<Observation> obs = path->finish();
+      for (std::size_t i = 0; i < obs.size() && i < w.pending.size(); ++i) record(w, w.pending[i], in, result.series, obs[i]);
+      hint = path->loss_hint();
+    }
+    hints.push_back(hint);
+  }
   for (TrackedSeries& s : result.series) summarise(s);
   for (const Follower& w : followers) {
     if (w.target.from_track.empty()) continue;
     for (const auto& m : in.marks_px) {
       if (m.name == w.target.from_track) {
-        result.series[w.series[0]].vs_human = compare_with_human(result.series[w.series[0]], m, w.start_frame);
+        result.series[w.series[0]].vs_human = compare_with_human(result.series[w.series[0]], m, w.start_frame, in.info.width);
       }
     }
   }
@@ -317,7 +354,8 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
   }
   result.warnings = in.warnings;
   for (const auto& w : reader.warnings()) result.warnings.push_back(w);
-  for (const Follower& w : followers) {  // an ellipse's ends are lost with its centre
+  for (std::size_t wi = 0; wi < followers.size(); ++wi) {  // an ellipse's ends are lost with its centre
+    const Follower& w = followers[wi];
     const TrackedSeries& s = result.series[w.series[0]];
     if (s.lost_ranges.empty()) continue;
     std::string frames;
@@ -327,7 +365,8 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
     std::string refound;
     for (int k : s.refound_frames) refound += (refound.empty() ? "" : ", ") + std::to_string(k);
     result.warnings.push_back("track '" + s.name + "': lost at frame(s) " + frames + " (rows with empty positions)" +
-                              (refound.empty() ? "" : "; found again at frame(s) " + refound));
+                              (refound.empty() ? "" : "; found again at frame(s) " + refound) +
+                              (hints[wi].empty() ? "" : "; " + hints[wi]));
   }
   // The project's own marks are an independent check: a track far from them has followed
   // something else (an edge sliding along itself, a look-alike) even where its score held.

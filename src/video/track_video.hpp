@@ -6,6 +6,7 @@
 
 #include "track/track.hpp"
 #include "video/ellipse_tracker.hpp"
+#include "video/path_tracker.hpp"
 #include "video/point_tracker.hpp"
 #include "video/source.hpp"
 
@@ -30,6 +31,10 @@ struct TrackVideoOptions {
   SourceOptions source;
   std::vector<Target> targets;
   PointTrackerOptions point;
+  PathTrackerOptions path;
+  /// Points: true follows them with the offline PathTracker, false with the frame-to-frame
+  /// PointTracker (rotation search, see point_tracker.hpp).
+  bool offline_points = true;
   EllipseTrackerOptions ellipse;
   int thumbnails = 6;      ///< frames kept (downscaled, tracks drawn) for the report
   /// Called after each frame with (frames done, frames expected); may be empty.
@@ -47,12 +52,29 @@ struct TrackedRow {
   bool lost = false;       ///< no reliable position (x, y, x_px, y_px are NaN)
 };
 
-/// Distance between tribolab's track and the project's human marks on the same frames.
+struct TrackedSeries;
+
+/// Distance between tribolab's track and the project's human marks on the same frames
+/// (docs/theory.md#tracking-on-real-film: the figures a user correcting the track sees).
 struct HumanComparison {
   int frames = 0;              ///< frames with both (the start mark excluded)
   double median_px = 0;        ///< median distance, px
   double max_px = 0;           ///< largest distance, px
+  int marks = 0;               ///< human marks on the track's rows (the start mark excluded)
+  double p90_px = 0;           ///< 90th percentile of the distance, px
+  /// Distance beyond which a user would correct a frame: 4 px per 640 px of image width, px.
+  double correct_px = 0;
+  /// Marked frames a user must correct: no position, or farther than correct_px from the mark.
+  int to_correct = 0;
+  /// Marked frames with a position (score at or above the threshold) farther than 10 px from
+  /// the mark: a confident wrong answer.
+  int confidently_wrong = 0;
 };
+
+/// Compares a series with human marks (px) on the same frames, the mark of `start_frame`
+/// left out; `image_width_px` sets the correction distance.
+HumanComparison compare_with_human(const TrackedSeries& s, const track::Track& human, int start_frame,
+                                   int image_width_px);
 
 struct TrackedSeries {
   std::string name;

@@ -1,0 +1,585 @@
+// Offline point tracking: candidates per frame, background model, best path by dynamic
+// programming, min-marginal rival check (docs/theory.md#tracking-on-real-film).
+#include "video/path_tracker.hpp"
+
+#include "numerics/error.hpp"
+#include "video/correlation_peak.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tribolab::video {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+// Candidates kept per frame (correlation peaks, best first) and the least correlation a
+// candidate may have (below it nothing in the window resembles the object).
+constexpr int kCandidates = 8;
+// A start patch whose grey levels vary less than this (standard deviation) is flat.
+constexpr double kFlatSd = 3;
+// Peaks taken from each anchor's window (the candidates of a step come from up to five).
+constexpr int kPerWindow = 3;
+// A best candidate correlating this well is a confident sighting (the lead anchor).
+constexpr double kConfident = 0.9;
+constexpr double kCandidateFloor = 0.3;
+// Background samples kept (grey frames spread over the clip, one per block of `stride`;
+// when full, every other one is dropped and the stride doubles): the temporal median of at
+// most 16 frames.
+constexpr std::size_t kMaxSamples = 16;
+// Cost of a candidate: (1 - correlation) / kNccScale + kFgWeight * (1 - fg / (fg + kFgHalf)),
+// fg the mean absolute difference from the background over the object, grey levels. A
+// frame without the object costs kMissCost: a candidate correlating 0.7 with the object and
+// as different from the background as the object's typical 8+ grey levels costs 3 + 1.
+constexpr double kNccScale = 0.1;
+constexpr double kFgWeight = 2;
+constexpr double kFgHalf = 8;
+constexpr double kMissCost = 4;
+// Motion prior: the acceleration a (px/frame^2) of three successive path points costs
+// |a|^2 / (2 sigma^2), sigma = kAccAbs + kAccRel * speed (the mean of
+// the two; across a gap the slower); beyond kAccGate sigma it is
+// impossible. kAccAbs: marks scatter ~0.5 px, so a still object's acceleration ~1 px;
+// kAccRel: a toss at 15 fps turns its 70 px/frame by 9 px/frame^2 (0.13), a car in a loop
+// of radius 150 px at 20 px/frame by 2.7 (0.13).
+constexpr double kAccAbs = 1.5;
+constexpr double kAccRel = 0.3;
+constexpr double kAccGate = 5;
+// A frame is doubtful when a path through a candidate farther than the rival distance from
+// the chosen one costs less than kRivalMargin more than the best path.
+constexpr double kRivalMargin = 3;
+// A run of consecutive path points differing from the background by less than this share of
+// the path's median difference (medians over the run and over the path) is background (when that median is well above noise, 2 kFgHalf).
+constexpr double kFgShare = 0.15;
+
+struct Candidate {
+  double x = 0, y = 0;  // px
+  double ncc = 0;       // correlation with the first frame's template
+  double cost = 0;      // unary cost
+  double fg = 0;        // difference from the background, grey levels
+  cv::Mat patch;        // CV_8U, template-sized grey patch at the rounded position
+  cv::Point at;         // the patch's centre, px
+};
+
+struct StepCandidates {
+  int index = 0;
+  std::vector<Candidate> c;
+};
+
+// Scale-normalised Laplacian-of-Gaussian magnitude sigma^2 |LoG| at `p`, maximised over
+// scale (Lindeberg's automatic scale selection): the blob radius is sigma * sqrt(2).
+double blob_radius(const cv::Mat& gray, cv::Point2d p) {
+  const int side = std::min({gray.cols, gray.rows, 257});
+  cv::Mat roi;
+  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(p), roi, CV_32F);
+  const int c = side / 2;
+  double best = -1, radius = 3;
+  for (double sigma = 1.0; sigma * 6 < side && sigma <= 24; sigma *= std::sqrt(2.0)) {
+    cv::Mat g, lap;
+    cv::GaussianBlur(roi, g, cv::Size(0, 0), sigma);
+    cv::Laplacian(g, lap, CV_32F, 3);
+    const double v = sigma * sigma * std::abs(lap.at<float>(c, c));
+    if (v > best) {
+      best = v;
+      radius = sigma * std::sqrt(2.0);
+    }
+  }
+  return radius;
+}
+
+}  // namespace
+
+std::string PathTrackerOptions::validate() const {
+  if (patch_px != 0 && (patch_px < 7 || patch_px % 2 == 0)) {
+    return "patch_px must be odd and >= 7 (or 0: automatic), got " + std::to_string(patch_px);
+  }
+  if (search_px < 0) return "search_px must be >= 0, got " + std::to_string(search_px);
+  if (!(min_score > 0 && min_score < 1)) return "min_score must lie in (0, 1), got " + std::to_string(min_score);
+  if (max_gap_frames < 0) return "max_gap_frames must be >= 0, got " + std::to_string(max_gap_frames);
+  return {};
+}
+
+struct PathTracker::Impl {
+  PathTrackerOptions opt;
+  std::string name;
+  cv::Size size;
+  int p = 0, h = 0;        // template side and half side, px
+  double radius = 0;       // object radius from scale selection, px
+  double reach = 0;        // largest motion per frame, px
+  cv::Mat templ;           // CV_32F
+  std::vector<StepCandidates> steps;  // steps[0]: the start (the click)
+  std::vector<cv::Mat> samples;       // background samples (grey)
+  int stride = 1, seen = 0;
+  cv::Point2d lead[2];            // the last two confident sightings, px
+  int lead_frames[2] = {-1, -1};  // their step indices (-1: none yet)
+  // Loss causes counted by finish().
+  int lost_none = 0, lost_rival = 0, lost_score = 0, lost_background = 0;
+
+  void sample(const cv::Mat& gray) {
+    // One frame per block of `stride`, at a scrambled place in the block: a regular stride
+    // aliases with a periodic motion (a pendulum of period 15 frames sampled every 15 frames
+    // puts the bob into the background median).
+    const unsigned block = static_cast<unsigned>(seen / stride);
+    const int place = static_cast<int>(((block * 2654435761u) >> 8) % static_cast<unsigned>(stride));
+    if (seen++ % stride != place) return;
+    samples.push_back(gray.clone());
+    if (samples.size() >= kMaxSamples) {
+      std::vector<cv::Mat> kept;
+      for (std::size_t i = 0; i < samples.size(); i += 2) kept.push_back(samples[i]);
+      samples = std::move(kept);
+      stride *= 2;
+    }
+  }
+
+  Candidate make_candidate(const cv::Mat& gray, double x, double y, double ncc) const {
+    Candidate c;
+    c.x = x;
+    c.y = y;
+    c.ncc = ncc;
+    c.at = cv::Point(static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y)));
+    cv::getRectSubPix(gray, cv::Size(p, p), cv::Point2f(c.at), c.patch);
+    return c;
+  }
+
+  // Mean absolute difference of the object's central square from the background median there.
+  double foreground(const Candidate& c) const {
+    const int r = std::clamp(static_cast<int>(std::ceil(radius)), 1, h);
+    const cv::Rect in(h - r, h - r, 2 * r + 1, 2 * r + 1);
+    std::vector<cv::Mat> bg;
+    for (const cv::Mat& s : samples) {
+      cv::Mat b;
+      cv::getRectSubPix(s, cv::Size(p, p), cv::Point2f(c.at), b);
+      bg.push_back(b(in));
+    }
+    double sum = 0;
+    std::vector<unsigned char> v(bg.size());
+    for (int y = 0; y < in.height; ++y) {
+      for (int x = 0; x < in.width; ++x) {
+        for (std::size_t k = 0; k < bg.size(); ++k) v[k] = bg[k].at<unsigned char>(y, x);
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        sum += std::abs(c.patch.at<unsigned char>(in.y + y, in.x + x) - v[v.size() / 2]);
+      }
+    }
+    return sum / in.area();
+  }
+
+  void update(const Frame& f);
+  std::vector<Observation> finish();
+};
+
+PathTracker::PathTracker(const PathTrackerOptions& options) : impl_(std::make_unique<Impl>()) {
+  impl_->opt = options;
+}
+PathTracker::~PathTracker() = default;
+PathTracker::PathTracker(PathTracker&&) noexcept = default;
+PathTracker& PathTracker::operator=(PathTracker&&) noexcept = default;
+int PathTracker::patch_px() const { return impl_->p; }
+
+Observation PathTracker::start(const Frame& first, double x_px, double y_px, const std::string& name) {
+  if (const auto e = impl_->opt.validate(); !e.empty()) throw InputError(name, e);
+  Impl& m = *impl_;
+  const cv::Mat& gray = first.gray;
+  if (!(x_px >= 0 && y_px >= 0 && x_px <= gray.cols - 1 && y_px <= gray.rows - 1)) {
+    throw InputError(name, "start point (" + std::to_string(x_px) + ", " + std::to_string(y_px) +
+                               ") px lies outside the " + std::to_string(gray.cols) + "x" +
+                               std::to_string(gray.rows) + " image");
+  }
+  m.name = name;
+  m.size = gray.size();
+  const int small_side = std::min(gray.cols, gray.rows);
+  m.radius = blob_radius(gray, {x_px, y_px});
+  // The template holds the object and a ring of its surroundings (1.5 radii): enough contrast
+  // for a plain object, little background for a small one.
+  int p = m.opt.patch_px;
+  if (p == 0) p = 2 * static_cast<int>(std::ceil(std::max(4.0, 1.5 * m.radius))) + 1;
+  p = std::min(p, 2 * (small_side / 8) + 1);
+  m.p = std::max(p, 7);
+  m.h = m.p / 2;
+  // Reach: a quarter of the image's smaller side per frame (Tracker's BallToss, filmed at
+  // 15 fps, moves 100 px of 480 in its last frame), at least two templates.
+  m.reach = m.opt.search_px > 0 ? m.opt.search_px : std::max(2.0 * m.p, small_side / 4.0);
+  cv::Mat templ;
+  cv::getRectSubPix(gray, cv::Size(m.p, m.p), cv::Point2f(x_px, y_px), templ, CV_32F);
+  // Only a flat patch is refused (sensor noise alone: standard deviation ~2 grey levels): a
+  // plain object's outline is enough.
+  cv::Scalar mean, sd;
+  cv::meanStdDev(templ, mean, sd);
+  if (sd[0] < kFlatSd) {
+    throw InputError(name, "the " + std::to_string(m.p) + " px patch around (" + std::to_string(x_px) + ", " +
+                               std::to_string(y_px) + ") px is flat (standard deviation " + std::to_string(sd[0]) +
+                               " grey levels, needs " + std::to_string(static_cast<int>(kFlatSd)) +
+                               "): there is nothing to follow; start on the object");
+  }
+  m.templ = templ;
+  m.steps.clear();
+  m.samples.clear();
+  m.stride = 1;
+  m.seen = 0;
+  m.lead[1] = cv::Point2d(x_px, y_px);
+  m.lead_frames[0] = -1;
+  m.lead_frames[1] = 0;
+  StepCandidates s;
+  s.index = first.index;
+  s.c.push_back(m.make_candidate(gray, x_px, y_px, 1));
+  s.c.back().x = x_px;
+  s.c.back().y = y_px;
+  m.steps.push_back(std::move(s));
+  m.sample(gray);
+  Observation o;
+  o.frame = first.index;
+  o.x_px = x_px;
+  o.y_px = y_px;
+  o.score = 1;
+  return o;
+}
+
+void PathTracker::update(const Frame& frame) {
+  if (!impl_ || impl_->steps.empty()) throw InputError("path tracker: update() before start()");
+  impl_->update(frame);
+}
+
+void PathTracker::Impl::update(const Frame& f) {
+  const cv::Mat& gray = f.gray;
+  if (gray.size() != size || gray.type() != CV_8UC1) {
+    throw InputError(name, "frame " + std::to_string(f.index) + " has no grey image of the start frame's size");
+  }
+  sample(gray);
+  // Where the object can be: within reach (times the frames elapsed) of the best three
+  // candidates of the last step that had any and of the best one of the two such steps
+  // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
+  // peaks far away never crowd out a blurred object near an anchor.
+  struct Anchor {
+    cv::Point2d at;
+    int age;
+  };
+  std::vector<Anchor> anchors;
+  const int n = static_cast<int>(steps.size());
+  for (int k = n - 1, used = 0; k >= 0 && used < 3; --k) {
+    if (steps[k].c.empty()) continue;
+    std::vector<const Candidate*> best;
+    for (const Candidate& c : steps[k].c) best.push_back(&c);
+    std::sort(best.begin(), best.end(), [](const Candidate* a, const Candidate* b) { return a->ncc > b->ncc; });
+    const std::size_t take = used == 0 ? 3 : 1;
+    for (std::size_t i = 0; i < best.size() && i < take; ++i) {
+      const cv::Point2d at(best[i]->x, best[i]->y);
+      const bool near = std::any_of(anchors.begin(), anchors.end(), [&](const Anchor& a) {
+        return std::hypot(a.at.x - at.x, a.at.y - at.y) < p;
+      });
+      if (!near) anchors.push_back({at, n - k});
+    }
+    ++used;
+  }
+  // And where the last two confident sightings (best candidate correlating 0.9 or more)
+  // lead, extrapolated linearly: an object hidden for a while reappears there.
+  if (lead_frames[0] >= 0) {
+    const double k = double(n - lead_frames[1]) / (lead_frames[1] - lead_frames[0]);
+    const cv::Point2d at = lead[1] + k * (lead[1] - lead[0]);
+    if (at.x >= 0 && at.y >= 0 && at.x < size.width && at.y < size.height) anchors.push_back({at, 1});
+  }
+  StepCandidates out;
+  out.index = f.index;
+  const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
+  cv::Mat w32, res;
+  std::vector<Candidate> found;
+  std::vector<std::size_t> window_best;  // index in `found` of each window's best peak
+  for (const Anchor& a : anchors) {
+    const double r = reach * a.age + h + 1;
+    const cv::Rect win = cv::Rect(static_cast<int>(std::floor(a.at.x - r)), static_cast<int>(std::floor(a.at.y - r)),
+                                  static_cast<int>(std::ceil(2 * r)) + 1, static_cast<int>(std::ceil(2 * r)) + 1) &
+                         cv::Rect(0, 0, gray.cols, gray.rows);
+    if (win.width <= p + 2 || win.height <= p + 2) continue;
+    gray(win).convertTo(w32, CV_32F);
+    cv::matchTemplate(w32, templ, res, cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(res, -1);
+    cv::Mat scratch = res.clone();
+    for (int k = 0; k < kPerWindow; ++k) {
+      double v;
+      cv::Point at;
+      cv::minMaxLoc(scratch, nullptr, &v, nullptr, &at);
+      if (v < kCandidateFloor) break;
+      cv::circle(scratch, at, suppress, cv::Scalar(-1), cv::FILLED);
+      double fitted = v;
+      const cv::Point2d off = subpixel_peak(res, at, &fitted);
+      const double x = win.x + at.x + off.x + h, y = win.y + at.y + off.y + h;
+      // The same peak seen from two windows is kept once.
+      const auto same = std::find_if(found.begin(), found.end(), [&](const Candidate& c) {
+        return std::hypot(c.x - x, c.y - y) < suppress;
+      });
+      if (same != found.end()) {
+        if (k == 0) window_best.push_back(static_cast<std::size_t>(same - found.begin()));
+        continue;
+      }
+      if (k == 0) window_best.push_back(found.size());
+      found.push_back(make_candidate(gray, x, y, std::min(1.0, fitted)));
+    }
+  }
+  // At most kCandidates: every window's best, then the best of the rest.
+  std::vector<bool> keep(found.size(), false);
+  int kept = 0;
+  for (std::size_t i : window_best) {
+    if (!keep[i] && kept < kCandidates) {
+      keep[i] = true;
+      ++kept;
+    }
+  }
+  std::vector<std::size_t> order(found.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found[a].ncc > found[b].ncc; });
+  for (std::size_t i : order) {
+    if (!keep[i] && kept < kCandidates) {
+      keep[i] = true;
+      ++kept;
+    }
+  }
+  if (!order.empty() && found[order[0]].ncc >= kConfident) {
+    lead[0] = lead[1];
+    lead_frames[0] = lead_frames[1];
+    lead[1] = cv::Point2d(found[order[0]].x, found[order[0]].y);
+    lead_frames[1] = n;
+  }
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    if (keep[i]) out.c.push_back(std::move(found[i]));
+  }
+  steps.push_back(std::move(out));
+}
+
+
+std::vector<Observation> PathTracker::finish() {
+  if (!impl_ || impl_->steps.empty()) throw InputError("path tracker: finish() before start()");
+  return impl_->finish();
+}
+
+std::vector<Observation> PathTracker::Impl::finish() {
+  const int T = static_cast<int>(steps.size());
+  const int G = opt.max_gap_frames + 1;  // largest step between two path points
+  // Unary costs: likeness and difference from the background median.
+  for (int t = 1; t < T; ++t) {
+    for (Candidate& c : steps[t].c) {
+      c.fg = foreground(c);
+      c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
+    }
+  }
+  // States: (step t, candidate k, back step g, candidate j of step t - g): the path's last
+  // two points, enough for its acceleration at the next one. off[t][k * G + g - 1] is the
+  // first state of the block (k, g); the block holds one state per candidate of t - g.
+  struct State {
+    float F = kInf, B = kInf;  // best cost up to and including this state / after it
+    int back = -1;             // the predecessor's index in step t - g
+    short k = 0, g = 0, j = 0;
+  };
+  std::vector<std::vector<State>> S(T);
+  std::vector<std::vector<int>> off(T);
+  S[0].push_back(State{0, kInf, -1, 0, 0, 0});
+  auto pos = [&](int t, int k) { return cv::Point2d(steps[t].c[k].x, steps[t].c[k].y); };
+  auto gate = [&](int t0, int k0, int t1, int k1) {
+    const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
+    // From the start (no velocity known) a gap does not widen the reach: the object was
+    // clicked where it is, and something far away found frames later is something else.
+    return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
+  };
+  // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
+  auto accel = [&](int ta, int ka, int tb, int kb, int tc, int kc) -> double {
+    const cv::Point2d v1 = (pos(tb, kb) - pos(ta, ka)) / (tb - ta), v2 = (pos(tc, kc) - pos(tb, kb)) / (tc - tb);
+    const cv::Point2d a = (v2 - v1) / (0.5 * (tc - ta));
+    // The mean speed; across a gap the slower of the two, so that a jump to something far
+    // away does not widen its own tolerance (an oscillation, slow at its turning points, needs
+    // the mean).
+    const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
+                                      : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
+    const double sigma = kAccAbs + kAccRel * speed;
+    if (tc - tb > 1) {
+      // Found again after a gap: within reach of where the motion before it leads (linear
+      // extrapolation), else something else has been found.
+      const cv::Point2d d = pos(tc, kc) - (pos(tb, kb) + v1 * (tc - tb));
+      if (std::hypot(d.x, d.y) > 2 * radius + kAccRel * std::hypot(v1.x, v1.y) * (tc - tb)) return kInf;
+    }
+    const double z = std::hypot(a.x, a.y) / sigma;
+    return z > kAccGate ? kInf : 0.5 * z * z;
+  };
+  for (int t = 1; t < T; ++t) {
+    const int K = static_cast<int>(steps[t].c.size());
+    off[t].assign(K * G + 1, 0);
+    int n = 0;
+    for (int k = 0; k < K; ++k) {
+      for (int g = 1; g <= G; ++g) {
+        off[t][k * G + g - 1] = n;
+        if (t - g >= 0) {
+          for (int j = 0; j < static_cast<int>(steps[t - g].c.size()); ++j) {
+            State st;
+            st.k = static_cast<short>(k);
+            st.g = static_cast<short>(g);
+            st.j = static_cast<short>(j);
+            S[t].push_back(st);
+            ++n;
+          }
+        }
+      }
+    }
+    off[t][K * G] = n;
+  }
+  auto block = [&](int t, int k, int g) {
+    return std::pair<int, int>(off[t][k * G + g - 1], off[t][k * G + g]);
+  };
+  // Forward.
+  for (int t = 1; t < T; ++t) {
+    for (State& s : S[t]) {
+      const int tp = t - s.g;
+      if (!gate(tp, s.j, t, s.k)) continue;
+      const double u = steps[t].c[s.k].cost + kMissCost * (s.g - 1);
+      if (tp == 0) {
+        s.F = static_cast<float>(u);
+        s.back = 0;
+        continue;
+      }
+      double best = kInf;
+      int arg = -1;
+      for (int g2 = 1; g2 <= G && tp - g2 >= 0; ++g2) {
+        const auto [a, b] = block(tp, s.j, g2);
+        for (int i = a; i < b; ++i) {
+          const State& q = S[tp][i];
+          if (!(q.F < kInf)) continue;
+          const double c = q.F + accel(tp - g2, q.j, tp, s.j, t, s.k);
+          if (c < best) {
+            best = c;
+            arg = i;
+          }
+        }
+      }
+      if (arg >= 0) {
+        s.F = static_cast<float>(u + best);
+        s.back = arg;
+      }
+    }
+  }
+  // Backward: the best cost after a state, ending anywhere (the frames left cost kMissCost).
+  for (int t = T - 1; t >= 0; --t) {
+    for (State& s : S[t]) {
+      double best = kMissCost * (T - 1 - t);
+      for (int g3 = 1; g3 <= G && t + g3 < T; ++g3) {
+        const int t3 = t + g3;
+        for (int k3 = 0; k3 < static_cast<int>(steps[t3].c.size()); ++k3) {
+          const auto [a, b] = block(t3, k3, g3);
+          const int idx = a + s.k;  // the successor whose previous point is this state's
+          if (idx >= b || !gate(t, s.k, t3, k3)) continue;
+          const State& q = S[t3][idx];
+          const double acc = t == 0 ? 0.0 : accel(t - s.g, s.j, t, s.k, t3, k3);
+          const double c = steps[t3].c[k3].cost + kMissCost * (g3 - 1) + acc + q.B;
+          best = std::min(best, c);
+        }
+      }
+      s.B = static_cast<float>(best);
+    }
+  }
+  // The best path (forward and backward agree on its cost: F + B is the same along it).
+  // (The optimum is also S[0][0].B, the backward pass's best from the start.)
+  double total = kMissCost * (T - 1);  // the start alone, every further frame lost
+  int bt = 0, bs = 0;
+  for (int t = 1; t < T; ++t) {
+    for (int i = 0; i < static_cast<int>(S[t].size()); ++i) {
+      const double c = S[t][i].F + kMissCost * (T - 1 - t);
+      if (c < total) {
+        total = c;
+        bt = t;
+        bs = i;
+      }
+    }
+  }
+  std::vector<int> chosen(T, -1);
+  for (int t = bt, i = bs; t > 0;) {
+    const State& s = S[t][i];
+    chosen[t] = s.k;
+    i = s.back;
+    t -= s.g;
+  }
+  // Per frame: the best full path through each candidate (min-marginal); a far candidate
+  // nearly as good as the chosen one makes the frame doubtful.
+  const double rival_px = std::max(3.0, radius);
+  // A path point that stands out from the background far less than the object does along
+  // the path (a still patch of texture reached across a gap) is not the object.
+  std::vector<double> path_fg;
+  for (int t = 1; t < T; ++t) {
+    if (chosen[t] >= 0) path_fg.push_back(steps[t].c[chosen[t]].fg);
+  }
+  double typical_fg = 0;
+  if (!path_fg.empty()) {
+    std::nth_element(path_fg.begin(), path_fg.begin() + path_fg.size() / 2, path_fg.end());
+    typical_fg = path_fg[path_fg.size() / 2];
+  }
+  // Per run of consecutive path frames, its median difference (an object slowing down at the
+  // turning point of a swing sits in the background median for a frame or two; a run of
+  // still texture after a gap does throughout).
+  std::vector<double> run_fg(T, 0);
+  for (int t = 1; t < T;) {
+    if (chosen[t] < 0) {
+      ++t;
+      continue;
+    }
+    int e = t;
+    std::vector<double> v;
+    while (e < T && chosen[e] >= 0) v.push_back(steps[e].c[chosen[e]].fg), ++e;
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    for (int i = t; i < e; ++i) run_fg[i] = v[v.size() / 2];
+    t = e;
+  }
+  std::vector<Observation> obs;
+  lost_none = lost_rival = lost_score = lost_background = 0;
+  for (int t = 1; t < T; ++t) {
+    Observation o;
+    o.frame = steps[t].index;
+    o.lost = true;
+    const int k = chosen[t];
+    if (k < 0) {
+      ++lost_none;
+      obs.push_back(o);
+      continue;
+    }
+    const Candidate& c = steps[t].c[k];
+    o.x_px = c.x;
+    o.y_px = c.y;
+    o.score = std::clamp(c.ncc, 0.0, 1.0);
+    bool rival = false;
+    for (int r = 0; r < static_cast<int>(steps[t].c.size()) && !rival; ++r) {
+      const Candidate& q = steps[t].c[r];
+      if (r == k || std::hypot(q.x - c.x, q.y - c.y) <= rival_px) continue;
+      double m = kInf;
+      for (int i = off[t][r * G]; i < off[t][r * G + G]; ++i) m = std::min<double>(m, S[t][i].F + S[t][i].B);
+      rival = m < total + kRivalMargin;
+    }
+    if (rival) {
+      ++lost_rival;
+      o.score = std::min(o.score, 0.1);
+    } else if (typical_fg > 2 * kFgHalf && run_fg[t] < kFgShare * typical_fg) {
+      ++lost_background;
+      o.score = std::min(o.score, 0.1);
+    } else if (c.ncc < opt.min_score) {
+      ++lost_score;
+    } else {
+      o.lost = false;
+    }
+    obs.push_back(o);
+  }
+  return obs;
+}
+
+std::string PathTracker::loss_hint() const {
+  const Impl& m = *impl_;
+  if (m.lost_none + m.lost_rival + m.lost_score + m.lost_background == 0) return "";
+  if (m.lost_background > std::max({m.lost_none, m.lost_rival, m.lost_score})) {
+    return "in " + std::to_string(m.lost_background) +
+           " frame(s) the best match did not stand out from the still background (the object hidden or at rest): "
+           "a larger --max-gap bridges a hidden object";
+  }
+  if (m.lost_rival >= std::max(m.lost_none, m.lost_score)) {
+    return "a look-alike within reach made " + std::to_string(m.lost_rival) +
+           " frame(s) doubtful: start on a more distinctive mark, or a smaller --search";
+  }
+  if (m.lost_score >= m.lost_none) {
+    return "the object matched its first look poorly in " + std::to_string(m.lost_score) +
+           " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch";
+  }
+  return "the object was not found in " + std::to_string(m.lost_none) +
+         " frame(s) (hidden, out of view, or moving more than --search px per frame): a larger --search or --max-gap";
+}
+
+}  // namespace tribolab::video

@@ -1,0 +1,55 @@
+// Offline point tracking for real film (docs/theory.md#tracking-on-real-film): the whole clip
+// is used before any position is reported. The object is what the user clicked: its size
+// comes from scale selection at the click (not a fixed square), its template from the first
+// frame. Every frame gives a few candidates (normalised-correlation peaks near where the
+// object could be), each scored by its likeness to the template and by how much it differs
+// from the background (the per-pixel temporal median of frames sampled over the clip: a
+// tripod camera's rail, wall and table). The track is the best path through the candidates
+// under a smooth-motion prior (dynamic programming over pairs of candidates, i.e. a bounded
+// acceleration), and a frame is reported only when the forward and backward passes agree:
+// no path through another candidate farther away is nearly as good (min-marginals). A doubtful
+// frame is reported lost with a low score, never a confident wrong point.
+#pragma once
+
+#include "video/frame.hpp"
+#include "video/point_tracker.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tribolab::video {
+
+struct PathTrackerOptions {
+  int patch_px = 0;           ///< template side, px (odd, >= 7; 0: from the object's size)
+  int search_px = 0;          ///< largest motion between two tracked frames, px (0: automatic)
+  double min_score = 0.6;     ///< a path point whose correlation is below this is lost
+  int max_gap_frames = 8;     ///< frames the path may skip (an object hidden by a hand)
+  std::string validate() const;
+};
+
+class PathTracker {
+ public:
+  explicit PathTracker(const PathTrackerOptions& options = {});
+  ~PathTracker();
+  PathTracker(PathTracker&&) noexcept;
+  PathTracker& operator=(PathTracker&&) noexcept;
+  /// Takes the object around (x_px, y_px) in `first`. Throws InputError when the point is
+  /// outside the image (`name` in the message); a plain, low-texture object is not refused.
+  Observation start(const Frame& first, double x_px, double y_px, const std::string& name);
+  /// Collects the candidates of the next frame (nothing is decided yet).
+  void update(const Frame& frame);
+  /// The track: one observation per frame given to update(), in order.
+  std::vector<Observation> finish();
+  /// The template side chosen at start(), px.
+  int patch_px() const;
+  /// Why frames were lost (for the message), "" when none was: the likely cause and the option
+  /// that helps.
+  std::string loss_hint() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tribolab::video

@@ -1,0 +1,142 @@
+#include "video/path_tracker.hpp"
+
+#include "numerics/error.hpp"
+#include "video/render.hpp"
+#include "video/test_videos.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+namespace tribolab::video {
+namespace {
+
+RenderOptions textured_video(int width = 240, int height = 160) {
+  RenderOptions o;
+  o.width = width;
+  o.height = height;
+  o.fps = 30;
+  o.shutter_fraction = 0;
+  o.supersample = 2;
+  o.background = RenderOptions::Background::texture;
+  o.noise_sigma = 2;
+  return o;
+}
+
+ShapePose ball(cv::Point2d c, double r, cv::Scalar colour = {40, 40, 200}) {
+  ShapePose s;
+  s.cx_px = c.x;
+  s.cy_px = c.y;
+  s.a_px = s.b_px = r;
+  s.colour = colour;
+  return s;
+}
+
+struct Result {
+  int frames = 0, lost = 0;
+  double worst_px = 0;      // largest error of a frame reported found, px
+  double median_px = 0;     // median error of those, px
+};
+
+// Tracks `frames` frames of `scene` from the truth's first position; errors against `truth`.
+Result track(const Scene& scene, const RenderOptions& o, int frames, const std::function<cv::Point2d(int)>& truth,
+             const PathTrackerOptions& options = {}) {
+  PathTracker tracker(options);
+  const cv::Point2d p0 = truth(0);
+  tracker.start(testing::rendered_frame(scene, 0, o), p0.x, p0.y, "ball");
+  for (int i = 1; i < frames; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+  Result r;
+  std::vector<double> e;
+  for (const Observation& ob : tracker.finish()) {
+    ++r.frames;
+    if (ob.lost) {
+      ++r.lost;
+      continue;
+    }
+    const cv::Point2d t = truth(ob.frame);
+    e.push_back(std::hypot(ob.x_px - t.x, ob.y_px - t.y));
+  }
+  if (!e.empty()) {
+    r.worst_px = *std::max_element(e.begin(), e.end());
+    std::nth_element(e.begin(), e.begin() + e.size() / 2, e.end());
+    r.median_px = e[e.size() / 2];
+  }
+  std::printf("frames %d, lost %d, error median %.3f px, worst %.3f px\n", r.frames, r.lost, r.median_px, r.worst_px);
+  return r;
+}
+
+TEST(PathTracker, FollowsASmallBallRollingOnATexturedRail) {
+  // A 6 px ball (radius 3) rolling 2.5 px/frame over a textured background: the frame
+  // tracker's 21 px template is mostly background and is lost from the first frame
+  // (PointTracker.DoesNotHoldOnToTheTexturedBackgroundABallLeaves).
+  const RenderOptions o = textured_video();
+  auto at = [](int i) { return cv::Point2d(30 + 2.5 * i, 80 + 0.4 * i); };
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{ball(at(static_cast<int>(std::lround(t * 30))), 3)}; };
+  const Result r = track(scene, o, 40, at);
+  EXPECT_LE(r.lost, 2);          // a user corrects at most 5 % of the 39 frames
+  EXPECT_LT(r.worst_px, 1.5);    // every frame reported is on the ball (radius 3 px)
+}
+
+TEST(PathTracker, DoesNotJumpToALookAlikeThatCrossesIt) {
+  // Two identical balls cross: ours moves right, the look-alike (a hand holding one) moves
+  // down through the same point. Near the crossing the frames may be lost; none may be on the
+  // look-alike.
+  const RenderOptions o = textured_video();
+  auto ours = [](int i) { return cv::Point2d(40 + 5.0 * i, 80); };
+  auto other = [](int i) { return cv::Point2d(120, 20 + 5.0 * i); };
+  const Scene scene = [&](double t) {
+    const int i = static_cast<int>(std::lround(t * 30));
+    return std::vector<ShapePose>{ball(other(i), 6), ball(ours(i), 6)};
+  };
+  const Result r = track(scene, o, 30, ours);
+  EXPECT_LT(r.worst_px, 1.5);  // the look-alike is never taken (it is 5+ px away in every frame but the crossing)
+  EXPECT_LE(r.lost, 6);        // a few frames around the crossing at most
+}
+
+TEST(PathTracker, StartsOnAPlainObjectWithoutTexture) {
+  // A plain grey block on a plain background (CarInLoop's car): the frame tracker refuses the
+  // start ("too little texture"); the path tracker takes the object's size from the click.
+  RenderOptions o = textured_video();
+  o.background = RenderOptions::Background::plain;
+  auto at = [](int i) { return cv::Point2d(50 + 3.0 * i, 60 + 1.0 * i); };
+  const Scene scene = [&](double t) {
+    return std::vector<ShapePose>{ball(at(static_cast<int>(std::lround(t * 30))), 12, {90, 90, 90})};
+  };
+  const Result r = track(scene, o, 30, at);
+  EXPECT_LE(r.lost, 1);
+  EXPECT_LT(r.worst_px, 1.0);
+}
+
+TEST(PathTracker, ReportsTheFramesOfAnOcclusionLost) {
+  // The ball passes behind a hand for a few frames: those frames are lost, the others found.
+  const RenderOptions o = textured_video();
+  auto at = [](int i) { return cv::Point2d(30 + 5.0 * i, 80); };
+  const Scene scene = [&](double t) {
+    ShapePose hand;
+    hand.kind = ShapePose::Kind::rectangle;
+    hand.cx_px = 120;
+    hand.cy_px = 80;
+    hand.a_px = 12;
+    hand.b_px = 40;
+    hand.colour = cv::Scalar(150, 170, 190);
+    return std::vector<ShapePose>{ball(at(static_cast<int>(std::lround(t * 30))), 5), hand};
+  };
+  const Result r = track(scene, o, 36, at);
+  EXPECT_GE(r.lost, 3);          // the ball is fully hidden in frames 17-19
+  EXPECT_LE(r.lost, 8);
+  EXPECT_LT(r.worst_px, 1.5);
+}
+
+TEST(PathTracker, RefusesAStartOutsideTheImage) {
+  const RenderOptions o = textured_video();
+  const Scene scene = [](double) { return std::vector<ShapePose>{}; };
+  PathTracker tracker;
+  EXPECT_THROW(tracker.start(testing::rendered_frame(scene, 0, o), 500, 20, "ball"), InputError);
+}
+
+}  // namespace
+}  // namespace tribolab::video
