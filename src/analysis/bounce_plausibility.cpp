@@ -109,8 +109,9 @@ void check_bounce_plausibility(const bounce::Ball& ball, BounceAnalysis& r) {
 
 std::string gravity_warning(double g, double sigma_g) {
   if (!(std::abs(g - kDefaultG) > 3 * sigma_g + 0.03)) return {};
-  const int digits = g < 1 ? 3 : 2;
-  std::string w = format("the flights fall at g = %.*f +- %.*f m/s^2, not 9.8: ", digits, g, digits, sigma_g);
+  // Two decimals near 9.8; significant digits for a g far below 1 (0.0024 +- 1e-05).
+  std::string w = g < 1 ? format("the flights fall at g = %.3g +- %.2g m/s^2, not 9.8: ", g, sigma_g)
+                        : format("the flights fall at g = %.2f +- %.2f m/s^2, not 9.8: ", g, sigma_g);
   // Times wrong by a factor c scale g by 1/c^2: name the factor that restores 9.8.
   if (std::abs(g / kDefaultG - 1) > 0.25)
     return w + format("the times or the lengths are wrong. If the lengths are right, the file's times must be multiplied "

@@ -243,14 +243,25 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
     if (std::isfinite(e_low) && std::isfinite(e_high))
       std::snprintf(range, sizeof range, "; over that bracket e_velocity = %.4f runs from %.4f to %.4f", r.e_velocity,
                     std::min(e_low, e_high), std::max(e_low, e_high));
+    // The study's convention, y = 0 on the floor, when it lies near the flights (10 cm): e there.
+    char at_zero[200] = "";
+    if (std::abs(r.floor_y) < 0.1) {
+      Vec zero = P0;
+      zero(kFloor) = -r.floor_y;
+      const double e_zero = evaluate(zero)(oE);
+      if (std::isfinite(e_zero))
+        std::snprintf(at_zero, sizeof at_zero, " (with the floor at y = 0, as the study sets it, e_velocity = %.4f)", e_zero);
+    }
     char bracket[160];
     std::snprintf(bracket, sizeof bracket, "between y = %.4f and %.4f m", r.floor_y - r.floor_half_width,
                   r.floor_y + r.floor_half_width);
     r.warnings.push_back(std::string("floor not known (neither floor_y nor contact_duration given): touch and separation "
                                      "located on a floor only bracketed ") + bracket + " by the fitted flights" + range +
-                         ", and the uncertainties of the touch quantities (collision angle, e_velocity) are not stated. "
-                         "Give floor_y (the floor's height in the file's frame, m; 0 when y = 0 was set on the floor) "
-                         "for e with its uncertainty");
+                         at_zero +
+                         "; the bracket itself can miss the floor at high frame rates (contact frames that pass as "
+                         "flight), so e may lie outside that range, and the uncertainties of the touch quantities "
+                         "(collision angle, e_velocity) are not stated. Give floor_y (the floor's height in the file's "
+                         "frame, m; 0 when y = 0 was set on the floor) for e with its uncertainty");
     return;
   }
   r.force_duration_method = std::isfinite(T_given) ? ForceDurationMethod::given : ForceDurationMethod::located;

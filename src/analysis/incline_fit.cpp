@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace tribolab::analysis {
@@ -420,7 +421,9 @@ std::optional<GravityCheck> check_gravity(const track::Track& track, const Incli
   // g-free refit. Plain starts read off the data come last.
   // The refit runs on the scaled track (sane units for the solver) and its g is taken back to
   // the file's time: g_file = g_scaled c^2 (the model is exactly covariant under t -> c t).
-  for (double c : {0.125, 8.0, 1 / 64.0, 64.0, 0.25, 4.0, 0.0625, 16.0, 0.5, 2.0}) {
+  // 64 first: with times 8x off model B still fits (mu at its bound), so a fit that fails
+  // outright has the times further off, most often 8x applied the wrong way.
+  for (double c : {1 / 64.0, 64.0, 0.125, 8.0, 0.25, 4.0, 0.0625, 16.0, 0.5, 2.0}) {
     track::Track scaled = track;
     for (auto& p : scaled.points) p.t *= c;
     try {
@@ -450,8 +453,15 @@ std::string gravity_warning(const GravityCheck& c, const InclineFitOptions& o, b
   // The angle the data show, and whether the given one contradicts it: 3 sd and half a degree
   // (a protractor's reading) apart.
   const bool angle_contradicted = angle_known && std::abs(c.phi.value - o.phi) > 3 * c.phi.sigma + to_rad(0.5);
-  const std::string angle_fit = angle_known ? fmt(to_deg(c.phi.value), 4) + " +- " + fmt(to_deg(c.phi.sigma), 2) + " deg"
-                                            : std::string("no angle (g sin(phi) exceeds g)");
+  // The angle to the sigma's second significant digit (20.996 +- 0.086, 0.005013 +- 0.000020).
+  auto angle_text = [&] {
+    const double v = to_deg(c.phi.value), sd = to_deg(c.phi.sigma);
+    const int decimals = sd > 0 ? std::clamp(1 - static_cast<int>(std::floor(std::log10(sd))), 0, 9) : 4;
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.*f +- %.*f deg", decimals, v, decimals, sd);
+    return std::string(buf);
+  };
+  const std::string angle_fit = angle_known ? angle_text() : std::string("no angle (g sin(phi) exceeds g)");
   // Radians typed as degrees: a value below pi/2 whose reading as radians the data support
   // better than its reading as degrees.
   if (angle_contradicted && given_deg <= M_PI / 2 &&
@@ -467,7 +477,9 @@ std::string gravity_warning(const GravityCheck& c, const InclineFitOptions& o, b
            ": the times, the lengths or the incline angle are wrong. If lengths and angle are right, the file's times "
            "must be multiplied by " + fmt(c.time_factor, 3) + " (e.g. --time-scale " + fmt(c.time_factor, 3) +
            " times the one used; slow motion analysed as real time gives 1/8 at 240 fps played at 30); if times and "
-           "lengths are right, the incline is at " + angle_fit + ", not " + fmt(given_deg) + " deg";
+           "lengths are right, " +
+           (angle_known ? "the incline is at " + angle_fit + ", not " + fmt(given_deg) + " deg"
+                        : std::string("no incline angle explains them (the pull down the slope exceeds g)"));
   if (c.g_identifiable && std::abs(c.g.value - o.g) > 3 * c.g.sigma + 0.03)
     // Not gross but significant (3 sd, and beyond the 9.78-9.83 m/s^2 of the Earth's
     // surface): a frame rate off by k % moves g by 2k % and mu with it, by more than its

