@@ -40,6 +40,10 @@ json summary_for_text(json summary) {
   for (const auto& o : summary["outliers"]) outliers[o["file"].get<std::string>()] = o["reason"];
   summary["outliers"] = outliers;
   summary.erase("points");
+  // A mean of runs that are not one value (e at different collision angles) is no headline:
+  // the listing shows e_velocity_headline (the relation with the angle) instead.
+  for (const char* key : {"e_velocity", "e_height"})
+    if (!summary.value(std::string(key) + "_one_value", true)) summary.erase(key);
   return summary;
 }
 

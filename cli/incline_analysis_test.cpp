@@ -321,3 +321,26 @@ TEST(InclineAnalysisCli, AValueNoRunHasIsRefusedWithItsLine) {
 
 }  // namespace
 }  // namespace tribolab::cli::testing
+
+namespace tribolab::cli::testing {
+namespace {
+
+TEST(InclineAnalysisCli, RadiansTypedAsDegreesAreCalledOutInJsonAndListing) {
+  // Issue 27: the seed's 20.96 deg run with --phi-deg 0.3658 (radians) gave mu 0.398 and
+  // "present" silently. The warning says it looks like radians, in the JSON and on stderr.
+  const std::string dir = temp_dir("incline_radians");
+  const std::string f = dir + "/run.txt";
+  run_json("incline synth" + kSeedRun + "--fps 80 --seed 21 --out " + f);
+  const auto r = run_tribolab("incline analyze " + f + " --phi-deg 0.3658 --no-model-a --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_FALSE(j["warnings"].empty());
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("looks like the angle in radians"), std::string::npos)
+      << j["warnings"];
+  const auto text = run_tribolab("incline analyze " + f + " --phi-deg 0.3658 --no-model-a");
+  EXPECT_NE(text.err.find("tribolab: warning: the incline angle phi_deg = 0.3658 deg contradicts the data"),
+            std::string::npos) << text.err;
+}
+
+}  // namespace
+}  // namespace tribolab::cli::testing

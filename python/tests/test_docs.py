@@ -40,3 +40,20 @@ def test_the_sweep_colour_recipe_saturates_no_cell(monkeypatch):
     assert e.min() < 2 - e.max()  # the old recipe's vmin: it would have clipped cells here
     assert norm.vmin <= e.min() and e.max() <= norm.vmax
     assert abs(norm(1.0) - 0.5) < 1e-12
+
+
+def test_the_bounce_walkthrough_gives_e_with_its_uncertainty(monkeypatch):
+    # The walkthrough's bounce.analyze once had no floor_y: e = 0.4217 with sigma None against
+    # the synthetic film's truth 0.3983 (issue 27). With the floor given, e must carry a sigma
+    # and hold the truth within 3 of them.
+    import matplotlib
+    matplotlib.use("Agg")
+    monkeypatch.chdir(SOURCE_DIR)
+    namespace = {}
+    for i, snippet in enumerate(snippets()):
+        exec(compile(snippet, f"docs/python.md snippet {i + 1}", "exec"), namespace)
+        if "b" in namespace and isinstance(namespace["b"], dict) and "e_velocity" in namespace["b"]:
+            break
+    b = namespace["b"]
+    assert b["sigma_e_velocity"] is not None, b["warnings"]
+    assert abs(b["e_velocity"] - 0.3983) < 3 * b["sigma_e_velocity"], (b["e_velocity"], b["sigma_e_velocity"])

@@ -120,19 +120,7 @@ void check_gravity(const std::vector<track::RigidBodyRow>& rows, BounceAnalysis&
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return std::string(buf);
   };
-  if (std::abs(g - kDefaultG) > 3 * r.sigma_gravity + 0.03) {
-    // Times wrong by a factor c scale g by 1/c^2: name the factor that restores 9.8.
-    const double factor = std::sqrt(g / kDefaultG);
-    const bool gross = std::abs(g / kDefaultG - 1) > 0.25;
-    r.warnings.push_back(
-        "the flights fall at g = " + fmt(g, g < 1 ? 3 : 2) + " +- " + fmt(r.sigma_gravity, g < 1 ? 3 : 2) +
-        " m/s^2, not 9.8: " +
-        (gross ? "the times or the lengths are wrong. If the lengths are right, the file's times must be multiplied by " +
-                     fmt(factor, 3) + " (e.g. " + field("time_scale") + " " + fmt(factor, 3) +
-                     " times the one used; 240 fps slow motion played at 30 fps needs 0.125)"
-               : "check the frame rate (" + field("time_scale") + "; an error of k % in it changes g by 2k %) "
-                 "and the length calibration"));
-  }
+  if (std::string w = gravity_warning(g, r.sigma_gravity); !w.empty()) r.warnings.push_back(std::move(w));
   if (std::abs(r.gravity_tilt_deg) > 3 * r.sigma_gravity_tilt_deg)
     r.warnings.push_back("gravity is tilted by " + fmt(r.gravity_tilt_deg, 2) + " +- " + fmt(r.sigma_gravity_tilt_deg, 2) +
                          " deg from the file's -y axis: the camera or the axes are turned; orientations and the "
@@ -531,7 +519,17 @@ BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip
   const Glitches glitches = drop_glitches(a, b, options.impacts);
   r.body = track::rigid_body_from_points(a, b);
   r.centre = track::centre_track(r.body);
-  const track::Impact& imp = choose_impact(a, b, options, r);
+  const track::Impact* found = nullptr;
+  try {
+    found = &choose_impact(a, b, options, r);
+  } catch (const InputError& e) {
+    // A wrong time scale hides the impact from the detector: say what the flights show.
+    const auto [g, sigma_g] = rough_gravity(r.centre);
+    const std::string w = std::isfinite(g) ? gravity_warning(g, sigma_g) : std::string();
+    if (w.empty() || std::abs(g / kDefaultG - 1) <= 0.25) throw;
+    throw InputError(marked_message(e) + "; " + w);
+  }
+  const track::Impact& imp = *found;
   const auto& rows = r.body.rows;
   // Noise of the centre: the track's robust estimate, floored (exact synthetic data).
   const double nx = std::max(r.impacts.noise_x, 1e-6), ny = std::max(r.impacts.noise_y, 1e-6);

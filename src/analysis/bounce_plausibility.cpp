@@ -2,10 +2,14 @@
 #include "analysis/bounce_plausibility.hpp"
 #include "numerics/error.hpp"
 
+#include "numerics/polyfit.hpp"
+#include "numerics/units.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <utility>
 
 namespace tribolab::analysis {
 namespace {
@@ -106,6 +110,42 @@ void check_bounce_plausibility(const bounce::Ball& ball, BounceAnalysis& r) {
         "Correct or delete those points and analyse again",
         times.size(), 1e3 * worst, 1e3 * noise, list.c_str()));
   }
+}
+
+std::string gravity_warning(double g, double sigma_g) {
+  if (!(std::abs(g - kDefaultG) > 3 * sigma_g + 0.03)) return {};
+  // Two decimals near 9.8; significant digits for a g far below 1 (0.0024 +- 1e-05).
+  std::string w = g < 1 ? format("the flights fall at g = %.3g +- %.2g m/s^2, not 9.8: ", g, sigma_g)
+                        : format("the flights fall at g = %.2f +- %.2f m/s^2, not 9.8: ", g, sigma_g);
+  // Times wrong by a factor c scale g by 1/c^2: name the factor that restores 9.8.
+  if (std::abs(g / kDefaultG - 1) > 0.25)
+    return w + format(("the times or the lengths are wrong. If the lengths are right, the file's times must be multiplied "
+                       "by %.3g (e.g. " + field("time_scale") + " %.3g times the one used; 240 fps slow motion played at 30 fps needs 0.125)").c_str(),
+                      std::sqrt(g / kDefaultG), std::sqrt(g / kDefaultG));
+  return w + "check the frame rate (" + field("time_scale") + "; an error of k % in it changes g by 2k %) and the length calibration";
+}
+
+std::array<double, 2> rough_gravity(const track::Track& centre) {
+  const auto& p = centre.points;
+  if (p.empty()) return {NAN, NAN};
+  std::size_t low = 0;
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (p[i].y < p[low].y) low = i;
+  double w = 0, sum = 0;
+  // Two frames either side of the lowest are likely in contact.
+  for (auto [b, e] : {std::pair<std::size_t, std::size_t>{0, low >= 2 ? low - 2 : 0}, {low + 3, p.size()}}) {
+    if (e < b + 5) continue;
+    std::vector<double> t, y;
+    for (std::size_t i = b; i < e; ++i) t.push_back(p[i].t - p[low].t), y.push_back(p[i].y);
+    try {
+      const auto f = numerics::fit_polynomial(t, y, 2, "y(t)");
+      const double v = std::max(4 * f.covariance(2, 2), 1e-30);
+      w += 1 / v, sum += -2 * f.coef[2] / v;
+    } catch (const std::exception&) {  // degenerate times: this side says nothing
+    }
+  }
+  if (!(w > 0)) return {NAN, NAN};
+  return {sum / w, std::sqrt(1 / w)};
 }
 
 std::vector<std::string> bound_warnings(const std::vector<std::string>& names, const std::vector<double>& values,

@@ -9,6 +9,7 @@
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_fit.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,16 @@ struct EnergyGain {
   double e_allowed = 0;        ///< largest e_velocity the energy before impact allows
 };
 EnergyGain energy_gain(const bounce::Ball& ball, const BounceAnalysis& r);
+
+/// The warning for flights that fall at g +- sigma_g (m/s^2) instead of 9.8, empty when they
+/// agree (3 sd, and beyond the 9.78-9.83 m/s^2 of the Earth's surface); a gross g (25 % off)
+/// names the factor the file's times need (docs/theory.md#plausibility-checks).
+std::string gravity_warning(double g, double sigma_g);
+
+/// Gravity read off a centre track before any impact is found: y(t) parabolas fitted on either
+/// side of its lowest frame (two frames next to it left out); {g, sigma}, m/s^2, or {NaN, NaN}
+/// when neither side has 5 points. For the hint when the impact detector finds nothing.
+std::array<double, 2> rough_gravity(const track::Track& centre);
 
 /// Free parameters of a bounce fit sitting at a bound of the search (e = 1, mu = 3, n = 1 or
 /// 3, K or D at the ends of their ranges): the data want a value the law cannot take.

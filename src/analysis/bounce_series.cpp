@@ -1,10 +1,13 @@
 // A series of analysed bounces. docs/theory.md#bounce-series.
 #include "analysis/bounce_series.hpp"
 
+#include "analysis/series_plausibility.hpp"
+
 #include "numerics/error.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace tribolab::analysis {
@@ -221,6 +224,46 @@ BounceSeriesSummary summarize_bounce_series(const std::vector<BounceSeriesPoint>
     if (points[i].contact_point_speed < points[s.slowest_contact_run].contact_point_speed) s.slowest_contact_run = i;
   }
   return s;
+}
+
+bool is_one_value(const WeightedMean& m) {
+  return m.dof < 1 || !std::isfinite(m.p_value) || m.p_value >= kContradictionP;
+}
+
+std::string e_velocity_headline(const BounceSeriesSummary& s) {
+  const WeightedMean& m = s.e_velocity;
+  char buf[512];
+  if (m.n == 0) return "no run has e_velocity with an uncertainty";
+  if (is_one_value(m)) {
+    std::snprintf(buf, sizeof buf, "e_velocity = %.4f +- %.4f, weighted mean of %d runs (one value: p = %.3g)", m.mean,
+                  m.sigma_scaled, m.n, m.dof > 0 ? m.p_value : 1.0);
+    return buf;
+  }
+  // The bins with the lowest and the highest weighted e: the span of the relation.
+  const AngleBin* lo = nullptr;
+  const AngleBin* hi = nullptr;
+  int n_bins = 0;
+  for (const auto& b : s.bins) {
+    if (b.e_velocity.n == 0 || !std::isfinite(b.e_velocity.mean)) continue;
+    ++n_bins;
+    if (!lo || b.e_velocity.mean < lo->e_velocity.mean) lo = &b;
+    if (!hi || b.e_velocity.mean > hi->e_velocity.mean) hi = &b;
+  }
+  std::snprintf(buf, sizeof buf, "the runs are not one value (chi2 = %.3g on %d dof, p = %.2g): no mean is meaningful", m.chi2,
+                m.dof, m.p_value);
+  std::string out = buf;
+  if (n_bins >= 2 && lo != hi) {
+    std::snprintf(buf, sizeof buf,
+                  "; e_velocity depends on the collision angle, from %.3f +- %.3f at %.0f deg (bin %.0f-%.0f) to %.3f +- "
+                  "%.3f at %.0f deg (bin %.0f-%.0f) over %d bins",
+                  lo->e_velocity.mean, lo->e_velocity.sigma_scaled, lo->centre_deg, lo->low_deg, lo->high_deg,
+                  hi->e_velocity.mean, hi->e_velocity.sigma_scaled, hi->centre_deg, hi->low_deg, hi->high_deg, n_bins);
+    out += buf;
+  } else {
+    out += "; the runs scatter beyond their uncertainties within one collision-angle bin: check that they are throws "
+           "of one ball on one floor, analysed alike";
+  }
+  return out;
 }
 
 }  // namespace tribolab::analysis

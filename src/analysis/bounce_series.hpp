@@ -103,6 +103,18 @@ struct BounceSeriesSummary {
   std::vector<BounceOutlier> outliers;
 };
 
+/// Whether the runs can be one quantity: the weighted mean's chi-square test does not reject a
+/// common value (p >= kContradictionP, analysis/series_plausibility.hpp), or there is one run.
+/// Restitutions at different collision angles are not: e depends on the angle (seed 001's
+/// figure 32), and their mean describes no bounce.
+bool is_one_value(const WeightedMean& m);
+
+/// The series' headline for e_velocity: the weighted mean when the runs are one value, else the
+/// relation with the collision angle from the binned trend ("depends on the collision angle:
+/// e_v = 0.42 +- 0.01 at 12 deg (bin 0-20) to 1.18 +- 0.02 at 95 deg (bin 80-100) over 7 bins;
+/// one common e is rejected, chi2 = ... on ... dof"). docs/theory.md#bounce-series.
+std::string e_velocity_headline(const BounceSeriesSummary& s);
+
 /// Summarises points (at least 1). Throws InputError for invalid options or no points.
 BounceSeriesSummary summarize_bounce_series(const std::vector<BounceSeriesPoint>& points,
                                             const BounceSeriesOptions& options = {});

@@ -50,6 +50,27 @@ TEST(BounceSeriesMean, WeightsAndSkipsMissingValues) {
   EXPECT_TRUE(std::isnan(none.mean));
 }
 
+TEST(BounceSeries, HeadlinesTheRelationWithTheAngleWhenTheRunsAreNotOneValue) {
+  // e rising with the collision angle, 0.5 +- 0.01 at 10 deg to 1.1 +- 0.01 at 130 deg (issue
+  // 27: the demo's series was headlined "e_v weighted mean 0.908 +- 0.090" at chi2 = 7.9e5).
+  std::vector<BounceSeriesPoint> pts;
+  for (int k = 0; k < 7; ++k)
+    for (int j = 0; j < 3; ++j) pts.push_back(point(10 + 20 * k + j, 0.5 + 0.1 * k, 0.01));
+  const auto s = summarize_bounce_series(pts);
+  EXPECT_FALSE(is_one_value(s.e_velocity));
+  const std::string h = e_velocity_headline(s);
+  EXPECT_EQ(h.find("weighted mean"), std::string::npos) << h;
+  EXPECT_NE(h.find("not one value"), std::string::npos) << h;
+  // The span of the relation, bin by bin: the lowest (0-20) and the highest (120-140) bin.
+  EXPECT_NE(h.find("from 0.500 +- 0.006 at 11 deg (bin 0-20) to 1.100 +- 0.006 at 131 deg (bin 120-140) over 7 bins"),
+            std::string::npos) << h;
+  // Runs that agree keep their mean as the headline.
+  const auto one = summarize_bounce_series({point(10, 0.80, 0.01), point(90, 0.81, 0.01), point(150, 0.79, 0.01)});
+  EXPECT_TRUE(is_one_value(one.e_velocity));
+  EXPECT_NE(e_velocity_headline(one).find("e_velocity = 0.8000 +- 0.0058, weighted mean of 3 runs"), std::string::npos)
+      << e_velocity_headline(one);
+}
+
 TEST(BounceSeries, AboveOneCountsAndSignificance) {
   // 1.2 +- 0.05 is 4 sigma above 1 (significant); 1.05 +- 0.05 is 1 sigma (not); 0.9 is below.
   const std::vector<BounceSeriesPoint> pts = {point(110, 1.2, 0.05), point(115, 1.05, 0.05), point(170, 0.9, 0.05)};

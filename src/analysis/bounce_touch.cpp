@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -232,8 +233,35 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
                       &r.sigma_collision_angle_deg, &r.sigma_vy_touch, &r.sigma_vy_separation, &r.sigma_e_velocity,
                       &r.sigma_contact_point_vx, &r.sigma_contact_point_vy, &r.sigma_contact_point_speed})
       *v = kNaN;
-    r.warnings.push_back("floor not known (no " + field("floor_y") + " or " + field("contact_duration") +
-                         "): touch and separation located on a bracketed floor, uncertainties of the touch quantities (angle, e_velocity) not stated");
+    // How much e rests on the floor assumed: e at the bracket's two ends (the floor's middle
+    // +- its half-width), said in the warning (a user without floor_y otherwise trusts e).
+    Vec low = P0, high = P0;
+    low(kFloor) = -r.floor_half_width;
+    high(kFloor) = r.floor_half_width;
+    const double e_low = evaluate(low)(oE), e_high = evaluate(high)(oE);
+    char range[160] = "";
+    if (std::isfinite(e_low) && std::isfinite(e_high))
+      std::snprintf(range, sizeof range, "; over that bracket e_velocity = %.4f runs from %.4f to %.4f", r.e_velocity,
+                    std::min(e_low, e_high), std::max(e_low, e_high));
+    // The study's convention, y = 0 on the floor, when it lies near the flights (10 cm): e there.
+    char at_zero[200] = "";
+    if (std::abs(r.floor_y) < 0.1) {
+      Vec zero = P0;
+      zero(kFloor) = -r.floor_y;
+      const double e_zero = evaluate(zero)(oE);
+      if (std::isfinite(e_zero))
+        std::snprintf(at_zero, sizeof at_zero, " (with the floor at y = 0, as the study sets it, e_velocity = %.4f)", e_zero);
+    }
+    char bracket[160];
+    std::snprintf(bracket, sizeof bracket, "between y = %.4f and %.4f m", r.floor_y - r.floor_half_width,
+                  r.floor_y + r.floor_half_width);
+    r.warnings.push_back("floor not known (neither " + field("floor_y") + " nor " + field("contact_duration") + " given): touch and separation "
+                                     "located on a floor only bracketed " + bracket + " by the fitted flights" + range +
+                         at_zero +
+                         "; the bracket itself can miss the floor at high frame rates (contact frames that pass as "
+                         "flight), so e may lie outside that range, and the uncertainties of the touch quantities "
+                         "(collision angle, e_velocity) are not stated. Give " + field("floor_y") + " (the floor's height in the file's "
+                         "frame, m; 0 when y = 0 was set on the floor) for e with its uncertainty");
     return;
   }
   r.force_duration_method = std::isfinite(T_given) ? ForceDurationMethod::given : ForceDurationMethod::located;

@@ -9,7 +9,9 @@
 #include <boost/math/distributions/fisher_f.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace tribolab::analysis {
@@ -330,10 +332,36 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
   return r;
 }
 
-std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& o,
-                                          const ModelBFit& b) {
+namespace {
+
+/// The check from the fitted g (m/s^2, in the file's time) and the refit's rms (m).
+GravityCheck make_check(const Estimate& g, double rms, const InclineFitOptions& o) {
   constexpr double kMinPhi = to_rad(3.0);  // below, g sin(phi) is too small to separate g from mu
-  if (o.phi < kMinPhi) return std::nullopt;
+  GravityCheck c;
+  c.g = g;
+  c.ratio = c.g.value / o.g;
+  c.time_factor = std::sqrt(c.ratio);
+  c.g_identifiable = o.phi >= kMinPhi;
+  c.implausible = c.g_identifiable && std::abs(c.ratio - 1) > 0.25 && std::abs(c.g.value - o.g) > 3 * c.g.sigma;
+  // sin(phi_fit) = (g_fit / g) sin(phi): the same fit read with g held and phi free.
+  auto angle = [&](double g_fit) {
+    const double s = g_fit / o.g * std::sin(o.phi);
+    return s >= 0 && s <= 1 ? std::asin(s) : NAN;
+  };
+  c.phi.value = angle(c.g.value);
+  c.phi.ci_low = angle(c.g.ci_low);
+  c.phi.ci_high = angle(c.g.ci_high);
+  c.phi.sigma = std::sin(o.phi) * c.g.sigma / o.g / std::cos(c.phi.value);
+  c.rms = rms;
+  return c;
+}
+
+/// Model B refitted with g free from the starts `q` = (mu, v0, x0, y0, t0, psi, g0) (several:
+/// the best converged fit is kept); g0 = 0 tries the g given scaled by the usual slow-motion
+/// factors; see check_gravity.
+std::optional<GravityCheck> gravity_refit(const track::Track& track, const InclineFitOptions& o,
+                                          const std::vector<std::array<double, 7>>& starts) {
+  if (!(o.phi > 0)) return std::nullopt;  // g sin(phi) = 0: g only scales mu g cos(phi)
   const auto& pts = track.points;
   const int n = static_cast<int>(pts.size());
   const std::vector<double> t = times_of(track);
@@ -345,32 +373,128 @@ std::optional<GravityCheck> check_gravity(const track::Track& track, const Incli
   numerics::FitResult best;
   bool have = false;
   // Time wrong by a factor c scales every acceleration by 1/c^2: start at the g given and at
-  // the usual slow-motion factors both ways, and keep the best converged fit.
-  for (double c : {1.0, 8.0, 0.125, 4.0, 0.25, 16.0, 0.0625, 2.0, 0.5}) {
-    const double g0 = o.g / (c * c);
-    std::vector<numerics::FitParameter> params{
-        {"mu", b.mu.value, 1e-6, 1e3, false},
-        {"v0", b.v0.value, 1e-9, 1e4, false},
-        {"x0", b.x0.value, std::nullopt, std::nullopt, false},
-        {"y0", b.y0.value, std::nullopt, std::nullopt, false},
-        {"t0", b.t0.value, t.front() - 5.0, t.back(), false},
-        {"frame_rotation", b.frame_rotation.value, -kMaxFrameRotation, kMaxFrameRotation, !o.fit_frame_rotation},
-        {"g", g0, 1e-6 * o.g, 1e6 * o.g, false},
-    };
-    numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params);
-    if (f.ok() && (!have || f.cost < best.cost)) {
-      best = std::move(f);
-      have = true;
+  // the usual slow-motion factors both ways (64: a slow-motion factor 8 applied the wrong way),
+  // and keep the best converged fit.
+  for (const auto& q : starts) {
+    const std::vector<double> factors = q[6] > 0 ? std::vector<double>{1.0}
+                                                 : std::vector<double>{1.0, 8.0, 0.125, 4.0, 0.25, 16.0, 0.0625, 2.0, 0.5};
+    for (double c : factors) {
+      const double g0 = (q[6] > 0 ? q[6] : o.g) / (c * c);
+      std::vector<numerics::FitParameter> params{
+          {"mu", q[0], 1e-6, 1e3, false},
+          {"v0", q[1], 1e-9, 1e4, false},
+          {"x0", q[2], std::nullopt, std::nullopt, false},
+          {"y0", q[3], std::nullopt, std::nullopt, false},
+          {"t0", q[4], t.front() - 5.0, t.back(), false},
+          {"frame_rotation", q[5], -kMaxFrameRotation, kMaxFrameRotation, !o.fit_frame_rotation},
+          {"g", g0, 1e-6 * o.g, 1e6 * o.g, false},
+      };
+      numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params);
+      if (f.ok() && (!have || f.cost < best.cost)) {
+        best = std::move(f);
+        have = true;
+      }
+      if (have && best.rms < 2.0 * noise) break;  // at the noise level: the global minimum in practice
     }
-    if (have && best.rms < 2.0 * noise) break;  // at the noise level: the global minimum in practice
+    if (have && best.rms < 2.0 * noise) break;
   }
   if (!have) return std::nullopt;
-  GravityCheck c;
-  c.g = estimate(best, 6, o.level);
-  c.ratio = c.g.value / o.g;
-  c.time_factor = std::sqrt(c.ratio);
-  c.implausible = std::abs(c.ratio - 1) > 0.25 && std::abs(c.g.value - o.g) > 3 * c.g.sigma;
-  return c;
+  return make_check(estimate(best, 6, o.level), best.rms, o);
+}
+
+}  // namespace
+
+std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& o,
+                                          const ModelBFit& b) {
+  auto c = gravity_refit(track, o, {{b.mu.value, b.v0.value, b.x0.value, b.y0.value, b.t0.value, b.frame_rotation.value, 0.0}});
+  // g not determined (sigma above the value): model B with the g given found no real minimum
+  // (times 64x off: g = 1.5 +- 44); the refit from the time-scaled fits below may do better.
+  if (c && c->g.sigma < c->g.value) return c;
+  auto d = check_gravity(track, o);
+  return d && (!c || d->rms < c->rms) ? d : c;
+}
+
+std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& o) {
+  // Model B with the g given, fitted to the track with its times multiplied by c (the usual
+  // slow-motion factors and their squares both ways): a wrong time scale c is exactly g given
+  // as g c^2 in the file's time, so the fit that reaches the noise level names the start of the
+  // g-free refit. Plain starts read off the data come last.
+  // The refit runs on the scaled track (sane units for the solver) and its g is taken back to
+  // the file's time: g_file = g_scaled c^2 (the model is exactly covariant under t -> c t).
+  // 64 first: with times 8x off model B still fits (mu at its bound), so a fit that fails
+  // outright has the times further off, most often 8x applied the wrong way.
+  for (double c : {1 / 64.0, 64.0, 0.125, 8.0, 0.25, 4.0, 0.0625, 16.0, 0.5, 2.0}) {
+    track::Track scaled = track;
+    for (auto& p : scaled.points) p.t *= c;
+    try {
+      const ModelBFit f = fit_model_b(scaled, o);
+      // The noise as the scaled track shows it (the kinematics' windows are in seconds).
+      const track::Kinematics k = track::differentiate(scaled);
+      if (!(f.rms_residual < 2.0 * std::max({k.noise_x, k.noise_y, 1e-6}))) continue;
+      const auto r = gravity_refit(scaled, o, {{f.mu.value, f.v0.value, f.x0.value, f.y0.value, f.t0.value,
+                                                f.frame_rotation.value, o.g}});
+      if (!r) continue;
+      const double c2 = c * c;
+      return make_check({r->g.value * c2, r->g.sigma * c2, r->g.ci_low * c2, r->g.ci_high * c2}, r->rms, o);
+    } catch (const Error&) {  // not this factor
+    }
+  }
+  const track::Kinematics kin = track::differentiate(track);
+  const Guess g = initial_guess(track, o, std::max({kin.noise_x, kin.noise_y, 1e-6}));
+  std::vector<std::array<double, 7>> starts;
+  for (double k : {0.5, 0.85, 0.2}) starts.push_back({std::tan(o.phi) / k, g.v0, g.x0, g.y0, g.t0, 0.0, 0.0});
+  return gravity_refit(track, o, starts);
+}
+
+
+std::string gravity_warning(const GravityCheck& c, const InclineFitOptions& o, bool frame_turned) {
+  const double given_deg = to_deg(o.phi);
+  const bool angle_known = std::isfinite(c.phi.value) && std::isfinite(c.phi.sigma);
+  // The angle the data show, and whether the given one contradicts it: 3 sd and half a degree
+  // (a protractor's reading) apart.
+  const bool angle_contradicted = angle_known && std::abs(c.phi.value - o.phi) > 3 * c.phi.sigma + to_rad(0.5);
+  // The angle to the sigma's second significant digit (20.996 +- 0.086, 0.005013 +- 0.000020).
+  auto angle_text = [&] {
+    const double v = to_deg(c.phi.value), sd = to_deg(c.phi.sigma);
+    const int decimals = sd > 0 ? std::clamp(1 - static_cast<int>(std::floor(std::log10(sd))), 0, 9) : 4;
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.*f +- %.*f deg", decimals, v, decimals, sd);
+    return std::string(buf);
+  };
+  const std::string angle_fit = angle_known ? angle_text() : std::string("no angle (g sin(phi) exceeds g)");
+  // Radians typed as degrees: a value below pi/2 whose reading as radians the data support
+  // better than its reading as degrees.
+  if (angle_contradicted && given_deg <= M_PI / 2 &&
+      std::abs(c.phi.value - given_deg) < std::abs(c.phi.value - o.phi)) {
+    return "the incline angle " + field("phi_deg") + " = " + fmt(given_deg) + " deg contradicts the data, which show phi = " + angle_fit +
+           " (with g = " + fmt(o.g) + " m/s^2, from the pull down the slope): " + fmt(given_deg) +
+           " looks like the angle in radians (" + fmt(given_deg) + " rad = " + fmt(to_deg(given_deg)) +
+           " deg). Give " + field("phi_deg") + " in degrees; mu, v0 and the normal friction verdict are fitted with " + fmt(given_deg) +
+           " deg and are wrong until then";
+  }
+  if (c.implausible)
+    return "the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " + fmt(o.g) +
+           ": the times, the lengths or the incline angle are wrong. If lengths and angle are right, the file's times "
+           "must be multiplied by " + fmt(c.time_factor, 3) + " (e.g. " + field("time_scale") + " " + fmt(c.time_factor, 3) +
+           " times the one used; slow motion analysed as real time gives 1/8 at 240 fps played at 30); if times and "
+           "lengths are right, " +
+           (angle_known ? "the incline is at " + angle_fit + ", not " + fmt(given_deg) + " deg"
+                        : std::string("no incline angle explains them (the pull down the slope exceeds g)"));
+  if (c.g_identifiable && std::abs(c.g.value - o.g) > 3 * c.g.sigma + 0.03)
+    // Not gross but significant (3 sd, and beyond the 9.78-9.83 m/s^2 of the Earth's
+    // surface): a frame rate off by k % moves g by 2k % and mu with it, by more than its
+    // stated uncertainty (docs/theory.md#plausibility-checks).
+    return "the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " + fmt(o.g) +
+           ": check the frame rate (" + field("time_scale") + "; an error of k % in it changes g by 2k %), the length calibration "
+           "and the incline angle (with g = " + fmt(o.g) + " m/s^2 the data show phi = " + angle_fit + ", not " +
+           fmt(given_deg) + " deg); mu and v0 are fitted with g = " + fmt(o.g) +
+           " and are off by more than their uncertainties until this is fixed" +
+           (frame_turned ? std::string(" (or the turned camera frame warned about above)") : std::string());
+  if (angle_contradicted)  // below 3 deg: g is not told apart from mu, but the angle is
+    return "the incline angle " + field("phi_deg") + " = " + fmt(given_deg) + " deg contradicts the data, which show phi = " + angle_fit +
+           " (with g = " + fmt(o.g) + " m/s^2, from the pull down the slope): check the angle (or the time scale "
+           "and the length calibration); mu, v0 and the normal friction verdict are off until this is fixed";
+  return {};
 }
 
 std::optional<Estimate> check_frame_rotation(const track::Track& track, const InclineFitOptions& o) {
@@ -401,7 +525,18 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
   InclineAnalysis a;
   a.phi = o.phi;
   a.g = o.g;
-  a.model_b = fit_model_b(track, o);
+  try {
+    a.model_b = fit_model_b(track, o);
+  } catch (const Error& e) {
+    // Data whose g is far from the one given (a wrong time scale) defeat the fit with g held:
+    // say what the data show instead of how the solver failed (docs/theory.md#incline-gravity).
+    const auto c = check_gravity(track, o);
+    if (!c) throw;
+    const std::string w = gravity_warning(*c, o);
+    if (w.empty()) throw;
+    throw InputError(where(track), w + " (model B with g = " + fmt(o.g) + " m/s^2 and phi = " + fmt(to_deg(o.phi)) +
+                                       " deg could not be fitted: " + marked_message(e) + ")");
+  }
   a.data = track.points;
   track::KinematicsOptions ko;
   ko.method = track::DerivativeMethod::savgol;
@@ -503,23 +638,8 @@ InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitO
                          "against a plumb line or analyse with " + field("frame_rotation") + " fit");
   }
   a.gravity = check_gravity(track, o, b);
-  if (a.gravity && a.gravity->implausible) {
-    const GravityCheck& c = *a.gravity;
-    a.warnings.push_back("the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) +
-                         " m/s^2, not " + fmt(o.g) + ": the times, the lengths or the incline angle are wrong. "
-                         "If lengths and angle are right, the file's times must be multiplied by " +
-                         fmt(c.time_factor, 3) + " (e.g. " + field("time_scale") + " " + fmt(c.time_factor, 3) +
-                         " times the one used; slow motion analysed as real time gives 1/8 at 240 fps played at 30)");
-  } else if (a.gravity && std::abs(a.gravity->g.value - o.g) > 3 * a.gravity->g.sigma + 0.03) {
-    // Not gross but significant (3 sd, and beyond the 9.78-9.83 m/s^2 of the Earth's
-    // surface): a frame rate off by k % moves g by 2k % and mu with it, by more than its
-    // stated uncertainty (docs/theory.md#plausibility-checks).
-    const GravityCheck& c = *a.gravity;
-    a.warnings.push_back("the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " +
-                         fmt(o.g) + ": check the frame rate (" + field("time_scale") + "; an error of k % in it changes g by 2k %), "
-                         "the length calibration and the incline angle; mu and v0 are fitted with g = " + fmt(o.g) +
-                         " and are off by more than their uncertainties until this is fixed" +
-                         (frame_turned ? std::string(" (or the turned camera frame warned about above)") : std::string()));
+  if (a.gravity) {
+    if (const std::string w = gravity_warning(*a.gravity, o, frame_turned); !w.empty()) a.warnings.push_back(w);
   }
   // Wild frames (a hand in the picture, the tracker jumping): model B misses them by far
   // more than the noise; they pull mu and can flip the verdict. 8 robust noise sds + 2 mm, as

@@ -93,6 +93,13 @@ struct GravityCheck {
   /// given, sqrt(ratio): 0.125 for 240 fps slow motion played at 30 fps analysed as real time.
   double time_factor = 1;
   bool implausible = false;    ///< |ratio - 1| > 0.25 and more than 3 sigma from the g given
+  /// The incline angle the data show with the g given, rad: model B depends on g and phi only
+  /// through g sin(phi) and mu g cos(phi), so sin(phi_fit) = ratio sin(phi). NaN value when
+  /// no angle fits (ratio sin(phi) > 1). Meaningful at every phi > 0, unlike g (phi >= 3 deg).
+  Estimate phi;
+  /// phi >= 3 deg: g itself is told apart from mu (below, only phi is: `implausible` is false).
+  bool g_identifiable = true;
+  double rms = 0;  ///< rms residual of the refit, m (at the noise level when it found the minimum)
 };
 
 /// Test of model A against B (nested: A with normal_accel = 0 is B).
@@ -164,9 +171,19 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& option
                       const ModelBFit& start);
 
 /// Refits model B with g free, starting from `b` and from g scaled by the usual slow-motion
-/// factors (4, 8, 16 in time). Empty when phi < 3 deg or no fit converges.
+/// factors (4, 8, 16 in time). Empty when phi = 0 or no fit converges.
 std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& options,
                                           const ModelBFit& b);
+/// The same refit from starting values read off the data, for when model B with the g given
+/// cannot be fitted (a wrong time scale puts the data's g far from it).
+std::optional<GravityCheck> check_gravity(const track::Track& track, const InclineFitOptions& options);
+
+/// The warning of a gravity check that contradicts the g given (g in o.g, phi in o.phi):
+/// implausible (times, lengths or angle wrong, with the time factor and the angle that fit),
+/// significant, or an incline angle that looks like radians typed as degrees. Empty when the
+/// data agree with g and phi (docs/theory.md#incline-gravity). `frame_turned`: a turned camera
+/// frame was warned about, which also explains a g a little off.
+std::string gravity_warning(const GravityCheck& c, const InclineFitOptions& o, bool frame_turned = false);
 
 /// With psi held at 0 (options.fit_frame_rotation false): refits with psi free (model A from
 /// `b` when options.fit_model_a, else model B) and returns psi, rad; empty when psi is fitted

@@ -2,12 +2,14 @@
 // (src/analysis/incline_synthetic.hpp): recovery, interval coverage, model A detection.
 #include "analysis/incline_fit.hpp"
 #include "analysis/incline_synthetic.hpp"
+#include "numerics/error.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace tribolab::analysis {
 namespace {
@@ -300,13 +302,76 @@ TEST(InclineGravity, SlowMotionAnalysedAsRealTimeIsCalledOutWithTheFactor) {
   }
 }
 
-TEST(InclineGravity, AFlatInclineHasNoGravityToCheck) {
+TEST(InclineGravity, AFlatInclineHasNoGravityToCheckButItsAngle) {
+  // At 1 deg, g sin(phi) is too small to tell g from mu: no g verdict. The angle the data show
+  // (g given) is still measured: it must hold the truth (3.3 sigma: 99.9 %).
   auto s = seed_run(5);
   s.params.phi = incline::deg_to_rad(1.0);
   s.params.mu = 0.2;
   const auto run = synthesize_incline_run(s);
   const InclineFitOptions o = fit_options(s);
-  EXPECT_FALSE(check_gravity(run.track, o, fit_model_b(run.track, o)));
+  const auto c = check_gravity(run.track, o, fit_model_b(run.track, o));
+  ASSERT_TRUE(c);
+  EXPECT_FALSE(c->g_identifiable);
+  EXPECT_FALSE(c->implausible);
+  EXPECT_NEAR(c->phi.value, s.params.phi, 3.3 * c->phi.sigma);
+  EXPECT_TRUE(gravity_warning(*c, o).empty()) << gravity_warning(*c, o);
+}
+
+TEST(InclineGravity, RadiansTypedAsDegreesAreCalledOutWithTheAngleThatFits) {
+  // Issue 27: the seed's run at 20.96 deg analysed with phi_deg = 0.3658 (the angle in radians)
+  // gave mu 0.398 and "normal friction present" without a word. The data fix g sin(phi), so
+  // they show the angle: the warning must say 0.3658 looks like radians and give ~20.96 deg.
+  const auto s = seed_run(7);
+  const auto run = synthesize_incline_run(s);
+  InclineFitOptions o = fit_options(s);
+  o.phi = incline::deg_to_rad(0.3658);
+  o.fit_model_a = false;  // speed: the warning does not depend on model A
+  const InclineAnalysis a = analyze_incline_run(run.track, o);
+  ASSERT_TRUE(a.gravity);
+  EXPECT_NEAR(a.gravity->phi.value, s.params.phi, 3.3 * a.gravity->phi.sigma);  // 99.9 %
+  ASSERT_FALSE(a.warnings.empty());
+  EXPECT_NE(a.warnings.front().find("looks like the angle in radians (0.3658 rad = 20.96 deg)"), std::string::npos)
+      << a.warnings.front();
+  EXPECT_NE(a.warnings.front().find("which show phi = 20.9"), std::string::npos) << a.warnings.front();
+  // The same run with its angle right warns of nothing about the angle.
+  o.phi = s.params.phi;
+  for (const auto& w : analyze_incline_run(run.track, o).warnings) EXPECT_EQ(w.find("incline angle"), std::string::npos) << w;
+}
+
+TEST(InclineGravity, AnAngleFarOffIsCalledOutWithTheAngleThatFits) {
+  // 12 deg typed for a 20.96 deg incline (not radians): the g warning names the angle that fits.
+  const auto s = seed_run(8);
+  const auto run = synthesize_incline_run(s);
+  InclineFitOptions o = fit_options(s);
+  o.phi = incline::deg_to_rad(12.0);
+  o.fit_model_a = false;
+  const InclineAnalysis a = analyze_incline_run(run.track, o);
+  ASSERT_FALSE(a.warnings.empty());
+  EXPECT_NE(a.warnings.front().find("the incline is at 20.9"), std::string::npos) << a.warnings.front();
+  EXPECT_EQ(a.warnings.front().find("radians"), std::string::npos) << a.warnings.front();
+}
+
+TEST(InclineGravity, AWrongTimeScaleIsNamedWhereModelBCannotBeFitted) {
+  // Issue 27: times 64x too long (--time-scale 8 given instead of 0.125 for 240 fps slow motion)
+  // made the fit with g = 9.8 fail with "least squares did not converge"; the analysis must say
+  // what the data show instead: their g, and the factor the times need.
+  // 64 only (1/64 was checked too, when written: g = 40230 +- 159, the factor 64 named; 2 s more).
+  for (double factor : {64.0}) {
+    const auto s = seed_run(9);
+    auto run = synthesize_incline_run(s);
+    for (auto& p : run.track.points) p.t *= factor;
+    InclineFitOptions o = fit_options(s);
+    o.fit_model_a = false;
+    try {
+      const InclineAnalysis a = analyze_incline_run(run.track, o);
+      ASSERT_FALSE(a.warnings.empty()) << factor;
+      EXPECT_NE(a.warnings.front().find("times must be multiplied by"), std::string::npos) << a.warnings.front();
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("times must be multiplied by 0.0156"),
+                std::string::npos) << e.what();
+    }
+  }
 }
 
 // The text of what decided the verdict is the JSON value of "verdict_source" (docs/cli.md).
@@ -381,6 +446,65 @@ TEST(InclineWildFrames, AHandInThePictureIsNamedARealNormalFrictionIsNot) {
     auto sa = seed_run(seed, 0.3);
     EXPECT_FALSE(warns_wild(analyze_incline_run(synthesize_incline_run(sa).track, fit_options(sa)))) << seed;
   }
+}
+
+}  // namespace
+}  // namespace tribolab::analysis
+
+namespace tribolab::analysis {
+namespace {
+
+/// Runs of the coverage study at the demo's 20.96 deg settings (data/demo/incline/make.sh:
+/// 80 fps, 1 mm, launch at t = 0.1 s from (0.05, 0)); TRIBOLAB_COVERAGE_RUNS raises the count
+/// for the study recorded in docs/theory.md.
+int coverage_runs(int fallback) {
+  const char* e = std::getenv("TRIBOLAB_COVERAGE_RUNS");
+  return e ? std::max(1, std::atoi(e)) : fallback;
+}
+
+/// Model B parameters of the demo's run (seed `seed`) whose 95 % interval misses the truth,
+/// of mu, v0, x0, y0, t0.
+int demo_run_misses(std::uint64_t seed) {
+  InclineSynthOptions s = seed_run(seed, 0, 80);
+  s.t_launch = 0.1;
+  const ModelBFit b = fit_model_b(synthesize_incline_run(s).track, fit_options(s));
+  return !covers(b.mu, 0.634) + !covers(b.v0, 2.62) + !covers(b.x0, 0.05) + !covers(b.y0, 0.0) + !covers(b.t0, 0.1);
+}
+
+// Issue 27: the demo's 20.96 deg run (make.sh: seed 21) has the truth outside the 95 %
+// interval of 3 of its 5 model-B parameters (mu, t0, x0). Chance or calibration? At the run's
+// own settings the intervals must cover 95 % each, and 3 misses of 5 must be about as rare as
+// the study found (docs/theory.md#incline-analysis, "coverage at the demo's settings").
+TEST(InclineFit, DemoRunSettingsIntervalsCoverTheTruth) {
+  EXPECT_EQ(demo_run_misses(21), 3);  // the demo's run: the three misses reproduced
+  const int runs = coverage_runs(60);
+  int cover[6] = {0, 0, 0, 0, 0, 0};
+  double pull2[6] = {0, 0, 0, 0, 0, 0};
+  int three_misses = 0;
+  for (int i = 0; i < runs; ++i) {
+    InclineSynthOptions s = seed_run(5000 + i, 0, 80);
+    s.t_launch = 0.1;  // make.sh: --t-offset default 0.1 s, on frame 8
+    const auto run = synthesize_incline_run(s);
+    const ModelBFit b = fit_model_b(run.track, fit_options(s));
+    const Estimate* e[6] = {&b.mu, &b.v0, &b.x0, &b.y0, &b.t0, &b.frame_rotation};
+    const double truth[6] = {0.634, 2.62, 0.05, 0.0, 0.1, 0.0};
+    int misses = 0;
+    for (int k = 0; k < 6; ++k) {
+      cover[k] += covers(*e[k], truth[k]);
+      if (k < 5) misses += !covers(*e[k], truth[k]);
+      const double z = (e[k]->value - truth[k]) / e[k]->sigma;
+      pull2[k] += z * z;
+    }
+    three_misses += misses >= 3;
+  }
+  std::printf("demo settings: %d of %d runs miss 3 or more of the 5 model-B parameters\n", three_misses, runs);
+  std::printf("demo settings, %d runs: coverage mu %.3f v0 %.3f x0 %.3f y0 %.3f t0 %.3f psi %.3f; rms pull %.2f %.2f "
+              "%.2f %.2f %.2f %.2f\n",
+              runs, cover[0] / double(runs), cover[1] / double(runs), cover[2] / double(runs), cover[3] / double(runs),
+              cover[4] / double(runs), cover[5] / double(runs), std::sqrt(pull2[0] / runs), std::sqrt(pull2[1] / runs),
+              std::sqrt(pull2[2] / runs), std::sqrt(pull2[3] / runs), std::sqrt(pull2[4] / runs),
+              std::sqrt(pull2[5] / runs));
+  for (int k = 0; k < 6; ++k) EXPECT_NEAR(cover[k] / double(runs), 0.95, binomial_tolerance(0.95, runs)) << k;
 }
 
 }  // namespace

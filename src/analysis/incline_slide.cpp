@@ -120,6 +120,28 @@ SlideResult mu_from_slide(const track::Track& track, const SlideOptions& o) {
     const double dmu_dphi = 1 / (c * c) - r.a * std::sin(phi) / (o.g * c * c);
     r.sigma_mu = std::hypot(dmu_da * r.sigma_a, dmu_dphi * o.sigma_phi);
   }
+  // What the slide itself says (docs/theory.md#mu-from-a-slide): a <= g sin(phi) <= g on any
+  // incline (friction only slows it), so a above g means wrong times or lengths, and a above
+  // g sin(phi) an angle too small: the incline is at least asin(a / g). 3 sd of a.
+  const double a_low = r.a - 3 * r.sigma_a;
+  if (a_low > o.g) {
+    r.warnings.push_back("the disc slides at a = " + fmt(r.a) + " +- " + fmt(r.sigma_a) + " m/s^2, more than g = " +
+                         fmt(o.g) + " m/s^2, which no incline gives: the times or the lengths are wrong. If the lengths "
+                         "are right, the file's times must be multiplied by at least " + fmt(std::sqrt(r.a / o.g)) +
+                         " (slow motion analysed as real time gives 1/8 at 240 fps played at 30)");
+  } else if (o.phi && a_low > o.g * std::sin(*o.phi)) {
+    const double given_deg = to_deg(*o.phi), least_deg = to_deg(std::asin(std::min(1.0, r.a / o.g)));
+    std::string w = "the disc slides at a = " + fmt(r.a) + " +- " + fmt(r.sigma_a) + " m/s^2, more than g sin(phi) = " +
+                    fmt(o.g * std::sin(*o.phi)) + " m/s^2 that an incline at phi_deg = " + fmt(given_deg) +
+                    " deg gives without friction (mu = " + fmt(*r.mu) + " < 0): the incline is at least " +
+                    fmt(least_deg) + " deg";
+    if (given_deg <= M_PI / 2 && to_deg(given_deg) >= least_deg)
+      w += "; " + fmt(given_deg) + " looks like the angle in radians (" + fmt(given_deg) + " rad = " +
+           fmt(to_deg(given_deg)) + " deg): give phi_deg in degrees";
+    else
+      w += "; check the angle (and the time scale)";
+    r.warnings.push_back(w);
+  }
   return r;
 }
 

@@ -43,6 +43,10 @@ struct SlideResult {
   std::vector<double> v_t, v;   ///< Tracker central-difference speeds along the path, m/s
   numerics::PolyFit parabola;   ///< s(t)
   numerics::PolyFit velocity_line;  ///< v(t)
+  /// Plain-language warnings: an acceleration no incline gives (a > g: times or lengths wrong),
+  /// or more than the angle given allows without friction (mu < 0: the angle is wrong, e.g.
+  /// radians typed as degrees). Empty when none.
+  std::vector<std::string> warnings;
 };
 
 /// Fits one straight slide. Throws InputError when the data cannot support the fit: too few

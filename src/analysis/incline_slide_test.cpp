@@ -50,6 +50,27 @@ TEST(MuFromSlide, RecoversTheSeedsSlide) {
   EXPECT_NEAR(r.a_velocity_line, r.a, 3 * std::hypot(r.sigma_a, 3 * r.sigma_a_velocity_line));
 }
 
+TEST(MuFromSlide, SaysWhatTheSlideShowsOfAWrongAngleOrTimeScale) {
+  // Issue 27: 41.09 deg given in radians (0.7172) gave mu < 0 without a word; a slide cannot
+  // accelerate faster than g sin(phi), so it shows the angle is at least asin(a / g).
+  const track::Track t = slide(0.634, 41.09, 80, 0.001, 1);
+  SlideOptions o;
+  o.phi = incline::deg_to_rad(0.7172);
+  const SlideResult r = mu_from_slide(t, o);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("the incline is at least 10.4"), std::string::npos) << r.warnings[0];  // asin(1.775/9.8), a fitted
+  EXPECT_NE(r.warnings[0].find("looks like the angle in radians (0.7172 rad = 41.09 deg)"), std::string::npos) << r.warnings[0];
+  // The angle right: nothing to say.
+  o.phi = incline::deg_to_rad(41.09);
+  EXPECT_TRUE(mu_from_slide(t, o).warnings.empty());
+  // Times 1/8 of the real ones (--time-scale 0.125 applied twice): a = 64 x 1.758 > g.
+  track::Track fast = t;
+  for (auto& p : fast.points) p.t /= 8;
+  const SlideResult f = mu_from_slide(fast, o);
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_NE(f.warnings[0].find("times must be multiplied by at least 3.4"), std::string::npos) << f.warnings[0];  // sqrt(113.6/9.8)
+}
+
 TEST(MuFromSlide, RotatedCameraFrameGivesTheSameResult) {
   // The path is found from the points, so a camera rotated by 12 deg changes nothing but the
   // direction (noise-free: identical to rounding).

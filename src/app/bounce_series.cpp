@@ -66,6 +66,11 @@ json bounce_series_json(const BounceSeriesSummary& s, const std::vector<BounceSe
   };
   return {{"e_velocity", mean_json(s.e_velocity)},
           {"e_height", mean_json(s.e_height)},
+          // Restitutions at different angles are no one quantity: the headline is then the
+          // relation with the angle, not the mean (analysis::e_velocity_headline).
+          {"e_velocity_one_value", is_one_value(s.e_velocity)},
+          {"e_height_one_value", is_one_value(s.e_height)},
+          {"e_velocity_headline", e_velocity_headline(s)},
           {"above_one", {{"z", o.z_above_one}, {"velocity", above_json(s.above_one_velocity)},
                          {"height", above_json(s.above_one_height)}}},
           {"bin_width_deg", o.bin_width_deg},

@@ -163,8 +163,7 @@ void add_bounce_series_case_study(report::Report& rep, std::ostream& log, const 
     intro.add_figure(std::move(f));
   }
   add_bounce_series(rep, "Bounce series: ", runs, points, summary, so, std::vector<std::string>(runs.size()));
-  log << "  bounce series: " << points.size() << " throws, e_v weighted mean "
-      << format_uncertain(summary.e_velocity.mean, summary.e_velocity.sigma_scaled) << ", e_v > 1 in "
+  log << "  bounce series: " << points.size() << " throws, " << analysis::e_velocity_headline(summary) << ", e_v > 1 in "
       << summary.above_one_velocity.above << " (" << summary.above_one_velocity.significant << " significantly)\n";
 }
 

@@ -44,6 +44,7 @@ json slide_json(const analysis::SlideResult& r, const track::Track& t) {
   j["direction_deg"] = r.direction_deg;
   j["straightness_rms"] = r.straightness_rms;
   j["track"] = t.name;
+  j["warnings"] = r.warnings;
   return j;
 }
 
@@ -144,14 +145,17 @@ json incline_analysis_json(const analysis::InclineAnalysis& a) {
     j["theta_c"] = nullptr;
   }
   j["notes"] = a.notes;
-  if (a.gravity) {
+  if (a.gravity && a.gravity->g_identifiable) {  // below 3 deg only the angle check's warning
     const auto& g = *a.gravity;
+    auto deg_or_null = [](double rad) { return std::isfinite(rad) ? json(to_deg(rad)) : json(nullptr); };
     j["gravity"] = {{"g", g.g.value},
                     {"sigma_g", g.g.sigma},
                     {"g_ci95", estimate_ci(g.g)},
                     {"ratio", g.ratio},
                     {"time_factor", g.time_factor},
-                    {"implausible", g.implausible}};
+                    {"implausible", g.implausible},
+                    {"phi_fit_deg", deg_or_null(g.phi.value)},
+                    {"sigma_phi_fit_deg", deg_or_null(g.phi.sigma)}};
   } else {
     j["gravity"] = nullptr;
   }

@@ -70,8 +70,16 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     t.caption = "The series at a glance (weighted means ± their standard error, inflated by sqrt(χ²/dof) when "
                 "the runs scatter more than their errors)";
     t.header = {"quantity", "value", "note"};
-    t.rows.push_back({"e from velocities, weighted mean", mean_cell(s.e_velocity), consistency(s.e_velocity)});
-    t.rows.push_back({"e from apex heights, weighted mean", mean_cell(s.e_height), consistency(s.e_height)});
+    // Runs that are not one quantity (e at different collision angles) get no mean: the
+    // headline is the relation with the angle (figure "e against collision angle" below).
+    if (analysis::is_one_value(s.e_velocity))
+      t.rows.push_back({"e from velocities, weighted mean", mean_cell(s.e_velocity), consistency(s.e_velocity)});
+    else
+      t.rows.push_back({"e from velocities", analysis::e_velocity_headline(s), consistency(s.e_velocity)});
+    if (analysis::is_one_value(s.e_height))
+      t.rows.push_back({"e from apex heights, weighted mean", mean_cell(s.e_height), consistency(s.e_height)});
+    else
+      t.rows.push_back({"e from apex heights", "not one value across the runs: no mean is shown", consistency(s.e_height)});
     auto above = [&](const analysis::AboveOne& a) {
       return std::to_string(a.above) + " of " + std::to_string(a.n) + " (" + std::to_string(a.significant) +
              " significantly)";
