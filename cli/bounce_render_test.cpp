@@ -23,6 +23,8 @@ namespace fs = std::filesystem;
 
 // A short, small film: 100 fps, the last 0.05 s of a 0.3 m drop (~40 frames at 320x240).
 const std::string kSmall = "bounce render --size 320x240 --fps 100 --height 0.3 --after 0.05";
+/// kSmall at another --size (an option is given once: a repeated one is an error).
+std::string kSmallAt(const std::string& size) { return "bounce render --size " + size + " --fps 100 --height 0.3 --after 0.05"; }
 
 TEST(BounceRenderCli, VideoAndTruthAgreeWithTheJsonCalibration) {
   const std::string dir = temp_dir("bounce_render");
@@ -133,9 +135,9 @@ TEST(BounceRenderCli, BadInputIsOneLineAndNoFile) {
   expect_error(kSmall + " --size 320by240" + out, "--size");
   // Issue 26: 0x0 was refused naming a `--width` the command does not have; 16384x16384
   // printed FFmpeg's own log lines and 16000x16000 an OpenCV out-of-memory text.
-  expect_error(kSmall + " --size 0x0" + out, "--size: width and height must lie in [8, 4096] px, got 0x0");
-  expect_error(kSmall + " --size 16384x16384" + out, "--size: width and height must lie in [8, 4096] px");
-  expect_error(kSmall + " --size 640x4097" + out, "--size: width and height must lie in [8, 4096] px");
+  expect_error(kSmallAt("0x0") + out, "--size: width and height must lie in [8, 4096] px, got 0x0");
+  expect_error(kSmallAt("16384x16384") + out, "--size: width and height must lie in [8, 4096] px");
+  expect_error(kSmallAt("640x4097") + out, "--size: width and height must lie in [8, 4096] px");
   expect_error(kSmall + " --background stripes" + out, "--background");
   expect_error(kSmall + " --shutter 1.5" + out, "--shutter");
   expect_error(kSmall + " --blur-samples 0" + out, "--blur-samples");

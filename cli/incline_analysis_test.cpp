@@ -338,7 +338,7 @@ TEST(InclineAnalysisCli, RadiansTypedAsDegreesAreCalledOutInJsonAndListing) {
   EXPECT_NE(j["warnings"][0].get<std::string>().find("looks like the angle in radians"), std::string::npos)
       << j["warnings"];
   const auto text = run_tribolab("incline analyze " + f + " --phi-deg 0.3658 --no-model-a");
-  EXPECT_NE(text.err.find("tribolab: warning: the incline angle phi_deg = 0.3658 deg contradicts the data"),
+  EXPECT_NE(text.err.find("tribolab: warning: the incline angle --phi-deg = 0.3658 deg contradicts the data"),
             std::string::npos) << text.err;
 }
 

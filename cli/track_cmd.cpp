@@ -31,8 +31,8 @@ void add_input_options(CLI::App& cmd, TrackInputOptions& in) {
 
 /// --from/--to (also spelled --t-from/--t-to, the fields' names in messages and Python).
 void add_time_range(CLI::App& cmd, double& t_from, double& t_to, const std::string& what) {
-  cmd.add_option("--from,--t-from", t_from, "First time used, s (when not given: the first point): " + what);
-  cmd.add_option("--to,--t-to", t_to, "Last time used, s (when not given: the last point)");
+  cmd.add_option("--t-from,--from", t_from, "First time used, s (when not given: the first point): " + what);
+  cmd.add_option("--t-to,--to", t_to, "Last time used, s (when not given: the last point)");
 }
 
 /// `keys`: the command's declared result keys (the listing's units), when declared.

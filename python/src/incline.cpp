@@ -90,6 +90,7 @@ void bind_incline(py::module_& m) {
     TRIBOLAB_OPT(c, g);
     TRIBOLAB_OPT(c, input.track);
     TRIBOLAB_OPT(c, input.time_scale);
+    TRIBOLAB_OPT(c, input.length_unit);
     TRIBOLAB_OPT(c, report);
     TRIBOLAB_OPT(c, plotly);
     c.def(&app::incline_normal_friction_test,

@@ -519,9 +519,9 @@ BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip
   const Glitches glitches = drop_glitches(a, b, options.impacts);
   r.body = track::rigid_body_from_points(a, b);
   r.centre = track::centre_track(r.body);
-  const track::Impact* found = nullptr;
+  std::optional<track::Impact> found;
   try {
-    found = &choose_impact(a, b, options, r);
+    found = choose_impact(a, b, options, r);
   } catch (const InputError& e) {
     // A wrong time scale hides the impact from the detector: say what the flights show.
     const auto [g, sigma_g] = rough_gravity(r.centre);

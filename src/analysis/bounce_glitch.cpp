@@ -63,7 +63,9 @@ Glitches drop_glitches(track::Track& a, track::Track& b, const track::ImpactOpti
   Glitches out;
   for (int round = 0; round < 10; ++round) {
     const track::Track centre = track::centre_track(track::rigid_body_from_points(a, b));
-    const auto found = track::detect_impacts(centre, options);
+    track::ImpactOptions any_jump = options;
+    any_jump.veto_smooth_turning = false;  // a glitch out and back is smooth to no motion model
+    const auto found = track::detect_impacts(centre, any_jump);
     const double noise = std::max({found.noise_x, found.noise_y, 1e-6});
     const double limit = 8 * noise + 2e-3;  // as the wild-frame warning (bounce_plausibility.cpp)
     const auto segs = track::flight_segments(centre.points.size(), found.impacts);

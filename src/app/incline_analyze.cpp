@@ -308,6 +308,7 @@ const ResultKeys& incline_mu_from_slide_result_keys() {
       {"a", "m/s^2", "acceleration along the slide (y-t parabola)"}, {"mu", "", ""}, {"r_squared", "", ""},
       {"n_points", "", ""}, {"a_velocity_line", "m/s^2", "acceleration from the v-t line"},
       {"direction_deg", "deg", ""}, {"straightness_rms", "m", ""}, {"track", "", ""},
+      {"warnings", "", "what the data contradict (an angle in radians, times off by a factor)"},
   };
   return k;
 }

@@ -185,6 +185,7 @@ const ResultKeys& track_kinematics_result_keys() {
       {"segment_fits.tilt_deg", "deg", ""}, {"segment_fits.rms_residual_x", "m", ""},
       {"segment_fits.rms_residual_y", "m", ""}, {"segment_fits.free_flight", "", ""},
       {"segment_fits.not_free_flight_because", "", ""}, {"segment_fits.gravity_plausible", "", ""},
+      {"t_from", "s", "first time used (--from)"}, {"t_to", "s", "last time used (--to)"},
       {"warnings", "", ""}, {"out", "", ""},
   };
   return k;

@@ -189,10 +189,10 @@ TEST(Base64, HighBytesUseTheWholeAlphabetAndDecodeBack) {
 }
 
 TEST(Embedded, PlotlyLibraryAndVersionAreInTheBinary) {
-  // The vendored file begins with its licence banner naming the version.
+  // The vendored file begins with its licence banner naming the bundle and the version.
   const std::string_view js = plotly_js();
   EXPECT_GT(js.size(), 1'000'000u);
-  EXPECT_NE(js.substr(0, 200).find("plotly.js v" + std::string(plotly_version())),
+  EXPECT_NE(js.substr(0, 200).find("plotly.js (cartesian - minified) v" + std::string(plotly_version())),
             std::string_view::npos);
   EXPECT_NE(js.find("newPlot"), std::string_view::npos);
   EXPECT_FALSE(tribolab_version().empty());

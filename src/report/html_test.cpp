@@ -1,4 +1,5 @@
 #include "report/html.hpp"
+#include "report/embedded.hpp"
 
 #include "numerics/error.hpp"
 
@@ -107,7 +108,8 @@ TEST(Html, PageIsSelfContainedWithStatusMarkerAndLibrary) {
   EXPECT_NE(html.find("window.onerror"), std::string::npos);
   EXPECT_NE(html.find("tribolabShowStatus('ok ' + done[0].length)"), std::string::npos);
   EXPECT_NE(html.find("Plotly.newPlot"), std::string::npos);
-  EXPECT_NE(html.find("* plotly.js v"), std::string::npos);  // the library's own banner
+  // the library's own banner (the cartesian bundle's: "* plotly.js (cartesian - minified) vX.Y.Z")
+  EXPECT_NE(html.find("* plotly.js (cartesian - minified) v" + std::string(plotly_version())), std::string::npos);
   // Nothing is loaded from outside: no script or stylesheet references anywhere.
   EXPECT_EQ(html.find("<script src"), std::string::npos);
   EXPECT_EQ(body_of(html).find(" src="), std::string::npos);

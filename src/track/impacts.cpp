@@ -207,7 +207,7 @@ ImpactResult detect_impacts(const Track& track, const ImpactOptions& options) {
     // the jump test holds each side to a parabola; a smooth curve sampled coarsely (a mark on
     // a wheel turning 20+ degrees per frame) fits neither, and the extrapolated parabolas then
     // disagree by far more than the noise: no impact unless smooth turning motion fails too
-    if (candidate[k]) {
+    if (candidate[k] && options.veto_smooth_turning) {
       candidate[k] = !smooth_motion_explains(t, x, y, tests[k], 0.5 * (t[k] + t[k + 1]), std::max(sx, floor),
                                              std::max(sy, floor), kSmoothP);
     }

@@ -28,6 +28,10 @@ struct ImpactOptions {
   double threshold = 10;    ///< significance of the jump, in standard deviations, e.g. 10
   double min_jump = 0.3;    ///< smallest velocity jump counted as an impact, m/s, e.g. 0.3
   double min_noise = 1e-6;  ///< floor of the estimated position noise, m (exact synthetic data)
+  /// Keep a jump only when a uniformly turning point does not explain its windows as well (a
+  /// mark on a wheel is no impact). Off where any departure from a parabola is wanted: the
+  /// glitch screen of bounce analyze looks for the jumps out to a hand and back.
+  bool veto_smooth_turning = true;
   /// Empty when valid, else a message naming the bad field.
   std::string validate() const;
 };
