@@ -32,7 +32,10 @@ struct GridResult {
 /// The throws of issue 27: released at `height` with orientation 0..165 deg (`theta_step`)
 /// and spin -50..50 rad/s (`omegas`), vx 1.5 m/s, tip noise `noise`, 240 fps, floor given at
 /// y = 0 (the seed's Tracker procedure); seed = the throw's index.
-GridResult analyse_grid(double noise, double theta_step, const std::vector<double>& omegas, double height = 0.7) {
+/// `only` (when not empty): analyse just the throws with these spins, each with the seed it has
+/// in the whole grid, so a thinned grid checks a subset of the same throws.
+GridResult analyse_grid(double noise, double theta_step, const std::vector<double>& omegas, double height = 0.7,
+                        const std::vector<double>& only = {}) {
   GridResult g;
   std::uint64_t seed = 0;
   for (double theta = 0; theta < 166; theta += theta_step) {
@@ -43,6 +46,7 @@ GridResult analyse_grid(double noise, double theta_step, const std::vector<doubl
       o.height = height;
       o.noise = noise;
       o.seed = ++seed;
+      if (!only.empty() && std::find(only.begin(), only.end(), omega) == only.end()) continue;
       char name[160];
       std::snprintf(name, sizeof name, "--theta-deg %g --omega %g --height %g --noise %g --seed %llu", theta, omega,
                     height, noise, static_cast<unsigned long long>(o.seed));
@@ -98,16 +102,19 @@ void expect_coverage(int count, int n, double p, const char* what) {
 // its own. Under ASan (several times slower) the spins are thinned to 4 and the levels to 1
 // and 5 mm; the bounds follow n.
 TEST(BounceGrid, EveryThrowIsAnalysedAndEWithinItsSigma) {
+  const std::vector<double> omegas = {-50, -30, -10, 0, 10, 30, 50};
 #if defined(__SANITIZE_ADDRESS__)
-  const std::vector<double> omegas = {-50, -10, 10, 50};
+  // The whole grid's throws with these spins, at their own seeds (a thinned grid with seeds
+  // renumbered drew a throw the whole grid does not hold).
+  const std::vector<double> only = {-50, -10, 10, 50};
   const std::vector<double> noises = {0.001, 0.005};
 #else
-  const std::vector<double> omegas = {-50, -30, -10, 0, 10, 30, 50};
+  const std::vector<double> only;
   const std::vector<double> noises = {0.001, 0.003, 0.005};
 #endif
   for (double noise : noises) {
     SCOPED_TRACE("noise " + std::to_string(noise));
-    const auto g = analyse_grid(noise, 15, omegas);
+    const auto g = analyse_grid(noise, 15, omegas, 0.7, only);
     EXPECT_EQ(g.analysed, g.n);
     EXPECT_LE(g.max_abs_z, 3.5);
     // Below the 3 cm compression analyze_bounce allows frames in contact (bounce_analyze.cpp,
