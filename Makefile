@@ -100,7 +100,8 @@ fuzz: deps
 
 # At -O2 like the main tree. -O1 compiles 1.5x faster (37 s against 54 s for
 # src/numerics/polyfit.cpp), but there ASan saw a free of memory Ceres' covariance had not
-# malloc-ed (bounce fit), not seen at -O2: to be understood before -O1 comes back.
+# malloc-ed (bounce fit; likely Eigen template copies shared between our objects and
+# libceres, inlined at -O2), never seen at -O2 so far: to be understood before -O1 comes back.
 asan: deps
 	cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_SANITIZE=ON -DTRIBOLAB_BENCH=OFF
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
