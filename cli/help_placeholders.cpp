@@ -30,10 +30,13 @@ std::string listed_choices(const std::string& description) {
 
 /// The help shows each option's default as CLI11 captured it from the option struct
 /// (`--g NUM=9.8`), so no help text repeats a default by hand. A required option has no
-/// default to show, nor has an empty list or an empty text (an output not written).
+/// default to show, nor has an empty list or an empty text (an output not written), nor a
+/// non-finite number: NaN or an infinity is the struct's "not given" (`--pivot-x`, `--from`),
+/// which the help text says in words ("when not given: ...").
 void tidy_default(CLI::Option& opt) {
   const std::string d = opt.get_default_str();
-  if (opt.get_required() || d == "[]" || d == "\"\"") opt.default_str("");
+  const bool not_given = d == "nan" || d == "-nan" || d == "inf" || d == "-inf";
+  if (opt.get_required() || d == "[]" || d == "\"\"" || not_given) opt.default_str("");
 }
 
 void tidy(CLI::Option& opt) {

@@ -145,7 +145,7 @@ TEST(Cli, EveryHelpUsesOnePlaceholderVocabulary) {
   EXPECT_EQ(placeholder(run_tribolab("track import --help").out, "--entry"), "NAME");
   EXPECT_NE(placeholder(run_tribolab("track kinematics --help").out, "--impacts"), "NAME");
   for (const char* bad : {" FLOAT", " UINT", " TEXT TEXT", "FILE.html:FILE.html", "FILE FILE",
-                          "FILE TEXT", "=[]", "=\"\""}) {
+                          "FILE TEXT", "=[]", "=\"\"", "NUM=nan", "NUM=-inf", "NUM=inf"}) {
     EXPECT_EQ(all.find(bad), std::string::npos) << "'" << bad << "' in:\n" << all;
   }
 }
