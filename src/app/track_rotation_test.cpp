@@ -4,6 +4,7 @@
 #include "app/track_rotation.hpp"
 
 #include "app/track_kinematics.hpp"
+#include "app/track_rigid_body.hpp"
 #include "app/track_test_util.hpp"
 #include "numerics/error.hpp"
 
@@ -56,6 +57,28 @@ TEST(TrackRotation, SpinOfOneWheelMarkAboutItsFittedPivot) {
   std::getline(csv, header);
   EXPECT_EQ(header, "frame,t,x,y,theta,radius,omega,sigma_omega");
   ASSERT_EQ(r.rotation.rows.size(), 45u);
+}
+
+// Two commands measure the same spin: `track rigid-body` from two marks (no pivot needed)
+// and `track rotation` from one mark about its fitted pivot. On the same film they must
+// agree within their combined uncertainty (4 sigmas: both are fits of the same noisy frames).
+TEST(TrackRotation, OneMarkAboutItsPivotAgreesWithTwoMarksAsARigidBody) {
+  const std::string dir = testing::temp_dir("rotation_vs_rigid");
+  const testing::SpinningBody b = wheel();
+  const std::string file = b.write(dir + "/wheel.csv");
+  TrackRotationOptions o;
+  o.input.file = file;
+  o.track = "B";
+  const auto one = track_rotation(o).json;
+  TrackRigidBodyOptions two;
+  two.input.file = file;
+  two.track_a = "A";
+  two.track_b = "B";
+  const auto body = track_rigid_body(two).json;
+  const double d = one["omega"].get<double>() - body["omega"].get<double>();
+  const double sigma = std::hypot(one["sigma_omega"].get<double>(), body["sigma_omega"].get<double>());
+  EXPECT_LT(std::abs(d), 4 * sigma) << one["omega"] << " vs " << body["omega"];
+  EXPECT_NEAR(body["omega"].get<double>(), b.omega, 4 * body["sigma_omega"].get<double>());
 }
 
 TEST(TrackRotation, AWheelMarkHasNoImpact) {
