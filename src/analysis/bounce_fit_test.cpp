@@ -3,6 +3,7 @@
 #include "analysis/bounce_synth.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/statistics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <random>
+#include <vector>
 
 namespace tribolab::analysis {
 namespace {
@@ -168,7 +170,11 @@ TEST(BounceFit, IntervalsCoverTheTruthWithOutliers) {
 // the mean), and the mean |error|/sigma stays near the 0.8 of a correct interval (0.5..1.2).
 // Unweighted, the noisy rows pull the fit: on the same tables the unweighted fit's intervals
 // are wider (Huber's covariance widens them for the large residuals, so they still cover);
-// the weighted fit must be the more precise one, in D and in mu (mean sigma over the tables).
+// the weighted fit must be the more precise one, in D and in mu. Compared by the median sigma
+// over the tables, not the mean: in a table whose only sliding rows are the two noisy ones,
+// mu is barely identified and the weighted fit rightly says so (seed 7003: sigma 0.082 against
+// the unweighted 0.0049, whose error is 6 of its sigmas), and one such table outweighs the
+// others in a mean of 8 (the sanitizer build's count).
 TEST(BounceFit, RowsWeightedByTheirOwnUncertaintiesCover) {
 #if defined(__SANITIZE_ADDRESS__)
   const int default_runs = 8;  // ~9 s in the normal build for 30: kept short under ASan
@@ -177,7 +183,8 @@ TEST(BounceFit, RowsWeightedByTheirOwnUncertaintiesCover) {
 #endif
   const int runs = std::getenv("TRIBOLAB_COVERAGE_RUNS") ? std::atoi(std::getenv("TRIBOLAB_COVERAGE_RUNS")) : default_runs;
   int cover[2][2] = {}, failed = 0;
-  double z_sum[2][2] = {}, sigma_sum[2][2] = {};
+  double z_sum[2][2] = {};
+  std::vector<double> sigmas[2][2];
   for (int s = 0; s < runs; ++s) {
     SynthTableOptions t;
     t.rows = 10;
@@ -222,22 +229,22 @@ TEST(BounceFit, RowsWeightedByTheirOwnUncertaintiesCover) {
       for (int k = 0; k < 2; ++k) {
         cover[weighted][k] += std::abs(err[k]) <= r.fit.ci_half_width(idx[k]);
         z_sum[weighted][k] += std::abs(err[k]) / r.fit.sigma[idx[k]];
-        sigma_sum[weighted][k] += r.fit.sigma[idx[k]];
+        sigmas[weighted][k].push_back(r.fit.sigma[idx[k]]);
       }
     }
   }
   std::cout << "weighted bounce fit over " << runs << " tables (D, mu): covered " << cover[1][0] << ", " << cover[1][1]
             << " (mean |z| " << z_sum[1][0] / runs << ", " << z_sum[1][1] / runs << "); unweighted " << cover[0][0]
             << ", " << cover[0][1] << " (mean |z| " << z_sum[0][0] / runs << ", " << z_sum[0][1] / runs
-            << "); mean sigma of log D and mu: weighted " << sigma_sum[1][0] / runs << ", " << sigma_sum[1][1] / runs
-            << ", unweighted " << sigma_sum[0][0] / runs << ", " << sigma_sum[0][1] / runs << "\n";
+            << "); median sigma of log D and mu: weighted " << median(sigmas[1][0]) << ", " << median(sigmas[1][1])
+            << ", unweighted " << median(sigmas[0][0]) << ", " << median(sigmas[0][1]) << "\n";
   EXPECT_EQ(failed, 0);
   const int need = runs - static_cast<int>(std::floor(0.05 * runs + 3 * std::sqrt(runs * 0.95 * 0.05)));
   for (int k = 0; k < 2; ++k) {
     EXPECT_GE(cover[1][k], need) << k;
     EXPECT_GT(z_sum[1][k] / runs, 0.5) << k;  // not grossly too wide
     EXPECT_LT(z_sum[1][k] / runs, 1.2) << k;  // not too narrow
-    EXPECT_LT(sigma_sum[1][k], sigma_sum[0][k]) << k;  // weighting makes the fit more precise
+    EXPECT_LT(median(sigmas[1][k]), median(sigmas[0][k])) << k;  // weighting makes the fit more precise
   }
 }
 
