@@ -111,7 +111,8 @@ TEST(TrackRotation, TheGivenRangeAndPivotAreUsedAndBadOnesNamed) {
   EXPECT_GE(r.json["t_first"].get<double>(), 0.2);
   EXPECT_LE(r.json["t_last"].get<double>(), 1.0);
   std::size_t kept = 0;
-  for (const auto& p : b.tracks().tracks[1].points) kept += p.t >= 0.2 && p.t <= 1.0;
+  const track::TrackSet set = b.tracks();  // named: a range-for over a temporary's element would dangle
+  for (const auto& p : set.tracks[1].points) kept += p.t >= 0.2 && p.t <= 1.0;
   EXPECT_EQ(r.json["points"], kept);
   EXPECT_EQ(r.json["sigma_pivot_x"], 0.0);
   o.t_from = 1.0;
