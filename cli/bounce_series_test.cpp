@@ -23,8 +23,6 @@ using nlohmann::json;
 const std::string kDir = std::string(TRIBOLAB_SOURCE_DIR) + "/data/demo/bounce/";
 const std::string kOpts = " --track-a A --track-b B --time-scale 0.125 --floor-y 0 --contact-duration 0.0167";
 
-std::string q(const std::string& path) { return "'" + path + "'"; }
-
 /// Three shipped filmed bounces.
 std::vector<std::string> videos() { return {kDir + "higher.txt", kDir + "ordinary.txt", kDir + "backspin.txt"}; }
 
@@ -184,12 +182,6 @@ TEST(BounceAnalyzeSeries, ContactDurationAndFloorPerFile) {
   // A negative floor is a value, not an option (the file's origin may lie above the floor).
   const json neg = run_json("bounce analyze " + q(videos()[0]) + " --track-a A --track-b B --time-scale 0.125 --floor-y -0.001");
   EXPECT_EQ(neg["floor_y"], -0.001);
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
 }
 
 TEST(BounceAnalyzeSeriesReport, ShowsTheNumbersOfTheJson) {

@@ -57,6 +57,16 @@ inline std::string temp_dir(const std::string& name) {
 }
 
 /// Number of lines in s.
+/// How many times `what` occurs in `text` (overlapping occurrences counted).
+inline std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+/// A path in single quotes for the shell of run_tribolab (paths made by the tests: no quote in them).
+inline std::string q(const std::string& path) { return "'" + path + "'"; }
+
 inline int count_lines(const std::string& s) {
   int n = 0;
   for (char c : s) n += (c == '\n');

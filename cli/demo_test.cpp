@@ -13,12 +13,6 @@
 namespace tribolab::cli::testing {
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 TEST(Demo, WritesAnOfflineReportAndSaysWhere) {
   const std::string dir = temp_dir("demo") + "/new/out";  // parents are created too
   const auto r = run_tribolab("demo --out '" + dir + "'");

@@ -17,7 +17,7 @@ namespace {
 
 using nlohmann::json;
 
-void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 const std::string kSeedRun = " --mu 0.634 --phi-deg 20.96 --v0 2.62 ";
 
@@ -106,7 +106,7 @@ TEST(InclineAnalysisCli, MuFromSlide) {
     const double t = i / 80.0, tr = std::max(0.0, t - 0.05);
     text += std::to_string(t) + ",0.1," + std::to_string(-0.5 * 1.758 * tr * tr) + "\n";
   }
-  write(f, text);
+  write_text(f, text);
   const json j = run_json("incline mu-from-slide " + f + " --phi-deg 41.09 --sigma-phi-deg 0.2");
   const double phi = 41.09 * M_PI / 180;
   // 6 significant digits in the file: a to ~1e-4.
@@ -136,11 +136,11 @@ TEST(InclineAnalysisCli, NormalFrictionTestFromFilesAndFromATable) {
   EXPECT_EQ(j["verdict"], "absent");
 
   const std::string table = dir + "/table.csv";
-  write(table, "# the seed's 圖三-2 shape\nphi_deg,cos_theta_c\n10,0.2781\n15,0.4226\n20,0.5741\n25,0.7355\n");
+  write_text(table, "# the seed's 圖三-2 shape\nphi_deg,cos_theta_c\n10,0.2781\n15,0.4226\n20,0.5741\n25,0.7355\n");
   const json t = run_json("incline normal-friction-test --table " + table);
   EXPECT_NEAR(t["mu"].get<double>(), 0.634, 0.005);  // the rows are tan(phi)/0.634 to 4 digits
   EXPECT_EQ(t["verdict"], "absent");
-  write(table, "phi_deg,cos_theta_c\n10,0.2781\n15,abc\n20,0.5741\n");
+  write_text(table, "phi_deg,cos_theta_c\n10,0.2781\n15,abc\n20,0.5741\n");
   expect_error("incline normal-friction-test --table " + table, "table.csv:3");
   expect_error("incline normal-friction-test" + files + " --phi-deg 10,15", "--phi-deg");
 }
@@ -148,11 +148,11 @@ TEST(InclineAnalysisCli, NormalFrictionTestFromFilesAndFromATable) {
 TEST(InclineAnalysisCli, BadInput) {
   const std::string dir = temp_dir("incline_analysis_bad");
   const std::string few = dir + "/few.csv", still = dir + "/still.csv", bad = dir + "/bad.csv";
-  write(few, "t,x,y\n0,0,0\n0.0125,0.03,0\n0.025,0.06,-0.001\n");
+  write_text(few, "t,x,y\n0,0,0\n0.0125,0.03,0\n0.025,0.06,-0.001\n");
   std::string rest = "t,x,y\n";
   for (int i = 0; i < 40; ++i) rest += std::to_string(i / 80.0) + ",0.1,0.2\n";
-  write(still, rest);
-  write(bad, "t,x,y\n0,0,0\n0.0125,zz,0\n");
+  write_text(still, rest);
+  write_text(bad, "t,x,y\n0,0,0\n0.0125,zz,0\n");
   expect_error("incline analyze " + few + " --phi-deg 20", "points");
   expect_error("incline analyze " + still + " --phi-deg 20", "no motion");
   expect_error("incline mu-from-slide " + still + " --phi-deg 20", "stuck");
@@ -288,7 +288,7 @@ TEST(InclineAnalysisCli, NormalFrictionTestKeepsTheGoodRunsWhenOneFileIsBad) {
              std::to_string(++seed) + " --out " + f);
     files += " " + f;
   }
-  write(dir + "/bad.csv", "t,x,y\n0,0,0\n0.0125,zz,0\n");
+  write_text(dir + "/bad.csv", "t,x,y\n0,0,0\n0.0125,zz,0\n");
   const auto r = run_tribolab("incline normal-friction-test" + files + " " + dir + "/bad.csv --phi-deg 10,15,20,25 --json");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("tribolab: error: 1 of 4 runs failed (" + dir + "/bad.csv:3"), std::string::npos) << r.err;
@@ -312,7 +312,7 @@ TEST(InclineAnalysisCli, AValueNoRunHasIsRefusedWithItsLine) {
     if (n == 10) line = line.substr(0, line.rfind(',')) + ",1e308";  // y of the 9th point
     text += line + "\n";
   }
-  write(f, text);
+  write_text(f, text);
   const auto r = run_tribolab("incline analyze " + f + " --phi-deg 20.96");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find(f + ":10: y = 1e+308 is beyond"), std::string::npos) << r.err;

@@ -202,12 +202,6 @@ TEST(InclineSeriesCli, MuFromSlideSeries) {
   expect_error("incline mu-from-slide" + join(files) + " --phi-deg 41,42", "--phi-deg");
 }
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 TEST(InclineSeriesReport, ShowsTheJsonNumbersAndLinksEveryRun) {
   const std::string dir = temp_dir("series_report");
   auto files = synth_runs(dir, {"1.8", "2.2", "2.62", "3.0"}, "20.96");

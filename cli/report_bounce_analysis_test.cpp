@@ -20,14 +20,8 @@ using report::format_uncertain;
 const std::string kVideo = std::string(TRIBOLAB_SOURCE_DIR) + "/data/demo/bounce/higher.txt";
 const std::string kTable = std::string(TRIBOLAB_SOURCE_DIR) + "/data/demo/bounce/table.csv";
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 /// The cell text of value ± sigma of `j[key]`, `j["sigma_" + key]`.
-std::string cell(const json& j, const std::string& key) {
+std::string json_cell(const json& j, const std::string& key) {
   return format_uncertain(j[key].get<double>(), j["sigma_" + key].get<double>());
 }
 
@@ -57,10 +51,10 @@ TEST(BounceAnalyzeReport, ShowsTheNumbersOfTheJson) {
   EXPECT_EQ(count(html, "class=\"tribolab-plot\""), 6u);
   for (const char* seg : {"pre", "post"})
     for (const char* key : {"vx", "vy", "omega", "ay", "apex_height"})
-      EXPECT_NE(html.find(cell(j[seg], key)), std::string::npos) << seg << "." << key << " = " << cell(j[seg], key);
+      EXPECT_NE(html.find(json_cell(j[seg], key)), std::string::npos) << seg << "." << key << " = " << json_cell(j[seg], key);
   for (const char* key : {"e_velocity", "e_height", "mean_normal_force", "collision_angle_deg", "t_touch", "t_separation",
                           "contact_duration", "contact_point_speed", "e_velocity_common", "theta_touch_deg"})
-    EXPECT_NE(html.find(cell(j, key)), std::string::npos) << key << " = " << cell(j, key);
+    EXPECT_NE(html.find(json_cell(j, key)), std::string::npos) << key << " = " << json_cell(j, key);
   for (const auto& [key, v] : {std::pair{"theta_impact_deg", j["theta_impact_deg"]}, {"collision_angle_impact_deg", j["collision_angle_impact_deg"]},
                                {"energy_pre", j["energy_pre"]}, {"energy_post", j["energy_post"]}, {"impact_time", j["impact_time"]}})
     EXPECT_NE(html.find(report::format_value(v.get<double>(), 4)), std::string::npos) << key;
@@ -89,7 +83,7 @@ TEST(BounceFitReport, ShowsTheNumbersOfTheJson) {
   const auto [j, html] = run_with_report("report_bounce_fit", "bounce fit '" + kTable + "' --fix n=1.51");
   // Three parity plots, residuals by row and against theta.
   EXPECT_EQ(count(html, "class=\"tribolab-plot\""), 5u);
-  for (const char* key : {"K", "D", "mu"}) EXPECT_NE(html.find(cell(j, key)), std::string::npos) << key << " = " << cell(j, key);
+  for (const char* key : {"K", "D", "mu"}) EXPECT_NE(html.find(json_cell(j, key)), std::string::npos) << key << " = " << json_cell(j, key);
   EXPECT_NE(html.find(">1.51</td><td>fixed</td>"), std::string::npos);  // n, fixed
   EXPECT_EQ(count(html, "<td>fitted</td>"), 3u);                            // K, D, mu
   EXPECT_NE(html.find(report::format_value(j["rms"].get<double>(), 4)), std::string::npos);

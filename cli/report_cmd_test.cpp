@@ -15,12 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 /// Runs `command --report DIR/r.html` and checks the report; returns its text.
 std::string expect_report(const std::string& name, const std::string& command, std::size_t figures) {
   const std::string dir = temp_dir("report_" + name);

@@ -18,12 +18,6 @@ using nlohmann::json;
 using report::format_uncertain;
 using report::format_value;
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 /// Runs `command --json --report DIR/r.html`; returns the JSON and the report's text.
 std::pair<json, std::string> json_and_report(const std::string& command, std::size_t figures) {
   const std::string path = temp_dir("incline_report") + "/r.html";

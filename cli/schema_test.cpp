@@ -151,11 +151,11 @@ std::vector<json> declared() {
 }
 
 /// Every leaf of `j` as its dotted path (lists of objects: the element's keys under the list's).
-void leaves(const json& j, const std::string& path, std::vector<std::string>& out) {
+void schema_leaves(const json& j, const std::string& path, std::vector<std::string>& out) {
   if (j.is_object()) {
-    for (const auto& [k, v] : j.items()) leaves(v, path.empty() ? k : path + "." + k, out);
+    for (const auto& [k, v] : j.items()) schema_leaves(v, path.empty() ? k : path + "." + k, out);
   } else if (j.is_array() && !j.empty() && j[0].is_object()) {
-    for (const json& e : j) leaves(e, path, out);
+    for (const json& e : j) schema_leaves(e, path, out);
   } else {
     out.push_back(path);
   }
@@ -235,7 +235,7 @@ TEST(Schema, EveryKeyACommandPrintsIsDeclared) {
   for (const Listed& l : listed()) {
     const app::ResultKeys keys = keys_of(l.command);
     std::vector<std::string> paths;
-    leaves(l.result, "", paths);
+    schema_leaves(l.result, "", paths);
     ASSERT_FALSE(paths.empty()) << l.command["command"];
     for (const std::string& p : paths)
       EXPECT_NE(app::find_result_key(keys, p), nullptr) << l.command["command"] << ": key " << p << " is not declared";

@@ -25,12 +25,6 @@ namespace fs = std::filesystem;
 // bounce_sweep_test.cpp), so every kind of figure appears. Loose tolerance: fast.
 const std::string kSweep = "bounce sweep --theta-deg 100:170:8 --omega 30:50:5 --D 3000 --tol 1e-6";
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 /// The figures' JSON embedded in a report (<script type="application/json" id="tribolab-figures">).
 json figures_of(const std::string& html) {
   const std::string open = "id=\"tribolab-figures\">";

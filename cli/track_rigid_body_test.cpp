@@ -15,9 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::expect_error;
 using testing::run_json;
+using testing::q;
 using testing::run_tribolab;
-
-std::string q(const std::string& s) { return "'" + s + "'"; }
 
 TEST(TrackRigidBodyCli, JsonIsTheApplicationLayersJson) {
   const std::string dir = testing::temp_dir("rb_cli");

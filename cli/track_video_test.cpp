@@ -15,6 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::expect_error;
 using testing::run_json;
+using testing::q;
 using testing::run_tribolab;
 using testing::slurp;
 using testing::temp_dir;
@@ -59,8 +60,6 @@ std::string film(const std::string& dir) {
   video::write_video(path, scene(), kFrames, o);
   return path;
 }
-
-std::string q(const std::string& s) { return "'" + s + "'"; }
 
 TEST(TrackVideoCli, PointAndEllipseToCsvAndJsonSummary) {
   const std::string dir = temp_dir("tv_both");

@@ -4,6 +4,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
+#include "analysis/analysis_test_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,11 +16,8 @@
 namespace tribolab::analysis {
 namespace {
 
-/// Tracks in real time (undoes the synthetic slow-motion factor, as --time-scale does).
-track::Track real_time(track::Track t, double factor) {
-  for (auto& p : t.points) p.t /= factor;
-  return t;
-}
+using testing::real_time;
+using testing::expect_binomial;
 
 TEST(BounceAnalyze, ExactDataRecoversTheFlights) {
   SynthVideoOptions o;
@@ -114,12 +112,6 @@ Coverage run_coverage(double fps, int runs) {
             << " e_common " << c.e << " e (touch, floor given) " << c.e_touch << " e_height " << c.eh << " (floor from the contact duration: " << c.eh_duration
             << ", mean |z| " << c.eh_duration_abs_z / c.n << "; floor bracketed: " << c.eh_default << ", floor in bracket " << c.floor_bracket << ")\n";
   return c;
-}
-
-void expect_binomial(int covered, int n, const char* what) {
-  const double mean = 0.95 * n, sd = std::sqrt(n * 0.95 * 0.05);
-  EXPECT_GE(covered, mean - 3 * sd) << what;
-  EXPECT_LE(covered, std::min<double>(n, mean + 3 * sd)) << what;
 }
 
 /// e_height with the floor from the contact duration. Its error is mostly the floor's, which

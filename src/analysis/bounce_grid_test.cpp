@@ -4,6 +4,7 @@
 #include "analysis/bounce_analyze.hpp"
 #include "analysis/bounce_synth.hpp"
 #include "numerics/error.hpp"
+#include "analysis/analysis_test_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,10 +18,7 @@
 namespace tribolab::analysis {
 namespace {
 
-track::Track real_time(track::Track t, double factor) {
-  for (auto& p : t.points) p.t /= factor;
-  return t;
-}
+using testing::real_time;
 
 struct GridResult {
   int n = 0, analysed = 0, z1 = 0, z2 = 0, z3 = 0;

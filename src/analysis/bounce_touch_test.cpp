@@ -6,6 +6,7 @@
 #include "analysis/bounce_synth.hpp"
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
+#include "analysis/analysis_test_util.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -20,10 +21,8 @@
 namespace tribolab::analysis {
 namespace {
 
-track::Track real_time(track::Track t, double factor) {
-  for (auto& p : t.points) p.t /= factor;
-  return t;
-}
+using testing::real_time;
+using testing::expect_binomial;
 
 struct Case {
   double theta_deg, omega, vx, e;  ///< release orientation, spin, vx; central restitution target
@@ -107,14 +106,6 @@ Tally coverage(Floor floor, int seeds, double fps = 240) {
             << " T " << c.T << " force " << c.force << " cp_speed " << c.cp << "; max |z| angle " << c.max_abs_z_angle
             << " e " << c.max_abs_z_e << "; mean e error " << c.mean_e_error << "\n";
   return c;
-}
-
-/// With n runs the number of covering 95% intervals is Binomial(n, 0.95): accept within 3
-/// sds (n = 200: 181..199, a false alarm about once in 400 runs of the test).
-void expect_binomial(int covered, int n, const char* what) {
-  const double mean = 0.95 * n, sd = std::sqrt(n * 0.95 * 0.05);
-  EXPECT_GE(covered, mean - 3 * sd) << what;
-  EXPECT_LE(covered, std::min<double>(n, mean + 3 * sd)) << what;
 }
 
 void expect_covers(const Tally& c, bool uniform_T) {
@@ -277,7 +268,7 @@ Imperfect imperfect(const Case& k, double turn_deg, double rate) {
   return out;
 }
 
-bool has_warning(const BounceAnalysis& r, const std::string& text) {
+bool warned(const BounceAnalysis& r, const std::string& text) {
   for (const auto& w : r.warnings)
     if (w.find(text) != std::string::npos) return true;
   return false;
@@ -291,8 +282,8 @@ TEST(BounceTouch, WrongFrameRateKeepsAngleAndEAndWarns) {
     EXPECT_NEAR(x.r.collision_angle_deg, x.angle, 4 * x.r.sigma_collision_angle_deg);
     EXPECT_NEAR(x.r.e_velocity, x.e, 4 * x.r.sigma_e_velocity);
     EXPECT_NEAR(x.r.gravity, 9.8 * 1.02 * 1.02, 5 * x.r.sigma_gravity + 0.03);  // 5 sd + Earth's range
-    EXPECT_TRUE(has_warning(x.r, "not 9.8"));
-    EXPECT_FALSE(has_warning(imperfect(k, 0, 1.0).r, "not 9.8"));
+    EXPECT_TRUE(warned(x.r, "not 9.8"));
+    EXPECT_FALSE(warned(imperfect(k, 0, 1.0).r, "not 9.8"));
   }
 }
 
@@ -303,10 +294,10 @@ TEST(BounceTouch, WrongFrameRateKeepsAngleAndEAndWarns) {
 TEST(BounceTouch, TurnedCameraWarns) {
   for (const auto& k : kCases) {
     const auto x = imperfect(k, 0.5, 1.0);
-    EXPECT_TRUE(has_warning(x.r, "tilted")) << x.r.gravity_tilt_deg << " +- " << x.r.sigma_gravity_tilt_deg;
+    EXPECT_TRUE(warned(x.r, "tilted")) << x.r.gravity_tilt_deg << " +- " << x.r.sigma_gravity_tilt_deg;
     // The tilt found is the turn within 5 sds (deterministic seed).
     EXPECT_NEAR(x.r.gravity_tilt_deg, 0.5, 5 * x.r.sigma_gravity_tilt_deg);
-    EXPECT_FALSE(has_warning(imperfect(k, 0, 1.0).r, "tilted"));
+    EXPECT_FALSE(warned(imperfect(k, 0, 1.0).r, "tilted"));
   }
 }
 
@@ -321,7 +312,7 @@ namespace {
 TEST(BounceTouch, SlowMotionAnalysedAsRealTimeNamesTheTimeFactor) {
   const auto x = imperfect(kCases[0], 0, 0.125);  // file times left 8x the real ones
   EXPECT_NEAR(x.r.gravity, 9.8 / 64, 5 * x.r.sigma_gravity + 0.03 / 64);
-  EXPECT_TRUE(has_warning(x.r, "times must be multiplied by 0.125")) << x.r.warnings.front();
+  EXPECT_TRUE(warned(x.r, "times must be multiplied by 0.125")) << x.r.warnings.front();
 }
 
 }  // namespace
@@ -337,7 +328,7 @@ TEST(BounceTouch, TimesFarTooLongNameTheTimeFactorWhenNoImpactIsFound) {
   for (const auto& k : {kCases[0], kCases[2]}) {
     try {
       const auto x = imperfect(k, 0, 1.0 / 64);  // file times 64x the real ones
-      EXPECT_TRUE(has_warning(x.r, "times must be multiplied by 0.0156")) << x.r.warnings.front();
+      EXPECT_TRUE(warned(x.r, "times must be multiplied by 0.0156")) << x.r.warnings.front();
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("times must be multiplied by 0.0156"), std::string::npos) << e.what();
     }

@@ -6,6 +6,7 @@
 #include "app/bounce_synth.hpp"
 
 #include "numerics/error.hpp"
+#include "app/track_test_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +17,8 @@
 namespace tribolab::app {
 namespace {
 
+using testing::temp_dir;
+
 template <class F>
 std::string error_of(F&& f) {
   try {
@@ -24,13 +27,6 @@ std::string error_of(F&& f) {
     return e.what();
   }
   return "no InputError";
-}
-
-std::string temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tribolab_app_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir.string();
 }
 
 // Without noise the fit recovers the generating law (the table's only error is the

@@ -6,6 +6,7 @@
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 #include "numerics/physical_range.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -16,7 +17,6 @@ namespace {
 
 using namespace tribolab::bounce;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 const char* kind_word(BounceCellKind k) { return k == BounceCellKind::impact ? "bounce-impact" : "bounce-contact"; }
 

@@ -14,7 +14,7 @@ namespace tribolab::app {
 namespace {
 
 template <class F>
-std::string error_of(F&& f) {
+std::string simulate_error_of(F&& f) {
   try {
     f();
   } catch (const InputError& e) {
@@ -44,10 +44,10 @@ TEST(BounceContactTime, ErrorsNameTheOption) {
   BounceContactTimeOptions o;
   o.height = 0.7;
   o.direction = 2;
-  EXPECT_NE(error_of([&] { bounce_contact_time(o); }).find("direction"), std::string::npos);
+  EXPECT_NE(simulate_error_of([&] { bounce_contact_time(o); }).find("direction"), std::string::npos);
   o.direction = 1;
   o.g = -1;
-  EXPECT_NE(error_of([&] { bounce_contact_time(o); }).find("g"), std::string::npos);
+  EXPECT_NE(simulate_error_of([&] { bounce_contact_time(o); }).find("g"), std::string::npos);
 }
 
 // The contact history is the whole impact: it starts at the touch with the given velocity,
@@ -73,10 +73,10 @@ TEST(BounceSimulate, HistoryMatchesTheJson) {
 TEST(BounceSimulate, ErrorsNameTheOption) {
   BounceSimulateOptions o;
   o.vy = 2;
-  EXPECT_NE(error_of([&] { bounce_simulate(o); }).find("vy"), std::string::npos);
+  EXPECT_NE(simulate_error_of([&] { bounce_simulate(o); }).find("vy"), std::string::npos);
   o.vy = -4;
   o.law.model = "nope";
-  EXPECT_NE(error_of([&] { bounce_simulate(o); }).find("model"), std::string::npos);
+  EXPECT_NE(simulate_error_of([&] { bounce_simulate(o); }).find("model"), std::string::npos);
 }
 
 // The drop's apex list and trajectory: the release apex is the height (released at rest),
@@ -104,11 +104,11 @@ TEST(BounceDrop, ErrorsNameTheOption) {
   BounceDropOptions o;
   o.height = 0.8;
   o.bounces = 0;
-  EXPECT_NE(error_of([&] { bounce_drop(o); }).find("bounces"), std::string::npos);
+  EXPECT_NE(simulate_error_of([&] { bounce_drop(o); }).find("bounces"), std::string::npos);
   o.bounces = 5;
   o.keep_trajectory = true;
   o.sample_dt = 0;
-  EXPECT_NE(error_of([&] { bounce_drop(o); }).find("sample_dt"), std::string::npos);
+  EXPECT_NE(simulate_error_of([&] { bounce_drop(o); }).find("sample_dt"), std::string::npos);
 }
 
 }  // namespace

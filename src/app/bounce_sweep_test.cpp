@@ -10,18 +10,14 @@
 #include <unistd.h>
 
 #include "numerics/error.hpp"
+#include "app/track_test_util.hpp"
 
 namespace tribolab::app {
 namespace {
 
-namespace fs = std::filesystem;
+using testing::temp_dir;
 
-std::string temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("tribolab_bsweep_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
+namespace fs = std::filesystem;
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -40,7 +36,7 @@ BounceSweepOptions small_sweep(const std::string& out) {
   return o;
 }
 
-std::string message_of(const BounceSweepOptions& o) {
+std::string sweep_message_of(const BounceSweepOptions& o) {
   try {
     bounce_sweep(o);
   } catch (const InputError& e) {
@@ -90,23 +86,23 @@ TEST(BounceSweep, InvalidOptionsNameTheOptionAndWriteNothing) {
   const std::string dir = temp_dir("invalid");
   BounceSweepOptions o = small_sweep(dir + "/map.csv");
   o.ratio = sweep::Axis{sweep::Quantity::ratio, 5, 15, 3};
-  EXPECT_EQ(message_of(o), "give exactly one of omega (spin range) and ratio (spin/speed range)");
+  EXPECT_EQ(sweep_message_of(o), "give exactly one of omega (spin range) and ratio (spin/speed range)");
   o = small_sweep(dir + "/map.csv");
   o.theta_deg = sweep::Axis{sweep::Quantity::theta_deg, 100, 190, 4};
-  EXPECT_NE(message_of(o).find("theta_deg: a collision angle lies in 0..180 deg, got 190"), std::string::npos);
+  EXPECT_NE(sweep_message_of(o).find("theta_deg: a collision angle lies in 0..180 deg, got 190"), std::string::npos);
   o = small_sweep(dir + "/map.csv");
   o.speed.value = -1;
-  EXPECT_EQ(message_of(o).rfind("speed", 0), 0u) << message_of(o);
+  EXPECT_EQ(sweep_message_of(o).rfind("speed", 0), 0u) << sweep_message_of(o);
   o = small_sweep(dir + "/map.csv");
   o.contour_tol = 2;
-  EXPECT_EQ(message_of(o).rfind("contour_tol", 0), 0u);
+  EXPECT_EQ(sweep_message_of(o).rfind("contour_tol", 0), 0u);
   o = small_sweep(dir + "/map.csv");
   o.shard = sweep::Shard{0, 2};
   o.report = dir + "/r.html";
-  EXPECT_NE(message_of(o).find("report: needs the whole grid"), std::string::npos);
+  EXPECT_NE(sweep_message_of(o).find("report: needs the whole grid"), std::string::npos);
   o = small_sweep(dir + "/map.csv");
   o.cell.angle = "sideways";
-  EXPECT_NE(message_of(o).find("angle"), std::string::npos);
+  EXPECT_NE(sweep_message_of(o).find("angle"), std::string::npos);
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
@@ -115,7 +111,7 @@ TEST(BounceSweep, CancelledRunSavesItsCellsAndSaysHowToResume) {
   BounceSweepOptions o = small_sweep(dir + "/map.csv");
   const std::atomic<bool> stop{true};
   o.cancel = &stop;
-  EXPECT_NE(message_of(o).find("; run the same command again to resume"), std::string::npos);
+  EXPECT_NE(sweep_message_of(o).find("; run the same command again to resume"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir + "/map.csv.partial"));
   o.cancel = nullptr;
   EXPECT_EQ(bounce_sweep(o).json["status"], "completed");

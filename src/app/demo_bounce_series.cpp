@@ -30,7 +30,6 @@ namespace {
 using report::format_uncertain;
 using report::format_value;
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 std::string v4(double x) { return format_value(x, 4); }
 

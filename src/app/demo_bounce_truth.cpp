@@ -1,6 +1,7 @@
 #include "app/demo_bounce_truth.hpp"
 
 #include "report/format.hpp"
+#include "numerics/units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -8,7 +9,6 @@
 namespace tribolab::app {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 std::string v4(double x) { return report::format_value(x, 4); }
 
@@ -51,7 +51,7 @@ report::Table bounce_truth_table(const analysis::BounceAnalysis& r, const analys
                         defined ? (c.covered() ? "yes" : "no") : "—"});
   }
   const double ti = r.impact_time;
-  const double theta_true = bounce::wrap_angle(t.touch.theta + t.touch.omega * (ti - t.t_touch)) * kDeg;
+  const double theta_true = bounce::wrap_angle(t.touch.theta + t.touch.omega * (ti - t.t_touch)) * kDegPerRad;
   tab.rows.push_back({"θ at the impact time (deg)", v4(r.theta_impact_deg), v4(theta_true), "—"});
   tab.rows.push_back({"impact time (s)", v4(ti), v4(t.t_touch) + " – " + v4(t.t_separation),
                       ti >= t.t_touch && ti <= t.t_separation ? "within the contact" : "outside the contact"});

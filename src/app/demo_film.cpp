@@ -15,6 +15,7 @@
 #include "report/format.hpp"
 #include "report/html.hpp"
 #include "video/render.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -74,7 +75,7 @@ FilmTrackingError tracking_error(const FilmCase& c) {
     // The major axis' direction on screen (counter-clockwise, as in the world: the film has
     // no axes rotation) against the truth's theta, modulo 180 deg.
     const double theta = std::atan2(truth_b[k].y - truth_a[k].y, truth_b[k].x - truth_a[k].x);
-    da.push_back(std::abs(std::remainder(centre.angle_rad[i] - theta, std::numbers::pi)) * 180 / std::numbers::pi);
+    da.push_back(to_deg(std::abs(std::remainder(centre.angle_rad[i] - theta, std::numbers::pi))));
   }
   e.frames = static_cast<int>(dc.size());
   e.median_centre_px = median(dc);

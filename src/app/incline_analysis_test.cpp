@@ -4,6 +4,7 @@
 #include "app/incline_analysis.hpp"
 #include "app/incline_analyze.hpp"
 #include "numerics/error.hpp"
+#include "app/track_test_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,14 +17,9 @@
 namespace tribolab::app {
 namespace {
 
-namespace fs = std::filesystem;
+using testing::temp_dir;
 
-std::string temp_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("tribolab_app_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d.string();
-}
+namespace fs = std::filesystem;
 
 void expect_input_error(const std::function<void()>& f, const std::string& option) {
   try {

@@ -25,7 +25,7 @@ InclineLaunchOptions launch(double mu, double phi_deg, double v0) {
 }
 
 /// Runs `f`, which must throw InputError whose message starts with `option` + ": ".
-void expect_input_error(const std::function<void()>& f, const std::string& option) {
+void expect_forward_error(const std::function<void()>& f, const std::string& option) {
   try {
     f();
     ADD_FAILURE() << "no error for " << option;
@@ -52,15 +52,15 @@ TEST(InclinePredict, StopsWhereTheSeedsClosedFormSays) {
 TEST(InclinePredict, ErrorsNameTheOption) {
   InclinePredictOptions o;
   o.launch = launch(0.5, 90, 1);
-  expect_input_error([&] { incline_predict(o); }, "phi_deg");
+  expect_forward_error([&] { incline_predict(o); }, "phi_deg");
   o.launch = launch(-0.1, 10, 1);
-  expect_input_error([&] { incline_predict(o); }, "mu");
+  expect_forward_error([&] { incline_predict(o); }, "mu");
   o.launch = launch(0.5, 10, 1);
   o.launch.v0.reset();
-  expect_input_error([&] { incline_predict(o); }, "v0");
+  expect_forward_error([&] { incline_predict(o); }, "v0");
   o.launch = launch(0.5, 10, 1);
   o.launch.g = 0;
-  expect_input_error([&] { incline_predict(o); }, "g");
+  expect_forward_error([&] { incline_predict(o); }, "g");
 }
 
 TEST(InclineSimulate, AnalyticAndNumericTrajectoriesAgreeWithoutFiles) {
@@ -101,18 +101,18 @@ TEST(InclineSimulate, ErrorsNameTheOption) {
   InclineSimulateOptions o;
   o.launch = launch(0.5, 10, 1);
   o.model = "C";
-  expect_input_error([&] { incline_simulate(o); }, "model");
+  expect_forward_error([&] { incline_simulate(o); }, "model");
   o.model = "A";
   o.method = "analytic";
-  expect_input_error([&] { incline_simulate(o); }, "method");
+  expect_forward_error([&] { incline_simulate(o); }, "method");
   o = {};
   o.launch = launch(0.5, 10, 1);
   o.normal_accel = 1;
-  expect_input_error([&] { incline_simulate(o); }, "normal_accel");
+  expect_forward_error([&] { incline_simulate(o); }, "normal_accel");
   o = {};
   o.launch = launch(0.5, 10, 1);
   o.dt = 0;
-  expect_input_error([&] { incline_simulate(o); }, "dt");
+  expect_forward_error([&] { incline_simulate(o); }, "dt");
 }
 
 TEST(InclineFamilies, StopRatiosDoNotDependOnV0) {
@@ -132,15 +132,15 @@ TEST(InclineFamilies, StopRatiosDoNotDependOnV0) {
   }
   EXPECT_EQ(r.json["rows"], 33);
   o.samples = 1;
-  expect_input_error([&] { incline_families(o); }, "samples");
+  expect_forward_error([&] { incline_families(o); }, "samples");
   o.samples = 11;
   o.vary = "g";
-  expect_input_error([&] { incline_families(o); }, "vary");
+  expect_forward_error([&] { incline_families(o); }, "vary");
   o.vary = "phi";
   o.values = {95};
   o.launch.v0 = 2;
   o.launch.phi_deg.reset();
-  expect_input_error([&] { incline_families(o); }, "values");
+  expect_forward_error([&] { incline_families(o); }, "values");
 }
 
 TEST(InclineMuFromStop, RecoversTheFrictionOfAPredictedStop) {
@@ -157,10 +157,10 @@ TEST(InclineMuFromStop, RecoversTheFrictionOfAPredictedStop) {
   EXPECT_NEAR(r.json["v0"].get<double>(), 2.0, 1e-10);
   EXPECT_TRUE(r.json["sigma_mu"].is_null());
   o.plate_size = 1;
-  expect_input_error([&] { incline_mu_from_stop(o); }, "plate_size");  // needs a sigma
+  expect_forward_error([&] { incline_mu_from_stop(o); }, "plate_size");  // needs a sigma
   o.plate_size.reset();
   o.y_stop = 0.05;
-  expect_input_error([&] { incline_mu_from_stop(o); }, "y_stop");
+  expect_forward_error([&] { incline_mu_from_stop(o); }, "y_stop");
 }
 
 }  // namespace

@@ -23,7 +23,6 @@ using report::Series;
 using report::Table;
 using report::format_uncertain;
 using report::format_value;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string interval(double lo, double hi) { return "[" + format_value(lo, 5) + ", " + format_value(hi, 5) + "]"; }
 std::string opt_value(const std::optional<double>& v, int digits = 5) { return v ? format_value(*v, digits) : "—"; }

@@ -4,6 +4,7 @@
 #include "report/format.hpp"
 #include "app/report_map_caption.hpp"
 #include "app/report_util.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,6 @@ namespace {
 
 using report::format_value;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// seed 001: "rotational to vertical kinetic energy ratio must exceed 2.56" (see the erratum
 /// in docs/theory.md#errata-in-the-seeds).
 constexpr double kSeedEnergyRatio = 2.56;

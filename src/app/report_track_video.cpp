@@ -2,6 +2,7 @@
 #include "app/report_util.hpp"
 
 #include "report/format.hpp"
+#include "numerics/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,8 +21,6 @@ using video::TrackedRow;
 using video::TrackedSeries;
 using video::TrackVideoResult;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 std::string v4(double x) { return format_value(x, 4); }
 
@@ -63,7 +62,7 @@ std::vector<double> unwrap_deg(const std::vector<double>& rad) {
   double last = kNaN, offset = 0;
   for (std::size_t i = 0; i < rad.size(); ++i) {
     if (!std::isfinite(rad[i])) continue;
-    double a = rad[i] * kDeg + offset;
+    double a = rad[i] * kDegPerRad + offset;
     if (std::isfinite(last)) {
       const double turns = std::round((a - last) / 360.0);
       offset -= 360.0 * turns;

@@ -21,10 +21,9 @@ namespace {
 using video::Target;
 using video::TrackedRow;
 using video::TrackedSeries;
-using video::TrackVideoResult;
 
-constexpr double kFps = 240;
-constexpr int kFrames = 24;
+constexpr double kVideoFps = 240;
+constexpr int kVideoFrames = 24;
 
 /// A frame with a dark ball on grey, encoded as OpenCV writes thumbnails.
 std::vector<unsigned char> thumbnail_jpeg(int frame) {
@@ -37,25 +36,25 @@ std::vector<unsigned char> thumbnail_jpeg(int frame) {
 
 /// A point turning 0.4 rad per frame (crossing ±π several times) lost on frames 5-7, and an
 /// ellipse "ball" with its ends ball.A, ball.B, in a calibrated video (500 px per m).
-TrackVideoResult hand_made(bool calibrated) {
-  TrackVideoResult r;
+video::TrackVideoResult hand_made(bool calibrated) {
+  video::TrackVideoResult r;
   r.input.input = "throw.mp4";
-  r.input.info = {"throw.mp4", 320, 240, kFrames, kFps, "mp4v"};
-  r.input.time.frame_duration_s = 1 / kFps;
+  r.input.info = {"throw.mp4", 320, 240, kVideoFrames, kVideoFps, "mp4v"};
+  r.input.time.frame_duration_s = 1 / kVideoFps;
   r.input.calibration.calibrated = calibrated;
   if (calibrated) {
     r.input.calibration.coords.front().xscale = 500;
     r.input.calibration.coords.front().yscale = 500;
     r.input.calibration.coords.front().origin_y = 240;
   }
-  r.frames = kFrames;
+  r.frames = kVideoFrames;
   TrackedSeries mark;
   mark.name = "mark";
   mark.kind = Target::Kind::point;
-  for (int i = 0; i < kFrames; ++i) {
+  for (int i = 0; i < kVideoFrames; ++i) {
     TrackedRow row;
     row.frame = i;
-    row.t = i / kFps;
+    row.t = i / kVideoFps;
     row.lost = i >= 5 && i <= 7;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     row.x = row.lost ? nan : 0.1 + 0.002 * i;
@@ -66,7 +65,7 @@ TrackVideoResult hand_made(bool calibrated) {
     // The tracker's angle wraps to (-π, π]; the truth is 0.4 i.
     mark.angle_rad.push_back(row.lost ? nan : std::remainder(0.4 * i, 2 * std::numbers::pi));
   }
-  mark.tracked = kFrames - 3;
+  mark.tracked = kVideoFrames - 3;
   mark.lost_ranges = {{5, 7}};
   mark.median_score = 0.9;
   mark.vs_human = video::HumanComparison{12, 0.74, 1.9};
@@ -75,21 +74,21 @@ TrackVideoResult hand_made(bool calibrated) {
     TrackedSeries s;
     s.name = name;
     s.kind = Target::Kind::ellipse;
-    for (int i = 0; i < kFrames; ++i) {
-      s.rows.push_back({i, i / kFps, 0.2, 0.1 + 0.001 * i, 100, 140, 0.95, false});
+    for (int i = 0; i < kVideoFrames; ++i) {
+      s.rows.push_back({i, i / kVideoFps, 0.2, 0.1 + 0.001 * i, 100, 140, 0.95, false});
       s.angle_rad.push_back(0.1);
     }
-    s.tracked = kFrames;
+    s.tracked = kVideoFrames;
     s.median_score = 0.95;
     r.series.push_back(s);
   }
-  r.thumbnails = {{0, 0.0, thumbnail_jpeg(0)}, {12, 12 / kFps, thumbnail_jpeg(12)}};
+  r.thumbnails = {{0, 0.0, thumbnail_jpeg(0)}, {12, 12 / kVideoFps, thumbnail_jpeg(12)}};
   r.input.warnings = {"no scale: positions are in pixels"};
   r.warnings = {"mark: lost on frames 5-7 (occluded?)"};
   return r;
 }
 
-const report::Table* find_table(const report::Report& r, const std::string& caption) {
+const report::Table* table_in(const report::Report& r, const std::string& caption) {
   for (const auto& s : r.sections)
     for (const auto& b : s.blocks)
       if (const auto* t = std::get_if<report::Table>(&b); t && t->caption == caption) return t;
@@ -102,7 +101,7 @@ std::string cell(const report::Table& t, const std::string& first, std::size_t c
   return "(no row '" + first + "')";
 }
 
-std::vector<const report::Figure*> figures(const report::Report& r) {
+std::vector<const report::Figure*> video_figures(const report::Report& r) {
   std::vector<const report::Figure*> out;
   for (const auto& s : r.sections)
     for (const auto& b : s.blocks)
@@ -110,7 +109,7 @@ std::vector<const report::Figure*> figures(const report::Report& r) {
   return out;
 }
 
-const report::Series* find_series(const report::Figure& f, const std::string& name) {
+const report::Series* series_in(const report::Figure& f, const std::string& name) {
   for (const auto& s : f.series)
     if (s.name == name) return &s;
   return nullptr;
@@ -119,7 +118,7 @@ const report::Series* find_series(const report::Figure& f, const std::string& na
 TEST(TrackVideoReport, SummaryShowsTheVideoTimeBaseAndCalibrationWithUnits) {
   const auto rep = track_video_report(hand_made(true));
   EXPECT_EQ(rep.validate(), "");
-  const auto* t = find_table(rep, "The video, its time base and its calibration");
+  const auto* t = table_in(rep, "The video, its time base and its calibration");
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(cell(*t, "input"), "throw.mp4");
   EXPECT_EQ(cell(*t, "image size (px)"), "320 × 240");
@@ -130,7 +129,7 @@ TEST(TrackVideoReport, SummaryShowsTheVideoTimeBaseAndCalibrationWithUnits) {
   EXPECT_EQ(cell(*t, "calibration"), "500 px per m along x, 500 along y (from frame 0; 1 key frame(s))");
   EXPECT_EQ(cell(*t, "origin x, y (px)"), "0, 240");
   EXPECT_EQ(cell(*t, "axes' angle (deg)"), "0");
-  const auto figs = figures(rep);
+  const auto figs = video_figures(rep);
   ASSERT_EQ(figs.size(), 4u);  // x, y, orientation, score
   EXPECT_EQ(figs[0]->y_axis.title, "x (m)");
   EXPECT_EQ(figs[1]->y_axis.title, "y (m)");
@@ -138,15 +137,15 @@ TEST(TrackVideoReport, SummaryShowsTheVideoTimeBaseAndCalibrationWithUnits) {
 
 TEST(TrackVideoReport, UncalibratedVideoSaysPixels) {
   const auto rep = track_video_report(hand_made(false));
-  const auto* t = find_table(rep, "The video, its time base and its calibration");
+  const auto* t = table_in(rep, "The video, its time base and its calibration");
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(cell(*t, "calibration"), "none: positions in pixels, y up (no scale given)");
-  EXPECT_EQ(figures(rep).at(0)->y_axis.title, "x (px)");
+  EXPECT_EQ(video_figures(rep).at(0)->y_axis.title, "x (px)");
 }
 
 TEST(TrackVideoReport, TracksTableHasLostRangesScoresAndHumanDistance) {
   const auto rep = track_video_report(hand_made(true));
-  const auto* t = find_table(rep, "Tracks");
+  const auto* t = table_in(rep, "Tracks");
   ASSERT_NE(t, nullptr);
   ASSERT_EQ(t->rows.size(), 4u);
   EXPECT_EQ(cell(*t, "mark", 1), "point");
@@ -180,30 +179,30 @@ TEST(TrackVideoReport, WarningsOfTheInputAndTheTrackingAreListed) {
 
 TEST(TrackVideoReport, LostFramesAreGapsInPositionsAndRedMarkersOnTheScore) {
   const auto rep = track_video_report(hand_made(true));
-  const auto figs = figures(rep);
-  const auto* x = find_series(*figs[0], "mark");
+  const auto figs = video_figures(rep);
+  const auto* x = series_in(*figs[0], "mark");
   ASSERT_NE(x, nullptr);
   ASSERT_EQ(x->y.size(), 24u);
-  for (int i = 0; i < kFrames; ++i) EXPECT_EQ(std::isnan(x->y[i]), i >= 5 && i <= 7) << i;
+  for (int i = 0; i < kVideoFrames; ++i) EXPECT_EQ(std::isnan(x->y[i]), i >= 5 && i <= 7) << i;
   EXPECT_DOUBLE_EQ(x->y[4], 0.108);
-  const auto* lost = find_series(*figs[3], "mark: lost");
+  const auto* lost = series_in(*figs[3], "mark: lost");
   ASSERT_NE(lost, nullptr);
-  EXPECT_EQ(lost->x, (std::vector<double>{5 / kFps, 6 / kFps, 7 / kFps}));
+  EXPECT_EQ(lost->x, (std::vector<double>{5 / kVideoFps, 6 / kVideoFps, 7 / kVideoFps}));
   EXPECT_EQ(lost->y, (std::vector<double>{0.2, 0.2, 0.2}));
   EXPECT_EQ(lost->color, "#d62728");
   // Nothing lost on the ball: no lost series for it.
-  EXPECT_EQ(find_series(*figs[3], "ball: lost"), nullptr);
+  EXPECT_EQ(series_in(*figs[3], "ball: lost"), nullptr);
 }
 
 TEST(TrackVideoReport, OrientationIsUnwrappedInDegreesAcrossLostFrames) {
   const auto rep = track_video_report(hand_made(true));  // the figures point into it
-  const auto figs = figures(rep);
+  const auto figs = video_figures(rep);
   ASSERT_EQ(figs[2]->title, "Orientation against time");
-  const auto* a = find_series(*figs[2], "mark");
+  const auto* a = series_in(*figs[2], "mark");
   ASSERT_NE(a, nullptr);
   ASSERT_EQ(a->y.size(), 24u);
   const double deg = 180 / std::numbers::pi;
-  for (int i = 0; i < kFrames; ++i) {
+  for (int i = 0; i < kVideoFrames; ++i) {
     if (i >= 5 && i <= 7) {
       EXPECT_TRUE(std::isnan(a->y[i])) << i;
     } else {
@@ -216,13 +215,13 @@ TEST(TrackVideoReport, OrientationIsUnwrappedInDegreesAcrossLostFrames) {
 
 TEST(TrackVideoReport, EllipseEndsShareTheCentresOrientationAndScore) {
   const auto rep = track_video_report(hand_made(true));  // the figures point into it
-  const auto figs = figures(rep);
+  const auto figs = video_figures(rep);
   // Positions: all four tracks; orientation and score: the point and the ellipse once.
   EXPECT_EQ(figs[0]->series.size(), 4u);
-  EXPECT_NE(find_series(*figs[2], "ball"), nullptr);
-  EXPECT_EQ(find_series(*figs[2], "ball.A"), nullptr);
-  EXPECT_EQ(find_series(*figs[3], "ball.B"), nullptr);
-  EXPECT_NE(find_series(*figs[3], "ball"), nullptr);
+  EXPECT_NE(series_in(*figs[2], "ball"), nullptr);
+  EXPECT_EQ(series_in(*figs[2], "ball.A"), nullptr);
+  EXPECT_EQ(series_in(*figs[3], "ball.B"), nullptr);
+  EXPECT_NE(series_in(*figs[3], "ball"), nullptr);
 }
 
 TEST(TrackVideoReport, ThumbnailsAreEmbeddedByteForByte) {
@@ -244,21 +243,21 @@ TEST(TrackVideoReport, HumanMarksAreDrawnInWorldUnits) {
   auto r = hand_made(true);
   track::Track marks;
   marks.name = "mark";
-  marks.points = {{0, 0, 150, 90}, {10, 10 / kFps, 160, 90}};  // pixels, y down
+  marks.points = {{0, 0, 150, 90}, {10, 10 / kVideoFps, 160, 90}};  // pixels, y down
   r.input.marks_px = {marks};
   const auto rep = track_video_report(r);
-  const auto figs = figures(rep);
-  const auto* hx = find_series(*figs[0], "mark: human marks");
-  const auto* hy = find_series(*figs[1], "mark: human marks");
+  const auto figs = video_figures(rep);
+  const auto* hx = series_in(*figs[0], "mark: human marks");
+  const auto* hy = series_in(*figs[1], "mark: human marks");
   ASSERT_NE(hx, nullptr);
   ASSERT_NE(hy, nullptr);
   // 500 px per m, origin (0, 240) px: x = 150/500 m, y = (240 - 90)/500 m.
   EXPECT_NEAR(hx->y[0], 0.3, 1e-12);
   EXPECT_NEAR(hx->y[1], 0.32, 1e-12);
   EXPECT_NEAR(hy->y[0], 0.3, 1e-12);
-  EXPECT_NEAR(hx->x[1], 10 / kFps, 1e-12);
+  EXPECT_NEAR(hx->x[1], 10 / kVideoFps, 1e-12);
   // Only a track compared with human marks gets them.
-  EXPECT_EQ(find_series(*figs[0], "ball: human marks"), nullptr);
+  EXPECT_EQ(series_in(*figs[0], "ball: human marks"), nullptr);
 }
 
 }  // namespace

@@ -18,21 +18,15 @@
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 #include "sweep/synthetic.hpp"
+#include "app/track_test_util.hpp"
 
 namespace tribolab::app {
 using namespace ::tribolab::io;
 namespace {
 
-namespace fs = std::filesystem;
+using testing::temp_dir;
 
-/// A fresh empty directory for one test.
-std::string temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("tribolab_sweep_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
+namespace fs = std::filesystem;
 
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
@@ -51,7 +45,7 @@ SweepCommandOptions options_for(const std::string& out) {
   return o;
 }
 
-std::string message_of(const std::function<void()>& f) {
+std::string command_message_of(const std::function<void()>& f) {
   try {
     f();
   } catch (const InputError& e) {
@@ -121,13 +115,13 @@ TEST(SweepCommand, MergeRefusesMissingDuplicateForeignAndIncompleteShards) {
     parts.push_back(o.out);
   }
   const std::string out = dir + "/merged.csv";
-  EXPECT_NE(message_of([&] { run_merge_command({parts[0], parts[2]}, out); }).find("missing shard(s) 1/3"),
+  EXPECT_NE(command_message_of([&] { run_merge_command({parts[0], parts[2]}, out); }).find("missing shard(s) 1/3"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { run_merge_command({parts[0], parts[1], parts[1], parts[2]}, out); })
+  EXPECT_NE(command_message_of([&] { run_merge_command({parts[0], parts[1], parts[1], parts[2]}, out); })
                 .find("given twice"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { run_merge_command({}, out); }).find("no input files"), std::string::npos);
-  EXPECT_NE(message_of([&] { run_merge_command({dir + "/nope.csv"}, out); }).find("no such file"),
+  EXPECT_NE(command_message_of([&] { run_merge_command({}, out); }).find("no input files"), std::string::npos);
+  EXPECT_NE(command_message_of([&] { run_merge_command({dir + "/nope.csv"}, out); }).find("no such file"),
             std::string::npos);
   // A shard of another sweep (other physics).
   {
@@ -136,7 +130,7 @@ TEST(SweepCommand, MergeRefusesMissingDuplicateForeignAndIncompleteShards) {
     SweepCommandOptions o = options_for(dir + "/foreign1.csv");
     o.shard = sweep::Shard{1, 3};
     run_sweep_command(o, other, nullptr);
-    EXPECT_NE(message_of([&] { run_merge_command({parts[0], o.out, parts[2]}, out); })
+    EXPECT_NE(command_message_of([&] { run_merge_command({parts[0], o.out, parts[2]}, out); })
                   .find("foreign1.csv:1: is a shard of a different sweep than " + parts[0] +
                         " (differs in physical options)"),
               std::string::npos);
@@ -144,17 +138,17 @@ TEST(SweepCommand, MergeRefusesMissingDuplicateForeignAndIncompleteShards) {
   // An incomplete shard (its last lines cut off) and a corrupted line.
   const std::string p1 = read_file(parts[1]);
   write_text(dir + "/cut1.csv", p1.substr(0, p1.size() - 30));
-  EXPECT_NE(message_of([&] { run_merge_command({parts[0], dir + "/cut1.csv", parts[2]}, out); })
+  EXPECT_NE(command_message_of([&] { run_merge_command({parts[0], dir + "/cut1.csv", parts[2]}, out); })
                 .find("incomplete shard"),
             std::string::npos);
   std::string bad = p1;
   bad[bad.find('\n', bad.find('\n') + 1) + 1] = '9';  // first data line, theta_deg changed
   write_text(dir + "/bad1.csv", bad);
-  EXPECT_NE(message_of([&] { run_merge_command({parts[0], dir + "/bad1.csv", parts[2]}, out); })
+  EXPECT_NE(command_message_of([&] { run_merge_command({parts[0], dir + "/bad1.csv", parts[2]}, out); })
                 .find("bad1.csv:3: theta_deg"),
             std::string::npos);
   write_text(dir + "/long1.csv", p1 + p1.substr(p1.rfind('\n', p1.size() - 2) + 1));
-  EXPECT_NE(message_of([&] { run_merge_command({parts[0], dir + "/long1.csv", parts[2]}, out); })
+  EXPECT_NE(command_message_of([&] { run_merge_command({parts[0], dir + "/long1.csv", parts[2]}, out); })
                 .find("more lines"),
             std::string::npos);
   EXPECT_FALSE(fs::exists(out));  // no partial output after any error
@@ -229,7 +223,7 @@ TEST(SweepCommand, ReusesAFinishedOutputAndRefusesAnotherSweepsFiles) {
 
   SweepCommandOptions other = o;
   other.grid.axes[2].count = 5;
-  EXPECT_NE(message_of([&] { run_sweep_command(other, m, nullptr); })
+  EXPECT_NE(command_message_of([&] { run_sweep_command(other, m, nullptr); })
                 .find("map.csv: exists and holds a different sweep (differs in grid); pass restart"),
             std::string::npos);
   EXPECT_EQ(read_file(o.out), first);  // untouched
@@ -238,7 +232,7 @@ TEST(SweepCommand, ReusesAFinishedOutputAndRefusesAnotherSweepsFiles) {
   EXPECT_NE(read_file(o.out), first);
 
   write_text(dir + "/notes.csv", "my precious notes\n");
-  EXPECT_NE(message_of([&] { run_sweep_command(options_for(dir + "/notes.csv"), m, nullptr); })
+  EXPECT_NE(command_message_of([&] { run_sweep_command(options_for(dir + "/notes.csv"), m, nullptr); })
                 .find("not a tribolab sweep file"),
             std::string::npos);
   EXPECT_EQ(read_file(dir + "/notes.csv"), "my precious notes\n");
@@ -252,7 +246,7 @@ TEST(SweepCommand, RefusesTheCheckpointOfADifferentSweep) {
   EXPECT_EQ(run_sweep_command(o, m, nullptr, &cancel).status, SweepStatus::cancelled);
   sweep::CellModel other = m;
   other.description = "different K";
-  EXPECT_NE(message_of([&] { run_sweep_command(o, other, nullptr); })
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, other, nullptr); })
                 .find("map.csv.partial: is the checkpoint of a different sweep (differs in physical "
                       "options); delete it or pass restart"),
             std::string::npos);
@@ -267,7 +261,7 @@ TEST(SweepCommand, RefusesACheckpointLockedByAnotherRun) {
   const int fd = ::open((o.out + ".partial").c_str(), O_WRONLY | O_CREAT, 0644);
   ASSERT_GE(fd, 0);
   ASSERT_EQ(::flock(fd, LOCK_EX), 0);  // another process owns it (flock is per open file)
-  EXPECT_NE(message_of([&] { run_sweep_command(o, sweep::synthetic::wave_model(), nullptr); })
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, sweep::synthetic::wave_model(), nullptr); })
                 .find("is being written by another running sweep"),
             std::string::npos);
   ::close(fd);
@@ -284,7 +278,7 @@ TEST(SweepCommand, RefusesASecondWriterEvenWithRestart) {
   SweepCheckpoint first(o, header);
   SweepCommandOptions second = o;
   second.restart = true;
-  EXPECT_NE(message_of([&] { run_sweep_command(second, m, nullptr); })
+  EXPECT_NE(command_message_of([&] { run_sweep_command(second, m, nullptr); })
                 .find("map.csv.partial: is being written by another running sweep"),
             std::string::npos);
   first.append("");
@@ -317,7 +311,7 @@ TEST(SweepCommand, MapsOfAFileChangedUnderneathAreAnErrorNotACrash) {
   write_text(o.out, text);
   o.contour_out = dir + "/boundary.csv";
   SweepCommandResult r;
-  EXPECT_NE(message_of([&] { write_derived_maps(o, m, r); })
+  EXPECT_NE(command_message_of([&] { write_derived_maps(o, m, r); })
                 .find("map.csv: changed while the contour/threshold maps were made (holds 269 of 270"),
             std::string::npos);
   EXPECT_FALSE(fs::exists(o.contour_out));
@@ -337,7 +331,7 @@ TEST(SweepCommand, OutputThroughASymlinkKeepsTheLinkAndADeviceIsRefused) {
   EXPECT_EQ(run_sweep_command(o, m, nullptr).status, SweepStatus::reused);  // found through the link
   ASSERT_EQ(::mkfifo((dir + "/pipe").c_str(), 0600), 0);
   o.out = dir + "/pipe";
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); })
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, m, nullptr); })
                 .find("pipe: is a device or FIFO, not a regular file (a sweep is checkpointed"),
             std::string::npos);
   EXPECT_FALSE(fs::exists(dir + "/pipe.partial"));
@@ -404,25 +398,25 @@ TEST(SweepCommand, InvalidOptionsNameTheOptionAndWriteNothing) {
   SweepCommandOptions o = options_for(dir + "/map.csv");
   o.shard = sweep::Shard{0, 2};
   o.contour_out = dir + "/c.csv";
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("contour: needs the whole grid"),
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, m, nullptr); }).find("contour: needs the whole grid"),
             std::string::npos);
   o = options_for(dir + "/missing_dir/map.csv");
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("directory does not exist"),
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, m, nullptr); }).find("directory does not exist"),
             std::string::npos);
   o = options_for(dir + "/map.csv");
   o.grid.axes[0].count = 0;
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("mu: count must be at least 1"),
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, m, nullptr); }).find("mu: count must be at least 1"),
             std::string::npos);
   o = options_for(dir + "/map.csv");
   o.threads = -1;
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("threads"), std::string::npos);
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, m, nullptr); }).find("threads"), std::string::npos);
   o = options_for("");
-  EXPECT_NE(message_of([&] { run_sweep_command(o, m, nullptr); }).find("out"), std::string::npos);
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, m, nullptr); }).find("out"), std::string::npos);
   o = options_for(dir + "/map.csv");
   o.threshold_out = dir + "/t.csv";
   sweep::CellModel no_e = m;
   no_e.output_names = {"vx", "vy", "omega_out", "cor"};
-  EXPECT_NE(message_of([&] { run_sweep_command(o, no_e, nullptr); }).find("no output 'e'"),
+  EXPECT_NE(command_message_of([&] { run_sweep_command(o, no_e, nullptr); }).find("no output 'e'"),
             std::string::npos);
   EXPECT_TRUE(fs::is_empty(dir));
 }

@@ -41,7 +41,7 @@ std::string shared_dir(const std::string& name) {
   return dir;
 }
 
-SweepCommandOptions options_for(const std::string& out) {
+SweepCommandOptions mpi_options_for(const std::string& out) {
   SweepCommandOptions o;
   o.grid.axes = {sweep::Axis{sweep::Quantity::mu, 0.3, 0.7, 2},
                  sweep::Axis{sweep::Quantity::theta_deg, 100, 170, 29},
@@ -59,13 +59,13 @@ TEST(SweepMpi, RanksWriteTheSameBytesAsOneProcessAndResume) {
   const sweep::CellModel model = sweep::synthetic::wave_model();
   std::string reference;
   if (rank == 0) {
-    SweepCommandOptions o = options_for(dir + "/one.csv");
+    SweepCommandOptions o = mpi_options_for(dir + "/one.csv");
     o.contour_out = dir + "/one_contour.csv";
     run_sweep_command(o, model, nullptr);
     reference = read_file(o.out);
   }
   // Whole sweep over the ranks, with the derived maps.
-  SweepCommandOptions o = options_for(dir + "/mpi.csv");
+  SweepCommandOptions o = mpi_options_for(dir + "/mpi.csv");
   o.contour_out = dir + "/mpi_contour.csv";
   const SweepCommandResult r = run_sweep_command_mpi(o, model, nullptr);
   if (rank == 0) {
@@ -79,7 +79,7 @@ TEST(SweepMpi, RanksWriteTheSameBytesAsOneProcessAndResume) {
   MPI_Barrier(MPI_COMM_WORLD);
 
   // Killed part-way (simulated: the output cut mid-line), then resumed over the ranks.
-  SweepCommandOptions cut = options_for(dir + "/cut.csv");
+  SweepCommandOptions cut = mpi_options_for(dir + "/cut.csv");
   if (rank == 0) {
     std::ofstream(cut.out + ".partial", std::ios::binary) << reference.substr(0, reference.size() / 3 + 7);
   }
@@ -91,7 +91,7 @@ TEST(SweepMpi, RanksWriteTheSameBytesAsOneProcessAndResume) {
   }
 
   // Stopped by the cancel flag (checked on rank 0 between rounds), then resumed.
-  SweepCommandOptions stop = options_for(dir + "/stop.csv");
+  SweepCommandOptions stop = mpi_options_for(dir + "/stop.csv");
   std::atomic<bool> cancel{false};
   std::atomic<int> calls{0};
   sweep::CellModel counting = model;
@@ -118,13 +118,13 @@ TEST(SweepMpi, AnErrorOnAnyRankReachesEveryRank) {
   sweep::CellModel model = sweep::synthetic::wave_model();
   const auto base = model.evaluate;
   // The last cell is computed by the last rank.
-  const std::int64_t last = options_for("").grid.cell_count() - 1;
+  const std::int64_t last = mpi_options_for("").grid.cell_count() - 1;
   model.evaluate = [base, last](const sweep::CellInput& in) {
     if (in.index == last) throw InputError("--K", "contact did not separate");
     return base(in);
   };
   try {
-    run_sweep_command_mpi(options_for(dir + "/err.csv"), model, nullptr);
+    run_sweep_command_mpi(mpi_options_for(dir + "/err.csv"), model, nullptr);
     ADD_FAILURE() << "no error on rank " << session().rank();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "--K: contact did not separate");
@@ -133,7 +133,7 @@ TEST(SweepMpi, AnErrorOnAnyRankReachesEveryRank) {
   if (session().rank() == 0) std::ofstream(dir + "/other.csv") << "not a sweep\n";
   MPI_Barrier(MPI_COMM_WORLD);
   try {
-    run_sweep_command_mpi(options_for(dir + "/other.csv"), sweep::synthetic::wave_model(), nullptr);
+    run_sweep_command_mpi(mpi_options_for(dir + "/other.csv"), sweep::synthetic::wave_model(), nullptr);
     ADD_FAILURE() << "no error on rank " << session().rank();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("not a tribolab sweep file"), std::string::npos);

@@ -23,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::SpinningBody;
 
-TrackRigidBodyOptions options_for(const std::string& file) {
+TrackRigidBodyOptions rigid_options_for(const std::string& file) {
   TrackRigidBodyOptions o;
   o.input.file = file;
   o.track_a = "A";
@@ -158,7 +158,7 @@ TEST(TrackRigidBody, DriftingDistanceIsWarnedSmallOneIsNot) {
 TEST(TrackRigidBody, ASpinChangedByABounceIsWarnedASteadyOneIsNot) {
   // The demo's filmed throw: the floor changes the spin (about 45 rad/s before the bounce,
   // less after), so no single spin describes the record.
-  TrackRigidBodyOptions o = options_for(tribolab::test_source_dir() + "/data/demo/bounce/ordinary.txt");
+  TrackRigidBodyOptions o = rigid_options_for(tribolab::test_source_dir() + "/data/demo/bounce/ordinary.txt");
   o.input.time_scale = 0.125;
   const auto r = track_rigid_body(o);
   std::string all;
@@ -179,13 +179,13 @@ TEST(TrackRigidBody, MislabelledFrameIsWarned) {
     std::ofstream f(dir + "/swap.csv");
     io::write_tidy_csv(f, set);
   }
-  const auto r = track_rigid_body(options_for(dir + "/swap.csv"));
+  const auto r = track_rigid_body(rigid_options_for(dir + "/swap.csv"));
   ASSERT_FALSE(r.json["warnings"].empty());
   EXPECT_NE(r.json["warnings"].back().get<std::string>().find("turns by up to 3."), std::string::npos)
       << r.json["warnings"];
 }
 
-void expect_input_error(const TrackRigidBodyOptions& o, const std::string& fragment) {
+void expect_rigid_error(const TrackRigidBodyOptions& o, const std::string& fragment) {
   try {
     track_rigid_body(o);
     ADD_FAILURE() << "no error, expected '" << fragment << "'";
@@ -200,7 +200,7 @@ TEST(TrackRigidBody, BadInputThrowsOneClearError) {
   const std::string dir = testing::temp_dir("rb_bad");
   SpinningBody b;
   const std::string good = b.write(dir + "/good.csv");
-  auto o = options_for(good);
+  auto o = rigid_options_for(good);
   o.out = dir + "/never.csv";
   o.report = dir + "/never.html";
   auto with = [&](auto change) {
@@ -208,19 +208,19 @@ TEST(TrackRigidBody, BadInputThrowsOneClearError) {
     change(c);
     return c;
   };
-  expect_input_error(with([](auto& c) { c.track_a.clear(); }), "track_a");
-  expect_input_error(with([](auto& c) { c.track_b.clear(); }), "track_b");
-  expect_input_error(with([](auto& c) { c.track_b = "A"; }), "track_b: must name another track");
-  expect_input_error(with([](auto& c) { c.track_b = "C"; }), "available tracks: 'A', 'B'");
-  expect_input_error(with([](auto& c) { c.window = 2; }), "window");
-  expect_input_error(with([](auto& c) { c.max_drift = 0; }), "max_drift");
-  expect_input_error(with([&](auto& c) { c.input.file = dir + "/missing.csv"; }), "missing.csv");
+  expect_rigid_error(with([](auto& c) { c.track_a.clear(); }), "track_a");
+  expect_rigid_error(with([](auto& c) { c.track_b.clear(); }), "track_b");
+  expect_rigid_error(with([](auto& c) { c.track_b = "A"; }), "track_b: must name another track");
+  expect_rigid_error(with([](auto& c) { c.track_b = "C"; }), "available tracks: 'A', 'B'");
+  expect_rigid_error(with([](auto& c) { c.window = 2; }), "window");
+  expect_rigid_error(with([](auto& c) { c.max_drift = 0; }), "max_drift");
+  expect_rigid_error(with([&](auto& c) { c.input.file = dir + "/missing.csv"; }), "missing.csv");
   // The output folder is checked before any work (app/output_paths.hpp), naming the field.
-  expect_input_error(with([&](auto& c) { c.out = dir + "/no/such/folder.csv"; }),
+  expect_rigid_error(with([&](auto& c) { c.out = dir + "/no/such/folder.csv"; }),
                      "out: directory '" + dir + "/no/such' does not exist");
   // one point only, and too few common frames
   b.frames = 2;
-  expect_input_error(with([&](auto& c) { c.input.file = b.write(dir + "/two.csv"); }),
+  expect_rigid_error(with([&](auto& c) { c.input.file = b.write(dir + "/two.csv"); }),
                      "share 2 frame(s); at least 3");
   {
     auto set = SpinningBody{}.tracks();
@@ -228,10 +228,10 @@ TEST(TrackRigidBody, BadInputThrowsOneClearError) {
     std::ofstream f(dir + "/one.csv");
     io::write_tidy_csv(f, set);
   }
-  expect_input_error(with([&](auto& c) { c.input.file = dir + "/one.csv"; }), "share 1 frame(s)");
+  expect_rigid_error(with([&](auto& c) { c.input.file = dir + "/one.csv"; }), "share 1 frame(s)");
   b = SpinningBody{};
   b.length = 0;
-  expect_input_error(with([&](auto& c) { c.input.file = b.write(dir + "/same.csv"); }), "coincide at frame 0");
+  expect_rigid_error(with([&](auto& c) { c.input.file = b.write(dir + "/same.csv"); }), "coincide at frame 0");
   EXPECT_FALSE(fs::exists(o.out));
   EXPECT_FALSE(fs::exists(o.report));
 }
@@ -240,7 +240,7 @@ TEST(TrackRigidBody, WritesTheTableAndTheReport) {
   const std::string dir = testing::temp_dir("rb_files");
   SpinningBody b;
   b.noise = 0.5e-3;
-  auto o = options_for(b.write(dir + "/body.csv"));
+  auto o = rigid_options_for(b.write(dir + "/body.csv"));
   o.out = dir + "/rb.csv";
   o.report = dir + "/rb.html";
   const auto r = track_rigid_body(o);

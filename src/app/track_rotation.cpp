@@ -3,6 +3,7 @@
 #include "app/output_paths.hpp"
 #include "io/atomic_file.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <fmt/format.h>
 
@@ -31,7 +32,7 @@ std::vector<std::string> rotation_warnings(const track::PivotRotation& r) {
   if (r.max_turn > std::numbers::pi / 2) {
     w.push_back(fmt::format("the point turns by up to {:.2f} rad ({:.0f} deg) between frames: near pi the direction "
                             "of the turn is ambiguous and the spin may be aliased (a higher frame rate helps)",
-                            r.max_turn, r.max_turn * 180 / std::numbers::pi));
+                            r.max_turn, to_deg(r.max_turn)));
   }
   // A point on one rotating body keeps its distance to the pivot: residuals of 5 % of the
   // radius are far above tracking noise (a few px on a wheel of a hundred).
@@ -115,9 +116,9 @@ TrackRotationResult track_rotation(const TrackRotationOptions& options) {
   j["alpha"] = r.alpha;
   j["sigma_alpha"] = json_number(r.sigma_alpha);
   j["rms_residual"] = json_number(r.rms_residual);
-  j["arc_deg"] = r.arc * 180 / std::numbers::pi;
+  j["arc_deg"] = to_deg(r.arc);
   j["turns"] = r.arc / (2 * std::numbers::pi);
-  j["max_turn_per_frame_deg"] = r.max_turn * 180 / std::numbers::pi;
+  j["max_turn_per_frame_deg"] = to_deg(r.max_turn);
   double wmin = NAN, wmax = NAN;
   for (const auto& p : r.rows) {
     if (!std::isfinite(p.omega)) continue;

@@ -1,6 +1,7 @@
 #include "bounce/contact.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,8 +31,6 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace tribolab::bounce {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 NormalLawSpec hertz(double K = 1e5, double n = 1.5) {
   NormalLawSpec s;

@@ -1,6 +1,7 @@
 #include "bounce/drop.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +10,6 @@
 
 namespace tribolab::bounce {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 TEST(Drop, ElasticFrictionlessBallReturnsToItsHeight) {
   NormalLawSpec law;

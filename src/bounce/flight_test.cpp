@@ -1,6 +1,7 @@
 #include "bounce/flight.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +11,6 @@
 
 namespace tribolab::bounce {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 double gap(const Ball& ball, const BodyState& s0, double g, double t) {
   const BodyState s = free_flight(s0, g, t);

@@ -1,4 +1,5 @@
 #include "bounce/geometry.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +9,6 @@
 
 namespace tribolab::bounce {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Lowest point of the rotated ellipse by brute force: dense scan of the parameter s, then a
 // golden-section polish; independent of the closed form.

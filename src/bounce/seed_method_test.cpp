@@ -22,7 +22,7 @@ BodyState map_touch(double angle_deg, double omega) {
   return s;
 }
 
-FrictionModel friction_of(bool regularized, double slip_scale) {
+FrictionModel seed_friction(bool regularized, double slip_scale) {
   FrictionModel f;
   f.mu = 0.5;
   if (regularized) {
@@ -43,7 +43,7 @@ TEST(SeedMethod, ConvergesAtFirstOrderToTheTightReference) {
   // which adds an O(dt) term of varying sign, so not exactly 4).
   for (bool reg : {false, true}) {
     const BodyState s = map_touch(130, 40);
-    const ContactResult ref = simulate_contact(Ball{}, NormalLawSpec{}, friction_of(reg, 0.05), s,
+    const ContactResult ref = simulate_contact(Ball{}, NormalLawSpec{}, seed_friction(reg, 0.05), s,
                                                contact_options_with_tolerance(1e-12));
     seed::SeedParams p;
     p.regularized = reg;
@@ -75,7 +75,7 @@ TEST(SeedMethod, SweepDefaultIsAtLeastAsAccurateOnEveryCell) {
     for (int angle = 100; angle <= 170; angle += 3) {
       for (int omega = 30; omega <= 50; omega += 2) {
         const BodyState s = map_touch(angle, omega);
-        const FrictionModel f = friction_of(reg, 0.05);
+        const FrictionModel f = seed_friction(reg, 0.05);
         const ContactResult ref =
             simulate_contact(Ball{}, NormalLawSpec{}, f, s, contact_options_with_tolerance(1e-12));
         const ContactResult ours = simulate_contact(Ball{}, NormalLawSpec{}, f, s, contact_options_with_tolerance(1e-6));

@@ -16,7 +16,7 @@
 namespace tribolab::incline {
 namespace {
 
-Parameters with_k(double k, double phi_deg = 15.0, double v0 = 2.5) {
+Parameters params_k(double k, double phi_deg = 15.0, double v0 = 2.5) {
   Parameters p;
   p.phi = deg_to_rad(phi_deg);
   p.mu = std::tan(p.phi) / k;
@@ -63,18 +63,18 @@ void expect_matches_closed_form(const Parameters& p, const NumericOptions& o, do
 
 TEST(Numeric, MatchesClosedFormWhenItStops) {
   for (double k : {0.1, 0.5, 0.8}) {
-    const Parameters p = with_k(k);
+    const Parameters p = params_k(k);
     expect_matches_closed_form(p, {}, 1.3 * ClosedForm(p).t_stop(), 1e-9);
   }
 }
 
 TEST(Numeric, MatchesClosedFormWhenItNeverStops) {
-  for (double k : {1.0, 1.5, 2.0, 3.0}) expect_matches_closed_form(with_k(k), {}, 2.0, 1e-9);
+  for (double k : {1.0, 1.5, 2.0, 3.0}) expect_matches_closed_form(params_k(k), {}, 2.0, 1e-9);
 }
 
 TEST(Numeric, LocatesTheStopToOnePartInABillion) {
   for (double k : {0.0, 0.05, 0.3, 0.6, 0.9, 0.97}) {
-    Parameters p = with_k(k == 0 ? 1 : k);
+    Parameters p = params_k(k == 0 ? 1 : k);
     if (k == 0) p.phi = 0;
     const Prediction pr = ClosedForm(p).predict();
     NumericOptions o;
@@ -93,7 +93,7 @@ TEST(Numeric, LocatesTheStopToOnePartInABillion) {
 
 TEST(Numeric, SpeedNeverIncreasesWhenKBelowOne) {
   for (double k : {0.2, 0.9}) {
-    const Parameters p = with_k(k);
+    const Parameters p = params_k(k);
     const NumericResult r = simulate(p, grid(1.05 * ClosedForm(p).t_stop(), 20000));
     double prev = p.v0;
     for (const State& s : r.samples) {
@@ -106,7 +106,7 @@ TEST(Numeric, SpeedNeverIncreasesWhenKBelowOne) {
 }
 
 TEST(Numeric, ModelAWithoutNormalFrictionIsModelB) {
-  Parameters p = with_k(0.6);
+  Parameters p = params_k(0.6);
   p.normal_accel = 0.0;
   NumericOptions a;
   a.model = Model::A;
@@ -123,7 +123,7 @@ TEST(Numeric, ModelAWithoutNormalFrictionIsModelB) {
 }
 
 TEST(Numeric, ModelANormalFrictionPointsLeftOfTheVelocity) {
-  Parameters p = with_k(0.6);
+  Parameters p = params_k(0.6);
   p.normal_accel = 0.4;
   NumericOptions a;
   a.model = Model::A;
@@ -134,7 +134,7 @@ TEST(Numeric, ModelANormalFrictionPointsLeftOfTheVelocity) {
 
 TEST(Numeric, MirrorSymmetry) {
   // x -> -x maps a launch along +x with f_N to a launch along -x with -f_N (left <-> right).
-  Parameters p = with_k(0.5);
+  Parameters p = params_k(0.5);
   p.normal_accel = 0.7;
   NumericOptions a;
   a.model = Model::A;
@@ -157,7 +157,7 @@ TEST(Numeric, MirrorSymmetry) {
 TEST(Numeric, ModelAStopsAndSpiralsSmoothly) {
   // With f_N the direction turns faster and faster near the stop (rate f_N/|v|); the
   // log-speed phase integrates it smoothly, and the stop is independent of the tolerance.
-  Parameters p = with_k(0.5);
+  Parameters p = params_k(0.5);
   p.normal_accel = 0.3;
   NumericOptions a;
   a.model = Model::A;
@@ -175,7 +175,7 @@ TEST(Numeric, ModelAStopsAndSpiralsSmoothly) {
 }
 
 TEST(Numeric, ConstantFrictionLawIsModelB) {
-  const Parameters p = with_k(0.4);
+  const Parameters p = params_k(0.4);
   NumericOptions o;
   o.friction_law = [mu = p.mu](double) { return mu; };
   expect_matches_closed_form(p, o, 1.2 * ClosedForm(p).t_stop(), 1e-9);
@@ -218,7 +218,7 @@ TEST(Numeric, FromRestSlidesDownTheFallLine) {
 }
 
 TEST(Numeric, StopsWhenLeavingTheRegion) {
-  const Parameters p = with_k(0.5);
+  const Parameters p = params_k(0.5);
   NumericOptions o;
   o.region = Region{-1, 0.3, -10, 10};
   const NumericResult r = simulate(p, grid(1.0, 100), o);
@@ -233,7 +233,7 @@ TEST(Numeric, StopsWhenLeavingTheRegion) {
 TEST(Numeric, ConvergesWithFifthOrder) {
   // Fixed-step Dormand-Prince on the incline right-hand side (k = 1.5, no stop): halving
   // the step divides the error by ~2^5 = 32; accept 24..40 (asymptotic regime).
-  const Parameters p = with_k(1.5);
+  const Parameters p = params_k(1.5);
   const ClosedForm cf(p);
   const NumericOptions o;
   auto rhs = [&](const std::array<double, 4>& s, std::array<double, 4>& d, double) {
@@ -253,7 +253,7 @@ TEST(Numeric, ConvergesWithFifthOrder) {
 }
 
 TEST(Numeric, RejectsBadInput) {
-  const Parameters p = with_k(0.5);
+  const Parameters p = params_k(0.5);
   EXPECT_THROW(simulate(p, {0.2, 0.1}), InputError);
   EXPECT_THROW(simulate(p, {-1.0}), InputError);
   NumericOptions o;

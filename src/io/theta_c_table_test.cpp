@@ -12,7 +12,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-std::string error_of(const std::string& text) {
+std::string theta_c_error_of(const std::string& text) {
   try {
     parse_theta_c_table(text, "t.csv");
   } catch (const InputError& e) {
@@ -41,15 +41,15 @@ TEST(ThetaCTable, WithoutTheSigmaColumnTheSigmaIsUnknown) {
 }
 
 TEST(ThetaCTable, ErrorsNameTheLine) {
-  EXPECT_THAT(error_of(""), HasSubstr("t.csv: is empty"));
-  EXPECT_THAT(error_of("# only a comment\n"), HasSubstr("t.csv: is empty"));
-  EXPECT_THAT(error_of("phi,cos\n"), HasSubstr("t.csv:1: header must name"));
-  EXPECT_THAT(error_of("phi_deg,cos_theta_c\n10\n"), HasSubstr("t.csv:2: expected 2 cells, got 1"));
-  EXPECT_THAT(error_of("phi_deg,cos_theta_c\n10,x\n"), HasSubstr("t.csv:2"));
-  EXPECT_THAT(error_of("phi_deg,cos_theta_c\n\n90,0.5\n"), HasSubstr("t.csv:3: phi_deg must be in (0, 90)"));
+  EXPECT_THAT(theta_c_error_of(""), HasSubstr("t.csv: is empty"));
+  EXPECT_THAT(theta_c_error_of("# only a comment\n"), HasSubstr("t.csv: is empty"));
+  EXPECT_THAT(theta_c_error_of("phi,cos\n"), HasSubstr("t.csv:1: header must name"));
+  EXPECT_THAT(theta_c_error_of("phi_deg,cos_theta_c\n10\n"), HasSubstr("t.csv:2: expected 2 cells, got 1"));
+  EXPECT_THAT(theta_c_error_of("phi_deg,cos_theta_c\n10,x\n"), HasSubstr("t.csv:2"));
+  EXPECT_THAT(theta_c_error_of("phi_deg,cos_theta_c\n\n90,0.5\n"), HasSubstr("t.csv:3: phi_deg must be in (0, 90)"));
   // Regression (issue 26): a value the fit cannot carry is refused with its line.
-  EXPECT_THAT(error_of("phi_deg,cos_theta_c\n10,0.3\n20,1e308\n"), HasSubstr("t.csv:3: cos_theta_c must be in [0, 1], got 1e+308"));
-  EXPECT_THAT(error_of("phi_deg,cos_theta_c,sigma_cos_theta_c\n10,0.3,-1\n"), HasSubstr("t.csv:2: sigma_cos_theta_c"));
+  EXPECT_THAT(theta_c_error_of("phi_deg,cos_theta_c\n10,0.3\n20,1e308\n"), HasSubstr("t.csv:3: cos_theta_c must be in [0, 1], got 1e+308"));
+  EXPECT_THAT(theta_c_error_of("phi_deg,cos_theta_c,sigma_cos_theta_c\n10,0.3,-1\n"), HasSubstr("t.csv:2: sigma_cos_theta_c"));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "io/text.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <pugixml.hpp>
 #include <zip.h>
@@ -20,7 +21,6 @@ namespace tribolab::io {
 
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180;
 /// Frames beyond this are refused: no video has them, and they would overflow int arithmetic.
 constexpr long long kMaxFrame = 100'000'000;
 /// Largest .trk accepted from inside a zip (a zip bomb guard), bytes: the bound of a plain
@@ -225,12 +225,12 @@ TrkClip read_clip(Reader& r, pugi::xml_node panel) {
 std::pair<double, double> image_to_world(const TrkCoordFrame& c, double px, double py) {
   const double u = (px - c.origin_x) / c.xscale;
   const double v = -(py - c.origin_y) / c.yscale;
-  const double cs = std::cos(c.angle_deg * kDegree), sn = std::sin(c.angle_deg * kDegree);
+  const double cs = std::cos(c.angle_deg * kRadPerDeg), sn = std::sin(c.angle_deg * kRadPerDeg);
   return {cs * u + sn * v, -sn * u + cs * v};
 }
 
 std::pair<double, double> world_to_image(const TrkCoordFrame& c, double x, double y) {
-  const double cs = std::cos(c.angle_deg * kDegree), sn = std::sin(c.angle_deg * kDegree);
+  const double cs = std::cos(c.angle_deg * kRadPerDeg), sn = std::sin(c.angle_deg * kRadPerDeg);
   const double u = cs * x - sn * y, v = sn * x + cs * y;
   return {c.origin_x + c.xscale * u, c.origin_y - c.yscale * v};
 }

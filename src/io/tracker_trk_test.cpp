@@ -220,7 +220,7 @@ TEST(TrackerTrk, DecimalCommaInNumbersIsAccepted) {
   expect_same(tracks, parse_trk(xml, "comma.trk"));
 }
 
-void expect_error(const std::string& xml, const std::string& fragment) {
+void expect_trk_error(const std::string& xml, const std::string& fragment) {
   try {
     parse_trk(xml, "bad.trk");
     FAIL() << "no error for " << fragment;
@@ -232,21 +232,21 @@ void expect_error(const std::string& xml, const std::string& fragment) {
 
 TEST(TrackerTrk, ClearErrorsNamingTheElement) {
   const std::string xml = write_trk(world_tracks(), spec());
-  expect_error(xml.substr(0, xml.size() / 2), "bad.trk:");  // truncated: file:line
-  expect_error(replace(xml, "name=\"delta_t\"", "name=\"dt\""), "clipcontrol/delta_t");
-  expect_error(replace(xml, "name=\"xscale\"", "name=\"xs\""), "coords/framedata/[0]/xscale");
-  expect_error(replace(xml, ">400.0<", ">four hundred<"), "xscale");
-  expect_error(replace(xml, ">400.0<", ">-400.0<"), "positive");
-  expect_error(replace(xml, "name=\"[3]\"", "name=\"[-3]\""), "[n]");
-  expect_error(replace(xml, "name=\"x\" type", "name=\"q\" type"), "(mass A)/framedata/[3]/x");
-  expect_error("<object class=\"Something\"/>", "TrackerPanel");
-  expect_error("<?xml version=\"1.0\"?><object class=\"x.TrackerPanel\"></object>", "coords");
+  expect_trk_error(xml.substr(0, xml.size() / 2), "bad.trk:");  // truncated: file:line
+  expect_trk_error(replace(xml, "name=\"delta_t\"", "name=\"dt\""), "clipcontrol/delta_t");
+  expect_trk_error(replace(xml, "name=\"xscale\"", "name=\"xs\""), "coords/framedata/[0]/xscale");
+  expect_trk_error(replace(xml, ">400.0<", ">four hundred<"), "xscale");
+  expect_trk_error(replace(xml, ">400.0<", ">-400.0<"), "positive");
+  expect_trk_error(replace(xml, "name=\"[3]\"", "name=\"[-3]\""), "[n]");
+  expect_trk_error(replace(xml, "name=\"x\" type", "name=\"q\" type"), "(mass A)/framedata/[3]/x");
+  expect_trk_error("<object class=\"Something\"/>", "TrackerPanel");
+  expect_trk_error("<?xml version=\"1.0\"?><object class=\"x.TrackerPanel\"></object>", "coords");
 }
 
 TEST(TrackerTrk, NoPointMassIsAnError) {
   std::string xml = write_trk(world_tracks(), spec());
   while (xml.find(".PointMass\"") != std::string::npos) xml = replace(xml, ".PointMass\"", ".Protractor\"");
-  expect_error(xml, "no PointMass");
+  expect_trk_error(xml, "no PointMass");
 }
 
 TEST(TrackerTrk, FixedCoordinateSystemTakesTheLastKeyEverywhere) {
@@ -266,19 +266,19 @@ TEST(TrackerTrk, FixedCoordinateSystemTakesTheLastKeyEverywhere) {
 // Regression (issue 26): a frame marked twice in one track kept the last mark silently.
 TEST(TrackerTrk, FrameMarkedTwiceInATrackIsRefused) {
   const std::string xml = write_trk(world_tracks(), spec());
-  expect_error(replace(xml, "name=\"[5]\"", "name=\"[3]\""), "(mass A)/framedata/[3]: frame 3 is marked twice");
+  expect_trk_error(replace(xml, "name=\"[5]\"", "name=\"[3]\""), "(mass A)/framedata/[3]: frame 3 is marked twice");
 }
 
 // Regression (issue 26): "NaN" where a number is required was called a "missing element".
 TEST(TrackerTrk, NaNWhereANumberIsRequiredIsCalledNaN) {
   const std::string xml = write_trk(world_tracks(), spec());
-  expect_error(replace(xml, ">400.0<", ">NaN<"), "xscale: NaN where a number is required");
+  expect_trk_error(replace(xml, ">400.0<", ">NaN<"), "xscale: NaN where a number is required");
 }
 
 // Regression (issue 26): a non-UTF-8 name ended in "[json.exception.type_error.316]" without a file.
 TEST(TrackerTrk, TrackNameOfInvalidUtf8IsRefusedWithItsElement) {
   const std::string xml = write_trk(world_tracks(), spec());
-  expect_error(replace(xml, ">mass A<", ">mass \xe9<"), "/name: the track name is not valid UTF-8 (byte 0xe9");
+  expect_trk_error(replace(xml, ">mass A<", ">mass \xe9<"), "/name: the track name is not valid UTF-8 (byte 0xe9");
 }
 
 TEST(TrackerTrk, MarkBeyondAMillionPixelsIsRefused) {
@@ -289,7 +289,7 @@ TEST(TrackerTrk, MarkBeyondAMillionPixelsIsRefused) {
   const auto begin = x + mark.size(), end = xml.find('<', begin);
   std::string bad = xml;
   bad.replace(begin, end - begin, "1e308");
-  expect_error(bad, "x (px) = 1e+308 is beyond");
+  expect_trk_error(bad, "x (px) = 1e+308 is beyond");
 }
 
 // Regression (issue 26): two tracks of one name: --track picked the first, silently.

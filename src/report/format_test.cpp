@@ -1,6 +1,7 @@
 #include "report/format.hpp"
 
 #include "report/embedded.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +13,6 @@
 
 namespace tribolab::report {
 namespace {
-
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 TEST(FormatUncertain, SigmaHasTwoSignificantDigitsAndValueMatchesItsPlace) {
   EXPECT_EQ(format_uncertain(0.63427, 0.01234), "0.634 ± 0.012");

@@ -2,6 +2,7 @@
 #include "report/embedded.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,8 +17,6 @@
 
 namespace tribolab::report {
 namespace {
-
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The JSON the page hands to Plotly, cut out of the HTML as a browser would read it.
 nlohmann::json figures_block(const std::string& html) {

@@ -9,11 +9,11 @@
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
 #include "sweep/runner.hpp"
+#include "numerics/units.hpp"
 
 namespace tribolab::sweep {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// theta_deg and the spin axis are always the last two axes (canonical order); the
 /// leading axes (speed, mu) select a slice.

@@ -8,7 +8,7 @@
 namespace tribolab::sweep {
 namespace {
 
-GridSpec seed_grid() {
+GridSpec seed_grid_spec() {
   // Seed 001, figure 53: collision angle 100-170 deg x spin 30-50 rad/s at |vy| = 4 m/s.
   GridSpec g;
   g.axes = {Axis{Quantity::theta_deg, 100, 170, 71}, Axis{Quantity::omega, 30, 50, 21}};
@@ -43,7 +43,7 @@ TEST(Axis, ValidateNamesTheQuantity) {
 }
 
 TEST(GridSpec, ValidateRequiresThetaAndExactlyOneSpinAxis) {
-  GridSpec g = seed_grid();
+  GridSpec g = seed_grid_spec();
   EXPECT_EQ(g.validate(), "");
   g.axes.push_back(Axis{Quantity::ratio, 1, 2, 2});
   EXPECT_NE(g.validate().find("exactly one of omega and ratio"), std::string::npos);
@@ -65,7 +65,7 @@ TEST(GridSpec, RejectsCellCountsBeyondTwoToThe53) {
 }
 
 TEST(GridSpec, CellOrderIsRowMajorLastAxisFastest) {
-  const GridSpec g = seed_grid();
+  const GridSpec g = seed_grid_spec();
   EXPECT_EQ(g.cell_count(), 71 * 21);
   EXPECT_EQ(g.cell(0).theta_deg, 100.0);
   EXPECT_EQ(g.cell(0).omega, 30.0);

@@ -3,6 +3,7 @@
 #include "numerics/error.hpp"
 #include "track/check.hpp"
 #include "track/local_fit.hpp"
+#include "numerics/statistics.hpp"
 
 #include <Eigen/Dense>
 #include <boost/math/distributions/fisher_f.hpp>
@@ -42,7 +43,7 @@ double robust_noise(const std::vector<double>& t, const std::vector<double>& v) 
   }
   auto mid = z.begin() + static_cast<std::ptrdiff_t>(z.size() / 2);
   std::nth_element(z.begin(), mid, z.end());
-  return 1.482602218505602 * *mid;  // 1 / Phi^-1(3/4): MAD -> standard deviation
+  return kMadToSd * *mid;
 }
 
 namespace {

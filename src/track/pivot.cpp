@@ -3,6 +3,7 @@
 #include "numerics/error.hpp"
 #include "numerics/least_squares.hpp"
 #include "track/local_spin.hpp"
+#include "numerics/units.hpp"
 
 #include <Eigen/Dense>
 
@@ -204,12 +205,11 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
     }
   }
   const std::string where = "track '" + track.name + "'";
-  const auto deg = [](double rad) { return rad * 180 / std::numbers::pi; };
   const double arc_start = th.back() - th.front();
   if (!fit.ok()) {
     throw InputError(where, std::string("the rotation about ") + (fit_pivot ? "a fitted pivot" : "the given pivot") +
                                 " could not be fitted (" + fit.message + "); the arc covers " +
-                                num(std::round(deg(std::abs(arc_start))), 6) + " deg" +
+                                num(std::round(to_deg(std::abs(arc_start))), 6) + " deg" +
                                 (fit_pivot ? ": give the pivot with " + field("pivot_x") + "/" + field("pivot_y")
                                            : std::string()));
   }
@@ -263,7 +263,7 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
                                   field("pivot_y"));
     }
     if (!(worst <= options.max_pivot_sigma * out.radius)) {
-      throw InputError(where, "the arc of " + num(std::round(deg(std::abs(out.arc))), 6) +
+      throw InputError(where, "the arc of " + num(std::round(to_deg(std::abs(out.arc))), 6) +
                                   " deg it covers does not determine its pivot: the fitted radius " + num(out.radius) +
                                   " +- " + num(out.sigma_radius, 2) + " m, pivot (" + num(out.pivot_x) + " +- " +
                                   num(out.sigma_pivot_x, 2) + ", " + num(out.pivot_y) + " +- " +

@@ -1,4 +1,5 @@
 #include "video/ellipse_fit.hpp"
+#include "numerics/statistics.hpp"
 
 #include <opencv2/imgproc.hpp>
 
@@ -80,7 +81,7 @@ bool robust_fit(std::vector<cv::Point2d> pts, EdgeFit& fit) {
     absd.reserve(pts.size());
     const Prepared q(e);
     for (const auto& p : pts) absd.push_back(std::abs(q.distance(p.x, p.y)));
-    const double sd = 1.4826 * median(absd);
+    const double sd = kMadToSd * median(absd);
     const double cut = std::max(3 * sd, 0.25);
     std::vector<cv::Point2d> kept;
     for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -148,11 +149,11 @@ std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, 
   e.a = a0, e.b = b0;
   for (int it = 0; it < 12; ++it) {
     residuals();
-    if (!step(4.685 * std::max(1.4826 * median(absd), 0.1), 1e-4)) break;
+    if (!step(4.685 * std::max(kMadToSd * median(absd), 0.1), 1e-4)) break;
   }
   for (int it = 0; it < 8; ++it) {
     residuals();
-    if (!step(std::min(1.2, 4.685 * std::max(1.4826 * median(absd), 0.1)), shape_sd_px)) break;
+    if (!step(std::min(1.2, 4.685 * std::max(kMadToSd * median(absd), 0.1)), shape_sd_px)) break;
   }
   if (e.a < e.b) std::swap(e.a, e.b), e.psi += kPi / 2;
   e.psi = std::remainder(e.psi, kPi);
@@ -161,7 +162,7 @@ std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, 
   for (double a : absd) {
     if (a < 1.2) near.push_back(a);
   }
-  const double cut = std::max(3 * 1.4826 * median(near), 0.3);
+  const double cut = std::max(3 * kMadToSd * median(near), 0.3);
   std::vector<cv::Point2d> kept;
   for (std::size_t i = 0; i < n; ++i) {
     if (absd[i] <= cut) kept.push_back(pts[i]);

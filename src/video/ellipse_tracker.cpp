@@ -4,6 +4,8 @@
 
 #include "numerics/error.hpp"
 #include "video/ellipse_fit.hpp"
+#include "numerics/units.hpp"
+#include "numerics/statistics.hpp"
 
 #include <opencv2/imgproc.hpp>
 
@@ -16,7 +18,6 @@
 namespace tribolab::video {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr std::size_t kMotionPoints = 8;  ///< centres in the parabola fit
 constexpr std::size_t kSpinPoints = 6;    ///< orientations in the spin fit
 constexpr double kRoundRatio = 0.05;      ///< (a - b) / a below this: no orientation
@@ -91,7 +92,7 @@ double noise_sd(const cv::Mat& img) {
   }
   if (d.empty()) return 0;
   std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-  return 1.4826 * d[d.size() / 2] / std::sqrt(2.0);
+  return kMadToSd * d[d.size() / 2] / std::sqrt(2.0);
 }
 
 std::string fmt_point(double x, double y) {

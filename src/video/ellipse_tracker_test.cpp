@@ -7,6 +7,7 @@
 #include "video/ellipse_fit.hpp"
 #include "video/render.hpp"
 #include "video/test_videos.hpp"
+#include "numerics/statistics.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
@@ -22,8 +23,6 @@
 namespace tribolab::video {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// Frame `index` of the scene (test_videos.hpp).
 constexpr auto& frame_at = testing::rendered_frame;
 
@@ -36,11 +35,6 @@ RenderOptions small_video() {
   o.noise_sigma = 2;
   o.background = RenderOptions::Background::plain;
   return o;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
 }
 
 ShapePose ball(double x, double y, double a, double b, double angle) {

@@ -27,7 +27,7 @@ RenderOptions textured_video(int width = 240, int height = 160) {
   return o;
 }
 
-ShapePose ball(cv::Point2d c, double r, cv::Scalar colour = {40, 40, 200}) {
+ShapePose disc(cv::Point2d c, double r, cv::Scalar colour = {40, 40, 200}) {
   ShapePose s;
   s.cx_px = c.x;
   s.cy_px = c.y;
@@ -43,7 +43,7 @@ struct Result {
 };
 
 // Tracks `frames` frames of `scene` from the truth's first position; errors against `truth`.
-Result track(const Scene& scene, const RenderOptions& o, int frames, const std::function<cv::Point2d(int)>& truth,
+Result track_path(const Scene& scene, const RenderOptions& o, int frames, const std::function<cv::Point2d(int)>& truth,
              const PathTrackerOptions& options = {}) {
   PathTracker tracker(options);
   const cv::Point2d p0 = truth(0);
@@ -70,15 +70,15 @@ Result track(const Scene& scene, const RenderOptions& o, int frames, const std::
 }
 
 TEST(PathTracker, FollowsASmallBallRollingOnATexturedRail) {
-  // A 6 px ball (radius 3) rolling 2.5 px/frame over a textured background: the frame
+  // A 6 px disc (radius 3) rolling 2.5 px/frame over a textured background: the frame
   // tracker's 21 px template is mostly background and is lost from the first frame
   // (PointTracker.DoesNotHoldOnToTheTexturedBackgroundABallLeaves).
   const RenderOptions o = textured_video();
   auto at = [](int i) { return cv::Point2d(30 + 2.5 * i, 80 + 0.4 * i); };
-  const Scene scene = [&](double t) { return std::vector<ShapePose>{ball(at(static_cast<int>(std::lround(t * 30))), 3)}; };
-  const Result r = track(scene, o, 40, at);
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 3)}; };
+  const Result r = track_path(scene, o, 40, at);
   EXPECT_LE(r.lost, 2);          // a user corrects at most 5 % of the 39 frames
-  EXPECT_LT(r.worst_px, 1.5);    // every frame reported is on the ball (radius 3 px)
+  EXPECT_LT(r.worst_px, 1.5);    // every frame reported is on the disc (radius 3 px)
 }
 
 TEST(PathTracker, DoesNotJumpToALookAlikeThatCrossesIt) {
@@ -90,9 +90,9 @@ TEST(PathTracker, DoesNotJumpToALookAlikeThatCrossesIt) {
   auto other = [](int i) { return cv::Point2d(120, 20 + 5.0 * i); };
   const Scene scene = [&](double t) {
     const int i = static_cast<int>(std::lround(t * 30));
-    return std::vector<ShapePose>{ball(other(i), 6), ball(ours(i), 6)};
+    return std::vector<ShapePose>{disc(other(i), 6), disc(ours(i), 6)};
   };
-  const Result r = track(scene, o, 30, ours);
+  const Result r = track_path(scene, o, 30, ours);
   EXPECT_LT(r.worst_px, 1.5);  // the look-alike is never taken (it is 5+ px away in every frame but the crossing)
   EXPECT_LE(r.lost, 6);        // a few frames around the crossing at most
 }
@@ -104,9 +104,9 @@ TEST(PathTracker, StartsOnAPlainObjectWithoutTexture) {
   o.background = RenderOptions::Background::plain;
   auto at = [](int i) { return cv::Point2d(50 + 3.0 * i, 60 + 1.0 * i); };
   const Scene scene = [&](double t) {
-    return std::vector<ShapePose>{ball(at(static_cast<int>(std::lround(t * 30))), 12, {90, 90, 90})};
+    return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 12, {90, 90, 90})};
   };
-  const Result r = track(scene, o, 30, at);
+  const Result r = track_path(scene, o, 30, at);
   EXPECT_LE(r.lost, 1);
   EXPECT_LT(r.worst_px, 1.0);
 }
@@ -123,9 +123,9 @@ TEST(PathTracker, ReportsTheFramesOfAnOcclusionLost) {
     hand.a_px = 12;
     hand.b_px = 40;
     hand.colour = cv::Scalar(150, 170, 190);
-    return std::vector<ShapePose>{ball(at(static_cast<int>(std::lround(t * 30))), 5), hand};
+    return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 5), hand};
   };
-  const Result r = track(scene, o, 36, at);
+  const Result r = track_path(scene, o, 36, at);
   EXPECT_GE(r.lost, 3);          // the ball is fully hidden in frames 17-19
   EXPECT_LE(r.lost, 8);
   EXPECT_LT(r.worst_px, 1.5);

@@ -25,12 +25,10 @@
 namespace tribolab::video {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// Frame `index` of the scene (test_videos.hpp).
 constexpr auto& film = testing::rendered_frame;
 
-RenderOptions small_video() {
+RenderOptions small_point_video() {
   RenderOptions o;
   o.width = 320;
   o.height = 240;
@@ -87,7 +85,7 @@ struct Errors {
 
 // Tracks `frames` frames of `scene`, comparing with `truth(t)` and `turn(t)` (rad since t=0).
 template <class Truth, class Turn>
-Errors track(const Scene& scene, const RenderOptions& o, int frames, Truth truth, Turn turn,
+Errors track_points(const Scene& scene, const RenderOptions& o, int frames, Truth truth, Turn turn,
              const PointTrackerOptions& options = {}) {
   PointTracker tracker(options);
   Errors e;
@@ -114,9 +112,9 @@ TEST(PointTracker, FollowsAMarkOnAWheelTurning20To25DegreesPerFrame) {
   for (double rate : {20.0, 25.0}) {
     Wheel w;
     w.deg_per_frame = rate;
-    const RenderOptions o = small_video();
+    const RenderOptions o = small_point_video();
     const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
-    const Errors e = track(scene, o, 32, [&](double t) { return w.mark(t); },
+    const Errors e = track_points(scene, o, 32, [&](double t) { return w.mark(t); },
                            [&](double t) { return w.angle(t) - w.angle(0); });
     e.print(rate == 20 ? "wheel 20 deg/frame" : "wheel 25 deg/frame");
     EXPECT_EQ(e.lost, 0);
@@ -131,9 +129,9 @@ TEST(PointTracker, FollowsAMarkOnAWheelTurning20To25DegreesPerFrame) {
 
 TEST(PointTracker, FollowsAMarkOnAWheelTurning22DegreesPerFrame) {
   const Wheel w;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
-  const Errors e = track(scene, o, 40, [&](double t) { return w.mark(t); },
+  const Errors e = track_points(scene, o, 40, [&](double t) { return w.mark(t); },
                          [&](double t) { return w.angle(t) - w.angle(0); });
   e.print("wheel 22.5 deg/frame");
   EXPECT_EQ(e.lost, 0);
@@ -149,11 +147,11 @@ TEST(PointTracker, TemplateMatchingWithoutRotationLosesTheWheelMark) {
   // Tracker's autotracker matches the unturned template: with max_turn_deg = 0 the same
   // tracker must fail on the turning mark, showing the rotation search is what follows it.
   const Wheel w;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
   PointTrackerOptions plain;
   plain.max_turn_deg = 0;
-  const Errors e = track(scene, o, 16, [&](double t) { return w.mark(t); },
+  const Errors e = track_points(scene, o, 16, [&](double t) { return w.mark(t); },
                          [&](double) { return 0.0; }, plain);
   e.print("wheel without rotation search");
   EXPECT_GT(e.lost, 12);  // measured 14 of 15: lost as soon as the mark has turned
@@ -179,9 +177,9 @@ struct Throw {
 
 TEST(PointTracker, FollowsAFastBallOnAParabola) {
   const Throw b;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const Scene scene = [&](double t) { return std::vector<ShapePose>{b.pose(t)}; };
-  const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
+  const Errors e = track_points(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("ball 42 px/frame");
   EXPECT_EQ(e.lost, 0);
   // Measured median 0.006, max 0.007 px: a sharp disc on a plain background.
@@ -191,11 +189,11 @@ TEST(PointTracker, FollowsAFastBallOnAParabola) {
 
 TEST(PointTracker, FollowsABlurredNoisyBall) {
   const Throw b;
-  RenderOptions o = small_video();
+  RenderOptions o = small_point_video();
   o.shutter_fraction = 0.5;
   o.noise_sigma = 4;
   const Scene scene = [&](double t) { return std::vector<ShapePose>{b.pose(t)}; };
-  const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
+  const Errors e = track_points(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("blurred ball 42 px/frame");
   EXPECT_EQ(e.lost, 0);
   // Measured median 0.072, max 0.109 px (a 21 px streak in noise 4).
@@ -208,7 +206,7 @@ TEST(PointTracker, KeepsABallSetInMotionFromRestSharpAndBlurredApart) {
   // from sharp (the template) to a 27 px streak. Matching the sharp template alone (measured
   // with the smear disabled) drops the score to 0.64 and puts the ball 5.5 px off along its
   // streak; smearing it along the predicted change of velocity keeps 0.965 and 0.04 px.
-  RenderOptions o = small_video();
+  RenderOptions o = small_point_video();
   o.shutter_fraction = 0.5;
   auto at = [&](double t) {
     const double n = t * o.fps;
@@ -242,11 +240,11 @@ TEST(PointTracker, KeepsABallSetInMotionFromRestSharpAndBlurredApart) {
 
 TEST(PointTracker, FollowsABlurredNoisyWheelMark) {
   const Wheel w;
-  RenderOptions o = small_video();
+  RenderOptions o = small_point_video();
   o.shutter_fraction = 0.5;
   o.noise_sigma = 4;
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
-  const Errors e = track(scene, o, 40, [&](double t) { return w.mark(t); },
+  const Errors e = track_points(scene, o, 40, [&](double t) { return w.mark(t); },
                          [&](double t) { return w.angle(t) - w.angle(0); });
   e.print("blurred wheel 22.5 deg/frame");
   EXPECT_EQ(e.lost, 0);
@@ -262,7 +260,7 @@ TEST(PointTracker, ReportsAnOcclusionAndNeverGivesAWrongPosition) {
   // A hand (grey rectangle) rests over the left of the wheel: the mark passes under it for
   // about five frames in every turn of 16 frames.
   const Wheel w;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const cv::Rect2d hand_box(-20, 90, 160, 60);
   const Scene scene = [&](double t) {
     ShapePose hand;
@@ -275,7 +273,7 @@ TEST(PointTracker, ReportsAnOcclusionAndNeverGivesAWrongPosition) {
     return std::vector<ShapePose>{w.pose(t), hand};
   };
   const int frames = 50;
-  const Errors e = track(scene, o, frames, [&](double t) { return w.mark(t); },
+  const Errors e = track_points(scene, o, frames, [&](double t) { return w.mark(t); },
                          [&](double t) { return w.angle(t) - w.angle(0); });
   e.print("wheel with occluder");
   // Frames whose 21 px patch the hand touches (the hand within 15 px, the patch's
@@ -303,10 +301,10 @@ TEST(PointTracker, DoesNotHoldOnToTheTexturedBackgroundABallLeaves) {
   // background left behind (score 0.84) was accepted and held the track, 36-254 px from the
   // ball. Lost frames are acceptable here; a wrong position is not.
   const Throw b;
-  RenderOptions o = small_video();
+  RenderOptions o = small_point_video();
   o.background = RenderOptions::Background::texture;
   const Scene scene = [&](double t) { return std::vector<ShapePose>{b.pose(t)}; };
-  const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
+  const Errors e = track_points(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("ball on a textured background");
   EXPECT_LT(e.max(e.position_px), 0.3);  // any frame reported found must be on the ball
 }
@@ -315,7 +313,7 @@ TEST(PointTracker, IsNotCapturedByADistractor) {
   // Two identical balls: ours flies on a parabola and hides behind a hand; the other rests
   // near where ours disappears. The track must report the hidden frames, not jump.
   const Throw b;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const Scene scene = [&](double t) {
     ShapePose other = b.pose(0);
     const cv::Point2d mid = b.at(4 / 240.0);
@@ -330,7 +328,7 @@ TEST(PointTracker, IsNotCapturedByADistractor) {
     hand.colour = cv::Scalar(150, 170, 190);
     return std::vector<ShapePose>{other, b.pose(t), hand};
   };
-  const Errors e = track(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
+  const Errors e = track_points(scene, o, 8, [&](double t) { return b.at(t); }, [](double) { return 0.0; });
   e.print("ball with distractor");
   EXPECT_GT(e.lost, 0);
   EXPECT_LT(e.max(e.position_px), 0.1);  // measured 0.030 px; the distractor is 28 px away
@@ -381,7 +379,7 @@ TEST(PointTracker, FindsThePointAgainAfterALongOcclusionAndNotTheLookAlike) {
   // identical disc 130 px away is never taken, neither while ours is hidden (it is the only
   // match in the image then) nor after.
   const HiddenDisc d;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   PointTracker tracker;
   tracker.start(film(d.scene(), 0, o), d.at(0).x, d.at(0).y, "disc");
   Errors e;
@@ -418,7 +416,7 @@ TEST(PointTracker, NeverTakesTheLookAlikeWhileThePointStaysHidden) {
   // image, 130 px from where ours is hidden, and must not be taken.
   HiddenDisc d;
   d.hand_stays = true;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   PointTracker tracker;
   tracker.start(film(d.scene(), 0, o), d.at(0).x, d.at(0).y, "disc");
   int lost_from = -1;
@@ -436,7 +434,7 @@ TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
   // Written as MJPG (quality 95) and decoded by OpenCV like a user's video: compression
   // artefacts on top of blur and noise.
   const Wheel w;
-  RenderOptions o = small_video();
+  RenderOptions o = small_point_video();
   o.shutter_fraction = 0.5;
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
   const std::filesystem::path path =
@@ -520,7 +518,7 @@ TEST(PointTracker, FollowsBallTossFromTheHumansFirstMark) {
 
 TEST(PointTracker, RejectsAFeaturelessStart) {
   const Wheel w;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
   PointTracker tracker;
   const Frame f0 = film(scene, 0, o);
@@ -538,7 +536,7 @@ TEST(PointTracker, RejectsAStartOnAStraightEdge) {
   // The wheel's rim, far from the mark: strong gradient across it, none along it, so the
   // correlation is flat along the edge (aperture problem) and the start is refused.
   const Wheel w;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
   PointTracker tracker;
   const Frame f0 = film(scene, 0, o);
@@ -550,11 +548,11 @@ TEST(PointTracker, ReportsABallLeavingTheViewAsLost) {
   // (the prediction runs on outside the image), never placed on something else, and the
   // tracker gives up after max_gap_frames.
   const Throw b;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const Scene scene = [&](double t) { return std::vector<ShapePose>{b.pose(t)}; };
   PointTrackerOptions options;
   options.max_gap_frames = 2;
-  const Errors e = track(scene, o, 14, [&](double t) { return b.at(t); }, [](double) { return 0.0; }, options);
+  const Errors e = track_points(scene, o, 14, [&](double t) { return b.at(t); }, [](double) { return 0.0; }, options);
   e.print("ball leaving the view");
   ASSERT_EQ(e.lost_frames.size(), 5u);
   EXPECT_EQ(e.lost_frames.front(), 9);  // x = 20 + 36 * 9 = 344 px: outside
@@ -579,7 +577,7 @@ TEST(PointTracker, ValidatesItsOptions) {
 
 TEST(PointTracker, RejectsAStartOutsideTheImage) {
   const Wheel w;
-  const RenderOptions o = small_video();
+  const RenderOptions o = small_point_video();
   const Scene scene = [&](double t) { return std::vector<ShapePose>{w.pose(t)}; };
   PointTracker tracker;
   const Frame f0 = film(scene, 0, o);

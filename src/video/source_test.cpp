@@ -22,7 +22,7 @@ using ::testing::HasSubstr;
 using testing::TestVideo;
 
 /// A fresh directory for one test's files.
-std::string temp_dir(const std::string& name) {
+std::string source_temp_dir(const std::string& name) {
   const auto dir = fs::temp_directory_path() / ("tribolab_source_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -72,7 +72,7 @@ std::vector<track::Track> human_marks() {
 }
 
 TEST(Source, PlainVideoReportsTheContainersFacts) {
-  const std::string dir = temp_dir("plain");
+  const std::string dir = source_temp_dir("plain");
   const TestVideo v;
   write_test_video(dir + "/v.avi", v);
   const VideoInput in = open_input(dir + "/v.avi", {});
@@ -90,7 +90,7 @@ TEST(Source, PlainVideoReportsTheContainersFacts) {
 }
 
 TEST(Source, FrameReaderStreamsEveryFrameInOrderWithItsTime) {
-  const std::string dir = temp_dir("stream");
+  const std::string dir = source_temp_dir("stream");
   const TestVideo v;
   write_test_video(dir + "/v.avi", v);
   SourceOptions o;
@@ -113,7 +113,7 @@ TEST(Source, FrameReaderStreamsEveryFrameInOrderWithItsTime) {
 }
 
 TEST(Source, TrkProjectGivesItsClipTimeBaseCalibrationAndMarks) {
-  const std::string dir = temp_dir("trk");
+  const std::string dir = source_temp_dir("trk");
   fs::create_directories(dir + "/videos");
   write_test_video(dir + "/videos/v.avi", TestVideo{});
   const io::TrkWriteSpec spec = project_spec("videos/v.avi");
@@ -149,7 +149,7 @@ TEST(Source, TrkProjectGivesItsClipTimeBaseCalibrationAndMarks) {
 }
 
 TEST(Source, TrzHoldsTheVideoAsATemporaryCopyRemovedAfterUse) {
-  const std::string dir = temp_dir("trz");
+  const std::string dir = source_temp_dir("trz");
   write_test_video(dir + "/v.avi", TestVideo{});
   const io::TrkWriteSpec spec = project_spec("videos/clip.avi");
   spit(dir + "/p.trz", io::write_trz(io::write_trk(human_marks(), spec), "p.trk",
@@ -194,7 +194,7 @@ TEST(Source, ProjectMarksLandOnTrackImportsNumbersForBallToss) {
 }
 
 TEST(Source, PlainVideoCalibrationFromScaleStickOriginAndAxes) {
-  const std::string dir = temp_dir("cal");
+  const std::string dir = source_temp_dir("cal");
   write_test_video(dir + "/v.avi", TestVideo{});
   SourceOptions o;
   o.calibrate_points = std::make_pair(cv::Point2d(10, 100), cv::Point2d(110, 100));
@@ -220,7 +220,7 @@ TEST(Source, PlainVideoCalibrationFromScaleStickOriginAndAxes) {
 }
 
 TEST(Source, CalibrationOptionsOverrideAProjectWithAWarning) {
-  const std::string dir = temp_dir("override");
+  const std::string dir = source_temp_dir("override");
   write_test_video(dir + "/v.avi", TestVideo{});
   spit(dir + "/p.trk", io::write_trk(human_marks(), project_spec("v.avi")));
   SourceOptions o;
@@ -244,7 +244,7 @@ void expect_input_error(const std::string& path, const SourceOptions& o, const s
 }
 
 TEST(Source, BadInputIsOneClearError) {
-  const std::string dir = temp_dir("bad");
+  const std::string dir = source_temp_dir("bad");
   write_test_video(dir + "/v.avi", TestVideo{});
   expect_input_error(dir + "/missing.avi", {}, "no such file");
   expect_input_error(dir, {}, "directory");
@@ -277,7 +277,7 @@ TEST(Source, BadInputIsOneClearError) {
 }
 
 TEST(Source, TruncatedVideoIsAnErrorNotAShortTrack) {
-  const std::string dir = temp_dir("trunc");
+  const std::string dir = source_temp_dir("trunc");
   TestVideo v;
   v.frames = 60;
   write_test_video(dir + "/v.avi", v);

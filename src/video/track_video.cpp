@@ -4,6 +4,7 @@
 
 #include "io/text.hpp"
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -20,7 +21,6 @@ namespace tribolab::video {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Thumbnails are at most this wide, px (a report shows several side by side).
 constexpr int kThumbWidth = 320;
 /// Most thumbnails a run keeps (memory: each is at most 320 px wide).

@@ -5,6 +5,7 @@
 #include "numerics/error.hpp"
 #include "video/render.hpp"
 #include "video/test_videos.hpp"
+#include "numerics/statistics.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -84,7 +85,7 @@ RenderOptions film_options() {
 }
 
 /// Renders the scenery once per test binary run into `dir`/film.avi.
-std::string film(const std::string& dir) {
+std::string film_in(const std::string& dir) {
   const std::string path = dir + "/film.avi";
   static const Scenery s;
   write_video(path, s.scene(), kFrames, film_options());
@@ -106,11 +107,6 @@ Target ellipse(const std::string& name, cv::Point2d p, int frame = -1) {
   return t;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? NAN : v[v.size() / 2];
-}
-
 // The trackers' own tests measure ~0.1 px median through MJPG; 0.3 px median and 1 px worst
 // leave room for compression and noise while still catching a wrong frame, time or offset.
 constexpr double kMedianPx = 0.3, kWorstPx = 1.0;
@@ -127,7 +123,7 @@ TEST(TrackVideo, PointAndEllipseInOnePassFromTheirOwnStartFrames) {
     last_done = done;
     EXPECT_GE(expected, done);
   };
-  const TrackVideoResult r = track_video(film(dir), o);
+  const TrackVideoResult r = track_video(film_in(dir), o);
   EXPECT_EQ(r.frames, kFrames);
   EXPECT_EQ(calls, kFrames);
   EXPECT_EQ(last_done, kFrames);
@@ -184,7 +180,7 @@ TEST(TrackVideo, ThumbnailsAreEvenlySpacedSmallJpegs) {
   TrackVideoOptions o;
   o.targets = {point("mark", s.mark(0))};
   o.thumbnails = 4;
-  const TrackVideoResult r = track_video(film(dir), o);
+  const TrackVideoResult r = track_video(film_in(dir), o);
   ASSERT_EQ(r.thumbnails.size(), 4u);
   const int want[] = {0, 10, 19, 29};
   for (int k = 0; k < 4; ++k) {
@@ -270,7 +266,7 @@ void write_project(const std::string& dir, double offset_px) {
 
 TEST(TrackVideo, FromTrackStartsAtTheHumansFirstMarkAndMeasuresTheRest) {
   const std::string dir = temp_dir("fromtrack");
-  film(dir);
+  film_in(dir);
   write_project(dir, 1.0);  // every further human mark 1 px to the right of the truth
   TrackVideoOptions o;
   Target t;
@@ -299,7 +295,7 @@ TEST(TrackVideo, ATrackFarFromTheProjectsOwnMarksIsWarned) {
   // The marks disagree by 8 px with what is tracked (a track that followed another feature
   // looks the same from here): the agreement is the user's independent check, so say it.
   const std::string dir = temp_dir("fromtrack_far");
-  film(dir);
+  film_in(dir);
   write_project(dir, 8.0);
   TrackVideoOptions o;
   Target t;
@@ -324,7 +320,7 @@ TEST(TrackVideo, TrackerMarksAndTrackedPixelsShareOnePixelConvention) {
   // of and below the points marked.
   const std::string dir = temp_dir("pixel_convention");
   const Scenery sc;
-  film(dir);
+  film_in(dir);
   io::TrkWriteSpec spec;
   spec.coords = {{0, 10, 230, 0, 500, 500}};  // 500 px per m, origin at Tracker's (10, 230)
   spec.step_count = 25;
@@ -376,7 +372,7 @@ TEST(TrackVideo, WrittenProjectReadsBackToTheCsvNumbers) {
   o.source.scale_m_per_px = 0.002;
   o.source.time_scale = 0.125;  // slow motion: folded into Tracker's frame duration
   o.targets = {point("mark", s.mark(0)), ellipse("ball", s.ball(0))};
-  const TrackVideoResult r = track_video(film(dir), o);
+  const TrackVideoResult r = track_video(film_in(dir), o);
   fs::create_directories(dir + "/out");
   std::vector<std::string> warnings;
   const io::TrkWriteSpec spec = trk_spec(r, dir + "/out/run.trk", warnings);
@@ -418,7 +414,7 @@ void expect_error(const std::string& input, const TrackVideoOptions& o, const st
 
 TEST(TrackVideo, BadTargetsAreClearErrors) {
   const std::string dir = temp_dir("bad");
-  const std::string video = film(dir);
+  const std::string video = film_in(dir);
   write_project(dir, 0);
   const Scenery s;
   TrackVideoOptions o;
