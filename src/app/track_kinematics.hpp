@@ -35,8 +35,9 @@ struct TrackKinematicsOptions {
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
-/// The declaration of every option of `track kinematics` (app/option_fields.hpp); the
-/// studio's form is made from it (src/studio/workbench.cpp).
+/// The declaration of every option of `track kinematics` (app/option_fields.hpp): the studio's
+/// form is made from it (src/studio/); the command line does not bind from it yet (its
+/// --from/--to spellings need aliases the declarations do not have).
 inline const Fields<TrackKinematicsOptions>& track_kinematics_fields() {
   using O = TrackKinematicsOptions;
   static const Fields<O> f = [] {

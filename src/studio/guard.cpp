@@ -59,6 +59,14 @@ Confined confine(const std::filesystem::path& root, std::string_view relative) {
   for (const fs::path& part : rel)
     if (part == "..") return {{}, "'" + std::string(relative) + "' leaves the studio's folder (..)"};
   std::error_code ec;
+  // weakly_canonical keeps a symlink whose target does not exist as it is (it resolves only the
+  // existing part), and writing to it would create its target wherever it points: refused.
+  fs::path walk = root;
+  for (const fs::path& part : rel) {
+    walk /= part;
+    if (fs::is_symlink(fs::symlink_status(walk, ec)) && !fs::exists(walk, ec))
+      return {{}, "'" + std::string(relative) + "' passes through a symlink to a missing target"};
+  }
   const fs::path resolved = fs::weakly_canonical(root / rel, ec);
   if (ec) return {{}, "'" + std::string(relative) + "' cannot be resolved: " + ec.message()};
   // Inside when root's components are a prefix of the resolved path's components.

@@ -38,8 +38,9 @@ struct Confined {
 };
 
 /// `relative` resolved inside `root`: refused when empty, absolute, holding a NUL or a ".."
-/// component, or when it (after resolving every symlink: std::filesystem::weakly_canonical)
-/// lies outside `root`.
+/// component, when it passes through a symlink whose target is missing (writing would create
+/// the target, wherever it is), or when it (after resolving every symlink:
+/// std::filesystem::weakly_canonical) lies outside `root`.
 Confined confine(const std::filesystem::path& root, std::string_view relative);
 
 }  // namespace tribolab::studio

@@ -144,6 +144,11 @@ TEST(Confine, ResolvesInsideAndRefusesOutside) {
   EXPECT_EQ(confine(root, "a/b.avi").path, root / "a" / "b.avi");  // need not exist yet
   EXPECT_FALSE(confine(root, "a/../../b").problem.empty());
   EXPECT_FALSE(confine(root, "/tmp/x").problem.empty());
+  // A dangling symlink: weakly_canonical leaves it unresolved, inside; writing would create its target.
+  const fs::path dangling = root / ("studio_dangling_" + std::to_string(::getpid()));
+  fs::create_symlink("/nonexistent_dir_of_tribolab/x.csv", dangling);
+  EXPECT_FALSE(confine(root, dangling.filename().string()).problem.empty());
+  fs::remove(dangling);
 }
 
 TEST_F(HandlerTest, OversizedBodyIsRefused) {

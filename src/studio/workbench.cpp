@@ -50,6 +50,12 @@ json series_json(const std::vector<video::TrackedSeries>& series) {
   return a;
 }
 
+/// The input group's fields the form leaves out: the studio's tracks CSV is already in seconds
+/// (after the time scale) and metres, and is not a .trz.
+bool set_by_the_studio(const std::string& name) {
+  return name == "time_scale" || name == "length_unit" || name == "entry";
+}
+
 }  // namespace
 
 Workbench::Workbench(fs::path root) : root_(fs::canonical(root)) {}
@@ -197,8 +203,11 @@ void Workbench::run_tracks() {
 }
 
 json Workbench::forms() {
+  json fields = json::array();
+  for (const json& f : app::fields_schema(app::track_kinematics_fields()))
+    if (!set_by_the_studio(f["name"])) fields.push_back(f);
   return {{"track kinematics",
-           {{"fields", app::fields_schema(app::track_kinematics_fields())},
+           {{"fields", fields},
             {"results", app::result_keys_schema(app::track_kinematics_result_keys())}}}};
 }
 
@@ -206,6 +215,8 @@ json Workbench::analyze(const std::string& command, const json& values) {
   require_open();
   if (command != "track kinematics") throw InputError("the studio offers the analysis 'track kinematics', not '" + command + "'");
   if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");
+  for (auto it = values.begin(); it != values.end(); ++it)
+    if (set_by_the_studio(it.key())) throw InputError(field(it.key()), "is set by the studio: its tracks are in s and m");
   app::TrackKinematicsOptions o;
   apply_form_values(o, app::track_kinematics_fields(), values);
   o.input.file = (root_ / tracks_["csv"].get<std::string>()).string();
