@@ -19,7 +19,8 @@ DEB_PACKAGES := build-essential cmake ninja-build pkg-config \
   libpugixml-dev libzip-dev libopencv-dev clang libclang-rt-14-dev \
   libopenmpi-dev openmpi-bin \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib \
-  chromium fonts-liberation fonts-wqy-microhei
+  chromium fonts-liberation fonts-wqy-microhei \
+  libcpp-httplib-dev chromium-driver python3-selenium
 
 # Plotly.js for the HTML reports, from the npm registry at the exact version and sha512 hash
 # pinned in report/vendor/package-lock.json; the build embeds it into the tribolab binary
@@ -79,7 +80,7 @@ test: build
 # libFuzzer (clang) on every tracked-data parser, FUZZ_SECONDS each, starting from the seed
 # inputs in fuzz/corpus/<parser>/; new interesting inputs go to $(FUZZ_BUILD)/corpus/.
 # Any crash, sanitizer report, hang (>10 s per input) or memory blow-up (>2 GB) fails.
-FUZZ_TARGETS := trk trz export csv trk_roundtrip
+FUZZ_TARGETS := trk trz export csv trk_roundtrip studio
 fuzz: deps
 	cmake -S . -B $(FUZZ_BUILD) $(CMAKE_FLAGS) -DCMAKE_CXX_COMPILER=clang++ -DTRIBOLAB_FUZZ=ON \
 	  -DTRIBOLAB_TESTS=OFF -DTRIBOLAB_BENCH=OFF

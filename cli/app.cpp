@@ -64,6 +64,7 @@ int run(int argc, char** argv) {
   register_track(app);
   register_demo(app);
   register_schema(app);
+  register_studio(app);
   tidy_placeholders(app);
   wrap_help(app);  // after the placeholders: they read the one-line help
   try {

@@ -29,6 +29,8 @@ void register_track(CLI::App& root);
 void register_demo(CLI::App& root);
 /// Registers `tribolab schema` (cli/schema_cmd.cpp); after every other command.
 void register_schema(CLI::App& root);
+/// `tribolab studio` (cli/studio_cmd.cpp).
+void register_studio(CLI::App& root);
 
 /// Prints a command's result: the JSON object on one line of stdout with --json, else an
 /// aligned "key  value" listing for people (nested objects as dotted keys), its units from

@@ -3,6 +3,7 @@
 // length unit and the .trz entry. Front ends (CLI, Python) fill the options and print `json`.
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "io/track_import.hpp"
 #include "track/track.hpp"
 
@@ -20,6 +21,22 @@ struct TrackInputOptions {
   std::string length_unit;   ///< unit of the file's lengths (m, cm, mm, km, um, in, ft); empty: the file's, else m
   std::string entry;         ///< .trz only: the .trk inside to read; empty: the first
 };
+
+/// The declaration of the input group (app/option_fields.hpp): FILE, --time-scale,
+/// --length-unit, --entry.
+inline const Fields<TrackInputOptions>& track_input_fields() {
+  using O = TrackInputOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("file", &O::file, "", "Tracker .trk/.trz, Tracker Export Data text, or CSV").as(FieldRole::input_files).needed();
+    d.add("time_scale", &O::time_scale, "", "real seconds per file second (240 fps played at 30 fps: 0.125)")
+        .in(ranges::time_scale);
+    d.add("length_unit", &O::length_unit, "", "unit of the file's lengths, overriding the file's (m, cm, mm, km, um, in, ft)");
+    d.add("entry", &O::entry, "", "for a .trz: the .trk inside to read (when not given: the first)");
+    return d;
+  }();
+  return f;
+}
 
 /// The library's import options from the input group, keeping only `tracks` (empty = all).
 io::ImportOptions import_options(const TrackInputOptions& input, std::vector<std::string> tracks = {});

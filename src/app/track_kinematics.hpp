@@ -3,6 +3,7 @@
 // (docs/theory.md#kinematics).
 #pragma once
 
+#include "app/option_fields.hpp"
 #include "app/track_import.hpp"
 #include "app/track_time_range.hpp"
 #include "track/free_flight.hpp"
@@ -33,6 +34,31 @@ struct TrackKinematicsOptions {
   std::string report;            ///< HTML report; empty: not written
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
+
+/// The declaration of every option of `track kinematics` (app/option_fields.hpp): the studio's
+/// form is made from it (src/studio/); the command line does not bind from it yet (its
+/// --from/--to spellings need aliases the declarations do not have).
+inline const Fields<TrackKinematicsOptions>& track_kinematics_fields() {
+  using O = TrackKinematicsOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.group(&O::input, track_input_fields());
+    d.add("track", &O::track, "", "track to differentiate (required when the file has several)");
+    d.add("method", &O::method, "", "Tracker's finite differences, or Savitzky-Golay with standard errors")
+        .one_of({"tracker", "savgol"});
+    d.add("window", &O::window, "", "savgol: points per local fit");
+    d.add("order", &O::order, "", "savgol: polynomial degree 1..6");
+    d.add("impacts", &O::impacts, "", "auto: never difference across detected impacts; none: straight through")
+        .one_of({"auto", "none"});
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration free-flight segments are checked against").in(ranges::gravity);
+    d.add("t_from", &O::t_from, "s", "first time used (when not given: the first point)");
+    d.add("t_to", &O::t_to, "s", "last time used (when not given: the last point)");
+    d.add("out", &O::out, "", "output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)").as(FieldRole::output_path).needed();
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
 
 struct TrackKinematicsResult {
   nlohmann::json json;           ///< what `track kinematics --json` prints

@@ -1,4 +1,5 @@
 #include "report/embedded.hpp"
+#include "report/incbin.hpp"
 
 // The build defines these from report/vendor (see src/report/embed_plotly.cmake).
 #if !defined(TRIBOLAB_PLOTLY_JS_PATH) || !defined(TRIBOLAB_PLOTLY_VERSION) || \
@@ -7,22 +8,9 @@
 #error "build through CMake: src/report/embed_plotly.cmake defines the vendored Plotly.js path"
 #endif
 
-// The assembler copies the file into read-only data: no 1.5 MB C array for the compiler to
-// parse, and the build re-runs when the file changes (OBJECT_DEPENDS in CMake).
-asm(".section .rodata\n"
-    ".balign 16\n"
-    ".globl tribolab_plotly_js_begin\n"
-    ".hidden tribolab_plotly_js_begin\n"
-    "tribolab_plotly_js_begin:\n"
-    ".incbin \"" TRIBOLAB_PLOTLY_JS_PATH "\"\n"
-    ".globl tribolab_plotly_js_end\n"
-    ".hidden tribolab_plotly_js_end\n"
-    "tribolab_plotly_js_end:\n"
-    ".byte 0\n"
-    ".previous\n");
-
-extern "C" const char tribolab_plotly_js_begin[];
-extern "C" const char tribolab_plotly_js_end[];
+// The assembler copies the file into read-only data; the build re-runs when the file changes
+// (OBJECT_DEPENDS in CMake).
+TRIBOLAB_INCBIN(tribolab_plotly_js, TRIBOLAB_PLOTLY_JS_PATH);
 
 namespace tribolab::report {
 

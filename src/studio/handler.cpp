@@ -1,0 +1,190 @@
+#include "studio/handler.hpp"
+
+#include "numerics/error.hpp"
+
+#include <cmath>
+#include <exception>
+
+namespace tribolab::studio {
+
+namespace {
+
+using nlohmann::json;
+
+/// A request the handler refuses before the backend sees it.
+struct BadRequest {
+  int status;
+  std::string message;
+};
+
+json object_body(const Request& r) {
+  json j = json::parse(r.body, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) throw InputError("the request body is not valid JSON");
+  if (!j.is_object()) throw InputError("the request body must be a JSON object");
+  return j;
+}
+
+double number(const json& j, const char* key) {
+  const auto it = j.find(key);
+  if (it == j.end() || !it->is_number()) throw InputError(std::string("'") + key + "' must be a number");
+  const double v = it->get<double>();
+  if (!std::isfinite(v)) throw InputError(std::string("'") + key + "' must be finite");
+  return v;
+}
+
+std::optional<double> optional_number(const json& j, const char* key) {
+  if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+  return number(j, key);
+}
+
+template <std::size_t N>
+std::optional<std::array<double, N>> optional_numbers(const json& j, const char* key) {
+  if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+  const json& a = j[key];
+  if (!a.is_array() || a.size() != N)
+    throw InputError(std::string("'") + key + "' must be a list of " + std::to_string(N) + " numbers");
+  std::array<double, N> out{};
+  for (std::size_t i = 0; i < N; ++i) {
+    if (!a[i].is_number() || !std::isfinite(a[i].get<double>()))
+      throw InputError(std::string("'") + key + "' must be a list of " + std::to_string(N) + " finite numbers");
+    out[i] = a[i].get<double>();
+  }
+  return out;
+}
+
+std::string text(const json& j, const char* key, std::string fallback) {
+  const auto it = j.find(key);
+  if (it == j.end() || it->is_null()) return fallback;
+  if (!it->is_string()) throw InputError(std::string("'") + key + "' must be text");
+  return it->get<std::string>();
+}
+
+int integer(double v, const char* key) {
+  if (v != std::floor(v) || std::abs(v) > 1e9) throw InputError(std::string("'") + key + "' must be a whole number");
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+CalibrationInput calibration_from_json(const json& j) {
+  CalibrationInput c;
+  c.stick_px = optional_numbers<4>(j, "stick");
+  c.stick_length_m = optional_number(j, "length").value_or(0);
+  c.origin_px = optional_numbers<2>(j, "origin");
+  c.fps = optional_number(j, "fps");
+  c.time_scale = optional_number(j, "time_scale").value_or(1);
+  return c;
+}
+
+TrackStart start_from_json(const json& j) {
+  TrackStart s;
+  s.name = text(j, "name", s.name);
+  if (s.name.empty() || s.name.size() > 40) throw InputError("'name' must have 1 to 40 characters");
+  for (char ch : s.name)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-')
+      throw InputError("'name' may hold only letters, digits, '_' and '-'");
+  s.kind = text(j, "kind", s.kind);
+  if (s.kind != "point" && s.kind != "ellipse") throw InputError("'kind' must be point or ellipse");
+  s.x_px = number(j, "x");
+  s.y_px = number(j, "y");
+  s.frame = integer(number(j, "frame"), "frame");
+  return s;
+}
+
+json to_json(const CalibrationInput& c) {
+  return {{"stick", c.stick_px ? json(*c.stick_px) : json(nullptr)},
+          {"length", c.stick_length_m},
+          {"origin", c.origin_px ? json(*c.origin_px) : json(nullptr)},
+          {"fps", c.fps ? json(*c.fps) : json(nullptr)},
+          {"time_scale", c.time_scale}};
+}
+
+json to_json(const TrackStart& s) {
+  return {{"name", s.name}, {"kind", s.kind}, {"x", s.x_px}, {"y", s.y_px}, {"frame", s.frame}};
+}
+
+Handler::Handler(const std::filesystem::path& root, AccessRules rules, Assets assets, Backend& backend)
+    : root_(std::filesystem::canonical(root)), rules_(std::move(rules)), assets_(assets), backend_(backend) {}
+
+Response Handler::handle(const Request& request) {
+  try {
+    const auto target = parse_target(request.target);
+    if (!target) return json_error(400, "the request target is malformed");
+    if (auto refused = refuse(request, *target, rules_)) return *refused;
+    return route(request, *target);
+  } catch (const BadRequest& e) {
+    return json_error(e.status, e.message);
+  } catch (const InputError& e) {
+    return json_error(400, e.what());
+  } catch (const std::exception& e) {
+    return json_error(500, std::string("internal error: ") + e.what());
+  } catch (...) {
+    return json_error(500, "internal error");
+  }
+}
+
+Response Handler::route(const Request& request, const Target& target) {
+  const std::string& path = target.path;
+  const bool get = request.method == "GET", post = request.method == "POST";
+  auto need = [&](bool ok) {
+    if (!ok) throw BadRequest{405, "method " + request.method + " is not allowed on " + path};
+  };
+  if (path == "/" || path == "/index.html") {
+    need(get);
+    return {200, "text/html; charset=utf-8", std::string(assets_.page_html)};
+  }
+  if (path == "/plotly.js") {
+    need(get);
+    return {200, "text/javascript; charset=utf-8", std::string(assets_.plotly_js)};
+  }
+  if (path.rfind("/api/", 0) != 0) return json_error(404, "no such page: " + path);
+
+  std::lock_guard lock(backend_mutex_);
+  if (path == "/api/files") {
+    need(get);
+    return json_ok(backend_.files());
+  }
+  if (path == "/api/state") {
+    need(get);
+    return json_ok(backend_.state());
+  }
+  if (path == "/api/forms") {
+    need(get);
+    return json_ok(backend_.forms());
+  }
+  if (path == "/api/frame") {
+    need(get);
+    const auto i = target.param("i");
+    if (!i || i->empty() || i->size() > 9 || i->find_first_not_of("0123456789") != std::string::npos)
+      throw BadRequest{400, "'i' must be a frame step, a whole number >= 0"};
+    return {200, "image/jpeg", backend_.frame_jpeg(std::stoi(*i))};
+  }
+  if (path == "/api/open") {
+    need(post);
+    const json body = object_body(request);
+    const Confined c = confine(root_, text(body, "file", ""));
+    if (!c.problem.empty()) throw BadRequest{403, c.problem};
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(c.path, ec)) throw BadRequest{404, "no such file in the folder: " + text(body, "file", "")};
+    return json_ok(backend_.open(c.path));
+  }
+  if (path == "/api/calibration") {
+    need(post);
+    return json_ok(backend_.calibrate(calibration_from_json(object_body(request))));
+  }
+  if (path == "/api/track") {
+    need(post);
+    return json_ok(backend_.track(start_from_json(object_body(request))));
+  }
+  if (path == "/api/analyze") {
+    need(post);
+    const json body = object_body(request);
+    const std::string command = text(body, "command", "");
+    const json values = body.contains("values") ? body["values"] : json::object();
+    if (!values.is_object()) throw BadRequest{400, "'values' must be a JSON object"};
+    return json_ok(backend_.analyze(command, values));
+  }
+  return json_error(404, "no such route: " + path);
+}
+
+}  // namespace tribolab::studio

@@ -1,0 +1,85 @@
+// The studio's request handling (docs/design.md#studio): routing, the security rules
+// (guard.hpp), the checks of every parameter and JSON body, and the answers, as one function
+// from a Request to a Response that never throws. What the requests do to a project is a
+// Backend (workbench.hpp is the real one), so the handler is tested and fuzzed without
+// OpenCV, tracking or sockets.
+#pragma once
+
+#include "studio/guard.hpp"
+#include "studio/http.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace tribolab::studio {
+
+/// Calibration of a plain video as the page sets it (image pixels: x right, y down).
+struct CalibrationInput {
+  std::optional<std::array<double, 4>> stick_px;  ///< two ends of a stick X1,Y1,X2,Y2, px
+  double stick_length_m = 0;                      ///< its length, m (> 0 with a stick)
+  std::optional<std::array<double, 2>> origin_px; ///< world origin in the image, px
+  std::optional<double> fps;                      ///< frames per second (unset: the container's), 1/s
+  double time_scale = 1;                          ///< real s per video s (slow motion 240 -> 30 fps: 0.125)
+};
+
+/// A click on an object: follow it from there.
+struct TrackStart {
+  std::string name = "ball";  ///< track name: letters, digits, '_' or '-'
+  std::string kind = "point"; ///< "point" (the path tracker) or "ellipse" (a ball contrasting with its background)
+  double x_px = 0, y_px = 0;  ///< the click, image px
+  int frame = 0;              ///< the video's frame index clicked on
+};
+
+/// The page's JSON (also the autosave's) as typed values; InputError naming the key for a
+/// missing or mistyped one (a non-finite number, a name with other characters than letters,
+/// digits, '_' and '-').
+CalibrationInput calibration_from_json(const nlohmann::json& j);
+TrackStart start_from_json(const nlohmann::json& j);
+nlohmann::json to_json(const CalibrationInput& c);
+nlohmann::json to_json(const TrackStart& s);
+
+/// What the requests do to the project. Throws tribolab::InputError for input the user can
+/// change (answered 400 with its message); anything else thrown is answered 500.
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual nlohmann::json files() = 0;                                    ///< videos and projects in the folder
+  virtual nlohmann::json open(const std::filesystem::path& file) = 0;    ///< a confined, existing file
+  virtual std::string frame_jpeg(int step) = 0;                          ///< the clip's step-th frame as JPEG
+  virtual nlohmann::json calibrate(const CalibrationInput& c) = 0;
+  virtual nlohmann::json track(const TrackStart& start) = 0;
+  virtual nlohmann::json forms() = 0;                                    ///< the analyses' declared fields
+  virtual nlohmann::json analyze(const std::string& command, const nlohmann::json& values) = 0;
+  virtual nlohmann::json state() = 0;                                    ///< the project as autosaved
+};
+
+/// What the page is made of: the HTML+JS page and Plotly.js (page.hpp, report/embedded.hpp).
+struct Assets {
+  std::string_view page_html;
+  std::string_view plotly_js;
+};
+
+class Handler {
+ public:
+  /// `root`: the folder the studio serves (made canonical here; must exist).
+  Handler(const std::filesystem::path& root, AccessRules rules, Assets assets, Backend& backend);
+  /// The answer to `request`; never throws. One request reaches the backend at a time.
+  Response handle(const Request& request);
+  const std::filesystem::path& root() const { return root_; }
+
+ private:
+  Response route(const Request& request, const Target& target);
+  std::filesystem::path root_;
+  AccessRules rules_;
+  Assets assets_;
+  Backend& backend_;
+  std::mutex backend_mutex_;
+};
+
+}  // namespace tribolab::studio

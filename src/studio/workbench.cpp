@@ -1,0 +1,255 @@
+#include "studio/workbench.hpp"
+
+#include "app/result_keys.hpp"
+#include "app/track_kinematics.hpp"
+#include "app/track_video.hpp"
+#include "io/atomic_file.hpp"
+#include "numerics/error.hpp"
+#include "studio/form_values.hpp"
+#include "studio/guard.hpp"
+#include "video/source.hpp"
+
+#include <fmt/format.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace tribolab::studio {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+bool studio_can_open(const fs::path& p) {
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const char* e : {".mp4", ".mov", ".avi", ".mkv", ".webm", ".m4v", ".trk", ".trz"})
+    if (ext == e) return true;
+  return false;
+}
+
+/// The series of a tracking as the page draws them: rows with image and world positions,
+/// score and lost flag; NaN positions of lost rows become null.
+json series_json(const std::vector<video::TrackedSeries>& series) {
+  json a = json::array();
+  for (const auto& s : series) {
+    json rows = json::array();
+    for (const auto& r : s.rows)
+      rows.push_back({{"frame", r.frame}, {"t", r.t}, {"x", r.x}, {"y", r.y}, {"x_px", r.x_px}, {"y_px", r.y_px},
+                      {"score", r.score}, {"lost", r.lost}});
+    a.push_back({{"name", s.name},
+                 {"kind", s.kind == video::Target::Kind::point ? "point" : "ellipse"},
+                 {"rows", rows},
+                 {"lost_ranges", s.lost_ranges},
+                 {"tracked", s.tracked},
+                 {"median_score", s.median_score}});
+  }
+  return a;
+}
+
+/// The input group's fields the form leaves out: the studio's tracks CSV is already in seconds
+/// (after the time scale) and metres, and is not a .trz.
+bool set_by_the_studio(const std::string& name) {
+  return name == "time_scale" || name == "length_unit" || name == "entry";
+}
+
+}  // namespace
+
+Workbench::Workbench(fs::path root) : root_(fs::canonical(root)) {}
+
+fs::path Workbench::beside(const std::string& suffix) const {
+  const fs::path p = file_.parent_path() / (file_.filename().string() + suffix);
+  // The file is inside the folder; a symlink of this name pointing out of it is refused.
+  const Confined c = confine(root_, relative(p));
+  if (!c.problem.empty()) throw InputError(relative(p), "will not be written: " + c.problem);
+  return p;
+}
+
+std::string Workbench::relative(const fs::path& p) const { return p.lexically_relative(root_).generic_string(); }
+
+void Workbench::require_open() const {
+  if (file_.empty()) throw InputError("open a video or a Tracker project first");
+}
+
+json Workbench::files() {
+  json list = json::array();
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(root_, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!studio_can_open(entry.path())) continue;
+    const Confined c = confine(root_, name);  // a symlink out of the folder is not listed
+    if (!c.problem.empty() || !fs::is_regular_file(c.path, ec)) continue;
+    names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  for (const auto& n : names) list.push_back(n);
+  return {{"folder", root_.filename().string()}, {"files", list}};
+}
+
+json Workbench::open(const fs::path& file) {
+  video::VideoInput input = video::open_input(file.string(), video::SourceOptions{});
+  video::FrameReader reader(input);
+  std::vector<std::string> jpeg;
+  json frames = json::array();
+  std::size_t total = 0;
+  video::Frame f;
+  while (reader.next(f)) {
+    std::vector<unsigned char> buf;
+    if (!cv::imencode(".jpg", f.bgr, buf, {cv::IMWRITE_JPEG_QUALITY, 90}))
+      throw InputError(file.string(), fmt::format("frame {} could not be encoded as JPEG", f.index));
+    total += buf.size();
+    if (total > kMaxFrameBytes)
+      throw InputError(file.string(), fmt::format("the clip is too long for the studio (more than {} MB of frames at "
+                                                  "frame {}); cut it, or track it with `track video`",
+                                                  kMaxFrameBytes >> 20, f.index));
+    jpeg.emplace_back(buf.begin(), buf.end());
+    frames.push_back({{"frame", f.index}, {"t", f.t}});
+  }
+  if (jpeg.empty()) throw InputError(file.string(), "the clip holds no frame");
+  file_ = file;
+  jpeg_ = std::move(jpeg);
+  frames_ = std::move(frames);
+  video_ = {{"width", input.info.width}, {"height", input.info.height}, {"fps", input.info.fps},
+            {"codec", input.info.codec}, {"calibrated", input.calibration.calibrated}};
+  calibration_ = {};
+  starts_.clear();
+  tracks_ = json::object();
+  analysis_ = nullptr;
+  // The autosave of an earlier session, if any: the clicks, calibration, tracks and analysis.
+  std::ifstream saved(beside(".studio.json"));
+  if (saved) {
+    std::stringstream text;
+    text << saved.rdbuf();
+    const json j = json::parse(text.str(), nullptr, false);
+    const std::string where = relative(beside(".studio.json"));
+    if (j.is_discarded() || !j.is_object()) throw InputError(where, "the autosave is not a JSON object: fix or delete it");
+    try {
+      if (j.contains("calibration")) calibration_ = calibration_from_json(j["calibration"]);
+      for (const json& s : j.value("starts", json::array())) starts_.push_back(start_from_json(s));
+    } catch (const InputError& e) {
+      throw InputError(where, e.what());
+    }
+    tracks_ = j.value("tracks", json::object());
+    analysis_ = j.value("analysis", json(nullptr));
+  }
+  return state();
+}
+
+std::string Workbench::frame_jpeg(int step) {
+  require_open();
+  if (step < 0 || step >= static_cast<int>(jpeg_.size()))
+    throw InputError(fmt::format("frame step {} is outside the clip's {} steps", step, jpeg_.size()));
+  return jpeg_[static_cast<std::size_t>(step)];
+}
+
+json Workbench::calibrate(const CalibrationInput& c) {
+  require_open();
+  if (c.stick_px && !(c.stick_length_m > 0)) throw InputError("'length' of the stick must be positive, m");
+  if (c.stick_px && std::hypot((*c.stick_px)[2] - (*c.stick_px)[0], (*c.stick_px)[3] - (*c.stick_px)[1]) < 1)
+    throw InputError("the two ends of the stick are less than a pixel apart");
+  if (c.fps && !(*c.fps > 0)) throw InputError("'fps' must be positive, 1/s");
+  if (!(c.time_scale > 0)) throw InputError("'time_scale' must be positive");
+  const CalibrationInput before = calibration_;
+  calibration_ = c;
+  try {
+    if (!starts_.empty()) run_tracks();  // the tracks in the new world units
+  } catch (...) {
+    calibration_ = before;
+    throw;
+  }
+  autosave();
+  return state();
+}
+
+json Workbench::track(const TrackStart& start) {
+  require_open();
+  const std::vector<TrackStart> before = starts_;
+  auto same = std::find_if(starts_.begin(), starts_.end(), [&](const TrackStart& s) { return s.name == start.name; });
+  if (same != starts_.end())
+    *same = start;  // a new click on a track restarts it there
+  else
+    starts_.push_back(start);
+  try {
+    run_tracks();
+  } catch (...) {
+    starts_ = before;
+    throw;
+  }
+  autosave();
+  return state();
+}
+
+void Workbench::run_tracks() {
+  app::TrackVideoOptions o;
+  o.input = file_.string();
+  o.out = beside(".tracks.csv").string();
+  o.write_trk = beside(".tracks.trk").string();
+  for (const TrackStart& s : starts_)
+    (s.kind == "ellipse" ? o.ellipse : o.start).push_back(fmt::format("{}={},{}@{}", s.name, s.x_px, s.y_px, s.frame));
+  const CalibrationInput& c = calibration_;
+  if (c.stick_px)
+    o.calibrate = fmt::format("{},{},{},{},{}", (*c.stick_px)[0], (*c.stick_px)[1], (*c.stick_px)[2], (*c.stick_px)[3],
+                              c.stick_length_m);
+  if (c.origin_px) o.origin = fmt::format("{},{}", (*c.origin_px)[0], (*c.origin_px)[1]);
+  o.fps = c.fps;
+  o.time_scale = c.time_scale;
+  const app::TrackVideoResult r = app::track_video(o);
+  tracks_ = {{"summary", r.json}, {"series", series_json(r.series)}, {"csv", relative(o.out)}, {"trk", relative(o.write_trk)}};
+  analysis_ = nullptr;  // it was of the tracks before
+}
+
+json Workbench::forms() {
+  json fields = json::array();
+  for (const json& f : app::fields_schema(app::track_kinematics_fields()))
+    if (!set_by_the_studio(f["name"])) fields.push_back(f);
+  return {{"track kinematics",
+           {{"fields", fields},
+            {"results", app::result_keys_schema(app::track_kinematics_result_keys())}}}};
+}
+
+json Workbench::analyze(const std::string& command, const json& values) {
+  require_open();
+  if (command != "track kinematics") throw InputError("the studio offers the analysis 'track kinematics', not '" + command + "'");
+  if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");
+  for (auto it = values.begin(); it != values.end(); ++it)
+    if (set_by_the_studio(it.key())) throw InputError(field(it.key()), "is set by the studio: its tracks are in s and m");
+  app::TrackKinematicsOptions o;
+  apply_form_values(o, app::track_kinematics_fields(), values);
+  o.input.file = (root_ / tracks_["csv"].get<std::string>()).string();
+  o.out = beside(".kinematics.csv").string();
+  const app::TrackKinematicsResult r = app::track_kinematics(o);
+  analysis_ = {{"command", command}, {"values", values}, {"result", r.json}, {"out", relative(o.out)},
+               {"results", app::result_keys_schema(app::track_kinematics_result_keys())}};
+  autosave();
+  return state();
+}
+
+json Workbench::state() {
+  json starts = json::array();
+  for (const auto& s : starts_) starts.push_back(to_json(s));
+  return {{"folder", root_.filename().string()},
+          {"file", file_.empty() ? json(nullptr) : json(relative(file_))},
+          {"video", video_},
+          {"frames", frames_},
+          {"calibration", to_json(calibration_)},
+          {"starts", starts},
+          {"tracks", tracks_},
+          {"analysis", analysis_},
+          {"autosave", file_.empty() ? json(nullptr) : json(relative(beside(".studio.json")))}};
+}
+
+void Workbench::autosave() const {
+  json starts = json::array();
+  for (const auto& s : starts_) starts.push_back(to_json(s));
+  const json j = {{"studio", 1}, {"file", relative(file_)}, {"calibration", to_json(calibration_)},
+                  {"starts", starts}, {"tracks", tracks_}, {"analysis", analysis_}};
+  io::AtomicFile out(beside(".studio.json").string());
+  out.stream() << j.dump(1, ' ', false, json::error_handler_t::replace) << '\n';
+  out.commit();
+}
+
+}  // namespace tribolab::studio

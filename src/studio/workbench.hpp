@@ -1,0 +1,54 @@
+// The studio's project (docs/cli.md#studio): the video or Tracker project opened from the
+// folder, its frames as JPEG (decoded by OpenCV once, on opening), the calibration and the
+// clicks that start tracks, the tracks (app::track_video, the same workflow as `track video`)
+// and the analyses (app::track_kinematics with a form made from its declared fields). Every
+// action is saved to FILE.studio.json beside the file, and re-read when the file is opened.
+#pragma once
+
+#include "studio/handler.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tribolab::studio {
+
+class Workbench : public Backend {
+ public:
+  /// `root`: the folder served (canonical, existing).
+  explicit Workbench(std::filesystem::path root);
+
+  nlohmann::json files() override;
+  nlohmann::json open(const std::filesystem::path& file) override;
+  std::string frame_jpeg(int step) override;
+  nlohmann::json calibrate(const CalibrationInput& c) override;
+  nlohmann::json track(const TrackStart& start) override;
+  nlohmann::json forms() override;
+  nlohmann::json analyze(const std::string& command, const nlohmann::json& values) override;
+  nlohmann::json state() override;
+
+  /// Largest total of the frames' JPEG bytes kept for one video (a longer video is refused).
+  static constexpr std::size_t kMaxFrameBytes = std::size_t{1} << 30;
+
+ private:
+  std::filesystem::path beside(const std::string& suffix) const;  ///< FILE + suffix, in its folder
+  std::string relative(const std::filesystem::path& p) const;     ///< p relative to the root
+  void require_open() const;
+  void run_tracks();   ///< tracks every start (app::track_video), writes CSV and .trk
+  void autosave() const;
+
+  std::filesystem::path root_;
+  std::filesystem::path file_;          ///< the opened video or project ("" before open)
+  std::vector<std::string> jpeg_;       ///< per clip step
+  nlohmann::json frames_ = nlohmann::json::array();  ///< per clip step: {frame, t}
+  nlohmann::json video_;                ///< width, height, fps, frames
+  CalibrationInput calibration_;
+  std::vector<TrackStart> starts_;
+  nlohmann::json tracks_ = nlohmann::json::object();  ///< the last tracking, for the page
+  nlohmann::json analysis_ = nullptr;   ///< the last analysis
+};
+
+}  // namespace tribolab::studio
