@@ -436,7 +436,11 @@ TEST(NormalAccelDiagnostic, ModelARunIsStillCalledPresent) {
 // now spans about an eighth of the run, as at film rates.
 TEST(NormalAccelDiagnostic, FiftyKilohertzRunIsAnalysedWithABlockChosenFromTheData) {
   InclineSynthOptions s = run_options(20.96, 1e-5, 3, 0, 5e4);
-  s.params.v0 = 0.15;  // a short slide: ~1,800 frames analysed
+  s.params.v0 = 0.15;  // a short slide: stops after 0.041 s, ~1,800 frames analysed
+  // Filmed from 5 ms before the launch to 20 ms after the stop (the defaults, 0.1 s before
+  // and 0.3 s after, give ten times the frames and the work).
+  s.t_launch = 0.005;
+  s.duration = 0.065;
   InclineFitOptions o;
   o.phi = s.params.phi;
   o.fit_model_a = false;  // not needed here, and the slow part at this many frames
