@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 namespace tribolab::cli::testing {
 namespace {
@@ -42,6 +44,45 @@ TEST(BounceAnalysisCli, SynthVideoThenAnalyzeRecoversTheTruth) {
   EXPECT_EQ(f["force_duration_method"], "given");
   const json nf = run_json("bounce analyze '" + video + "' --track-a A --track-b B --time-scale 0.125");
   EXPECT_FALSE(nf.contains("mean_normal_force"));
+}
+
+// Regression (issue 26): one tip's y 100 times off (a lost decimal point) before the impact
+// moved the impact and the orientation at it (-44 instead of -100 deg) with a warning about
+// the floor only. Now the frame is left out of both tips, named, and the result is the clean
+// file's.
+TEST(BounceAnalysisCli, AValueAHundredTimesOffIsLeftOutWithAWarning) {
+  const auto dir = temp_dir("bounce_outlier");
+  const std::string clean = dir + "/clean.txt", bad = dir + "/bad.txt";
+  run_json("bounce synth-video --seed 7 --out '" + clean + "'");
+  std::ifstream in(clean);
+  std::string text, line;
+  int changed = 0;
+  for (int n = 1; std::getline(in, line); ++n) {
+    // The first data row whose tip A y (third tab-separated column) is mid-flight: row 20.
+    if (n == 20) {
+      std::vector<std::string> f;
+      std::size_t p = 0;
+      for (std::size_t q; (q = line.find('\t', p)) != std::string::npos; p = q + 1) f.push_back(line.substr(p, q - p));
+      f.push_back(line.substr(p));
+      f[2] = std::to_string(100 * std::stod(f[2]));
+      line.clear();
+      for (std::size_t k = 0; k < f.size(); ++k) line += (k ? "\t" : "") + f[k];
+      ++changed;
+    }
+    text += line + "\n";
+  }
+  ASSERT_EQ(changed, 1);
+  write(bad, text);
+  const std::string opts = " --track-a A --track-b B --time-scale 0.125 --floor-y 0";
+  const json c = run_json("bounce analyze '" + clean + "'" + opts);
+  const auto r = run_tribolab("bounce analyze '" + bad + "'" + opts + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // One frame fewer of ~160: e within a third of its sigma of the clean file's.
+  EXPECT_NEAR(j["e_velocity"].get<double>(), c["e_velocity"].get<double>(), c["sigma_e_velocity"].get<double>() / 3);
+  EXPECT_NEAR(j["theta_impact_deg"].get<double>(), c["theta_impact_deg"].get<double>(), 1.0);
+  EXPECT_NE(r.err.find("tribolab: warning: track 'A' frame "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("left out as a typo"), std::string::npos) << r.err;
 }
 
 TEST(BounceAnalysisCli, ContactDurationLocatesTheFloorForEHeight) {

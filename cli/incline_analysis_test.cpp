@@ -319,6 +319,33 @@ TEST(InclineAnalysisCli, AValueNoRunHasIsRefusedWithItsLine) {
   EXPECT_TRUE(r.out.empty());
 }
 
+// Regression (issue 26): one y 100 times off (a lost decimal point) in a good run was fitted
+// without a word: mu 2.86 for a run of mu 0.634 (0.6350 from the clean file). Now the point is
+// left out with a warning naming its track, frame and time, and mu is the clean file's.
+TEST(InclineAnalysisCli, AValueAHundredTimesOffIsLeftOutWithAWarning) {
+  const std::string dir = temp_dir("incline_outlier");
+  const std::string f = dir + "/run.csv", clean = dir + "/clean.csv";
+  run_json("incline synth --mu 0.634 --phi-deg 16 --v0 2.62 --fps 120 --seed 3 --format csv --out " + clean);
+  std::ifstream in(clean);
+  std::string text, line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (n == 40) {  // y of a point mid-slide (track,frame,t,x,y)
+      const auto comma = line.rfind(',');
+      line = line.substr(0, comma + 1) + std::to_string(100 * std::stod(line.substr(comma + 1)));
+    }
+    text += line + "\n";
+  }
+  write(f, text);
+  const json c = run_json("incline analyze " + clean + " --phi-deg 16");
+  const auto r = run_tribolab("incline analyze " + f + " --phi-deg 16 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // One point fewer of ~190 moves mu by a small part of its sigma (0.0008): 0.2 sigma bound.
+  EXPECT_NEAR(j["mu"].get<double>(), c["mu"].get<double>(), 0.2 * c["sigma_mu"].get<double>());
+  EXPECT_NE(r.err.find("tribolab: warning: track 'disc' frame 38 "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("left out as a typo"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace tribolab::cli::testing
 

@@ -5,6 +5,7 @@
 #include "analysis/bounce_impact.hpp"
 #include "analysis/bounce_plausibility.hpp"
 #include "analysis/bounce_touch.hpp"
+#include "track/outliers.hpp"
 
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
@@ -515,7 +516,23 @@ BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip
   require_common_frames(tip_a, tip_b);
   // Wild frames the impact detector would take for impacts (a hand in the picture) are left
   // out first and named below (docs/theory.md#plausibility-checks).
-  track::Track a = tip_a, b = tip_b;
+  // An isolated value far off its neighbours' motion on either tip (a lost decimal point) is
+  // left out of both tips first ("isolated outliers").
+  std::vector<std::string> outlier_warnings;
+  std::vector<int> outlier_frames;
+  for (const track::Track* tip : {&tip_a, &tip_b}) {
+    for (const track::Outlier& x : track::isolated_outliers(*tip)) {
+      outlier_warnings.push_back(track::outlier_warning(*tip, x));
+      outlier_frames.push_back(tip->points[x.index].frame);
+    }
+  }
+  auto drop_frames = [&](const track::Track& t) {
+    track::Track kept{t.name, {}};
+    for (const auto& p : t.points)
+      if (std::find(outlier_frames.begin(), outlier_frames.end(), p.frame) == outlier_frames.end()) kept.points.push_back(p);
+    return kept;
+  };
+  track::Track a = drop_frames(tip_a), b = drop_frames(tip_b);
   const Glitches glitches = drop_glitches(a, b, options.impacts);
   r.body = track::rigid_body_from_points(a, b);
   r.centre = track::centre_track(r.body);
@@ -559,6 +576,7 @@ BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip
                   glitches.times.size(), glitches.times.front(), glitches.times.back(), 1e3 * glitches.worst);
     r.warnings.insert(r.warnings.begin(), buf);
   }
+  r.warnings.insert(r.warnings.begin(), outlier_warnings.begin(), outlier_warnings.end());
   return r;
 }
 

@@ -74,7 +74,14 @@ std::optional<NormalAccelDiagnostic> normal_accel_diagnostic(const track::Track&
   for (const auto& p : track.points)
     if (p.t > t0 && p.t <= t_end) sel.push_back(&p);
   const int n = static_cast<int>(sel.size());
-  const int w = block > 0 ? block : std::clamp(n / 8, 5, 25);
+  // Automatic block: about 8 blocks, of at least 5 points and at most 25 points or 25 ms,
+  // whichever is more (docs/theory.md#incline-analysis). The time bound keeps the blocks of
+  // a fast camera long enough to see the acceleration: 25 frames at 50 kHz span 0.5 ms,
+  // over which 10 um of noise gives a_N errors of ~1e3 m/s^2 (issue 26). Up to 1000 fps the
+  // bound is the 25 points.
+  const double span = n > 1 ? sel.back()->t - sel.front()->t : 0;
+  const int per_25ms = span > 0 ? static_cast<int>(0.025 * (n - 1) / span) : 0;
+  const int w = block > 0 ? block : std::clamp(n / 8, 5, std::max(25, per_25ms));
   std::optional<NormalAccelDiagnostic> best;
   // docs/theory.md#incline-analysis, "a_N truncation": local quadratics, with the truncation
   // error of the line's slope and intercept, estimated from the lines of blocks one and two

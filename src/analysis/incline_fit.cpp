@@ -1,5 +1,7 @@
 #include "analysis/incline_fit.hpp"
 
+#include "track/outliers.hpp"
+
 #include "analysis/frame_rotation.hpp"
 #include "incline/inverse.hpp"
 #include "incline/numeric.hpp"
@@ -521,8 +523,13 @@ const char* to_string(VerdictSource s) {
   return "none";
 }
 
-InclineAnalysis analyze_incline_run(const track::Track& track, const InclineFitOptions& o) {
+InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFitOptions& o) {
+  // An isolated value far off its neighbours' motion (a lost decimal point) would pull every
+  // fit: left out first and named (docs/theory.md#plausibility-checks, "isolated outliers").
+  const std::vector<track::Outlier> outliers = track::isolated_outliers(tracked);
+  const track::Track track = track::without(tracked, outliers);
   InclineAnalysis a;
+  for (const auto& x : outliers) a.warnings.push_back(track::outlier_warning(tracked, x));
   a.phi = o.phi;
   a.g = o.g;
   try {

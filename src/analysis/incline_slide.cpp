@@ -1,6 +1,7 @@
 #include "analysis/incline_slide.hpp"
 
 #include "numerics/error.hpp"
+#include "track/outliers.hpp"
 #include "numerics/units.hpp"
 
 #include <algorithm>
@@ -28,8 +29,12 @@ std::string SlideOptions::validate() const {
   return {};
 }
 
-SlideResult mu_from_slide(const track::Track& track, const SlideOptions& o) {
+SlideResult mu_from_slide(const track::Track& tracked, const SlideOptions& o) {
   if (const std::string e = o.validate(); !e.empty()) throw InputError("mu-from-slide", e);
+  // An isolated value far off its neighbours' motion is left out first and named
+  // (docs/theory.md#plausibility-checks, "isolated outliers").
+  const std::vector<track::Outlier> outliers = track::isolated_outliers(tracked);
+  const track::Track track = track::without(tracked, outliers);
   const auto& pts = track.points;
   const std::string where = "track '" + track.name + "'";
   if (static_cast<int>(pts.size()) < o.min_points)
@@ -77,6 +82,7 @@ SlideResult mu_from_slide(const track::Track& track, const SlideOptions& o) {
   std::size_t first = 0;
   while (first < n && s[first] - s[0] < threshold) ++first;
   SlideResult r;
+  for (const auto& x : outliers) r.warnings.push_back(track::outlier_warning(tracked, x));
   for (std::size_t i = first; i < n; ++i) {
     r.t.push_back(pts[i].t);
     r.s.push_back(s[i]);

@@ -75,7 +75,7 @@ SweepCommandOptions to_run_options(const BounceSweepOptions& a) {
       }
     }
   }
-  o.keep_values = !a.report.empty() || a.return_map;
+  o.keep_values = a.return_map;  // the report streams a bounded summary instead (visit_cells)
   o.keep_derived = !a.report.empty();
   return o;
 }
@@ -108,16 +108,20 @@ SweepMap map_of(const sweep::GridSpec& grid, const sweep::CellModel& model, cons
   return m;
 }
 
-/// The cell model that wrote the sweep file `path` (its header's physics description).
-sweep::CellModel model_of_sweep_file(const std::string& path) {
+/// The first line of the sweep file `path`.
+std::string header_line_of_sweep_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "no such file");
   std::string line;
   if (!std::getline(in, line) || in.eof()) {
     throw InputError(path + ":1", "not a tribolab sweep file (no complete header line)");
   }
-  const io::SweepHeader h = io::parse_header(line, path + ":1");
-  return bounce_cell_model_from_description(h.model);
+  return line;
+}
+
+/// The cell model that wrote the sweep file `path` (its header's physics description).
+sweep::CellModel model_of_sweep_file(const std::string& path) {
+  return bounce_cell_model_from_description(io::parse_header(header_line_of_sweep_file(path), path + ":1").model);
 }
 
 }  // namespace
@@ -127,10 +131,16 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
                           {"plain_csv", a.plain_csv}});  // before any work (app/output_paths.hpp)
   if (!a.plain_csv.empty() && a.plain_csv == a.out)
     throw InputError(field("plain_csv"), "must not be the same file as " + field("out"));
-  const SweepCommandOptions o = to_run_options(a);
+  SweepCommandOptions o = to_run_options(a);
   const BounceCell cell = make_bounce_cell(a.cell);
   check_theta_range(cell, *a.theta_deg);
   const sweep::CellModel model = bounce_cell_model(cell);
+  const io::SweepHeader header{o.grid, sweep::Shard{}, model.output_names, model.description};
+  std::optional<SweepMapSummary> summary;  // what the report shows of the map, streamed
+  if (!a.report.empty()) {
+    summary.emplace(header);
+    o.visit_cells = [&](std::int64_t c, const std::vector<double>& v) { summary->add(c, v); };
+  }
   BounceSweepResult result;
   if (a.mpi) {
     if (!built_with_mpi()) {
@@ -156,8 +166,8 @@ BounceSweepResult bounce_sweep(const BounceSweepOptions& a) {
   // reused sweep.
   if (!a.report.empty()) {
     SweepReportData d;
-    d.header = io::SweepHeader{o.grid, sweep::Shard{}, model.output_names, model.description};
-    d.values = r.values;
+    d.header = header;
+    d.map = std::move(summary);
     d.boundary = r.boundary.value_or(sweep::ContourResult{});
     d.thresholds = r.thresholds.value_or(std::vector<sweep::Threshold>{});
     d.contour_tol = o.contour.x_tol_rel;
@@ -189,16 +199,25 @@ BounceMergeResult bounce_merge(const BounceMergeOptions& a) {
   }
   const MergeResult r = run_merge_command(a.files, a.out);
   if (model) {
-    SweepReportData d;
-    const io::SweepFileScan scan = io::scan_sweep_file(r.out, &d.values);
-    d.header = scan.header;
-    const sweep::ContourOptions co;
-    if (model->output_index(co.output) < 0) {
-      throw InputError(field("report") + ": the cell model has no output '" + co.output + "'");
+    // The merged file streamed once into the boundary, the thresholds and the report's
+    // bounded summary (write_derived_maps), as `bounce sweep --report` does.
+    SweepCommandOptions o;
+    o.out = r.out;
+    o.grid = io::parse_header(header_line_of_sweep_file(r.out), r.out + ":1").grid;
+    o.keep_derived = true;
+    if (model->output_index(o.contour.output) < 0) {
+      throw InputError(field("report") + ": the cell model has no output '" + o.contour.output + "'");
     }
-    d.boundary = sweep::trace_contour(d.header.grid, *model, d.values, co);
-    d.thresholds = sweep::spin_thresholds(d.header.grid, *model, d.values, co);
-    d.contour_tol = co.x_tol_rel;
+    SweepReportData d;
+    d.header = io::SweepHeader{o.grid, sweep::Shard{}, model->output_names, model->description};
+    SweepMapSummary summary(d.header);
+    o.visit_cells = [&](std::int64_t c, const std::vector<double>& v) { summary.add(c, v); };
+    SweepCommandResult run;
+    write_derived_maps(o, *model, run);
+    d.map = std::move(summary);
+    d.boundary = std::move(*run.boundary);
+    d.thresholds = std::move(*run.thresholds);
+    d.contour_tol = o.contour.x_tol_rel;
     d.command = "bounce merge";
     report::write_html(with_study_source(sweep_report(d), Study::rugby_ball), a.report, a.plotly);
   }

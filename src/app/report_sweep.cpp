@@ -85,28 +85,7 @@ std::vector<std::int64_t> drawn_slices(std::int64_t n) {
   return out;
 }
 
-struct SliceStats {
-  std::int64_t cells = 0, finite = 0, above = 0;
-  double e_max = kNaN;
-  std::int64_t at = -1;  ///< global index of the largest e
-};
-
-SliceStats stats(const SweepReportData& d, int e, std::int64_t from, std::int64_t to) {
-  SliceStats s;
-  const std::size_t n_out = d.header.outputs.size();
-  for (std::int64_t c = from; c < to; ++c) {
-    ++s.cells;
-    const double v = d.values[static_cast<std::size_t>(c) * n_out + static_cast<std::size_t>(e)];
-    if (!std::isfinite(v)) continue;
-    ++s.finite;
-    s.above += v > 1 ? 1 : 0;
-    if (s.at < 0 || v > s.e_max) {
-      s.e_max = v;
-      s.at = c;
-    }
-  }
-  return s;
-}
+using SliceStats = SweepCellStats;
 
 std::string percent(std::int64_t part, std::int64_t whole) {
   return whole > 0 ? format_value(100.0 * static_cast<double>(part) / static_cast<double>(whole), 4) + " %" : "—";
@@ -193,29 +172,19 @@ report::Series boundary_series(const sweep::ContourResult& boundary, std::int64_
   return b;
 }
 
-report::Figure sweep_heat_map(const sweep::GridSpec& grid, const std::vector<double>& values,
-                              std::size_t n_outputs, int output, std::int64_t slice,
-                              const sweep::ContourResult* boundary, const SweepMapStyle& style) {
-  TRIBOLAB_ASSERT(grid.axes.size() >= 2 && output >= 0 && static_cast<std::size_t>(output) < n_outputs,
-                  "sweep_heat_map: bad grid or output");
+namespace {
+
+/// The heat map of z (rows: theta indices `rows`, columns: spin indices `cols` of the grid)
+/// with the slice's boundary drawn over it.
+report::Figure heat_map_of(const sweep::GridSpec& grid, const std::vector<std::int64_t>& rows,
+                           const std::vector<std::int64_t>& cols, std::vector<std::vector<double>> z,
+                           std::int64_t slice, const sweep::ContourResult* boundary, const SweepMapStyle& style) {
   const sweep::Axis& th = grid.axes[grid.axes.size() - 2];
   const sweep::Axis& sp = grid.axes.back();
-  const std::int64_t per_slice = th.count * sp.count;
-  TRIBOLAB_ASSERT(values.size() >= static_cast<std::size_t>((slice + 1) * per_slice) * n_outputs,
-                  "sweep_heat_map: too few values for the slice");
-  const std::vector<std::int64_t> rows = drawn_indices(th.count, style.max_side);
-  const std::vector<std::int64_t> cols = drawn_indices(sp.count, style.max_side);
   report::HeatMap h;
   for (std::int64_t j : cols) h.x.push_back(sp.value(j));
   for (std::int64_t i : rows) h.y.push_back(th.value(i));
-  for (std::int64_t i : rows) {
-    std::vector<double> row;
-    row.reserve(cols.size());
-    for (std::int64_t j : cols)
-      row.push_back(values[static_cast<std::size_t>(slice * per_slice + i * sp.count + j) * n_outputs +
-                           static_cast<std::size_t>(output)]);
-    h.z.push_back(std::move(row));
-  }
+  h.z = std::move(z);
   h.colorbar_title = style.colorbar_title;
   h.colorscale = style.colorscale;
   h.z_mid = style.z_mid;
@@ -233,9 +202,115 @@ report::Figure sweep_heat_map(const sweep::GridSpec& grid, const std::vector<dou
   return f;
 }
 
+}  // namespace
+
+report::Figure sweep_heat_map(const sweep::GridSpec& grid, const std::vector<double>& values,
+                              std::size_t n_outputs, int output, std::int64_t slice,
+                              const sweep::ContourResult* boundary, const SweepMapStyle& style) {
+  TRIBOLAB_ASSERT(grid.axes.size() >= 2 && output >= 0 && static_cast<std::size_t>(output) < n_outputs,
+                  "sweep_heat_map: bad grid or output");
+  const sweep::Axis& th = grid.axes[grid.axes.size() - 2];
+  const sweep::Axis& sp = grid.axes.back();
+  const std::int64_t per_slice = th.count * sp.count;
+  TRIBOLAB_ASSERT(values.size() >= static_cast<std::size_t>((slice + 1) * per_slice) * n_outputs,
+                  "sweep_heat_map: too few values for the slice");
+  const std::vector<std::int64_t> rows = drawn_indices(th.count, style.max_side);
+  const std::vector<std::int64_t> cols = drawn_indices(sp.count, style.max_side);
+  std::vector<std::vector<double>> z;
+  for (std::int64_t i : rows) {
+    std::vector<double> row;
+    row.reserve(cols.size());
+    for (std::int64_t j : cols)
+      row.push_back(values[static_cast<std::size_t>(slice * per_slice + i * sp.count + j) * n_outputs +
+                           static_cast<std::size_t>(output)]);
+    z.push_back(std::move(row));
+  }
+  return heat_map_of(grid, rows, cols, std::move(z), slice, boundary, style);
+}
+
+void SweepCellStats::add(double e, std::int64_t cell) {
+  ++cells;
+  if (!std::isfinite(e)) return;
+  ++finite;
+  above += e > 1 ? 1 : 0;
+  if (at < 0 || e > e_max) {
+    e_max = e;
+    at = cell;
+  }
+}
+
+SweepMapSummary::SweepMapSummary(const io::SweepHeader& header) {
+  const auto index_of = [&](const std::string& name) {
+    const auto it = std::find(header.outputs.begin(), header.outputs.end(), name);
+    return it == header.outputs.end() ? -1 : static_cast<int>(it - header.outputs.begin());
+  };
+  e_ = index_of("e");
+  omega_out_ = index_of("omega_out");
+  contacts_ = index_of("contacts");
+  e_first_ = index_of("e_first");
+  TRIBOLAB_ASSERT(e_ >= 0, "sweep report: no output e");
+  const sweep::GridSpec& grid = header.grid;
+  const sweep::Axis& th = grid.axes[grid.axes.size() - 2];
+  const sweep::Axis& sp = grid.axes.back();
+  per_slice_ = th.count * sp.count;
+  n_spin_ = sp.count;
+  drawn_slices = ::tribolab::app::drawn_slices(grid.cell_count() / per_slice_);
+  rows = drawn_indices(th.count, kReportMaxSide);
+  cols = drawn_indices(sp.count, kReportMaxSide);
+  row_at_.assign(static_cast<std::size_t>(th.count), -1);
+  col_at_.assign(static_cast<std::size_t>(sp.count), -1);
+  for (std::size_t k = 0; k < rows.size(); ++k) row_at_[static_cast<std::size_t>(rows[k])] = static_cast<std::int64_t>(k);
+  for (std::size_t k = 0; k < cols.size(); ++k) col_at_[static_cast<std::size_t>(cols[k])] = static_cast<std::int64_t>(k);
+  const std::vector<std::vector<double>> blank(rows.size(), std::vector<double>(cols.size(), kNaN));
+  for (std::int64_t s = 0; s < std::min<std::int64_t>(200, grid.cell_count() / per_slice_); ++s) slices[s];
+  for (std::int64_t s : drawn_slices) {
+    slices[s];
+    e_map[s] = blank;
+    if (omega_out_ >= 0) omega_out_map[s] = blank;
+  }
+}
+
+void SweepMapSummary::add(std::int64_t cell, const std::vector<double>& v) {
+  const double e = v[static_cast<std::size_t>(e_)];
+  all.add(e, cell);
+  if (contacts_ >= 0 && e_first_ >= 0) {
+    const double ef = v[static_cast<std::size_t>(e_first_)];
+    first_phase.add(ef, cell);
+    several_contacts += v[static_cast<std::size_t>(contacts_)] > 1 ? 1 : 0;
+    first_phase_differs += std::isfinite(e) && std::isfinite(ef) && (e > 1) != (ef > 1) ? 1 : 0;
+  }
+  const std::int64_t s = cell / per_slice_;
+  const auto it = slices.find(s);
+  if (it == slices.end()) return;
+  it->second.add(e, cell);
+  const auto m = e_map.find(s);
+  if (m == e_map.end()) return;
+  const std::int64_t r = row_at_[static_cast<std::size_t>((cell % per_slice_) / n_spin_)];
+  const std::int64_t c = col_at_[static_cast<std::size_t>(cell % n_spin_)];
+  if (r < 0 || c < 0) return;
+  m->second[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = e;
+  if (omega_out_ >= 0)
+    omega_out_map[s][static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = v[static_cast<std::size_t>(omega_out_)];
+}
+
+SweepMapSummary summarize_sweep_map(const io::SweepHeader& header, const std::vector<double>& values) {
+  SweepMapSummary m(header);
+  const std::size_t n_out = header.outputs.size();
+  TRIBOLAB_ASSERT(values.size() == static_cast<std::size_t>(header.grid.cell_count()) * n_out,
+                  "summarize_sweep_map: values size " + std::to_string(values.size()));
+  std::vector<double> row(n_out);
+  for (std::int64_t c = 0; c < header.grid.cell_count(); ++c) {
+    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(c) * n_out),
+                static_cast<std::ptrdiff_t>(n_out), row.begin());
+    m.add(c, row);
+  }
+  return m;
+}
+
 report::Report sweep_report(const SweepReportData& d) {
   const sweep::GridSpec& grid = d.header.grid;
-  const std::size_t n_out = d.header.outputs.size();
+  TRIBOLAB_ASSERT(d.map.has_value(), "sweep_report: no map summary");
+  const SweepMapSummary& map = *d.map;
   const auto index_of = [&](const std::string& name) {
     const auto it = std::find(d.header.outputs.begin(), d.header.outputs.end(), name);
     return it == d.header.outputs.end() ? -1 : static_cast<int>(it - d.header.outputs.begin());
@@ -246,7 +321,7 @@ report::Report sweep_report(const SweepReportData& d) {
   const sweep::Axis& sp = grid.axes.back();
   const std::int64_t per_slice = th.count * sp.count;
   const std::int64_t n_slices = grid.cell_count() / per_slice;
-  const std::vector<std::int64_t> shown = drawn_slices(n_slices);
+  const std::vector<std::int64_t>& shown = map.drawn_slices;
   const std::string x_title = spin_title(sp.quantity), y_title = theta_title(d.header.model);
 
   report::Report r;
@@ -272,7 +347,7 @@ report::Report sweep_report(const SweepReportData& d) {
 
   // Summary numbers.
   auto& s = r.add_section("Summary");
-  const SliceStats all = stats(d, e, 0, grid.cell_count());
+  const SliceStats& all = map.all;
   std::int64_t points = 0, found = 0;
   for (const auto& l : d.boundary.lines) points += static_cast<std::int64_t>(l.points.size());
   double er_min = kNaN;
@@ -305,13 +380,8 @@ report::Report sweep_report(const SweepReportData& d) {
   const int contacts = index_of("contacts"), e_first = index_of("e_first");
   if (contacts >= 0 && e_first >= 0) {
     // The whole impact against its first contact phase (docs/theory.md#sweeps).
-    std::int64_t several = 0, differ = 0;
-    const SliceStats first = stats(d, e_first, 0, grid.cell_count());
-    for (std::int64_t c = 0; c < grid.cell_count(); ++c) {
-      const double* v = &d.values[static_cast<std::size_t>(c) * n_out];
-      several += v[contacts] > 1 ? 1 : 0;
-      differ += std::isfinite(v[e]) && std::isfinite(v[e_first]) && (v[e] > 1) != (v[e_first] > 1) ? 1 : 0;
-    }
+    const std::int64_t several = map.several_contacts, differ = map.first_phase_differs;
+    const SliceStats& first = map.first_phase;
     sum.rows.push_back({"cells whose impact has several contacts", std::to_string(several)});
     sum.rows.push_back({"largest e of the first contact phase alone", v4(first.e_max)});
     sum.rows.push_back({"cells where the first phase alone is on the other side of e = 1", std::to_string(differ)});
@@ -322,7 +392,7 @@ report::Report sweep_report(const SweepReportData& d) {
     per.caption = "Per slice";
     per.header = {"slice", "largest e", "at", "cells with e > 1"};
     for (std::int64_t k = 0; k < n_slices && k < 200; ++k) {
-      const SliceStats st = stats(d, e, k * per_slice, (k + 1) * per_slice);
+      const SliceStats& st = map.slices.at(k);
       per.rows.push_back({slice_label(d.boundary, k), v4(st.e_max), where(grid, st.at),
                           std::to_string(st.above) + " (" + percent(st.above, st.finite) + ")"});
     }
@@ -351,8 +421,8 @@ report::Report sweep_report(const SweepReportData& d) {
     st.x_title = x_title;
     st.y_title = y_title;
     st.max_side = kReportMaxSide;
-    report::Figure f = sweep_heat_map(grid, d.values, n_out, e, slice, &d.boundary, st);
-    const SliceStats ss = stats(d, e, slice * per_slice, (slice + 1) * per_slice);
+    report::Figure f = heat_map_of(grid, map.rows, map.cols, map.e_map.at(slice), slice, &d.boundary, st);
+    const SliceStats& ss = map.slices.at(slice);
     if (ss.finite > 0 && (th.count > kReportMaxSide || sp.count > kReportMaxSide))
       f.caption += " Over the whole grid of this slice: largest e " + v4(ss.e_max) +
                    (ss.at >= 0 ? " at " + where(grid, ss.at) : "") + "; e > 1 in " + percent(ss.above, ss.finite) +
@@ -375,7 +445,7 @@ report::Report sweep_report(const SweepReportData& d) {
       st.colorscale = report::ColorScale::PuOr;  // the sign is the spin's sense: white at no spin
       st.z_mid = 0.0;
       st.max_side = kReportMaxSide;
-      o.add_figure(sweep_heat_map(grid, d.values, n_out, omega_out, slice, &d.boundary, st));
+      o.add_figure(heat_map_of(grid, map.rows, map.cols, map.omega_out_map.at(slice), slice, &d.boundary, st));
     }
   }
 

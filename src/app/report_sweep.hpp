@@ -10,6 +10,8 @@
 #include "sweep/runner.hpp"
 
 #include <cstdint>
+#include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,11 +50,49 @@ report::Figure sweep_heat_map(const sweep::GridSpec& grid, const std::vector<dou
 inline constexpr std::int64_t kReportMaxSlices = 6;    ///< slices drawn as maps
 inline constexpr std::int64_t kReportMaxSide = 201;    ///< grid values per map axis
 
-/// Everything a sweep report shows: a complete sweep file read back and the boundary and
+/// Counts of e over some cells of a map.
+struct SweepCellStats {
+  std::int64_t cells = 0, finite = 0, above = 0;  ///< cells; with a result; with e > 1
+  double e_max = std::numeric_limits<double>::quiet_NaN();  ///< largest e (NaN: none)
+  std::int64_t at = -1;                                      ///< global index of the largest e
+  void add(double e, std::int64_t cell);
+};
+
+/// What a sweep report shows of the map, gathered cell by cell (add) as the finished file is
+/// read: the counts of the whole grid and per slice (the first 200 and the drawn ones), and
+/// the drawn values of e and omega_out (every k-th row and column, at most kReportMaxSide per
+/// axis, on at most kReportMaxSlices slices). Bounded by those, not by the grid: the report
+/// of a 4e6-cell sweep holds no more than one of 40,000 (issue 26: the whole map was loaded).
+class SweepMapSummary {
+ public:
+  explicit SweepMapSummary(const io::SweepHeader& header);
+  /// The cell of global index `cell` (in order or not) with its outputs (header.outputs).
+  void add(std::int64_t cell, const std::vector<double>& outputs);
+
+  SweepCellStats all;                         ///< e over the whole grid
+  SweepCellStats first_phase;                 ///< e_first over the whole grid (when present)
+  std::int64_t several_contacts = 0;          ///< cells whose impact has several contacts
+  std::int64_t first_phase_differs = 0;       ///< cells where e_first is on the other side of 1
+  std::map<std::int64_t, SweepCellStats> slices;  ///< per slice: the first 200 and the drawn
+  std::vector<std::int64_t> drawn_slices;     ///< the slices drawn as maps
+  std::vector<std::int64_t> rows, cols;       ///< the drawn theta and spin indices
+  /// Per drawn slice, e and omega_out (empty when absent) at rows x cols.
+  std::map<std::int64_t, std::vector<std::vector<double>>> e_map, omega_out_map;
+
+ private:
+  int e_ = -1, omega_out_ = -1, contacts_ = -1, e_first_ = -1;
+  std::int64_t per_slice_ = 1, n_spin_ = 1;
+  std::vector<std::int64_t> row_at_, col_at_;  // drawn position of each index, or -1
+};
+
+/// The summary of a whole map held in memory (cell_count x outputs), e.g. from evaluate_grid.
+SweepMapSummary summarize_sweep_map(const io::SweepHeader& header, const std::vector<double>& values);
+
+/// Everything a sweep report shows: a complete sweep file's summary and the boundary and
 /// thresholds the sweep traced (the report builder traces nothing itself).
 struct SweepReportData {
-  io::SweepHeader header;     ///< grid, outputs and physics of the file (shard 0/1)
-  std::vector<double> values;  ///< cell_count x outputs
+  io::SweepHeader header;  ///< grid, outputs and physics of the file (shard 0/1)
+  std::optional<SweepMapSummary> map;  ///< the file's values as the report shows them
   sweep::ContourResult boundary;           ///< the e = 1 polylines
   std::vector<sweep::Threshold> thresholds;  ///< per slice and angle
   double contour_tol = 1e-9;  ///< ContourOptions::x_tol_rel used

@@ -18,10 +18,16 @@
 namespace tribolab::app {
 namespace {
 
-SweepReportData data_for(const sweep::GridSpec& grid, const sweep::CellModel& model) {
-  SweepReportData d;
+/// The report's data with the whole map kept beside it, for the tests to compare against.
+struct TestData : SweepReportData {
+  std::vector<double> values;  ///< cell_count x outputs
+};
+
+TestData data_for(const sweep::GridSpec& grid, const sweep::CellModel& model) {
+  TestData d;
   d.header = io::SweepHeader{grid, sweep::Shard{}, model.output_names, model.description};
   d.values = sweep::evaluate_grid(grid, model);
+  d.map = summarize_sweep_map(d.header, d.values);
   const sweep::ContourOptions co;
   d.boundary = sweep::trace_contour(grid, model, d.values, co);
   d.thresholds = sweep::spin_thresholds(grid, model, d.values, co);
@@ -52,7 +58,7 @@ std::string row_value(const report::Table& t, const std::string& name) {
 
 TEST(SweepReport, MapCaptionIsComputedFromTheCellsAndTheBoundary) {
   const sweep::GridSpec g = seed_window();
-  const SweepReportData d = data_for(g, sweep::synthetic::wave_model());
+  const TestData d = data_for(g, sweep::synthetic::wave_model());
   SweepMapStyle style;
   style.title = "e";
   style.x_title = "incoming spin ω (rad/s)";
@@ -91,7 +97,7 @@ TEST(SweepReport, MapCaptionIsComputedFromTheCellsAndTheBoundary) {
 
 TEST(SweepReport, HeatMapHoldsTheGridValuesAndTheBoundary) {
   const sweep::GridSpec g = seed_window();
-  const SweepReportData d = data_for(g, sweep::synthetic::wave_model());
+  const TestData d = data_for(g, sweep::synthetic::wave_model());
   ASSERT_FALSE(d.boundary.lines.empty()) << "the wave model crosses e = 1 near 40 rad/s";
   SweepMapStyle style;
   style.title = "e";
@@ -131,7 +137,7 @@ TEST(SweepReport, LargeMapsAreThinnedToTheBound) {
   for (const auto& [n, drawn] : {std::pair<std::int64_t, std::size_t>{1001, 201}, {1002, 168}, {202, 102},
                                  {201, 201}, {2, 2}}) {
     sweep::GridSpec g = seed_window(n, 3);
-    const SweepReportData d = data_for(g, sweep::synthetic::trivial_model());
+    const TestData d = data_for(g, sweep::synthetic::trivial_model());
     SweepMapStyle style;
     style.max_side = kReportMaxSide;
     const report::Figure f = sweep_heat_map(g, d.values, 4, 0, 0, nullptr, style);
@@ -147,7 +153,7 @@ TEST(SweepReport, LargeMapsAreThinnedToTheBound) {
 
 TEST(SweepReport, OneSliceHasEMapSpinMapThresholdAndEnergyRatio) {
   const sweep::GridSpec g = seed_window();
-  const SweepReportData d = data_for(g, sweep::synthetic::wave_model());
+  const TestData d = data_for(g, sweep::synthetic::wave_model());
   const report::Report r = sweep_report(d);
   EXPECT_TRUE(r.validate().empty()) << r.validate();
   EXPECT_EQ(figures(r), 4);
@@ -173,7 +179,7 @@ TEST(SweepReport, OneSliceHasEMapSpinMapThresholdAndEnergyRatio) {
 
 TEST(SweepReport, WithoutSpinOutputOrMassOnlyEMapAndThreshold) {
   // The ellipse model has only "e" and no mass or inertia: no omega_out map, no energy ratio.
-  const SweepReportData d = data_for(seed_window(15, 11), sweep::synthetic::ellipse_model());
+  const TestData d = data_for(seed_window(15, 11), sweep::synthetic::ellipse_model());
   const report::Report r = sweep_report(d);
   EXPECT_TRUE(r.validate().empty()) << r.validate();
   EXPECT_EQ(figures(r), 2);
@@ -183,7 +189,7 @@ TEST(SweepReport, ThirdAxisDrawsAtMostSixSlices) {
   for (const auto& [n_speed, expected] : {std::pair{4, 4 + 4 + 2}, std::pair{9, 6 + 6 + 2}}) {
     sweep::GridSpec g = seed_window();
     g.axes.insert(g.axes.begin(), sweep::Axis{sweep::Quantity::speed, 3, 5, n_speed});
-    const SweepReportData d = data_for(g, sweep::synthetic::wave_model());
+    const TestData d = data_for(g, sweep::synthetic::wave_model());
     const report::Report r = sweep_report(d);
     EXPECT_TRUE(r.validate().empty()) << r.validate();
     EXPECT_EQ(figures(r), expected) << n_speed << " speeds";
@@ -200,7 +206,7 @@ TEST(SweepReport, ThirdAxisDrawsAtMostSixSlices) {
 TEST(SweepReport, HugeGridStaysUnderTheDocumentedSize) {
   sweep::GridSpec g = seed_window(401, 401);
   g.axes.insert(g.axes.begin(), sweep::Axis{sweep::Quantity::speed, 3, 5, 7});
-  const SweepReportData d = data_for(g, sweep::synthetic::wave_model());
+  const TestData d = data_for(g, sweep::synthetic::wave_model());
   const report::Report r = sweep_report(d);
   EXPECT_EQ(figures(r), 6 + 6 + 2);
   const std::string path =
@@ -211,6 +217,30 @@ TEST(SweepReport, HugeGridStaysUnderTheDocumentedSize) {
   std::filesystem::remove(path);
   EXPECT_LT(bytes, 15'000'000u);
   EXPECT_GT(bytes, 10'000'000u) << "12 maps of 201 x 201 full-precision values are drawn";
+}
+
+// Issue 26: the report of a big sweep loaded its whole map. Its summary, gathered cell by
+// cell, holds the drawn values only: for a 2001 x 2001 grid (4e6 cells) at most 201 x 201 per
+// map, whatever the grid; and cells given in any order land in the same place.
+TEST(SweepMapSummary, HoldsTheDrawnValuesOnlyAndTakesCellsInAnyOrder) {
+  const sweep::CellModel model = sweep::synthetic::wave_model();
+  sweep::GridSpec big;
+  big.axes = {{sweep::Quantity::theta_deg, 100, 170, 2001}, {sweep::Quantity::omega, 30, 50, 2001}};
+  const SweepMapSummary s(io::SweepHeader{big, sweep::Shard{}, model.output_names, model.description});
+  ASSERT_EQ(s.e_map.size(), 1u);
+  EXPECT_LE(s.e_map.at(0).size(), static_cast<std::size_t>(kReportMaxSide));
+  EXPECT_LE(s.e_map.at(0).front().size(), static_cast<std::size_t>(kReportMaxSide));
+  const sweep::GridSpec g = seed_window(9, 7);
+  const TestData d = data_for(g, model);
+  SweepMapSummary reversed(d.header);
+  const std::size_t n_out = model.output_names.size();
+  for (std::int64_t c = g.cell_count(); c-- > 0;) {
+    reversed.add(c, std::vector<double>(d.values.begin() + static_cast<std::ptrdiff_t>(c * n_out),
+                                        d.values.begin() + static_cast<std::ptrdiff_t>((c + 1) * n_out)));
+  }
+  EXPECT_EQ(reversed.e_map.at(0), d.map->e_map.at(0));
+  EXPECT_EQ(reversed.all.above, d.map->all.above);
+  EXPECT_EQ(reversed.all.e_max, d.map->all.e_max);
 }
 
 }  // namespace

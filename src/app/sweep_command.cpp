@@ -45,24 +45,38 @@ void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& mo
                         SweepCommandResult& r) {
   const bool boundary = !o.contour_out.empty() || o.keep_derived;
   const bool thresholds = !o.threshold_out.empty() || o.keep_derived;
-  if (!boundary && !thresholds && !o.keep_values) return;
-  std::vector<double> values;
-  // Checked again although the sweep just wrote or verified it: the maps index `values` by
+  if (!boundary && !thresholds && !o.keep_values && !o.visit_cells) return;
+  // Checked again although the sweep just wrote or verified it: the maps index the values by
   // cell, and a file replaced meanwhile (by hand; a second sweep is refused by the lock)
-  // must be an error, not a wrong map.
-  const SweepFileScan scan = scan_sweep_file(o.out, &values);
+  // must be an error, not a wrong map. The header first, the cell count after the stream.
   const SweepHeader header{o.grid, o.shard, model.output_names, model.description};
-  if (format_header(scan.header) != format_header(header) || scan.complete_cells != scan.expected_cells ||
-      scan.torn_tail) {
-    throw InputError(o.out, "changed while the contour/threshold maps were made (holds " +
-                                std::to_string(scan.complete_cells) + " of " +
-                                std::to_string(o.grid.cell_count()) +
-                                " cells of this sweep); rerun the sweep");
-  }
+  auto changed = [&](std::int64_t cells) {
+    return InputError(o.out, "changed while the contour/threshold maps were made (holds " + std::to_string(cells) +
+                                 " of " + std::to_string(o.grid.cell_count()) + " cells of this sweep); rerun the sweep");
+  };
+  if (format_header(parse_header(header_line_of(o.out), o.out + ":1")) != format_header(header)) throw changed(0);
   sweep::ContourOptions co = o.contour;
   co.threads = o.threads;
+  const int out = model.output_index(co.output);
+  std::optional<sweep::MapTracer> tracer;
+  if (boundary || thresholds) tracer.emplace(o.grid, model, co, boundary, thresholds);
+  const std::int64_t n_spin = o.grid.axes.back().count, total = o.grid.cell_count();
+  std::vector<double> row, values;
+  const SweepFileScan scan = scan_sweep_file(o.out, [&](std::int64_t cell, const std::vector<double>& outputs) {
+    if (cell >= total) throw changed(cell + 1);
+    if (tracer) {
+      row.push_back(outputs[static_cast<std::size_t>(out)]);
+      if (static_cast<std::int64_t>(row.size()) == n_spin) {
+        tracer->add_row(row);
+        row.clear();
+      }
+    }
+    if (o.keep_values) values.insert(values.end(), outputs.begin(), outputs.end());
+    if (o.visit_cells) o.visit_cells(cell, outputs);
+  });
+  if (scan.complete_cells != total || scan.torn_tail) throw changed(scan.complete_cells);
   if (boundary) {
-    sweep::ContourResult c = sweep::trace_contour(o.grid, model, values, co);
+    sweep::ContourResult c = tracer->contour();
     if (!o.contour_out.empty()) {
       AtomicFile file(o.contour_out);
       write_contour_csv(file.stream(), c);
@@ -74,7 +88,7 @@ void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& mo
     if (o.keep_derived) r.boundary = std::move(c);
   }
   if (thresholds) {
-    std::vector<sweep::Threshold> rows = sweep::spin_thresholds(o.grid, model, values, co);
+    std::vector<sweep::Threshold> rows = tracer->thresholds();
     if (!o.threshold_out.empty()) {
       AtomicFile file(o.threshold_out);
       write_threshold_csv(file.stream(), o.grid, rows);

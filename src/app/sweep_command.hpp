@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/sweep_file.hpp"
 #include "sweep/contour.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/runner.hpp"
@@ -35,6 +36,9 @@ struct SweepCommandOptions {
   sweep::ContourOptions contour;  ///< output, level, tolerance of the derived maps
   /// Keep the finished file's values in the result (read back once: cells x outputs doubles).
   bool keep_values = false;
+  /// Called with each cell (global index, outputs) of the finished file as the derived maps
+  /// are made, the file read once and streamed (e.g. a report's bounded summary); may be empty.
+  io::SweepCellVisitor visit_cells;
   /// Trace the boundary and thresholds (once, with `contour`) and keep them in the result,
   /// e.g. for a report, whether or not their CSV files are asked for.
   bool keep_derived = false;
@@ -101,9 +105,10 @@ struct MergeResult {
 /// different sweeps, missing/duplicate shards, incomplete or corrupt files.
 MergeResult run_merge_command(const std::vector<std::string>& inputs, const std::string& out);
 
-/// Writes the --contour / --threshold files of a finished sweep (reads o.out once) and
-/// counts their contents into r; keeps values, boundary and thresholds in r when o asks.
-/// Each map is traced once. Needs the whole grid.
+/// Writes the --contour / --threshold files of a finished sweep (streams o.out once, holding
+/// two rows of the map and the crossings, not the map: sweep::MapTracer) and counts their
+/// contents into r; keeps values, boundary and thresholds in r when o asks and gives each cell
+/// to o.visit_cells. Each map is traced once. Needs the whole grid.
 void write_derived_maps(const SweepCommandOptions& o, const sweep::CellModel& model,
                         SweepCommandResult& r);
 

@@ -378,6 +378,48 @@ TEST(SweepCommand, WritesContourAndThresholdMaps) {
   EXPECT_EQ(read_file(o.contour_out), first);
 }
 
+// Issue 26: --contour/--threshold/--report read the whole map into memory (430 MB for 4e6
+// cells) to trace it. Now the finished file is streamed once: the maps from the stream are
+// those of the whole map in memory (the same polylines, point for point, and thresholds),
+// every cell reaches the visitor once and in order, and no values are kept unless asked.
+TEST(SweepCommand, DerivedMapsFromTheStreamEqualThoseOfTheWholeMap) {
+  const std::string dir = temp_dir("stream");
+  const sweep::CellModel m = sweep::synthetic::wave_model();
+  SweepCommandOptions o = options_for(dir + "/map.csv");
+  ASSERT_EQ(run_sweep_command(o, m, nullptr).status, SweepStatus::completed);
+  o.keep_derived = true;
+  std::int64_t next = 0;
+  bool in_order = true;
+  o.visit_cells = [&](std::int64_t c, const std::vector<double>& v) {
+    in_order = in_order && c == next && v.size() == m.output_names.size();
+    ++next;
+  };
+  SweepCommandResult r;
+  write_derived_maps(o, m, r);
+  EXPECT_TRUE(in_order);
+  EXPECT_EQ(next, o.grid.cell_count());
+  EXPECT_TRUE(r.values.empty());
+  std::vector<double> values;
+  scan_sweep_file(o.out, &values);
+  sweep::ContourOptions co;
+  co.threads = o.threads;
+  const sweep::ContourResult whole = sweep::trace_contour(o.grid, m, values, co);
+  ASSERT_TRUE(r.boundary.has_value());
+  ASSERT_EQ(r.boundary->lines.size(), whole.lines.size());
+  ASSERT_GT(whole.lines.size(), 0u);
+  for (std::size_t l = 0; l < whole.lines.size(); ++l) {
+    ASSERT_EQ(r.boundary->lines[l].points.size(), whole.lines[l].points.size());
+    for (std::size_t k = 0; k < whole.lines[l].points.size(); ++k) {
+      EXPECT_EQ(r.boundary->lines[l].points[k].theta_deg, whole.lines[l].points[k].theta_deg);
+      EXPECT_EQ(r.boundary->lines[l].points[k].spin, whole.lines[l].points[k].spin);
+    }
+  }
+  const std::vector<sweep::Threshold> rows = sweep::spin_thresholds(o.grid, m, values, co);
+  ASSERT_TRUE(r.thresholds.has_value());
+  ASSERT_EQ(r.thresholds->size(), rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) EXPECT_EQ((*r.thresholds)[k].omega, rows[k].omega);
+}
+
 TEST(SweepCommand, ProgressGoesToTheGivenCallbackOnly) {
   const std::string dir = temp_dir("progress");
   sweep::Progress last;

@@ -293,6 +293,13 @@ void check_cell_line(std::string_view line, const sweep::GridSpec& grid, const s
 }
 
 SweepFileScan scan_sweep_file(const std::string& path, std::vector<double>* values) {
+  if (values != nullptr) values->clear();
+  return scan_sweep_file(path, [&](std::int64_t, const std::vector<double>& row) {
+    if (values != nullptr) values->insert(values->end(), row.begin(), row.end());
+  });
+}
+
+SweepFileScan scan_sweep_file(const std::string& path, const SweepCellVisitor& visit) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open");
   SweepFileScan scan;
@@ -312,7 +319,6 @@ SweepFileScan scan_sweep_file(const std::string& path, std::vector<double>* valu
   const sweep::GridSpec& grid = scan.header.grid;
   const std::size_t n_out = scan.header.outputs.size();
   scan.expected_cells = scan.header.shard.cells(grid.cell_count());
-  if (values != nullptr) values->clear();
   std::vector<double> row(n_out);
   std::int64_t line_no = 2;
   while (std::getline(in, line)) {
@@ -328,7 +334,7 @@ SweepFileScan scan_sweep_file(const std::string& path, std::vector<double>* valu
     }
     const sweep::CellInput cell = grid.cell(scan.header.shard.global(scan.complete_cells));
     check_cell_line(line, grid, cell, n_out, row.data(), where);
-    if (values != nullptr) values->insert(values->end(), row.begin(), row.end());
+    if (visit) visit(scan.complete_cells, row);
     ++scan.complete_cells;
     scan.valid_bytes += line.size() + 1;
   }

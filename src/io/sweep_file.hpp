@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -68,5 +69,11 @@ struct SweepFileScan {
 /// reported as torn_tail, not an error. With `values`, the outputs of the complete lines
 /// are stored (complete_cells x outputs). Throws InputError naming file:line.
 SweepFileScan scan_sweep_file(const std::string& path, std::vector<double>* values = nullptr);
+
+/// Called with each verified complete data line's local cell index and outputs.
+using SweepCellVisitor = std::function<void(std::int64_t local, const std::vector<double>& outputs)>;
+/// As above, streaming: each complete line's outputs go to `visit` as it is read, so a file of
+/// any size is read in constant memory (the contour, thresholds and report of a big sweep).
+SweepFileScan scan_sweep_file(const std::string& path, const SweepCellVisitor& visit);
 
 }  // namespace tribolab::io

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -86,5 +87,32 @@ std::string status_name(Threshold::Status s);  ///< "found", "below_grid", "none
 std::vector<Threshold> spin_thresholds(const GridSpec& grid, const CellModel& model,
                                        const std::vector<double>& values,
                                        const ContourOptions& options);
+
+/// The boundary and the thresholds of a map whose values arrive one theta row at a time (the
+/// grid's cell order: slice, then theta, then spin fastest), so a map of any size is traced
+/// holding two rows, the crossings found and one Threshold per row, never the whole map
+/// (`bounce sweep --contour/--threshold/--report` on a file; issue 26: 430 MB for 4e6 cells
+/// before). trace_contour and spin_thresholds below are this tracer over a vector.
+class MapTracer {
+ public:
+  /// Traces `options.output` = `options.level`; `boundary` / `thresholds` say which of the two
+  /// maps are wanted (the other costs nothing).
+  MapTracer(const GridSpec& grid, const CellModel& model, const ContourOptions& options, bool boundary = true,
+            bool thresholds = true);
+  ~MapTracer();
+  MapTracer(const MapTracer&) = delete;
+  MapTracer& operator=(const MapTracer&) = delete;
+  /// The traced output's values of the next row (spin-axis count of them).
+  void add_row(const std::vector<double>& row);
+  std::int64_t rows_added() const;
+  /// After every row: the polylines (refined by root finding, `options.threads`).
+  ContourResult contour() const;
+  /// After every row: one Threshold per slice and angle.
+  std::vector<Threshold> thresholds() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace tribolab::sweep
