@@ -108,10 +108,11 @@ void add_fit(CLI::App* area) {
   cmd->add_option("--mu0", o.mu0, "starting mu");
   add_report_option(*cmd, o.report, o.plotly);
   add_json_flag(*cmd, opts->json);
+  declare_results(*cmd, bounce_fit_result_keys());
   cmd->callback([opts] {
     json j = bounce_fit(opts->o).json;
     if (!opts->json) j.erase("residuals");  // the people's listing leaves the per-row table out
-    print_result(j, opts->json);
+    print_result(j, opts->json, &bounce_fit_result_keys());
   });
 }
 

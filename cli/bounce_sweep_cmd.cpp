@@ -4,6 +4,7 @@
 // (src/app/bounce_sweep.hpp), each cell the one bounce cell model (src/app/bounce_cell.hpp).
 // docs/cli.md#bounce-sweep, docs/theory.md#sweeps.
 #include "declared_options.hpp"
+#include "app/result_keys.hpp"
 #include "bounce_sweep_cmd.hpp"
 
 #include <atomic>
@@ -123,7 +124,7 @@ void run_sweep(app::BounceSweepOptions o, const SweepText& t) {
     o.cancel = &g_interrupted;
     const app::BounceSweepResult r = app::bounce_sweep(o);
     if (!r.is_reporting_rank) return;  // rank 0 reports
-    print_result(r.json, t.json);
+    print_result(r.json, t.json, &app::bounce_sweep_result_keys());
   } catch (...) {
     // Every rank sees the same error; only rank 0 prints it (one line, SPEC section 5).
     if (rank != 0) (void)std::freopen("/dev/null", "w", stderr);
@@ -169,6 +170,7 @@ void register_bounce_sweep(CLI::App& bounce_area) {
   add_ball_options(cmd, cell.ball);
   add_law_options(cmd, cell.law, /*with_mu=*/false);  // --mu belongs to the sweep (sweepable)
   cmd->add_option("--g", cell.g, "gravitational acceleration, m/s^2");
+  declare_results(*cmd, app::bounce_sweep_result_keys());
   cmd->callback([opts, text] { run_sweep(*opts, *text); });
 
   auto merge_opts = std::make_shared<app::BounceMergeOptions>();

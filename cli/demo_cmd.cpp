@@ -1,6 +1,8 @@
 // `tribolab demo --out DIR`: runs the case studies and writes DIR/report.html (src/app/demo.hpp).
 #include "app.hpp"
+#include "declared_options.hpp"
 #include "app/demo.hpp"
+#include "app/result_keys.hpp"
 
 #include <iostream>
 #include <sstream>
@@ -21,6 +23,7 @@ void register_demo(CLI::App& root) {
       ->type_name("DIR")
       ->capture_default_str();
   add_json_flag(*cmd, opt->json);
+  declare_results(*cmd, app::demo_result_keys());
   cmd->callback([opt] {
     std::ostringstream quiet;
     const DemoSummary s = run_demo(opt->out, opt->json ? static_cast<std::ostream&>(quiet) : std::cout);
@@ -28,7 +31,7 @@ void register_demo(CLI::App& root) {
                   {"case_studies", s.case_studies},
                   {"sections", s.sections},
                   {"figures", s.figures}},
-                 opt->json);
+                 opt->json, &app::demo_result_keys());
   });
 }
 

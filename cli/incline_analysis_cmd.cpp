@@ -130,11 +130,12 @@ void add_analyze(CLI::App* area) {
   set_types(cmd);
   cmd->get_option("--frame-rotation")->type_name("fit|none");
   add_report_option(*cmd, s->report, s->plotly);
+  declare_results(*cmd, incline_analyze_result_keys());
   cmd->callback([s, as_json] {
     s->series = series_control();
     const InclineAnalyzeResult r = incline_analyze(*s);
     print_runs(r.json, r.errors, s->files.size(), *as_json,
-               {"phi_deg", "mu", "sigma_mu", "v0", "rms_residual", "/normal_friction/verdict"});
+               {"phi_deg", "mu", "sigma_mu", "v0", "rms_residual", "/normal_friction/verdict"}, &incline_analyze_result_keys());
   });
 }
 
@@ -156,9 +157,10 @@ void add_normal_friction_test(CLI::App* area) {
   set_types(cmd);
   add_report_option(*cmd, s->report, s->plotly);
   cmd->get_option("--phi-deg")->type_name("NUM[,NUM...]");
+  declare_results(*cmd, incline_normal_friction_test_result_keys());
   cmd->callback([s, as_json] {
     const InclineNormalFrictionTestResult r = incline_normal_friction_test(*s);
-    print_result(r.json, *as_json);
+    print_result(r.json, *as_json, &incline_normal_friction_test_result_keys());
     finish_series(s->files.size(), r.errors);  // exit 1 after the output when a run failed
   });
 }

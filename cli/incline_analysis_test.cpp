@@ -240,6 +240,24 @@ TEST(InclineAnalysisCli, AWrongTimeScaleIsCalledOutNotAnalysedWithConfidence) {
   EXPECT_NE(r.err.find("tribolab: warning: the data show gravity g = 0.15"), std::string::npos) << r.err;
 }
 
+TEST(InclineAnalysisCli, NormalFrictionTestNamesAWrongTimeScale) {
+  // Issue 27: three runs (10, 15, 20 deg) with --time-scale 8 or 16 where 1 is right: the
+  // stretched runs lose their v_y extremum, and the error said only "needs at least 3 runs,
+  // got 1" or "no v_y extremum found", never the factor each run's own analysis names.
+  const std::string dir = temp_dir("nft_time_scale");
+  std::string files;
+  for (const char* phi : {"10", "15", "20"}) {
+    const std::string f = dir + "/run" + phi + ".txt";
+    run_json(std::string("incline synth --mu 0.634 --phi-deg ") + phi + " --v0 2.62 --fps 60 --seed " + phi + " --out " + f);
+    files += " " + f;
+  }
+  for (const auto& [scale, factor] : {std::pair{"8", "0.12"}, std::pair{"16", "0.06"}}) {
+    const auto r = run_tribolab("incline normal-friction-test" + files + " --phi-deg 10,15,20 --time-scale " + scale);
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    EXPECT_NE(r.err.find(std::string("times must be multiplied by ") + factor), std::string::npos) << scale << ": " << r.err;
+  }
+}
+
 TEST(InclineAnalysisCli, AThetaCFromFewPointsIsCalledOut) {
   // The seed's disc launched at 1.5 m/s and filmed at 60 fps: 17 points around the v_y
   // extremum, where the stated sigma was 1.4 times too small on average (docs/theory.md).

@@ -11,6 +11,7 @@
 
 #include "app/incline_forward.hpp"
 #include "app/incline_stop.hpp"
+#include "app/result_keys.hpp"
 
 #include <memory>
 #include <string>
@@ -32,10 +33,10 @@ void name_option_types(CLI::App* cmd) {
 }
 
 /// Registers `name` whose options `bind` adds to an Options struct and whose callback prints
-/// `run(options).json`.
+/// `run(options).json`, its listing's units from `keys` (the declared result keys).
 template <class Options, class Bind, class Run>
 void add_command(CLI::App* area, const std::string& name, const std::string& help, Bind bind, Run run,
-                 const std::string& footer = "") {
+                 const app::ResultKeys& keys, const std::string& footer = "") {
   auto* cmd = area->add_subcommand(name, help);
   cmd->footer(footer);
   auto o = std::make_shared<Options>();
@@ -44,7 +45,8 @@ void add_command(CLI::App* area, const std::string& name, const std::string& hel
   add_json_flag(*cmd, *as_json);
   name_option_types(cmd);
   add_report_option(*cmd, o->report, o->plotly);
-  cmd->callback([o, as_json, run] { print_result(run(*o).json, *as_json); });
+  declare_results(*cmd, keys);
+  cmd->callback([o, as_json, run, &keys] { print_result(run(*o).json, *as_json, &keys); });
 }
 
 /// Registers `name` bound from its declaration (app/option_fields.hpp, cli/declared_options.hpp).
@@ -91,7 +93,7 @@ void add_families(CLI::App* area) {
                    "Duration of every curve, s (unset: each member its own, 1.25 t_stop or 2 v0/alpha)");
         cmd.add_option("--out", o.out, "Output CSV file")->required();
       },
-      incline_families);
+      incline_families, incline_families_result_keys());
 }
 
 }  // namespace

@@ -84,7 +84,8 @@ TEST(PlausibilityCli, BounceFitNamesAParameterStoppedAtItsBound) {
   }
   out.close();
   const json honest = run_json("bounce fit '" + table + "' --restitution");
-  EXPECT_TRUE(honest["warnings"].empty()) << honest["warnings"].dump();
+  // No bound warning (its row 3 touches the floor again: that warning is the whole impact's).
+  EXPECT_FALSE(any_contains(honest["warnings"], "sits at its")) << honest["warnings"].dump();
   const json j = run_json("bounce fit '" + fast + "' --restitution --report '" + report + "'");
   ASSERT_FALSE(j["warnings"].empty());
   EXPECT_TRUE(any_contains(j["warnings"], "sits at its")) << j["warnings"].dump();

@@ -64,7 +64,7 @@ void register_track(CLI::App& root) {
     add_input_options(*cmd, o->input);
     cmd->add_option("--track", o->track, "Keep only this track (repeatable; when not given: all)");
     cmd->add_option("--out", o->out, "Write the tidy CSV here (columns track,frame,t,x,y)");
-    bind(*cmd, o, std::make_shared<bool>(false), track_import);
+    bind(*cmd, o, std::make_shared<bool>(false), track_import, &track_import_result_keys());
   }
 
   // track kinematics
@@ -105,7 +105,7 @@ void register_track(CLI::App& root) {
                     "(a rigid body keeps it; more means a wrong calibration or a mislabelled track)");
     cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,omega,sigma_omega,length (s, m, rad, rad/s)");
     add_report_option(*cmd, o->report, o->plotly);
-    bind(*cmd, o, std::make_shared<bool>(false), track_rigid_body);
+    bind(*cmd, o, std::make_shared<bool>(false), track_rigid_body, &track_rigid_body_result_keys());
   }
 
   // track rotation
@@ -122,7 +122,7 @@ void register_track(CLI::App& root) {
     cmd->add_option("--window", o->window, "Points per local linear fit of the angle (the spin at each frame), >= 3");
     add_time_range(*cmd, o->t_from, o->t_to, "only the part of the record that turns about the pivot");
     cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,radius,omega,sigma_omega (s, m, rad, rad/s)");
-    bind(*cmd, o, std::make_shared<bool>(false), track_rotation);
+    bind(*cmd, o, std::make_shared<bool>(false), track_rotation, &track_rotation_result_keys());
   }
 }
 

@@ -1,6 +1,7 @@
 // docs/theory.md#bounce-fit.
 #include "analysis/bounce_fit.hpp"
 #include "analysis/bounce_plausibility.hpp"
+#include "bounce/impact.hpp"
 
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
@@ -8,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <cstdio>
+#include <string>
 #include <utility>
 
 namespace tribolab::analysis {
@@ -110,6 +113,37 @@ BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
   p.r_b_omega = ball.b * (p.omega_pred - row.omega_out);
   return p;
 }
+
+WholeImpactDifference whole_impact_differences(const std::vector<BounceRow>& rows, const bounce::Ball& ball,
+                                               const bounce::NormalLawSpec& law, const bounce::FrictionModel& friction,
+                                               double tolerance, double threshold) {
+  WholeImpactDifference d;
+  bounce::ImpactOptions io;
+  io.contact = bounce::contact_options_with_tolerance(tolerance);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    bounce::BodyState s;
+    s.theta = rows[i].theta_deg / kDegPerRad;  // as predict_bounce
+    s.vx = rows[i].vx_in;
+    s.vy = rows[i].vy_in;
+    s.omega = rows[i].omega_in;
+    const bounce::ImpactResult r = bounce::simulate_impact(ball, law, friction, s, io);
+    if (r.contacts < 2 || r.first.status != bounce::ContactStatus::separated) continue;
+    const double diff = std::max({std::abs(r.whole.out.vx - r.first.out.vx), std::abs(r.whole.out.vy - r.first.out.vy),
+                                  ball.b * std::abs(r.whole.out.omega - r.first.out.omega)});
+    if (!(diff > threshold)) continue;
+    d.rows.push_back(i + 1);
+    d.worst = std::max(d.worst, diff);
+  }
+  return d;
+}
+
+std::string rows_text(const WholeImpactDifference& d, std::size_t n_rows) {
+  std::string list;
+  for (std::size_t k = 0; k < d.rows.size() && k < 8; ++k) list += (k ? ", " : "") + std::to_string(d.rows[k]);
+  if (d.rows.size() > 8) list += ", ...";
+  return std::to_string(d.rows.size()) + " of " + std::to_string(n_rows) + " rows (" + list + ")";
+}
+
 
 BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitOptions& o) {
   if (auto e = o.validate(); !e.empty()) throw input_error_of(e);
@@ -273,6 +307,17 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
     free.push_back(!params[k].fixed);
   }
   out.warnings = bound_warnings(names, v, lower, upper, free);  // docs/theory.md#plausibility-checks
+  // The fit predicts the first contact phase; a filmed bounce (and simulate, drop, the maps)
+  // is the whole impact. Rows where a second touch under the fitted law changes the outcome by
+  // more than the fit's rms are fitted against the wrong model: say so.
+  if (const auto d = whole_impact_differences(rows, o.ball, spec, fr, o.tolerance, out.rms); !d.rows.empty()) {
+    char worst[32];
+    std::snprintf(worst, sizeof worst, "%.3g", d.worst);
+    out.warnings.push_back(rows_text(d, rows.size()) + " touch the floor again with the fitted law, which changes their "
+                           "outcome by up to " + worst + " m/s (more than the fit's rms): the fit models the first "
+                           "contact only, so for these rows the law fitted is not the one simulate, drop and the maps "
+                           "use; leave them out or take the law as approximate (docs/theory.md#bounce-fit)");
+  }
   return out;
 }
 

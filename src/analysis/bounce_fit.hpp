@@ -80,4 +80,19 @@ BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
                             const bounce::NormalLawSpec& law, const bounce::FrictionModel& friction,
                             double tolerance);
 
+/// The rows whose whole impact (bounce::simulate_impact: a second touch and more) under `law`
+/// differs from the first contact phase, which `fit_bounces` predicts and `synth_table` draws:
+/// `rows` (1-based) where max(|dvx|, |dvy|, b |domega|) exceeds `threshold` (m/s), `worst` the
+/// largest such difference, m/s (issue 27; docs/theory.md#bounce-fit).
+struct WholeImpactDifference {
+  std::vector<std::size_t> rows;
+  double worst = 0;  ///< m/s
+};
+WholeImpactDifference whole_impact_differences(const std::vector<BounceRow>& rows, const bounce::Ball& ball,
+                                               const bounce::NormalLawSpec& law, const bounce::FrictionModel& friction,
+                                               double tolerance, double threshold);
+
+/// "K of N rows (i, j, ...)": the rows of `d` among `n_rows`, at most 8 named.
+std::string rows_text(const WholeImpactDifference& d, std::size_t n_rows);
+
 }  // namespace tribolab::analysis

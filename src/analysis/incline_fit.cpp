@@ -534,15 +534,17 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
   a.g = o.g;
   try {
     a.model_b = fit_model_b(track, o);
-  } catch (const Error& e) {
+  } catch (const Error&) {
     // Data whose g is far from the one given (a wrong time scale) defeat the fit with g held:
     // say what the data show instead of how the solver failed (docs/theory.md#incline-gravity).
     const auto c = check_gravity(track, o);
     if (!c) throw;
     const std::string w = gravity_warning(*c, o);
     if (w.empty()) throw;
+    // The solver's own words ("Residual and Jacobian evaluation failed") would only distract
+    // from the factor the message names (issue 27).
     throw InputError(where(track), w + " (model B with g = " + fmt(o.g) + " m/s^2 and phi = " + fmt(to_deg(o.phi)) +
-                                       " deg could not be fitted: " + marked_message(e) + ")");
+                                       " deg does not fit these data)");
   }
   a.data = track.points;
   track::KinematicsOptions ko;

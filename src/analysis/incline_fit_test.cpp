@@ -374,6 +374,37 @@ TEST(InclineGravity, AWrongTimeScaleIsNamedWhereModelBCannotBeFitted) {
   }
 }
 
+TEST(InclineGravity, EveryWrongTimeScaleNamesItsFactorNeverTheSolver) {
+  // Issue 27: times 8x too short made model B's fit fail and the message ended in the solver's
+  // "least squares did not converge: Residual and Jacobian evaluation failed"; times 8x and 16x
+  // too long must name their factor too (a warning: model B still fits). 64x long is
+  // AWrongTimeScaleIsNamedWhereModelBCannotBeFitted's.
+  const auto s = seed_run(9);
+  const auto run0 = synthesize_incline_run(s);
+  for (double factor : {0.125, 8.0, 16.0}) {
+    auto run = run0;
+    for (auto& p : run.track.points) p.t *= factor;
+    InclineFitOptions o = fit_options(s);
+    o.fit_model_a = false;
+    // The factor the times need, as gravity_warning prints it (3 significant digits): 1/factor
+    // within the fit's sigma of g (~0.4 %, half of that in sqrt(g)).
+    std::string said;
+    try {
+      const InclineAnalysis a = analyze_incline_run(run.track, o);
+      ASSERT_FALSE(a.warnings.empty()) << factor;
+      said = a.warnings.front();
+    } catch (const InputError& e) {
+      said = e.what();
+      EXPECT_EQ(said.find("least squares"), std::string::npos) << said;
+      EXPECT_EQ(said.find("Jacobian"), std::string::npos) << said;
+    }
+    const auto at = said.find("times must be multiplied by ");
+    ASSERT_NE(at, std::string::npos) << factor << ": " << said;
+    const double named = std::stod(said.substr(at + 28));
+    EXPECT_NEAR(named * factor, 1.0, 0.02) << factor << ": " << said;
+  }
+}
+
 // The text of what decided the verdict is the JSON value of "verdict_source" (docs/cli.md).
 TEST(VerdictSource, TextIsTheJsonValue) {
   EXPECT_STREQ(to_string(VerdictSource::model_a_test), "model_a_test");

@@ -272,4 +272,17 @@ const ResultKeys& bounce_analyze_result_keys() {
   };
   return k;
 }
+
+const ResultKeys& bounce_fit_result_keys() {
+  static const ResultKeys k = {
+      {"K", "N/m^n", "stiffness"}, {"n", "", "exponent"}, {"D", "N s/m^(n+1)", "damping (null with --restitution)"},
+      {"e", "", "target restitution (--restitution)"}, {"mu", "", ""},
+      {"rms", "m/s", "of the residuals vx, vy and b omega"}, {"n_rows", "", ""}, {"dof", "", ""},
+      {"iterations", "", ""}, {"free_parameters", "", ""}, {"residuals.row", "", ""},
+      {"residuals.vx_pred", "m/s", ""}, {"residuals.vy_pred", "m/s", ""}, {"residuals.omega_pred", "rad/s", ""},
+      {"residuals.r_vx", "m/s", ""}, {"residuals.r_vy", "m/s", ""},
+      {"residuals.r_b_omega", "m/s", "b times the omega residual"}, {"warnings", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

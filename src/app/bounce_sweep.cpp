@@ -1,4 +1,5 @@
 #include "app/study_citation.hpp"
+#include "app/result_keys.hpp"
 #include "app/bounce_sweep.hpp"
 
 #include "app/output_paths.hpp"
@@ -232,4 +233,16 @@ const ResultKeys& bounce_merge_result_keys() {
   return k;
 }
 
+
+const ResultKeys& bounce_sweep_result_keys() {
+  static const ResultKeys k = {
+      {"status", "", ""}, {"out", "", ""}, {"cells_grid", "", ""}, {"cells_shard", "", ""}, {"cells_resumed", "", ""},
+      {"cells_computed", "", ""}, {"threads", "", ""}, {"seconds", "s", "wall time"}, {"cells_per_second", "1/s", ""},
+      {"contour", "", "null: no --contour"}, {"contour.file", "", ""}, {"contour.lines", "", ""},
+      {"contour.points", "", ""}, {"contour.evaluations", "", ""}, {"threshold", "", "null: no --threshold"},
+      {"threshold.file", "", ""}, {"threshold.found", "", ""},
+      {"warnings", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

@@ -1,5 +1,6 @@
 // `tribolab demo`: the case studies in report order and the whole demo run (src/app/demo.hpp).
 #include "app/demo.hpp"
+#include "app/result_keys.hpp"
 
 #include "numerics/error.hpp"
 #include "report/embedded.hpp"
@@ -65,4 +66,11 @@ DemoSummary run_demo(const std::string& out, std::ostream& log) {
   return summary;
 }
 
+
+const ResultKeys& demo_result_keys() {
+  static const ResultKeys k = {
+      {"report", "", "path of report.html"}, {"case_studies", "", ""}, {"sections", "", ""}, {"figures", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

@@ -1,4 +1,5 @@
 #include "app/incline_analysis.hpp"
+#include "app/result_keys.hpp"
 
 #include "app/output_paths.hpp"
 #include "app/series_json.hpp"
@@ -146,9 +147,14 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
       o.fit_model_a = false;
       const track::Track t = read_incline_track(file, s.input);
       const analysis::InclineAnalysis a = analysis::analyze_incline_run(t, o);
-      if (!a.theta_c)
+      if (!a.theta_c) {
+        // Times wrong by a factor stretch the run past its extremum's window: the cause to name
+        // is the factor (issue 27: times 8x and 16x too long said only "no v_y extremum").
+        if (a.gravity && a.gravity->implausible)
+          throw InputError(file, analysis::gravity_warning(*a.gravity, o) + " (no v_y extremum found)");
         throw InputError(file, "no v_y extremum found (" +
                                    (a.notes.empty() ? std::string("the disc does not stop") : a.notes.back()) + ")");
+      }
       return Run{{o.phi, a.theta_c->cos_theta_c, a.theta_c->sigma_cos_theta_c, file}, a.warnings};
     });
     for (const auto& r : runs) {
@@ -161,6 +167,11 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
     }
     res.errors = series_errors(runs);
     if (pts.empty()) throw InputError(res.errors.front() + (runs.size() > 1 ? " (and every other run failed)" : ""));
+    // Too few runs left for the line: say why the others failed, not only how many are left.
+    if (pts.size() < 3 && !res.errors.empty())
+      throw InputError("normal-friction-test", "needs at least 3 runs with theta_c, got " + std::to_string(pts.size()) +
+                                                   ": " + res.errors.front() +
+                                                   (res.errors.size() > 1 ? " (and " + std::to_string(res.errors.size() - 1) + " more)" : ""));
   }
   const analysis::NormalFrictionTest& r = res.test = analysis::normal_friction_test(pts);
   json runs = json::array();
@@ -195,4 +206,14 @@ InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormal
   return res;
 }
 
+
+const ResultKeys& incline_normal_friction_test_result_keys() {
+  static const ResultKeys k = {
+      {"mu", "", "1/slope"}, {"slope", "", "of cos(theta_c) against tan(phi)"}, {"intercept", "", ""},
+      {"r_squared", "", ""}, {"verdict", "", ""}, {"test_size", "", ""}, {"meaning", "", ""}, {"n_runs", "", ""},
+      {"runs.source", "", ""}, {"runs.phi_deg", "deg", ""}, {"runs.tan_phi", "", ""}, {"runs.cos_theta_c", "", ""},
+      {"runs.error", "", ""}, {"n_failed", "", ""}, {"warnings", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

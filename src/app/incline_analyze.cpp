@@ -312,4 +312,30 @@ const ResultKeys& incline_mu_from_slide_result_keys() {
   };
   return k;
 }
+
+const ResultKeys& incline_analyze_result_keys() {
+  static const ResultKeys k = {
+      {"track", "", ""}, {"phi_deg", "deg", "as given"}, {"mu", "", "model B"}, {"v0", "m/s", ""},
+      {"t0", "s", "launch time in the file's clock"}, {"x0", "m", ""}, {"y0", "m", ""},
+      {"frame_rotation_deg", "deg", "camera frame against the incline"}, {"rms_residual", "m", ""},
+      {"n_points", "", ""}, {"k", "", "tan(phi)/mu"}, {"t_stop", "s", ""}, {"x_stop", "m", ""}, {"y_stop", "m", ""},
+      {"normal_friction.slope", "m/s^2", "of a_N against sin(theta) (eq b)"},
+      {"normal_friction.slope_expected", "m/s^2", "g sin(phi)"}, {"normal_friction.intercept", "m/s^2", ""},
+      {"normal_friction.intercept_excludes_zero", "", ""}, {"normal_friction.n_blocks", "", ""},
+      {"normal_friction.block", "", "points per block"}, {"normal_friction.verdict", "", ""},
+      {"normal_friction.verdict_source", "", ""}, {"normal_friction.p_value", "", ""},
+      {"normal_friction.test_size", "", ""}, {"normal_friction.meaning", "", ""},
+      {"model_a", "", "null: not fitted"}, {"model_a.mu", "", ""}, {"model_a.v0", "m/s", ""},
+      {"model_a.normal_accel", "m/s^2", "f_N/m"}, {"model_a.frame_rotation_deg", "deg", ""},
+      {"model_a.normal_accel_rotation_correlation", "", ""}, {"model_a.rms_residual", "m", ""},
+      {"model_a.f_statistic", "", ""}, {"model_a.p_value", "", ""}, {"model_a.ci_excludes_zero", "", ""},
+      {"model_a.significant", "", ""}, {"theta_c", "", "null: no v_y extremum"}, {"theta_c.cos_theta_c", "", ""},
+      {"theta_c.theta_c_deg", "deg", ""}, {"theta_c.t_c", "s", ""}, {"theta_c.cos_theta_c_model", "", ""},
+      {"theta_c.points", "", ""}, {"notes", "", ""}, {"gravity", "", "null: below 3 deg"},
+      {"gravity.g", "m/s^2", "model B refitted with g free"}, {"gravity.ratio", "", "g / the g given"},
+      {"gravity.time_factor", "", "sqrt(ratio)"}, {"gravity.implausible", "", ""}, {"gravity.phi_fit_deg", "deg", ""},
+      {"warnings", "", ""}, {"file", "", ""}, {"error", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

@@ -1,4 +1,5 @@
 #include "app/study_citation.hpp"
+#include "app/result_keys.hpp"
 #include "app/incline_forward.hpp"
 
 #include "app/output_paths.hpp"
@@ -255,6 +256,19 @@ const ResultKeys& incline_simulate_result_keys() {
       {"model", "", ""}, {"method", "", ""}, {"rows", "", "samples written"}, {"t_end", "s", ""}, {"dt", "s", ""},
       {"t_stop", "s", "within t_end, else null"}, {"x_stop", "m", ""}, {"y_stop", "m", ""},
       {"steps", "", "integrator steps (numeric)"}, {"out", "", ""},
+  };
+  return k;
+}
+
+const ResultKeys& incline_families_result_keys() {
+  static const ResultKeys k = {
+      {"vary", "", ""}, {"t_end", "s", "the longest member's"}, {"rows", "", "rows written"},
+      {"members.v0", "m/s", ""}, {"members.phi_deg", "deg", ""}, {"members.mu", "", ""},
+      {"members.k", "", "tan(phi)/mu"}, {"members.regime", "", ""}, {"members.t_stop", "s", ""},
+      {"members.x_stop", "m", ""}, {"members.y_stop", "m", ""}, {"members.x_limit", "m", ""},
+      {"members.t_end", "s", ""}, {"members.t_stop_over_v0", "s^2/m", ""}, {"members.x_stop_over_v0_sq", "s^2/m", ""},
+      {"members.y_stop_over_v0_sq", "s^2/m", ""}, {"members.y_stop_over_x_stop", "", ""},
+      {"warnings", "", ""}, {"out", "", ""},
   };
   return k;
 }

@@ -19,5 +19,23 @@ const ResultKeys& track_video_result_keys();
 const ResultKeys& track_kinematics_result_keys();
 /// `incline mu-from-slide FILE` (one file; docs/cli.md#incline-mu-from-slide). In incline_analyze.cpp.
 const ResultKeys& incline_mu_from_slide_result_keys();
+/// `incline analyze FILE` (one file; docs/cli.md#incline-analyze). In incline_analyze.cpp.
+const ResultKeys& incline_analyze_result_keys();
+/// `incline normal-friction-test` (docs/cli.md#incline-normal-friction-test). In incline_analysis.cpp.
+const ResultKeys& incline_normal_friction_test_result_keys();
+/// `incline families` (docs/cli.md#incline-families). In incline_forward.cpp.
+const ResultKeys& incline_families_result_keys();
+/// `bounce fit` (docs/cli.md#bounce-fit). In bounce_analyze.cpp.
+const ResultKeys& bounce_fit_result_keys();
+/// `bounce sweep` (docs/cli.md#bounce-sweep). In bounce_sweep.cpp.
+const ResultKeys& bounce_sweep_result_keys();
+/// `track import` (docs/cli.md#track-import). In track_import.cpp.
+const ResultKeys& track_import_result_keys();
+/// `track rigid-body` (docs/cli.md#track-rigid-body). In track_rigid_body.cpp.
+const ResultKeys& track_rigid_body_result_keys();
+/// `track rotation` (docs/cli.md#track-rotation). In track_rotation.cpp.
+const ResultKeys& track_rotation_result_keys();
+/// `demo` (docs/cli.md#demo). In demo.cpp.
+const ResultKeys& demo_result_keys();
 
 }  // namespace tribolab::app

@@ -1,4 +1,5 @@
 #include "app/track_import.hpp"
+#include "app/result_keys.hpp"
 
 #include "app/output_paths.hpp"
 
@@ -85,4 +86,16 @@ TrackImportResult track_import(const TrackImportOptions& options) {
   return r;
 }
 
+
+const ResultKeys& track_import_result_keys() {
+  static const ResultKeys k = {
+      {"source", "", ""}, {"format", "", "export, trk, csv"}, {"length_unit_in_file", "", "the unit the file names"},
+      {"time_scale", "", "real seconds per file second"}, {"track_names", "", ""},
+      {"tracks.*.frame_first", "", ""}, {"tracks.*.frame_last", "", ""}, {"tracks.*.points", "", ""},
+      {"tracks.*.t_min", "s", ""}, {"tracks.*.t_max", "s", ""}, {"tracks.*.x_min", "m", ""},
+      {"tracks.*.x_max", "m", ""}, {"tracks.*.y_min", "m", ""}, {"tracks.*.y_max", "m", ""},
+      {"warnings", "", ""}, {"out", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

@@ -1,4 +1,5 @@
 #include "app/track_rigid_body.hpp"
+#include "app/result_keys.hpp"
 
 #include "app/output_paths.hpp"
 
@@ -193,4 +194,20 @@ TrackRigidBodyResult track_rigid_body(const TrackRigidBodyOptions& options) {
   return result;
 }
 
+
+const ResultKeys& track_rigid_body_result_keys() {
+  static const ResultKeys k = {
+      {"source", "", ""}, {"track_a", "", ""}, {"track_b", "", ""}, {"frames", "", ""}, {"frame_first", "", ""},
+      {"frame_last", "", ""}, {"t_first", "s", ""}, {"t_last", "s", ""}, {"time_scale", "", ""},
+      {"window", "", "points per local fit"}, {"centre_first.x", "m", ""}, {"centre_first.y", "m", ""},
+      {"centre_last.x", "m", ""}, {"centre_last.y", "m", ""}, {"theta_first", "rad", ""}, {"theta_last", "rad", ""},
+      {"turns", "", ""}, {"omega", "rad/s", ""}, {"spin_rms_residual", "rad", "of the orientation about the one-spin line"},
+      {"omega_local_min", "rad/s", ""}, {"omega_local_max", "rad/s", ""}, {"max_turn_per_frame", "rad", ""},
+      {"length_mean", "m", "A-B distance"}, {"length_sd", "m", ""}, {"length_min", "m", ""}, {"length_max", "m", ""},
+      {"length_drift", "m", "end-to-end change of the A-B distance"}, {"length_drift_fraction", "", "of length_mean"},
+      {"length_scatter_fraction", "", "length_sd / length_mean"}, {"warnings", "", ""}, {"out", "", ""},
+      {"report", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app

@@ -1,4 +1,5 @@
 #include "app/track_rotation.hpp"
+#include "app/result_keys.hpp"
 
 #include "app/output_paths.hpp"
 #include "io/atomic_file.hpp"
@@ -141,4 +142,19 @@ TrackRotationResult track_rotation(const TrackRotationOptions& options) {
   return result;
 }
 
+
+const ResultKeys& track_rotation_result_keys() {
+  static const ResultKeys k = {
+      {"source", "", ""}, {"track", "", ""}, {"points", "", ""}, {"frame_first", "", ""}, {"frame_last", "", ""},
+      {"t_first", "s", ""}, {"t_last", "s", ""}, {"time_scale", "", ""}, {"pivot", "", "given, fitted or moving"},
+      {"pivot_from_circle", "", ""}, {"t_ref", "s", "time of theta_ref and of the pivot position"},
+      {"pivot_x", "m", ""}, {"pivot_y", "m", ""}, {"pivot_vx", "m/s", ""}, {"pivot_vy", "m/s", ""},
+      {"radius", "m", ""}, {"theta_ref", "rad", ""}, {"omega", "rad/s", ""}, {"alpha", "rad/s^2", ""},
+      {"rms_residual", "m", "per coordinate"}, {"arc_deg", "deg", ""}, {"turns", "", ""},
+      {"max_turn_per_frame_deg", "deg", ""}, {"omega_local_min", "rad/s", ""}, {"omega_local_max", "rad/s", ""},
+      {"t_from", "s", ""}, {"t_to", "s", ""}, {"kasa_circle.x", "m", ""}, {"kasa_circle.y", "m", ""},
+      {"kasa_circle.r", "m", ""}, {"kasa_circle", "", "null: pivot given or moving"}, {"warnings", "", ""}, {"out", "", ""},
+  };
+  return k;
+}
 }  // namespace tribolab::app
