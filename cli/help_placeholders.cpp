@@ -17,7 +17,7 @@ bool names_a_file(const CLI::Option& opt) {
   }
   if (d.find("to this csv") != std::string::npos || d.find("to this file") != std::string::npos) return true;
   const std::string n = opt.get_name(false, true);
-  return n == "--out" || n.size() > 4 && n.compare(n.size() - 4, 4, "-out") == 0;
+  return n == "--out" || (n.size() > 4 && n.compare(n.size() - 4, 4, "-out") == 0);
 }
 
 /// "hooke|hertz|hunt-crossley" from a description such as "normal law: hooke|hertz|... (default x)".

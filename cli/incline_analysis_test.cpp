@@ -353,7 +353,7 @@ TEST(InclineAnalysisCli, AValueAHundredTimesOffIsLeftOutWithAWarning) {
     }
     text += line + "\n";
   }
-  write(f, text);
+  write_text(f, text);
   const json c = run_json("incline analyze " + clean + " --phi-deg 16");
   const auto r = run_tribolab("incline analyze " + f + " --phi-deg 16 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -19,7 +19,6 @@ using nlohmann::json;
 
 bool starts(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 bool ends(std::string_view s, std::string_view p) { return s.size() >= p.size() && s.substr(s.size() - p.size()) == p; }
-bool has(std::string_view s, std::string_view p) { return s.find(p) != std::string_view::npos; }
 
 /// Columns a terminal gives `s` (UTF-8: one per code point; "±" is two bytes, one column).
 std::size_t columns(std::string_view s) {
