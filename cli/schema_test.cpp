@@ -256,9 +256,10 @@ TEST(Schema, EveryCommandWithDeclaredResultsHasASampleRun) {
 TEST(Schema, EveryCommandThatPrintsAListingDeclaresItsResults) {
   // Issue 27: the listing's units come from each key's declaration, never from its name; a
   // command without declared keys would print its numbers without units. `schema` prints the
-  // declarations themselves, not a result.
+  // declarations themselves, not a result; `studio` prints its URL and serves the page, where
+  // each analysis shows that command's own declared listing.
   for (const json& c : schema()) {
-    if (c["command"] == "schema") continue;
+    if (c["command"] == "schema" || c["command"] == "studio") continue;
     EXPECT_TRUE(c.contains("results")) << c["command"] << " prints a listing but declares no result keys";
   }
 }

@@ -13,7 +13,8 @@ from conftest import _binary
 
 # Commands of the command line that are not Python functions: the demo writes a folder of
 # reports (a program, not a computation), the schema describes the command line itself.
-NOT_IN_PYTHON = {"demo", "schema"}
+# studio is a server for a browser page (its analyses are these same functions), not a function.
+NOT_IN_PYTHON = {"demo", "schema", "studio"}
 
 # Command-line options without a keyword (or keywords without an option), by command.
 CLI_ONLY = {
