@@ -60,7 +60,7 @@ $(PLOTLY_JS): $(VENDOR)/package.json $(VENDOR)/package-lock.json
 	cd $(VENDOR) && npm ci --no-audit --no-fund --loglevel=error
 	@test -s $@ && touch $@
 
-# The main tree has MPI (one file sees it: src/app/sweep_mpi.cpp), so `make test` runs the
+# The main tree has MPI (one file sees it: src/app/sweep/sweep_mpi.cpp), so `make test` runs the
 # 2-rank sweep in this tree: no separate MPI build.
 build: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_MPI=ON -DTRIBOLAB_BENCH=$(BENCH)

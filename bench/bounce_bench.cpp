@@ -1,7 +1,7 @@
 // Benchmarks of the bounce engine (docs/benchmarks.md#bounce): one contact per normal law and
 // per friction mode, the first-contact search, and the seed's own method — explicit steps of
 // 1 microsecond (seed 001, 實驗四 (二)) — as the baseline at equal accuracy.
-#include "app/bounce_cell.hpp"
+#include "app/bounce/bounce_cell.hpp"
 #include "bounce/contact.hpp"
 #include "bounce/flight.hpp"
 #include "bounce/seed_method.hpp"
@@ -175,7 +175,7 @@ BENCHMARK(BM_FirstContact)->Arg(0)->Arg(40)->Arg(500)->Unit(benchmark::kMicrosec
 // ---- The seed's full phase diagram (docs/benchmarks.md#bounce-sweep-phase-diagram) ----
 // Collision angle 100..170 deg (71 values) x spin 30..50 rad/s (21 values) at vy = -4 m/s,
 // vx = 0, mu = 0.5, the seed's fitted law: the grid of its figure 53 at 1 deg x 1 rad/s.
-// Each cell is the library's bounce cell model (app/bounce_cell.hpp, the model of `bounce
+// Each cell is the library's bounce cell model (app/bounce/bounce_cell.hpp, the model of `bounce
 // sweep`; its default tolerance is 1e-6, the loosest with no cell less accurate than the
 // seed's method), first contact phase only: the phase the seed's method integrates.
 

@@ -65,7 +65,7 @@ sweep::CellModel our_model(bool regularized, double tol) {
   sweep::CellModel m;
   m.output_names = {"vx", "vy", "b_omega"};
   ContactOptions o = contact_options_with_tolerance(tol);
-  o.kernel = ContactKernel::fastest;  // as `bounce sweep` (app/bounce_cell.cpp)
+  o.kernel = ContactKernel::fastest;  // as `bounce sweep` (app/bounce/bounce_cell.cpp)
   const FrictionModel f = friction_of(regularized);
   m.evaluate = [o, f](const sweep::CellInput& in) {
     const ContactResult r = simulate_contact(Ball{}, NormalLawSpec{}, f, touch_of(in), o);
@@ -148,7 +148,7 @@ void BM_MapOurs(benchmark::State& state) {
   const bool reg = state.range(0) != 0;
   const sweep::GridSpec g = seed_grid();
   ContactOptions o = contact_options_with_tolerance(kOurTol);
-  o.kernel = ContactKernel::fastest;  // as `bounce sweep` (app/bounce_cell.cpp)
+  o.kernel = ContactKernel::fastest;  // as `bounce sweep` (app/bounce/bounce_cell.cpp)
   const FrictionModel f = friction_of(reg);
   double sum = 0, steps = 0, rhs = 0, phases = 0;
   for (auto _ : state) {

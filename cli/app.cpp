@@ -25,7 +25,7 @@ nlohmann::json spelled_for_cli(const nlohmann::json& j) {
   return j;
 }
 
-void print_result(const nlohmann::json& raw, bool as_json, const app::ResultKeys* keys) {
+void print_result(const nlohmann::json& raw, bool as_json, const app::ResultKeys& keys) {
   const nlohmann::json result = spelled_for_cli(raw);
   // Data that contradict the physics are said on stderr too, whatever the output format.
   if (result.is_object() && result.contains("warnings") && result["warnings"].is_array()) {

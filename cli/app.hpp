@@ -4,7 +4,7 @@
 // into one line on stderr and a non-zero exit (SPEC section 5).
 #pragma once
 
-#include "app/option_fields.hpp"
+#include "app/common/option_fields.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -34,9 +34,9 @@ void register_studio(CLI::App& root);
 
 /// Prints a command's result: the JSON object on one line of stdout with --json, else an
 /// aligned "key  value" listing for people (nested objects as dotted keys), its units from
-/// `keys` (the command's declared result keys) when given. Fields the core names in the
-/// result's texts (field("floor_y") in a warning) are spelled as flags (--floor-y).
-void print_result(const nlohmann::json& result, bool as_json, const app::ResultKeys* keys = nullptr);
+/// `keys` (the command's declared result keys). Fields the core names in the result's texts
+/// (field("floor_y") in a warning) are spelled as flags (--floor-y).
+void print_result(const nlohmann::json& result, bool as_json, const app::ResultKeys& keys);
 
 /// `j` with every field mark in its strings spelled by the command line (--floor-y).
 nlohmann::json spelled_for_cli(const nlohmann::json& j);

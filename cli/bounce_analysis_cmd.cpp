@@ -1,11 +1,11 @@
 // `tribolab bounce analyze|fit|synth-video|synth-table`: the rugby-ball study's experiment 1 on tracked
 // data, the contact-law fit to a table of bounces, and the synthetic data for both
-// (docs/cli.md#bounce-analyze). The workflows are in src/app/bounce_analyze.*,
-// src/app/bounce_series.* (several files) and src/app/bounce_synth.*; this file binds their
+// (docs/cli.md#bounce-analyze). The workflows are in src/app/bounce/bounce_analyze.*,
+// src/app/bounce/bounce_series.* (several files) and src/app/bounce/bounce_synth.*; this file binds their
 // options to flags and prints the results.
 #include "bounce_analysis_cmd.hpp"
 #include "declared_options.hpp"
-#include "app/result_keys.hpp"
+#include "app/common/result_keys.hpp"
 
 #include "app.hpp"
 #include "help_explain.hpp"
@@ -14,9 +14,9 @@
 #include "report_option.hpp"
 #include "series_cmd.hpp"
 
-#include "app/bounce_analyze.hpp"
-#include "app/bounce_series.hpp"
-#include "app/bounce_synth.hpp"
+#include "app/bounce/bounce_analyze.hpp"
+#include "app/bounce/bounce_series.hpp"
+#include "app/bounce/bounce_synth.hpp"
 
 #include "io/text.hpp"
 
@@ -72,13 +72,15 @@ void add_analyze(CLI::App* area) {
   add_report_option(*cmd, o.report, o.plotly);
   add_json_flag(*cmd, opts->json);
   declare_results(*cmd, bounce_analyze_result_keys());
+  declare_series_results(*cmd, bounce_analyze_series_result_keys());
   cmd->callback([opts] {
     opts->o.series = cli_series_options();
     const BounceAnalyzeSeriesResult r = bounce_analyze_series(opts->o);
-    if (opts->o.files.size() == 1) return print_result(r.json, opts->json, &bounce_analyze_result_keys());
+    if (opts->o.files.size() == 1) return print_result(r.json, opts->json, bounce_analyze_result_keys());
     print_series(r.json["runs"], opts->json ? r.json["summary"] : summary_for_text(r.json["summary"]), opts->json,
                  {"collision_angle_deg", "e_velocity", "sigma_e_velocity", "e_height", "energy_pre", "energy_post",
-                  "mean_normal_force"});
+                  "mean_normal_force"},
+                 bounce_analyze_result_keys(), bounce_analyze_series_result_keys());
     finish_series(opts->o.files.size(), r.errors);
   });
 }
@@ -112,7 +114,7 @@ void add_fit(CLI::App* area) {
   cmd->callback([opts] {
     json j = bounce_fit(opts->o).json;
     if (!opts->json) j.erase("residuals");  // the people's listing leaves the per-row table out
-    print_result(j, opts->json, &bounce_fit_result_keys());
+    print_result(j, opts->json, bounce_fit_result_keys());
   });
 }
 

@@ -3,9 +3,9 @@
 // compared as JSON values, i.e. to the last digit.
 #include "cli_test_util.hpp"
 
-#include "app/bounce_analyze.hpp"
-#include "app/bounce_simulate.hpp"
-#include "app/bounce_synth.hpp"
+#include "app/bounce/bounce_analyze.hpp"
+#include "app/bounce/bounce_simulate.hpp"
+#include "app/bounce/bounce_synth.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 //   simulate      the impact from first touch to free flight (the study's experiment 4), every
 //                 contact of it (docs/theory.md#bounce-contact, "whole impact")
 //   drop          release -> flight -> contact -> ... several bounces
-// The workflows and their option declarations are in src/app/bounce_simulate.*; this file
+// The workflows and their option declarations are in src/app/bounce/bounce_simulate.*; this file
 // binds the declarations to flags (cli/declared_options.hpp).
 #include "app.hpp"
 #include "bounce_analysis_cmd.hpp"
@@ -13,7 +13,7 @@
 #include "declared_options.hpp"
 #include "report_option.hpp"
 
-#include "app/bounce_simulate.hpp"
+#include "app/bounce/bounce_simulate.hpp"
 
 #include <memory>
 

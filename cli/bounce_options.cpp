@@ -1,4 +1,4 @@
-// Binds the shared bounce options (src/app/bounce_options.hpp) to a command's CLI11 flags.
+// Binds the shared bounce options (src/app/bounce/bounce_options.hpp) to a command's CLI11 flags.
 #include "bounce_options.hpp"
 
 namespace tribolab::cli {

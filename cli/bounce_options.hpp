@@ -1,8 +1,8 @@
 // The command-line flags of the options every `tribolab bounce` command shares: the ball and
-// the contact law (the option structs, their defaults and checks: src/app/bounce_options.hpp).
+// the contact law (the option structs, their defaults and checks: src/app/bounce/bounce_options.hpp).
 #pragma once
 
-#include "app/bounce_options.hpp"
+#include "app/bounce/bounce_options.hpp"
 
 #include <CLI/CLI.hpp>
 

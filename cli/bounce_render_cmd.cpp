@@ -1,13 +1,13 @@
 // `tribolab bounce render`: film a simulated throw (flight, bounce, flight) to a video with
 // its truth (docs/cli.md#bounce-render, docs/theory.md#rendering). The workflow is
-// app::bounce_render (src/app/bounce_render.cpp); this file binds its options to flags.
+// app::bounce_render (src/app/bounce/bounce_render.cpp); this file binds its options to flags.
 #include "bounce_render_cmd.hpp"
 #include "declared_options.hpp"
-#include "app/result_keys.hpp"
+#include "app/common/result_keys.hpp"
 
 #include "app.hpp"
 
-#include "app/bounce_synth.hpp"
+#include "app/bounce/bounce_synth.hpp"
 
 #include <memory>
 

@@ -1,10 +1,10 @@
 // `tribolab bounce sweep` and `tribolab bounce merge`: flags bound to app::BounceSweepOptions
 // and app::BounceMergeOptions, the text of ranges and shards parsed (cli/sweep_cmd.hpp), the
 // interrupt signal and the progress line handled here; the workflow is app::bounce_sweep
-// (src/app/bounce_sweep.hpp), each cell the one bounce cell model (src/app/bounce_cell.hpp).
+// (src/app/bounce/bounce_sweep.hpp), each cell the one bounce cell model (src/app/bounce/bounce_cell.hpp).
 // docs/cli.md#bounce-sweep, docs/theory.md#sweeps.
 #include "declared_options.hpp"
-#include "app/result_keys.hpp"
+#include "app/common/result_keys.hpp"
 #include "bounce_sweep_cmd.hpp"
 
 #include <atomic>
@@ -19,8 +19,8 @@
 #include <unistd.h>
 
 #include "app.hpp"
-#include "app/bounce_sweep.hpp"
-#include "app/sweep_mpi.hpp"
+#include "app/bounce/bounce_sweep.hpp"
+#include "app/sweep/sweep_mpi.hpp"
 #include "bounce_options.hpp"
 #include "io/sweep_file.hpp"
 #include "io/temp_files.hpp"
@@ -124,7 +124,7 @@ void run_sweep(app::BounceSweepOptions o, const SweepText& t) {
     o.cancel = &g_interrupted;
     const app::BounceSweepResult r = app::bounce_sweep(o);
     if (!r.is_reporting_rank) return;  // rank 0 reports
-    print_result(r.json, t.json, &app::bounce_sweep_result_keys());
+    print_result(r.json, t.json, app::bounce_sweep_result_keys());
   } catch (...) {
     // Every rank sees the same error; only rank 0 prints it (one line, SPEC section 5).
     if (rank != 0) (void)std::freopen("/dev/null", "w", stderr);

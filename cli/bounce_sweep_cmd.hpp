@@ -7,7 +7,7 @@
 namespace tribolab::cli {
 
 /// Adds `sweep` and `merge` under the `bounce` area command (app::bounce_sweep and
-/// app::bounce_merge), each cell one whole impact from first touch (app/bounce_cell.hpp).
+/// app::bounce_merge), each cell one whole impact from first touch (app/bounce/bounce_cell.hpp).
 void register_bounce_sweep(CLI::App& bounce_area);
 
 }  // namespace tribolab::cli

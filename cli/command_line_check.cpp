@@ -1,7 +1,7 @@
 #include "command_line_check.hpp"
 
 #include "app.hpp"
-#include "app/output_paths.hpp"
+#include "app/common/output_paths.hpp"
 #include "numerics/error.hpp"
 
 #include <algorithm>
@@ -57,7 +57,7 @@ std::string suggestion(const std::string& word, const std::vector<std::string>& 
 
 /// Two outputs into one file (or an output over an input) would leave one of them holding
 /// the other's tail after an error, against "no partial output": refuse them up front, as
-/// the application layer does (app/output_paths.hpp), as a malformed command line.
+/// the application layer does (app/common/output_paths.hpp), as a malformed command line.
 void check_distinct_files(const std::vector<app::OutputPath>& files) {
   if (auto e = app::same_file_problem(files); !e.empty()) throw UsageError(spell_fields(e, flag_of));
 }

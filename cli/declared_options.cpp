@@ -11,6 +11,10 @@ std::map<const CLI::App*, DeclaredCommand>& declared_commands() {
 
 void declare_results(const CLI::App& cmd, const app::ResultKeys& keys) { declared_commands()[&cmd].results = &keys; }
 
+void declare_series_results(const CLI::App& cmd, const app::ResultKeys& keys) {
+  declared_commands()[&cmd].series_results = &keys;
+}
+
 std::string declared_help(const app::FieldDecl& f) {
   std::string h = f.help;
   if (!f.choices.empty()) {
@@ -24,7 +28,7 @@ std::string declared_help(const app::FieldDecl& f) {
 void print_declared(const CLI::App& cmd, const nlohmann::json& result, bool as_json) {
   const auto it = declared_commands().find(&cmd);
   if (it == declared_commands().end() || !it->second.results) throw std::logic_error("print_declared: command not declared");
-  print_result(result, as_json, it->second.results);
+  print_result(result, as_json, *it->second.results);
 }
 
 }  // namespace tribolab::cli

@@ -1,4 +1,4 @@
-// The command line's spelling of the option declarations (src/app/option_fields.hpp): one
+// The command line's spelling of the option declarations (src/app/common/option_fields.hpp): one
 // CLI11 option per declared field, so a command binds its options in one line,
 //
 //   add_declared_options(*cmd, o, bounce_simulate_fields(), bounce_simulate_result_keys());
@@ -15,7 +15,7 @@
 #include "incline_options.hpp"
 #include "report_option.hpp"
 
-#include "app/option_fields.hpp"
+#include "app/common/option_fields.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -33,6 +33,7 @@ namespace tribolab::cli {
 struct DeclaredCommand {
   std::function<nlohmann::json()> fields;  ///< fields_schema of its options struct; empty: not declared
   const app::ResultKeys* results = nullptr;
+  const app::ResultKeys* series_results = nullptr;  ///< the summary of several files, if it takes them
 };
 
 /// The commands bound by add_declared_options, by their CLI11 app.
@@ -41,6 +42,9 @@ std::map<const CLI::App*, DeclaredCommand>& declared_commands();
 /// Records `keys` as the declared result keys of `cmd` (for a command whose options are not
 /// declared yet; add_declared_options records both).
 void declare_results(const CLI::App& cmd, const app::ResultKeys& keys);
+
+/// Records `keys` as the declared keys of `cmd`'s summary of several files (print_series).
+void declare_series_results(const CLI::App& cmd, const app::ResultKeys& keys);
 
 /// "<help>[: a|b|c], <unit>": the help line of a declared field.
 std::string declared_help(const app::FieldDecl& f);

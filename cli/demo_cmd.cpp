@@ -1,8 +1,8 @@
-// `tribolab demo --out DIR`: runs the case studies and writes DIR/report.html (src/app/demo.hpp).
+// `tribolab demo --out DIR`: runs the case studies and writes DIR/report.html (src/app/demo/demo.hpp).
 #include "app.hpp"
 #include "declared_options.hpp"
-#include "app/demo.hpp"
-#include "app/result_keys.hpp"
+#include "app/demo/demo.hpp"
+#include "app/common/result_keys.hpp"
 
 #include <iostream>
 #include <sstream>
@@ -31,7 +31,7 @@ void register_demo(CLI::App& root) {
                   {"case_studies", s.case_studies},
                   {"sections", s.sections},
                   {"figures", s.figures}},
-                 opt->json, &app::demo_result_keys());
+                 opt->json, app::demo_result_keys());
   });
 }
 

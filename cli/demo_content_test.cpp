@@ -1,7 +1,7 @@
 // In-process tests of the demo's content: the numbers the report shows are the library's
 // (table 1 from incline::seed000_case_study), and every erratum is on the errata page.
 #include "cli_test_util.hpp"
-#include "app/demo.hpp"
+#include "app/demo/demo.hpp"
 
 #include "analysis/bounce_analyze.hpp"
 #include "incline/case_study.hpp"

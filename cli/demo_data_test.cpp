@@ -1,6 +1,6 @@
 // The shipped demo data is exactly what its committed commands make (data/demo/README.md).
 #include "cli_test_util.hpp"
-#include "app/demo_data.hpp"
+#include "app/demo/demo_data.hpp"
 
 #include <filesystem>
 #include <set>

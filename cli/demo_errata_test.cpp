@@ -4,7 +4,7 @@
 // seed's map (the physics is pinned more tightly in src/bounce/seed_errata_test.cpp).
 #include "bounce/normal_law.hpp"
 #include "cli_test_util.hpp"
-#include "app/demo.hpp"
+#include "app/demo/demo.hpp"
 #include "incline/case_study.hpp"
 #include "report/format.hpp"
 #include "report/html.hpp"

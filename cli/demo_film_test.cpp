@@ -1,11 +1,11 @@
-// The demo's film case study (src/app/demo_film.cpp) holds the truth: the rendered throw, tracked
+// The demo's film case study (src/app/demo/demo_film.cpp) holds the truth: the rendered throw, tracked
 // back with the ellipse tracker and analysed as `bounce analyze` does, gives the simulation's
 // numbers within their uncertainties or a fraction of a percent (stated below), and the files
 // the report links are written.
 #include "cli_test_util.hpp"
-#include "app/demo.hpp"
-#include "app/demo_bounce_truth.hpp"
-#include "app/demo_film.hpp"
+#include "app/demo/demo.hpp"
+#include "app/demo/demo_bounce_truth.hpp"
+#include "app/demo/demo_film.hpp"
 
 #include "report/format.hpp"
 

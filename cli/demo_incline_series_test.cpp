@@ -1,4 +1,4 @@
-// The demo's "incline-series" case study (src/app/demo_incline_series.cpp): every disc it says was
+// The demo's "incline-series" case study (src/app/demo/demo_incline_series.cpp): every disc it says was
 // made by `incline synth ...` is made so by data/demo/incline_series/make.sh, and the report
 // shows the series recovering the truth (mu = 0.585) it states.
 #include "cli_test_util.hpp"

@@ -1,16 +1,16 @@
 // The commands on tracked incline runs (the incline study; docs/cli.md#incline-analyze): synth,
 // mu-from-slide, analyze, normal-friction-test. Each binds its options to the application
-// layer's struct (src/app/incline_analysis.hpp, incline_analyze.hpp), calls the workflow and
+// layer's struct (src/app/incline/incline_analysis.hpp, incline_analyze.hpp), calls the workflow and
 // prints its JSON (a series: its table, then a non-zero exit if a run failed).
 #include "incline_analysis_cmd.hpp"
 #include "declared_options.hpp"
-#include "app/result_keys.hpp"
+#include "app/common/result_keys.hpp"
 
 #include "app.hpp"
 #include "help_explain.hpp"
 #include "incline_options.hpp"
-#include "app/incline_analysis.hpp"
-#include "app/incline_analyze.hpp"
+#include "app/incline/incline_analysis.hpp"
+#include "app/incline/incline_analyze.hpp"
 #include "report_option.hpp"
 #include "series_cmd.hpp"
 
@@ -72,9 +72,10 @@ InclineSeriesControl series_control() {
 /// Prints one file's object, or a series' table and summary; a failed run of a series then
 /// makes the exit non-zero (finish_series).
 void print_runs(const nlohmann::json& j, const std::vector<std::string>& errors, std::size_t n_files,
-                bool as_json, const std::vector<std::string>& columns, const app::ResultKeys* keys = nullptr) {
+                bool as_json, const std::vector<std::string>& columns, const app::ResultKeys& keys,
+                const app::ResultKeys& series_keys) {
   if (n_files == 1) return print_result(j, as_json, keys);
-  print_series(j["runs"], j["summary"], as_json, columns);
+  print_series(j["runs"], j["summary"], as_json, columns, keys, series_keys);
   finish_series(n_files, errors);
 }
 
@@ -97,11 +98,12 @@ void add_mu_from_slide(CLI::App* area) {
   set_types(cmd);
   add_report_option(*cmd, s->report, s->plotly);
   declare_results(*cmd, incline_mu_from_slide_result_keys());
+  declare_series_results(*cmd, incline_mu_from_slide_series_result_keys());
   cmd->callback([s, as_json] {
     s->series = series_control();
     const InclineMuFromSlideResult r = incline_mu_from_slide(*s);
     print_runs(r.json, r.errors, s->files.size(), *as_json, {"phi_deg", "a", "sigma_a", "mu", "sigma_mu", "r_squared"},
-               &incline_mu_from_slide_result_keys());
+               incline_mu_from_slide_result_keys(), incline_mu_from_slide_series_result_keys());
   });
 }
 
@@ -131,11 +133,13 @@ void add_analyze(CLI::App* area) {
   cmd->get_option("--frame-rotation")->type_name("fit|none");
   add_report_option(*cmd, s->report, s->plotly);
   declare_results(*cmd, incline_analyze_result_keys());
+  declare_series_results(*cmd, incline_analyze_series_result_keys());
   cmd->callback([s, as_json] {
     s->series = series_control();
     const InclineAnalyzeResult r = incline_analyze(*s);
     print_runs(r.json, r.errors, s->files.size(), *as_json,
-               {"phi_deg", "mu", "sigma_mu", "v0", "rms_residual", "/normal_friction/verdict"}, &incline_analyze_result_keys());
+               {"phi_deg", "mu", "sigma_mu", "v0", "rms_residual", "/normal_friction/verdict"}, incline_analyze_result_keys(),
+               incline_analyze_series_result_keys());
   });
 }
 
@@ -160,7 +164,7 @@ void add_normal_friction_test(CLI::App* area) {
   declare_results(*cmd, incline_normal_friction_test_result_keys());
   cmd->callback([s, as_json] {
     const InclineNormalFrictionTestResult r = incline_normal_friction_test(*s);
-    print_result(r.json, *as_json, &incline_normal_friction_test_result_keys());
+    print_result(r.json, *as_json, incline_normal_friction_test_result_keys());
     finish_series(s->files.size(), r.errors);  // exit 1 after the output when a run failed
   });
 }

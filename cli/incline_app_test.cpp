@@ -3,10 +3,10 @@
 // the command line only binds options and prints.
 #include "cli_test_util.hpp"
 
-#include "app/incline_forward.hpp"
-#include "app/incline_stop.hpp"
-#include "app/incline_analysis.hpp"
-#include "app/incline_analyze.hpp"
+#include "app/incline/incline_forward.hpp"
+#include "app/incline/incline_stop.hpp"
+#include "app/incline/incline_analysis.hpp"
+#include "app/incline/incline_analyze.hpp"
 
 #include <gtest/gtest.h>
 

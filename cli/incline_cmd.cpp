@@ -9,9 +9,9 @@
 #include "declared_options.hpp"
 #include "report_option.hpp"
 
-#include "app/incline_forward.hpp"
-#include "app/incline_stop.hpp"
-#include "app/result_keys.hpp"
+#include "app/incline/incline_forward.hpp"
+#include "app/incline/incline_stop.hpp"
+#include "app/common/result_keys.hpp"
 
 #include <memory>
 #include <string>
@@ -46,10 +46,10 @@ void add_command(CLI::App* area, const std::string& name, const std::string& hel
   name_option_types(cmd);
   add_report_option(*cmd, o->report, o->plotly);
   declare_results(*cmd, keys);
-  cmd->callback([o, as_json, run, &keys] { print_result(run(*o).json, *as_json, &keys); });
+  cmd->callback([o, as_json, run, &keys] { print_result(run(*o).json, *as_json, keys); });
 }
 
-/// Registers `name` bound from its declaration (app/option_fields.hpp, cli/declared_options.hpp).
+/// Registers `name` bound from its declaration (app/common/option_fields.hpp, cli/declared_options.hpp).
 template <class Options, class Run>
 void add_declared_command(CLI::App* area, const std::string& name, const std::string& help,
                           const app::Fields<Options>& fields, const app::ResultKeys& keys, Run run,

@@ -4,7 +4,7 @@
 // io::parse_double first, so a bad one fails as before: one line naming the option.
 #pragma once
 
-#include "app/incline_launch.hpp"
+#include "app/incline/incline_launch.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 

@@ -1,6 +1,6 @@
 #include "report_option.hpp"
 
-#include "app/output_paths.hpp"
+#include "app/common/output_paths.hpp"
 #include "numerics/error.hpp"
 #include "report/html.hpp"
 

@@ -57,6 +57,8 @@ void collect(const CLI::App& app, const std::string& prefix, json& out) {
     const bool has_fields = it != declared_commands().end() && it->second.fields;
     c["declared"] = has_fields;
     if (it != declared_commands().end() && it->second.results) c["results"] = app::result_keys_schema(*it->second.results);
+    if (it != declared_commands().end() && it->second.series_results)
+      c["series_results"] = app::result_keys_schema(*it->second.series_results);
     if (has_fields) {
       json fields = it->second.fields();
       for (json& f : fields) {
@@ -84,6 +86,11 @@ std::string text_of(const json& commands) {
     if (!c.contains("results")) continue;
     s += "  result keys:";
     for (const json& k : c["results"])
+      s += " " + k["key"].get<std::string>() + (k["unit"].get<std::string>().empty() ? "" : " (" + k["unit"].get<std::string>() + ")");
+    s += "\n";
+    if (!c.contains("series_results")) continue;
+    s += "  summary keys of several files:";
+    for (const json& k : c["series_results"])
       s += " " + k["key"].get<std::string>() + (k["unit"].get<std::string>().empty() ? "" : " (" + k["unit"].get<std::string>() + ")");
     s += "\n";
   }

@@ -7,12 +7,13 @@
 #include "app.hpp"
 #include "text_listing.hpp"
 
-#include "app/option_fields.hpp"
+#include "app/common/option_fields.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <regex>
@@ -172,7 +173,7 @@ const std::vector<Listed>& listed() {
       if (!c.contains("results") || !sample_runs().count(c["command"])) continue;
       const json j = run_json(sample_args(c["command"]));
       const app::ResultKeys keys = keys_of(c);
-      out.push_back({c, j, text_listing(spelled_for_cli(j), &keys)});
+      out.push_back({c, j, text_listing(spelled_for_cli(j), keys)});
     }
     return out;
   }();
@@ -281,7 +282,7 @@ TEST(Schema, TheCommandPrintsTheListingOfItsDeclaredKeys) {
   for (const json& c : schema()) {
     if (c["command"] != "bounce drop") continue;
     const app::ResultKeys keys = keys_of(c);
-    EXPECT_EQ(run_tribolab(args).out, text_listing(j, &keys));
+    EXPECT_EQ(run_tribolab(args).out, text_listing(j, keys));
   }
 }
 
@@ -327,6 +328,121 @@ TEST(Schema, TheListingsOfIssue27SayTheRightUnits) {
   EXPECT_TRUE(std::regex_search(text["incline mu-from-slide"], std::regex("\\na_velocity_line +\\S+ ± \\S+ m/s\\^2\\n")))
       << text["incline mu-from-slide"];
   EXPECT_TRUE(std::regex_search(text["bounce analyze"], std::regex("\\n +x +0\\.\\d+\\n"))) << text["bounce analyze"];  // r_squared.x
+}
+
+/// A series (several files) of each command that takes them: its setup and arguments.
+struct SeriesRun {
+  std::string setup;                                ///< with {dir}, " && " between commands
+  std::function<std::string(const std::string&)> args;  ///< from the folder
+};
+const std::map<std::string, SeriesRun>& series_runs() {
+  static const std::map<std::string, SeriesRun> m = {
+      {"incline analyze",  // one angle, three launch speeds: the stop relations (eqs 7-10)
+       {"incline synth --mu 0.634 --phi-deg 20.96 --v0 2.0 --seed 3 --out {dir}/a.txt && "
+        "incline synth --mu 0.634 --phi-deg 20.96 --v0 2.62 --seed 4 --out {dir}/b.txt && "
+        "incline synth --mu 0.634 --phi-deg 20.96 --v0 2.3 --seed 5 --out {dir}/c.txt",
+        [](const std::string& d) {
+          return "incline analyze '" + d + "/a.txt' '" + d + "/b.txt' '" + d + "/c.txt' --phi-deg 20.96";
+        }}},
+      {"incline analyze@angles",  // three angles: the theta_c test (eq c') instead
+       {"incline synth --mu 0.634 --phi-deg 15 --v0 2.0 --seed 3 --out {dir}/a.txt && "
+        "incline synth --mu 0.634 --phi-deg 20.96 --v0 2.62 --seed 4 --out {dir}/b.txt && "
+        "incline synth --mu 0.634 --phi-deg 25 --v0 2.3 --seed 5 --out {dir}/c.txt",
+        [](const std::string& d) {
+          return "incline analyze '" + d + "/a.txt' '" + d + "/b.txt' '" + d + "/c.txt' --phi-deg 15,20.96,25";
+        }}},
+      {"incline mu-from-slide",
+       {"incline synth --mu 0.634 --phi-deg 41.09 --v0 0 --fps 240 --duration 0.7 --seed 41 --out {dir}/a.txt && "
+        "incline synth --mu 0.634 --phi-deg 41.09 --v0 0 --fps 240 --duration 0.7 --seed 42 --out {dir}/b.txt",
+        [](const std::string& d) { return "incline mu-from-slide '" + d + "/a.txt' '" + d + "/b.txt' --phi-deg 41.09"; }}},
+      {"bounce analyze",
+       {"bounce synth-video --height 0.7 --theta-deg 30 --seed 1 --out {dir}/a.txt && "
+        "bounce synth-video --height 0.7 --theta-deg 60 --seed 2 --out {dir}/b.txt",
+        [](const std::string& d) {
+          return "bounce analyze '" + d + "/a.txt' '" + d + "/b.txt' --track-a A --track-b B --time-scale 0.125 --floor-y 0";
+        }}},
+  };
+  return m;
+}
+
+/// Runs `name`'s series in a fresh folder with `extra` arguments; its stdout.
+std::string series_output(const std::string& name, const std::string& extra) {
+  const SeriesRun& r = series_runs().at(name);
+  std::string slug = name;
+  for (char& c : slug) if (c == ' ' || c == '-' || c == '@') c = '_';
+  const std::string dir = temp_dir("schema_series_" + slug);
+  for (std::size_t start = 0; start < r.setup.size();) {
+    const std::size_t end = std::min(r.setup.find(" && ", start), r.setup.size());
+    std::string cmd = r.setup.substr(start, end - start);
+    for (std::size_t p; (p = cmd.find("{dir}")) != std::string::npos;) cmd.replace(p, 5, "'" + dir + "'");
+    run_json(cmd);
+    start = end + 4;
+  }
+  const RunResult out = run_tribolab(r.args(dir) + extra);
+  EXPECT_EQ(out.exit_code, 0) << name << ": " << out.err;
+  return out.out;
+}
+
+app::ResultKeys series_keys_of(const json& c) {
+  app::ResultKeys k;
+  for (const json& r : c["series_results"]) k.push_back({r["key"], r["unit"], r["help"]});
+  return k;
+}
+
+TEST(Schema, EveryKeyOfASeriesIsDeclared) {
+  // The runs' rows carry the one-file command's keys, the summary the series' own: a summary
+  // listed with units guessed from key names printed slopes in s^2/m and rms in s without unit.
+  std::set<std::string> with_series, run;
+  for (const json& c : schema()) {
+    if (!c.contains("series_results")) continue;
+    with_series.insert(c["command"]);
+    ASSERT_TRUE(series_runs().count(c["command"])) << c["command"] << " has no series run in series_runs()";
+  }
+  for (const auto& [name, r] : series_runs()) {
+    const std::string command = name.substr(0, name.find('@'));
+    run.insert(command);
+    const auto it = std::find_if(schema().begin(), schema().end(), [&](const json& c) { return c["command"] == command; });
+    ASSERT_NE(it, schema().end()) << name;
+    const json& c = *it;
+    ASSERT_TRUE(c.contains("series_results")) << command << " takes several files but declares no summary keys";
+    const json j = json::parse(series_output(name, " --json"));
+    const app::ResultKeys rows = keys_of(c), summary = series_keys_of(c);
+    std::vector<std::string> paths;
+    schema_leaves(j["runs"], "", paths);
+    for (const std::string& p : paths) EXPECT_NE(app::find_result_key(rows, p), nullptr) << c["command"] << ": row key " << p;
+    paths.clear();
+    schema_leaves(j["summary"], "", paths);
+    ASSERT_GT(paths.size(), 10u) << c["command"];
+    for (const std::string& p : paths)
+      EXPECT_NE(app::find_result_key(summary, p), nullptr) << c["command"] << ": summary key " << p << " is not declared";
+  }
+  EXPECT_EQ(with_series, run);
+  EXPECT_EQ(with_series, (std::set<std::string>{"incline analyze", "incline mu-from-slide", "bounce analyze"}));
+}
+
+TEST(Schema, SeriesListingsPrintTheDeclaredUnits) {
+  const std::string inc = series_output("incline analyze", "");
+  // The table's header from the rows' keys, the summary's blocks from the series' keys.
+  EXPECT_TRUE(std::regex_search(inc, std::regex("(^|\\n)file +phi_deg +mu +sigma_mu +v0 \\(m/s\\) +rms_residual \\(m\\) +verdict\\n")))
+      << inc;
+  EXPECT_TRUE(std::regex_search(inc, std::regex("\\n  t_stop_v0:\\n(    .*\\n)*?    rms +\\S+ s\\n"))) << inc;
+  EXPECT_TRUE(std::regex_search(inc, std::regex("\\n  x_stop_v0sq:\\n(    .*\\n)*?    slope +\\S+ ± \\S+ s\\^2/m  \\(95 %"))) << inc;
+  EXPECT_TRUE(std::regex_search(inc, std::regex("\\n  y_stop_x_stop:\\n(    .*\\n)*?    rms +\\S+ m\\n"))) << inc;
+  EXPECT_TRUE(std::regex_search(inc, std::regex("\\n  y_stop_x_stop:\\n(    .*\\n)*?    slope +\\S+ ± \\S+  \\(95 %"))) << inc;
+  EXPECT_TRUE(std::regex_search(inc, std::regex("\\nphi_deg +20.96 deg\\n"))) << inc;
+  const std::string angles = series_output("incline analyze@angles", "");
+  EXPECT_TRUE(std::regex_search(angles, std::regex("\\nphi_deg +none\\n"))) << angles;  // null: several angles
+  EXPECT_TRUE(std::regex_search(angles, std::regex("\\ntheta_c_test:\\n(  .*\\n)*?  slope +\\S+ ± \\S+\\n"))) << angles;
+  const std::string b = series_output("bounce analyze", "");
+  EXPECT_TRUE(std::regex_search(b, std::regex("(^|\\n)file +collision_angle_deg +e_velocity +sigma_e_velocity +e_height +"
+                                              "energy_pre \\(J\\) +energy_post \\(J\\) +mean_normal_force \\(N\\)\\n")))
+      << b;
+  EXPECT_TRUE(std::regex_search(b, std::regex("\\nmean_normal_force:\\n(  .*\\n)*?  sd +\\S+ N\\n"))) << b;
+  EXPECT_TRUE(std::regex_search(b, std::regex("\\n    contact_point_speed +\\S+ m/s\\n"))) << b;
+  EXPECT_TRUE(std::regex_search(b, std::regex("\\n    centre_deg +\\S+ deg\\n"))) << b;
+  const std::string slide = series_output("incline mu-from-slide", "");
+  EXPECT_TRUE(std::regex_search(slide, std::regex("(^|\\n)file +phi_deg +a \\(m/s\\^2\\) +sigma_a \\(m/s\\^2\\) +mu +sigma_mu +r_squared\\n")))
+      << slide;
 }
 
 /// The cells of a Markdown table row "| a | b |" -> {"a", "b"} (an escaped \\| stays in its cell).

@@ -1,11 +1,13 @@
 #include "series_cmd.hpp"
 
 #include "app.hpp"
+#include "text_listing.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 
 #include <unistd.h>
@@ -47,7 +49,8 @@ analysis::SeriesOptions cli_series_options(const std::string& what) {
 }
 
 void print_series(const nlohmann::json& raw_rows, const nlohmann::json& raw_summary, bool as_json,
-                  const std::vector<std::string>& columns) {
+                  const std::vector<std::string>& columns, const app::ResultKeys& row_keys,
+                  const app::ResultKeys& summary_keys) {
   const nlohmann::json rows = spelled_for_cli(raw_rows), summary = spelled_for_cli(raw_summary);  // --floor-y
   // Each run's warnings on stderr with its file, whatever the output format; the summary's
   // own below (print_result, or here for --json).
@@ -64,7 +67,13 @@ void print_series(const nlohmann::json& raw_rows, const nlohmann::json& raw_summ
     return;
   }
   std::vector<std::string> header{"file"};
-  for (const auto& c : columns) header.push_back(c.empty() || c[0] != '/' ? c : c.substr(c.rfind('/') + 1));
+  for (const auto& c : columns) {
+    // "/normal_friction/verdict" is the declared key "normal_friction.verdict", shown as "verdict".
+    std::string path = c.empty() || c[0] != '/' ? c : c.substr(1);
+    std::replace(path.begin(), path.end(), '/', '.');
+    const app::ResultKey* k = app::find_result_key(row_keys, path);
+    header.push_back(column_label(path.substr(path.rfind('.') + 1), k ? k->unit : ""));
+  }
   std::vector<std::vector<std::string>> table;
   for (const auto& row : rows) {
     std::vector<std::string> line{row.value("file", "")};
@@ -94,7 +103,7 @@ void print_series(const nlohmann::json& raw_rows, const nlohmann::json& raw_summ
   print_line(header);
   for (const auto& line : table) print_line(line);
   std::cout << "\nsummary\n";
-  print_result(summary, false);
+  print_result(summary, false, summary_keys);
 }
 
 void finish_series(std::size_t n_runs, const std::vector<std::string>& errors) {

@@ -16,7 +16,8 @@
 #pragma once
 
 #include "analysis/series.hpp"
-#include "app/series_json.hpp"
+#include "app/common/option_fields.hpp"
+#include "app/common/series_json.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -42,15 +43,17 @@ std::vector<analysis::RunOutcome<Result>> run_files(const std::vector<std::strin
   return analysis::run_series<Result>(files, std::forward<Run>(run), cli_series_options());
 }
 
-using app::series_rows;  // the series JSON is the application layer's (app/series_json.hpp)
+using app::series_rows;  // the series JSON is the application layer's (app/common/series_json.hpp)
 using app::series_counts;
 
 /// Prints a series: with `as_json` one line {"runs": rows, "summary": summary}; else a table
 /// of the runs (a column per entry of `columns`, each a key or a JSON pointer such as
-/// "/normal_friction/verdict", and the error of a failed run) followed by the summary's keys
-/// as print_result lists them.
+/// "/normal_friction/verdict", and the error of a failed run; units in the header from
+/// `row_keys`, the one-file command's declared keys) followed by the summary's keys as
+/// print_result lists them (units from `summary_keys`).
 void print_series(const nlohmann::json& rows, const nlohmann::json& summary, bool as_json,
-                  const std::vector<std::string>& columns);
+                  const std::vector<std::string>& columns, const app::ResultKeys& row_keys,
+                  const app::ResultKeys& summary_keys);
 
 /// After the output: throws InputError ("2 of 8 runs failed: b.csv: ...; see their rows")
 /// when any run failed, so the command exits non-zero with one line on stderr.

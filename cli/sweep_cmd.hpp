@@ -1,6 +1,6 @@
 // The command-line text of a sweep: axis ranges "lo:hi:count", "value or range", shards
 // "i/N", and the progress line on a terminal. The workflow itself is app::bounce_sweep
-// (src/app/bounce_sweep.hpp). docs/cli.md#bounce-sweep.
+// (src/app/bounce/bounce_sweep.hpp). docs/cli.md#bounce-sweep.
 #pragma once
 
 #include <optional>
@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "app/bounce_sweep.hpp"
+#include "app/bounce/bounce_sweep.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/runner.hpp"
 

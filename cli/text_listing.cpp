@@ -1,7 +1,6 @@
 #include "text_listing.hpp"
 
 #include "report/format.hpp"
-#include "report/units.hpp"
 
 #include <fmt/format.h>
 
@@ -52,10 +51,13 @@ std::string number(const json& v) {
 
 /// A bound of a 95 % interval, to the decimal place of the value's uncertainty when known
 /// (two significant digits of sigma, as format_uncertain rounds), else 4 significant digits.
-std::string bound(const json& b, const json* sigma) {
+/// A bound of a 95 % interval, to the place of 2 significant digits of `scale` (the value's
+/// standard uncertainty; without one, the interval's half-width over 1.96, so that the two
+/// bounds of a narrow interval differ: "0.39998 to 0.39999", not "0.4 to 0.4").
+std::string bound(const json& b, double scale) {
   const double v = b.get<double>();
-  if (sigma && sigma->get<double>() > 0 && std::isfinite(v)) {
-    const int decimals = 1 - static_cast<int>(std::floor(std::log10(sigma->get<double>())));
+  if (scale > 0 && std::isfinite(scale) && std::isfinite(v)) {
+    const int decimals = 1 - static_cast<int>(std::floor(std::log10(scale)));
     if (decimals >= 0 && decimals <= 12) {
       std::string s = fmt::format("{:.{}f}", v, decimals);
       if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // no "-0.00"
@@ -130,18 +132,16 @@ Companions companions(const json& o, const std::string& key) {
 
 class Listing {
  public:
-  explicit Listing(const app::ResultKeys* keys) : keys_(keys) {}
+  explicit Listing(const app::ResultKeys& keys) : keys_(keys) {}
   std::string str() const { return out_; }
 
-  /// The unit of the key at `path` ("law.K", "bounces.vx_in"); `key` its last part, `parent`
-  /// the enclosing key.
-  std::string unit(const std::string& path, const std::string& key, const std::string& parent) const {
-    if (!keys_) return unit_of(key, parent);
-    const app::ResultKey* k = app::find_result_key(*keys_, path);
+  /// The declared unit of the key at `path` ("law.K", "bounces.vx_in"), "" when undeclared.
+  std::string unit(const std::string& path) const {
+    const app::ResultKey* k = app::find_result_key(keys_, path);
     return k ? k->unit : "";
   }
 
-  void object(const json& o, const std::string& parent, std::size_t indent, const std::string& prefix = "") {
+  void object(const json& o, std::size_t indent, const std::string& prefix = "") {
     // Companions are shown on their value's row, not on rows of their own.
     std::set<std::string> shown_with_value;
     for (const auto& [k, v] : o.items()) {
@@ -163,7 +163,7 @@ class Listing {
       const std::string lead = std::string(indent, ' ');
       if (v.is_object() && !v.empty()) {
         line(lead + k + ":");
-        object(v, k, indent + 2, prefix + k + ".");
+        object(v, indent + 2, prefix + k + ".");
       } else if (v.is_array() && !v.empty() && std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_object(); })) {
         line(lead + k + ":");
         table(v, k, indent + 2, prefix + k + ".");
@@ -171,7 +171,7 @@ class Listing {
         for (std::size_t i = 0; i < v.size(); ++i)
           line(lead + pad(i == 0 ? k : "", width) + "  " + v[i].get<std::string>());
       } else {
-        line(lead + pad(k, width) + "  " + value(o, k, v, unit(prefix + k, k, parent)));
+        line(lead + pad(k, width) + "  " + value(o, k, v, unit(prefix + k)));
       }
     }
   }
@@ -192,7 +192,11 @@ class Listing {
     const Companions c = companions(o, k);
     std::string s = c.sigma ? report::format_uncertain(v.get<double>(), c.sigma->get<double>()) : number(v);
     s = with_unit(s, unit);
-    if (c.ci) s += "  (95 % interval " + bound((*c.ci)[0], c.sigma) + " to " + bound((*c.ci)[1], c.sigma) + ")";
+    if (c.ci) {
+      const double lo = (*c.ci)[0].get<double>(), hi = (*c.ci)[1].get<double>();
+      const double scale = c.sigma ? c.sigma->get<double>() : (hi - lo) / (2 * 1.96);
+      s += "  (95 % interval " + bound((*c.ci)[0], scale) + " to " + bound((*c.ci)[1], scale) + ")";
+    }
     return s;
   }
 
@@ -230,10 +234,7 @@ class Listing {
         cells[i][name] = cell(name, *v);
       }
     }
-    auto label = [&](const std::string& f) {  // "_deg" and "_px" already name their unit
-      const std::string u = unit(prefix + f, f.substr(f.rfind('.') + 1), key);
-      return u.empty() || ends(f, "_deg") || ends(f, "_px") ? f : f + " (" + u + ")";
-    };
+    auto label = [&](const std::string& f) { return column_label(f, unit(prefix + f)); };
     const std::string lead(indent, ' ');
     std::string item = key;  // "bounces" -> "bounce 1", "contact_list" -> "contact 1"
     if (ends(item, "_list")) {
@@ -276,20 +277,20 @@ class Listing {
     }
   }
 
-  const app::ResultKeys* keys_;
+  const app::ResultKeys& keys_;
   std::string out_;
 };
 
 }  // namespace
 
-std::string unit_of(const std::string& key, const std::string& parent) {
-  return report::unit_of_key(key, parent);  // one set of rules for the listing and the reports
+std::string column_label(const std::string& name, const std::string& unit) {
+  return unit.empty() || ends(name, "_deg") || ends(name, "_px") ? name : name + " (" + unit + ")";
 }
 
-std::string text_listing(const json& result, const app::ResultKeys* keys) {
+std::string text_listing(const json& result, const app::ResultKeys& keys) {
   if (!result.is_object()) return result.dump() + "\n";
   Listing l(keys);
-  l.object(result, "", 0);
+  l.object(result, 0);
   return l.str();
 }
 

@@ -1,6 +1,6 @@
 // The text listing for people (cli/text_listing.hpp): uncertainties rounded, units from the
-// key names, nested results as blocks and sub-tables, null explained; and every command's
-// listing free of raw JSON.
+// declared result keys only, nested results as blocks and sub-tables, null explained; and every
+// command's listing free of raw JSON.
 #include "text_listing.hpp"
 
 #include "cli_test_util.hpp"
@@ -15,7 +15,7 @@ using nlohmann::json;
 TEST(TextListing, AValueWithItsUncertaintyAndIntervalIsOneRoundedRow) {
   const json r = {{"mu", 0.633116}, {"sigma_mu", 0.000419333}, {"ci95", {{"mu", {0.632287437, 0.633942838}}}},
                   {"v0", 2.61891}, {"sigma_v0", 0.0014591}};
-  const std::string t = text_listing(r);
+  const std::string t = text_listing(r, {{"mu", "", ""}, {"v0", "m/s", ""}});
   // sigma to 2 significant digits, the value and the interval to the same place.
   EXPECT_NE(t.find("mu  0.63312 ± 0.00042  (95 % interval 0.63229 to 0.63394)\n"), std::string::npos) << t;
   EXPECT_NE(t.find("v0  2.6189 ± 0.0015 m/s\n"), std::string::npos) << t;
@@ -23,9 +23,17 @@ TEST(TextListing, AValueWithItsUncertaintyAndIntervalIsOneRoundedRow) {
   EXPECT_EQ(t.find("ci95"), std::string::npos) << t;
 }
 
+TEST(TextListing, AnIntervalWithoutUncertaintyKeepsItsBoundsApart) {
+  // A series' stop relation gives mu with a 95 % interval and no sigma: rounded to 4 digits the
+  // listing said "(95 % interval 0.4 to 0.4)". The interval's own width sets the place.
+  const std::string t = text_listing({{"mu", 0.399984}, {"mu_ci95", {0.3999754273, 0.3999926194}}}, {{"mu", "", ""}});
+  EXPECT_NE(t.find("mu  0.399984  (95 % interval 0.3999754 to 0.3999926)\n"), std::string::npos) << t;
+}
+
 TEST(TextListing, NullSaysWhatItMeansAndEmptyListsSayNone) {
   const std::string t = text_listing({{"t_stop", nullptr}, {"first_above_release", nullptr}, {"other", nullptr},
-                                      {"notes", json::array()}, {"stays_at_rest", false}});
+                                      {"notes", json::array()}, {"stays_at_rest", false}},
+                                     {});
   EXPECT_NE(t.find("t_stop               does not stop\n"), std::string::npos) << t;
   EXPECT_NE(t.find("first_above_release  never\n"), std::string::npos) << t;
   EXPECT_NE(t.find("other                none\n"), std::string::npos) << t;
@@ -34,31 +42,28 @@ TEST(TextListing, NullSaysWhatItMeansAndEmptyListsSayNone) {
   EXPECT_EQ(t.find(" -\n"), std::string::npos) << t;
 }
 
-TEST(TextListing, UnitsComeFromTheKeyNames) {
-  for (auto [key, unit] : {std::pair{"contact_duration", "s"}, {"t_touch", "s"}, {"t0", "s"}, {"vx", "m/s"},
-                           {"vy_in", "m/s"}, {"slip_velocity_in", "m/s"}, {"omega_out", "rad/s"},
-                           {"collision_angle_deg", "deg"}, {"x_px", "px"}, {"energy_in", "J"},
-                           {"dissipated_normal", "J"}, {"peak_force", "N"}, {"impulse_normal", "N s"},
-                           {"g", "m/s^2"}, {"a_x0", "m/s^2"}, {"normal_accel", "m/s^2"}, {"x_stop", "m"},
-                           {"apex_height", "m"}, {"max_penetration", "m"}, {"sigma_v0", "m/s"}}) {
-    EXPECT_EQ(unit_of(key), unit) << key;
-  }
-  // Dimensionless, whatever they contain ("duration" holds "ratio", "time_scale" a "t").
-  for (const char* key : {"e", "mu", "k", "mu_static", "time_scale", "time_factor", "ratio", "p_value", "n_points",
-                          "cos_theta_c", "score", "frames", "t_stop_over_v0", "y_stop_over_x_stop"}) {
-    EXPECT_EQ(unit_of(key), "") << key;
-  }
-  EXPECT_EQ(unit_of("total", "energy_in_parts"), "J");
-  EXPECT_EQ(unit_of("total"), "");
-  EXPECT_EQ(unit_of("energy_ratio_mean"), "");
-  EXPECT_EQ(unit_of("mean", "mean_normal_force"), "N");  // a statistic has its quantity's unit
-  EXPECT_EQ(unit_of("sd", "e_velocity"), "");
+TEST(TextListing, UnitsComeFromTheDeclarationsNeverFromTheKeyNames) {
+  // Issue 27: rules on key names printed "height 480 m" for pixels and "accelerations_defined
+  // 89 m/s^2" for a count. Only the declaration counts: an undeclared key has no unit, whatever
+  // its name suggests, and a declared key its declared unit.
+  const json r = {{"height", 480}, {"accelerations_defined", 89}, {"t_stop", 1.25}, {"law", {{"K", 101054}}},
+                  {"mean_normal_force", {{"mean", 1.7}}}};
+  const app::ResultKeys keys = {{"height", "px", ""}, {"law.K", "N/m^1.5", ""}, {"mean_normal_force.mean", "N", ""}};
+  const std::string t = text_listing(r, keys);
+  EXPECT_NE(t.find("height                 480 px\n"), std::string::npos) << t;
+  EXPECT_NE(t.find("accelerations_defined  89\n"), std::string::npos) << t;
+  EXPECT_NE(t.find("t_stop                 1.25\n"), std::string::npos) << t;  // a "t_" name, but not declared
+  EXPECT_NE(t.find("  K  101054 N/m^1.5\n"), std::string::npos) << t;
+  EXPECT_NE(t.find("  mean  1.7 N\n"), std::string::npos) << t;
+  EXPECT_EQ(column_label("vx_in", "m/s"), "vx_in (m/s)");
+  EXPECT_EQ(column_label("theta_deg", "deg"), "theta_deg");  // the name says it
+  EXPECT_EQ(column_label("n", ""), "n");
 }
 
 TEST(TextListing, NestedObjectsAreBlocksAndListsOfObjectsAreSubTables) {
   const json few = {{"law", {{"K", 101054}, {"model", "hunt-crossley"}}},
                     {"bounces", {{{"t_touch", 0.42976}, {"e", 0.33197}}, {{"t_touch", 0.73704}, {"e", nullptr}}}}};
-  const std::string t = text_listing(few);
+  const std::string t = text_listing(few, {{"bounces.t_touch", "s", ""}});
   EXPECT_NE(t.find("law:\n  K      101054\n  model  hunt-crossley\n"), std::string::npos) << t;
   // Few elements side by side, one row per field with its unit.
   EXPECT_NE(t.find("bounces:\n               bounce 1  bounce 2\n"), std::string::npos) << t;
@@ -67,7 +72,7 @@ TEST(TextListing, NestedObjectsAreBlocksAndListsOfObjectsAreSubTables) {
   // Many elements: one row each.
   json runs = json::array();
   for (int i = 0; i < 12; ++i) runs.push_back({{"mu", 0.5 + 0.01 * i}, {"t_stop", 1.0}});
-  const std::string m = text_listing({{"runs", runs}});
+  const std::string m = text_listing({{"runs", runs}}, {{"runs.t_stop", "s", ""}});
   EXPECT_NE(m.find("runs:\n  #   mu    t_stop (s)\n  1   0.5   1\n"), std::string::npos) << m;
   EXPECT_NE(m.find("  12  0.61  1\n"), std::string::npos) << m;
 }

@@ -3,14 +3,14 @@
 // the workflows live in src/app/track_*.hpp, this file only binds options to them.
 #include "app.hpp"
 #include "declared_options.hpp"
-#include "app/result_keys.hpp"
+#include "app/common/result_keys.hpp"
 #include "report_option.hpp"
 #include "track_video_cmd.hpp"
 
-#include "app/track_import.hpp"
-#include "app/track_kinematics.hpp"
-#include "app/track_rigid_body.hpp"
-#include "app/track_rotation.hpp"
+#include "app/track/track_import.hpp"
+#include "app/track/track_kinematics.hpp"
+#include "app/track/track_rigid_body.hpp"
+#include "app/track/track_rotation.hpp"
 
 #include <memory>
 
@@ -35,13 +35,13 @@ void add_time_range(CLI::App& cmd, double& t_from, double& t_to, const std::stri
   cmd.add_option("--t-to,--to", t_to, "Last time used, s (when not given: the last point)");
 }
 
-/// `keys`: the command's declared result keys (the listing's units), when declared.
+/// `keys`: the command's declared result keys (the listing's units).
 template <class Options, class Run>
 void bind(CLI::App& cmd, std::shared_ptr<Options> o, std::shared_ptr<bool> as_json, Run run,
-          const app::ResultKeys* keys = nullptr) {
+          const app::ResultKeys& keys) {
   add_json_flag(cmd, *as_json);
-  if (keys) declare_results(cmd, *keys);
-  cmd.callback([o, as_json, run, keys] { print_result(run(*o).json, *as_json, keys); });
+  declare_results(cmd, keys);
+  cmd.callback([o, as_json, run, &keys] { print_result(run(*o).json, *as_json, keys); });
 }
 
 }  // namespace
@@ -64,7 +64,7 @@ void register_track(CLI::App& root) {
     add_input_options(*cmd, o->input);
     cmd->add_option("--track", o->track, "Keep only this track (repeatable; when not given: all)");
     cmd->add_option("--out", o->out, "Write the tidy CSV here (columns track,frame,t,x,y)");
-    bind(*cmd, o, std::make_shared<bool>(false), track_import, &track_import_result_keys());
+    bind(*cmd, o, std::make_shared<bool>(false), track_import, track_import_result_keys());
   }
 
   // track kinematics
@@ -87,7 +87,7 @@ void register_track(CLI::App& root) {
     add_time_range(*cmd, o->t_from, o->t_to, "e.g. only the free fall before a landing");
     cmd->add_option("--out", o->out, "Output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)")->required();
     add_report_option(*cmd, o->report, o->plotly);
-    bind(*cmd, o, std::make_shared<bool>(false), track_kinematics, &track_kinematics_result_keys());
+    bind(*cmd, o, std::make_shared<bool>(false), track_kinematics, track_kinematics_result_keys());
   }
 
   // track rigid-body
@@ -105,7 +105,7 @@ void register_track(CLI::App& root) {
                     "(a rigid body keeps it; more means a wrong calibration or a mislabelled track)");
     cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,omega,sigma_omega,length (s, m, rad, rad/s)");
     add_report_option(*cmd, o->report, o->plotly);
-    bind(*cmd, o, std::make_shared<bool>(false), track_rigid_body, &track_rigid_body_result_keys());
+    bind(*cmd, o, std::make_shared<bool>(false), track_rigid_body, track_rigid_body_result_keys());
   }
 
   // track rotation
@@ -122,7 +122,7 @@ void register_track(CLI::App& root) {
     cmd->add_option("--window", o->window, "Points per local linear fit of the angle (the spin at each frame), >= 3");
     add_time_range(*cmd, o->t_from, o->t_to, "only the part of the record that turns about the pivot");
     cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,radius,omega,sigma_omega (s, m, rad, rad/s)");
-    bind(*cmd, o, std::make_shared<bool>(false), track_rotation, &track_rotation_result_keys());
+    bind(*cmd, o, std::make_shared<bool>(false), track_rotation, track_rotation_result_keys());
   }
 }
 

@@ -2,10 +2,10 @@
 // application layer returns (src/app/track_*.hpp) on the same input: the CLI only binds options.
 #include "cli_test_util.hpp"
 
-#include "app/track_import.hpp"
-#include "app/track_kinematics.hpp"
-#include "app/track_rigid_body.hpp"
-#include "app/track_test_util.hpp"
+#include "app/track/track_import.hpp"
+#include "app/track/track_kinematics.hpp"
+#include "app/track/track_rigid_body.hpp"
+#include "app/track/track_test_util.hpp"
 
 #include <filesystem>
 

@@ -1,14 +1,14 @@
 // `tribolab track video`: follow points and balls through a video or a Tracker project's
 // video (docs/cli.md#track-video). Binds the options to app::TrackVideoOptions, shows progress
-// on a terminal, prints the summary of app::track_video (src/app/track_video.hpp).
+// on a terminal, prints the summary of app::track_video (src/app/track/track_video.hpp).
 #include "track_video_cmd.hpp"
 #include "declared_options.hpp"
-#include "app/result_keys.hpp"
+#include "app/common/result_keys.hpp"
 
 #include "app.hpp"
 #include "report_option.hpp"
 
-#include "app/track_video.hpp"
+#include "app/track/track_video.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -96,7 +96,7 @@ void register_track_video(CLI::App& track_area) {
     Progress progress;
     TrackVideoOptions options = *o;
     options.progress = [&progress](int done, int expected) { progress(done, expected); };
-    print_result(track_video(options).json, *as_json, &track_video_result_keys());
+    print_result(track_video(options).json, *as_json, track_video_result_keys());
   });
 }
 

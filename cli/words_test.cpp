@@ -5,7 +5,7 @@
 #include "help_wrap.hpp"
 #include "words_check.hpp"
 
-#include "app/demo.hpp"
+#include "app/demo/demo.hpp"
 #include "report/html.hpp"
 
 #include <gtest/gtest.h>

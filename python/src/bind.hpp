@@ -9,7 +9,7 @@
 // of the option structs, collected at build time by python/option_help.py).
 #pragma once
 
-#include "app/option_fields.hpp"
+#include "app/common/option_fields.hpp"
 #include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
@@ -192,7 +192,7 @@ class Command {
   Command& opt_as(const std::string& keyword, const std::string& path, Get get) {
     return add(path, keyword, std::move(get), false);
   }
-  /// Every declared field of O (src/app/option_fields.hpp) as a keyword named as the field, its
+  /// Every declared field of O (src/app/common/option_fields.hpp) as a keyword named as the field, its
   /// Python type, default (from a default-constructed O), help and unit from the declaration;
   /// the input files (FieldRole::input_files) positional or keyword.
   Command& declared(const app::Fields<O>& fields) {

@@ -2,11 +2,11 @@
 // (src/app/bounce_*.hpp) through the mechanism of bind.hpp.
 #include "bind.hpp"
 
-#include "app/bounce_analyze.hpp"
-#include "app/bounce_series.hpp"
-#include "app/bounce_simulate.hpp"
-#include "app/bounce_sweep.hpp"
-#include "app/bounce_synth.hpp"
+#include "app/bounce/bounce_analyze.hpp"
+#include "app/bounce/bounce_series.hpp"
+#include "app/bounce/bounce_simulate.hpp"
+#include "app/bounce/bounce_sweep.hpp"
+#include "app/bounce/bounce_synth.hpp"
 #include "numerics/error.hpp"
 
 #include <stdlib.h>  // mkdtemp (POSIX)

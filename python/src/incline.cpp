@@ -2,10 +2,10 @@
 // (src/app/incline_*.hpp) through the mechanism of bind.hpp.
 #include "bind.hpp"
 
-#include "app/incline_analysis.hpp"
-#include "app/incline_analyze.hpp"
-#include "app/incline_forward.hpp"
-#include "app/incline_stop.hpp"
+#include "app/incline/incline_analysis.hpp"
+#include "app/incline/incline_analyze.hpp"
+#include "app/incline/incline_forward.hpp"
+#include "app/incline/incline_stop.hpp"
 
 namespace tribolab::python {
 namespace {

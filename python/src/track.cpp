@@ -2,11 +2,11 @@
 // (src/app/track_*.hpp) through the mechanism of bind.hpp.
 #include "bind.hpp"
 
-#include "app/track_import.hpp"
-#include "app/track_kinematics.hpp"
-#include "app/track_rigid_body.hpp"
-#include "app/track_rotation.hpp"
-#include "app/track_video.hpp"
+#include "app/track/track_import.hpp"
+#include "app/track/track_kinematics.hpp"
+#include "app/track/track_rigid_body.hpp"
+#include "app/track/track_rotation.hpp"
+#include "app/track/track_video.hpp"
 
 namespace tribolab::python {
 namespace {

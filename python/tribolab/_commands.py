@@ -40,7 +40,7 @@ def _doc(spec):
     for o in spec["options"]:
         default = "" if o["positional"] else ", default " + repr(o["default"])
         lines.append(f"{o['keyword']} : {o['type']}{default}")
-        if "help" in o:  # a declared field (src/app/option_fields.hpp)
+        if "help" in o:  # a declared field (src/app/common/option_fields.hpp)
             text = o["help"] + (", " + o["unit"] if o["unit"] else "")
         else:
             text = option_help(spec["options_struct"], o["path"])

@@ -50,7 +50,7 @@ SynthVideo film(const Throw& k, std::uint64_t seed) {
   return film(o);
 }
 
-/// The demo's "higher" throw (src/app/demo_bounce_runs.cpp): released at 0.8 m, theta 20 deg,
+/// The demo's "higher" throw (src/app/demo/demo_bounce_runs.cpp): released at 0.8 m, theta 20 deg,
 /// vx 1.5 m/s, clockwise spin 45 rad/s, low-damping law D = 6000: the spin's energy lifts the
 /// ball above its release (e_velocity ~ 1.2, the seed's headline).
 SynthVideo higher_throw(std::uint64_t seed) {

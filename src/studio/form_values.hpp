@@ -1,8 +1,8 @@
 // A form's values (JSON, keyed by the declared field names) into an options struct, through
-// the same declaration the command line and Python are bound from (app/option_fields.hpp).
+// the same declaration the command line and Python are bound from (app/common/option_fields.hpp).
 #pragma once
 
-#include "app/option_fields.hpp"
+#include "app/common/option_fields.hpp"
 #include "numerics/error.hpp"
 
 #include <nlohmann/json.hpp>

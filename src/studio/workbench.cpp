@@ -1,8 +1,8 @@
 #include "studio/workbench.hpp"
 
-#include "app/result_keys.hpp"
-#include "app/track_kinematics.hpp"
-#include "app/track_video.hpp"
+#include "app/common/result_keys.hpp"
+#include "app/track/track_kinematics.hpp"
+#include "app/track/track_video.hpp"
 #include "io/atomic_file.hpp"
 #include "numerics/error.hpp"
 #include "studio/form_values.hpp"

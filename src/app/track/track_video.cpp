@@ -1,0 +1,238 @@
+#include "app/track/track_video.hpp"
+#include "app/common/result_keys.hpp"
+
+#include "app/common/output_paths.hpp"
+
+#include "app/track/report_track_video.hpp"
+#include "app/track/track_import.hpp"
+#include "io/atomic_file.hpp"
+#include "io/text.hpp"
+#include "io/tracker_trk.hpp"
+#include "numerics/error.hpp"
+#include "report/html.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <memory>
+
+namespace tribolab::app {
+
+namespace {
+
+std::vector<double> numbers(const std::string& text, std::size_t count, const std::string& where) {
+  const auto parts = io::split(text, ',');
+  if (parts.size() != count) {
+    throw InputError(where, "expected " + std::to_string(count) + " comma-separated numbers, got '" +
+                                text.substr(0, 60) + "'");
+  }
+  std::vector<double> v;
+  for (const auto& p : parts) v.push_back(io::parse_double(p, where));
+  return v;
+}
+
+/// NAME=X,Y[@FRAME]
+video::Target parse_target(const std::string& text, video::Target::Kind kind, const std::string& opt) {
+  const auto eq = text.find('=');
+  const std::string where = opt + " " + text.substr(0, 60);
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError(where, "expected NAME=X,Y or NAME=X,Y@FRAME (pixels: x right, y down)");
+  }
+  video::Target t;
+  t.kind = kind;
+  t.name = text.substr(0, eq);
+  std::string pos = text.substr(eq + 1);
+  if (const auto at = pos.find('@'); at != std::string::npos) {
+    const double f = io::parse_double(pos.substr(at + 1), where + " (frame)");
+    if (f != std::floor(f) || f < 0 || f > 1e8) {
+      throw InputError(where, "the frame after @ must be a whole number from 0");
+    }
+    t.frame = static_cast<int>(f);
+    pos = pos.substr(0, at);
+  }
+  const auto xy = numbers(pos, 2, where);
+  t.x_px = xy[0];
+  t.y_px = xy[1];
+  return t;
+}
+
+bool ends_with_trk(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string e = path.substr(path.size() - 4);
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e == ".trk";
+}
+
+/// The value of an optional option whose core field reads 0 as "unset": a value given is
+/// checked here, so that 0 (or what rounds to it) is refused instead of taken for unset.
+template <class T>
+T given_or_unset(const std::optional<T>& v, const std::string& name) {
+  if (v && !(*v > 0)) throw InputError(field(name), "must be > 0, got " + io::format_number(static_cast<double>(*v)) + " (leave it out for the default)");
+  return v.value_or(T{0});
+}
+
+video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
+  video::TrackVideoOptions o;
+  o.source.scale_m_per_px = given_or_unset(a.scale, "scale");
+  o.source.axes_deg = a.axes_deg;
+  o.source.fps = given_or_unset(a.fps, "fps");
+  o.source.time_scale = a.time_scale;
+  o.source.zip_entry = a.entry;
+  o.point.min_score = a.min_score;
+  const int search_px = given_or_unset(a.search, "search");
+  const int patch_px = given_or_unset(a.patch, "patch");  // 0: the tracker's own choice
+  o.point.patch_px = patch_px > 0 ? patch_px : video::PointTrackerOptions{}.patch_px;
+  o.point.search_px = search_px;
+  o.path.patch_px = patch_px;
+  o.path.search_px = search_px;
+  o.path.min_score = a.min_score;
+  o.path.max_gap_frames = a.max_gap;
+  if (a.point_tracker != "path" && a.point_tracker != "frame") {
+    throw InputError(field("point_tracker") + " " + a.point_tracker.substr(0, 60), "expected path or frame");
+  }
+  o.offline_points = a.point_tracker == "path";
+  o.point.max_turn_deg = a.max_turn_deg;
+  o.point.max_gap_frames = a.max_gap;
+  o.ellipse.min_score = a.ellipse_min_score;
+  o.ellipse.max_gap_frames = a.max_gap;
+  o.progress = a.progress;
+  if (a.report.empty()) o.thumbnails = 0;
+  for (const auto& s : a.start) o.targets.push_back(parse_target(s, video::Target::Kind::point, field("start")));
+  for (const auto& s : a.ellipse) o.targets.push_back(parse_target(s, video::Target::Kind::ellipse, field("ellipse")));
+  for (const auto& name : a.from_track) {
+    video::Target t;
+    t.name = name;
+    t.from_track = name;
+    o.targets.push_back(t);
+  }
+  if (!a.calibrate.empty()) {
+    const auto v = numbers(a.calibrate, 5, field("calibrate"));
+    o.source.calibrate_points = std::make_pair(cv::Point2d(v[0], v[1]), cv::Point2d(v[2], v[3]));
+    o.source.calibrate_length_m = v[4];
+  }
+  if (!a.origin.empty()) {
+    const auto v = numbers(a.origin, 2, field("origin"));
+    o.source.origin_px = cv::Point2d(v[0], v[1]);
+  }
+  if (!a.write_trk.empty() && !ends_with_trk(a.write_trk)) {
+    throw InputError(field("write_trk") + " " + a.write_trk, "the project file must end in .trk");
+  }
+  if (a.start.empty() && a.ellipse.empty() && a.from_track.empty())  // a missing required option
+    throw MissingOptionError("nothing to track: give " + field("start") + ", " + field("ellipse") + " or " +
+                             field("from_track"));
+  if (const auto err = o.validate(); !err.empty()) throw InputError(err);
+  return o;
+}
+
+nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions& a) {
+  const video::VideoInput& in = r.input;
+  nlohmann::json j;
+  j["input"] = in.input;
+  j["video"] = {{"path", in.project_video.empty() ? in.input : in.project_video},
+                {"width", in.info.width},
+                {"height", in.info.height},
+                {"frame_count", in.info.frame_count},
+                {"fps", json_number(in.info.fps)},
+                {"codec", in.info.codec}};
+  j["clip"] = {{"start_frame", in.clip.start_frame},
+               {"step_size", in.clip.step_size},
+               {"step_count", in.clip.step_count}};
+  j["frames"] = r.frames;
+  j["fps"] = 1 / in.time.frame_duration_s;
+  j["time_base"] = {{"start_frame", in.time.start_frame},
+                    {"start_time", in.time.start_time_s},
+                    {"frame_duration", in.time.frame_duration_s},
+                    {"time_scale", in.time.time_scale}};
+  const io::TrkCoordFrame& c = in.calibration.coords.front();
+  j["calibration"] = {
+      {"calibrated", in.calibration.calibrated},
+      {"unit", in.calibration.calibrated ? "m" : "px"},
+      {"m_per_px", in.calibration.calibrated ? json_number(in.calibration.metres_per_unit / c.xscale)
+                                             : nlohmann::json(nullptr)},
+      {"origin_px", {c.origin_x, c.origin_y}},
+      {"axes_deg", c.angle_deg},
+      {"key_frames", in.calibration.coords.size()}};
+  nlohmann::json tracks = nlohmann::json::object();
+  nlohmann::json names = nlohmann::json::array();
+  for (const auto& s : r.series) {
+    names.push_back(s.name);
+    nlohmann::json lost = nlohmann::json::array();
+    int lost_rows = 0;
+    for (const auto& [f0, f1] : s.lost_ranges) lost.push_back({f0, f1});
+    for (const auto& row : s.rows) lost_rows += row.lost;
+    nlohmann::json t = {{"kind", s.kind == video::Target::Kind::ellipse ? "ellipse" : "point"},
+                        {"start_frame", s.rows.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.rows.front().frame)},
+                        {"rows", s.rows.size()},
+                        {"tracked", s.tracked},
+                        {"lost", lost_rows},
+                        {"lost_ranges", lost},
+                        {"refound_frames", s.refound_frames},
+                        {"median_score", s.median_score}};
+    if (s.vs_human) {
+      t["vs_human"] = {{"frames", s.vs_human->frames},
+                       {"median_px", s.vs_human->median_px},
+                       {"max_px", s.vs_human->max_px},
+                       {"marks", s.vs_human->marks},
+                       {"p90_px", s.vs_human->p90_px},
+                       {"correct_px", s.vs_human->correct_px},
+                       {"to_correct", s.vs_human->to_correct},
+                       {"confidently_wrong", s.vs_human->confidently_wrong}};
+    } else {
+      t["vs_human"] = nullptr;
+    }
+    tracks[s.name] = t;
+  }
+  j["track_names"] = names;
+  j["tracks"] = tracks;
+  j["warnings"] = r.warnings;
+  j["out"] = a.out;
+  j["write_trk"] = a.write_trk.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.write_trk);
+  j["report"] = a.report.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.report);
+  return j;
+}
+
+}  // namespace
+
+TrackVideoResult track_video(const TrackVideoOptions& options) {
+  check_output_paths({options.input}, {{"out", options.out}, {"write_trk", options.write_trk}, {"report", options.report}});  // before any work (app/common/output_paths.hpp)
+  const video::TrackVideoOptions o = build_options(options);
+  if (options.out.empty()) throw MissingOptionError(field("out"), "the output CSV is required");
+  // open the outputs first: a bad output path fails before minutes of decoding
+  io::AtomicFile csv(options.out);
+  std::unique_ptr<io::AtomicFile> trk;
+  if (!options.write_trk.empty()) trk = std::make_unique<io::AtomicFile>(options.write_trk);
+  video::TrackVideoResult r = video::track_video(options.input, o);
+  video::write_csv(csv.stream(), r);
+  if (trk) {
+    const io::TrkWriteSpec spec = video::trk_spec(r, options.write_trk, r.warnings);
+    trk->stream() << io::write_trk(video::to_track_set(r).tracks, spec);
+  }
+  if (!options.report.empty()) report::write_html(track_video_report(r), options.report, options.plotly);
+  csv.commit();
+  if (trk) trk->commit();
+  TrackVideoResult result;
+  result.json = summary(r, options);
+  result.series = std::move(r.series);
+  return result;
+}
+
+
+const ResultKeys& track_video_result_keys() {
+  static const ResultKeys k = {
+      {"input", "", ""}, {"video.path", "", ""}, {"video.width", "px", ""}, {"video.height", "px", ""},
+      {"video.frame_count", "", ""}, {"video.fps", "1/s", "as the container says"}, {"video.codec", "", ""},
+      {"clip.start_frame", "", ""}, {"clip.step_size", "", ""}, {"clip.step_count", "", ""}, {"frames", "", ""},
+      {"fps", "1/s", "frames per second of the time base"}, {"time_base.start_frame", "", ""},
+      {"time_base.start_time", "s", ""}, {"time_base.frame_duration", "s", ""}, {"time_base.time_scale", "", ""},
+      {"calibration.calibrated", "", ""}, {"calibration.unit", "", "m, or px without a scale"},
+      {"calibration.m_per_px", "m/px", "length of a pixel"}, {"calibration.origin_px", "px", ""},
+      {"calibration.axes_deg", "deg", ""}, {"calibration.key_frames", "", ""},
+      {"track_names", "", ""}, {"tracks.*.kind", "", ""}, {"tracks.*.start_frame", "", ""}, {"tracks.*.rows", "", ""},
+      {"tracks.*.tracked", "", ""}, {"tracks.*.lost", "", ""}, {"tracks.*.lost_ranges", "", "[first, last] frames"},
+      {"tracks.*.refound_frames", "", ""}, {"tracks.*.median_score", "", ""},
+      {"tracks.*.vs_human.frames", "", ""}, {"tracks.*.vs_human.median_px", "px", ""},
+      {"tracks.*.vs_human.max_px", "px", ""}, {"tracks.*.vs_human", "", "null without human marks"},
+      {"warnings", "", ""}, {"out", "", ""}, {"write_trk", "", ""}, {"report", "", ""},
+  };
+  return k;
+}
+}  // namespace tribolab::app
