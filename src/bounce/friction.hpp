@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tribolab::bounce {
 
@@ -15,9 +16,19 @@ enum class FrictionKind {
   spring,       ///< tangential spring–damper f = -(k_t u + c_t u'), capped at mu N
 };
 
+/// One row per friction law (a new law: a row, its enumerator and its force in contact.cpp).
+struct FrictionKindInfo {
+  FrictionKind kind;
+  std::string_view name;  ///< as every front end spells it
+};
+inline constexpr FrictionKindInfo kFrictionKinds[] = {
+    {FrictionKind::coulomb, "coulomb"}, {FrictionKind::regularized, "regularized"}, {FrictionKind::spring, "spring"}};
+
 /// "coulomb", "regularized", "spring".
 std::string_view to_string(FrictionKind k);
 std::optional<FrictionKind> parse_friction_kind(std::string_view name);
+/// Every name, in the table's order (the choices of a `friction` option).
+std::vector<std::string> friction_kind_names();
 
 struct FrictionModel {
   FrictionKind kind = FrictionKind::coulomb;

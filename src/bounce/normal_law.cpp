@@ -10,25 +10,25 @@
 
 namespace tribolab::bounce {
 
-std::string_view to_string(NormalModel m) {
-  switch (m) {
-    case NormalModel::hooke: return "hooke";
-    case NormalModel::hertz: return "hertz";
-    case NormalModel::hunt_crossley: return "hunt-crossley";
-    case NormalModel::flores: return "flores";
-    case NormalModel::lankarani_nikravesh: return "lankarani-nikravesh";
-    case NormalModel::gonthier: return "gonthier";
-  }
-  return "?";
+const NormalModelInfo& info(NormalModel m) {
+  for (const NormalModelInfo& i : kNormalModels)
+    if (i.model == m) return i;
+  TRIBOLAB_ASSERT(false, "a NormalModel without its row in kNormalModels");
+  return kNormalModels[0];
 }
 
+std::string_view to_string(NormalModel m) { return info(m).name; }
+
 std::optional<NormalModel> parse_normal_model(std::string_view name) {
-  for (NormalModel m : {NormalModel::hooke, NormalModel::hertz, NormalModel::hunt_crossley,
-                        NormalModel::flores, NormalModel::lankarani_nikravesh,
-                        NormalModel::gonthier}) {
-    if (name == to_string(m)) return m;
-  }
+  for (const NormalModelInfo& i : kNormalModels)
+    if (name == i.name) return i.model;
   return std::nullopt;
+}
+
+std::vector<std::string> normal_model_names() {
+  std::vector<std::string> names;
+  for (const NormalModelInfo& i : kNormalModels) names.emplace_back(i.name);
+  return names;
 }
 
 std::string NormalLawSpec::validate() const {

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tribolab::bounce {
 
@@ -19,19 +20,49 @@ enum class NormalModel {
   gonthier,            ///< N = K d^n (1 + (1 - e^2) / e d_dot / v_in) (Gonthier et al. 2004, Multibody Syst. Dyn. 11)
 };
 
+/// The rugby-ball study's fitted Hunt–Crossley law (研究方法 六): N = K d^n + D d^n d_dot. The
+/// defaults of every command's law, the seed's method and the demo's truth.
+struct Seed001Law {
+  static constexpr double K = 101054;  ///< N/m^n
+  static constexpr double n = 1.51;
+  static constexpr double D = 60423;   ///< N s/m^(n+1)
+};
+
+/// One row per normal law. A new law is one row here, its enumerator above, and its physics
+/// (the damping it resolves to: bounce::resolve in normal_law.cpp; docs/theory.md
+/// #bounce-normal-laws): its name, the front ends' choices and the messages follow from the row.
+struct NormalModelInfo {
+  NormalModel model;
+  std::string_view name;  ///< as every front end spells it
+  double default_n;       ///< exponent when none is given
+  double default_D;       ///< damping when neither D nor a restitution is given
+};
+inline constexpr NormalModelInfo kNormalModels[] = {
+    {NormalModel::hooke, "hooke", 1.0, 0.0},
+    {NormalModel::hertz, "hertz", 1.5, 0.0},
+    {NormalModel::hunt_crossley, "hunt-crossley", Seed001Law::n, Seed001Law::D},
+    {NormalModel::flores, "flores", Seed001Law::n, Seed001Law::D},
+    {NormalModel::lankarani_nikravesh, "lankarani-nikravesh", Seed001Law::n, Seed001Law::D},
+    {NormalModel::gonthier, "gonthier", Seed001Law::n, Seed001Law::D},
+};
+
+/// The row of `m`.
+const NormalModelInfo& info(NormalModel m);
 /// "hooke", "hertz", "hunt-crossley", "flores", "lankarani-nikravesh", "gonthier".
 std::string_view to_string(NormalModel m);
 /// Parses the names above; nullopt for anything else.
 std::optional<NormalModel> parse_normal_model(std::string_view name);
+/// Every name, in the table's order (the choices of a `model` option).
+std::vector<std::string> normal_model_names();
 
 /// A law as the user gives it: (K, n, D) or (K, n, target restitution e).
 struct NormalLawSpec {
   NormalModel model = NormalModel::hunt_crossley;
-  double K = 101054;   ///< stiffness, N/m^n (seed 001's fit: 101054 with n = 1.51)
-  double n = 1.51;     ///< exponent (Hertz 1.5; forced to 1 for hooke); seed's fit 1.51
+  double K = Seed001Law::K;  ///< stiffness, N/m^n (seed 001's fit: 101054 with n = 1.51)
+  double n = Seed001Law::n;  ///< exponent (Hertz 1.5; forced to 1 for hooke); seed's fit 1.51
   /// Damping: Hooke N s/m; Hunt–Crossley family N s/m^(n+1) (seed's fit 60423). Used when
   /// `restitution` is empty.
-  double D = 60423;
+  double D = Seed001Law::D;
   /// Target coefficient of restitution of a central impact, in (0, 1]; when set, D follows
   /// from it and the impact speed (see resolve()).
   std::optional<double> restitution;

@@ -1,13 +1,42 @@
+#include "bounce/friction.hpp"
 #include "bounce/normal_law.hpp"
 
 #include "numerics/error.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <set>
+#include <string_view>
+#include <vector>
 
 namespace tribolab::bounce {
 namespace {
+
+TEST(NormalLaw, EveryModelHasOneRowAndItsNameRoundTrips) {
+  // The table is the one list of laws (names, choices, messages): each enumerator has exactly
+  // one row, names are distinct and parse back to their model; the undamped laws default to D = 0.
+  const NormalModel all[] = {NormalModel::hooke, NormalModel::hertz, NormalModel::hunt_crossley,
+                             NormalModel::flores, NormalModel::lankarani_nikravesh, NormalModel::gonthier};
+  EXPECT_EQ(std::size(kNormalModels), std::size(all));
+  std::set<std::string_view> names;
+  for (NormalModel m : all) {
+    EXPECT_EQ(std::count_if(std::begin(kNormalModels), std::end(kNormalModels), [m](const auto& r) { return r.model == m; }), 1);
+    EXPECT_EQ(parse_normal_model(to_string(m)), m);
+    names.insert(to_string(m));
+  }
+  EXPECT_EQ(names.size(), std::size(all));
+  EXPECT_EQ(normal_model_names().size(), std::size(all));
+  EXPECT_FALSE(parse_normal_model("Hertz").has_value());
+  EXPECT_EQ(info(NormalModel::hertz).default_D, 0);
+  EXPECT_EQ(info(NormalModel::hertz).default_n, 1.5);
+  EXPECT_EQ(info(NormalModel::hunt_crossley).default_D, Seed001Law::D);
+  for (FrictionKind k : {FrictionKind::coulomb, FrictionKind::regularized, FrictionKind::spring})
+    EXPECT_EQ(parse_friction_kind(to_string(k)), k);
+  EXPECT_EQ(friction_kind_names(), (std::vector<std::string>{"coulomb", "regularized", "spring"}));
+}
 
 TEST(NormalLaw, HuntCrossleyRelationRoundTrips) {
   for (double e : {1e-3, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999999}) {

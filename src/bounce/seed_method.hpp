@@ -9,6 +9,7 @@
 // compiles the same source a second time with -O3 -march=native (bench/seed/seed_native.cpp).
 #pragma once
 
+#include "bounce/normal_law.hpp"
 #include "numerics/units.hpp"
 
 namespace tribolab::bounce::seed {
@@ -19,8 +20,8 @@ struct SeedParams {
   double a = 0.145, b = 0.095;   ///< semi-axes, m
   double mass = 0.435;           ///< kg
   double inertia = 4.1e-3;       ///< kg m^2
-  double K = 101054, n = 1.51;   ///< N/m^n, exponent (the seed's fit)
-  double chi = 60423.0 / 101054; ///< D / K, s/m
+  double K = Seed001Law::K, n = Seed001Law::n;  ///< N/m^n, exponent (the seed's fit)
+  double chi = Seed001Law::D / Seed001Law::K;   ///< D / K, s/m
   double mu = 0.5;               ///< Coulomb coefficient
   bool regularized = false;      ///< f = -mu N tanh(v_t / v_s) instead of exact Coulomb sign
   double slip_scale = 0.05;      ///< v_s, m/s

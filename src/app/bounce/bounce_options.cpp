@@ -3,24 +3,33 @@
 #include "numerics/error.hpp"
 #include "numerics/physical_range.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 namespace tribolab::app {
 
 using namespace tribolab::bounce;
 
+namespace {
+
+std::string comma_list(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace
+
 NormalModel parsed_model(const std::string& name) {
   const auto m = parse_normal_model(name);
-  if (!m) {
-    throw InputError(field("model"), "unknown model '" + name +
-                                    "' (hooke, hertz, hunt-crossley, flores, lankarani-nikravesh, gonthier)");
-  }
+  if (!m) throw InputError(field("model"), "unknown model '" + name + "' (" + comma_list(normal_model_names()) + ")");
   return *m;
 }
 
 FrictionKind parsed_friction(const std::string& name) {
   const auto k = parse_friction_kind(name);
-  if (!k) throw InputError(field("friction"), "unknown friction model '" + name + "' (coulomb, regularized, spring)");
+  if (!k) throw InputError(field("friction"), "unknown friction model '" + name + "' (" + comma_list(friction_kind_names()) + ")");
   return *k;
 }
 
@@ -54,9 +63,9 @@ NormalLawSpec LawOptions::law() const {
   if (m == NormalModel::hooke && n && *n != 1) throw InputError(field("n"), "the hooke law is linear (n = 1)");
   NormalLawSpec s;
   s.model = m;
-  s.K = K.value_or(101054);
-  s.n = n.value_or(m == NormalModel::hertz ? 1.5 : (m == NormalModel::hooke ? 1.0 : 1.51));
-  s.D = D.value_or((m == NormalModel::hertz || m == NormalModel::hooke) ? 0.0 : 60423);
+  s.K = K.value_or(Seed001Law::K);
+  s.n = n.value_or(info(m).default_n);
+  s.D = D.value_or(info(m).default_D);
   s.restitution = restitution;
   if (auto e = s.validate(); !e.empty()) invalid(e);
   return s;
@@ -103,15 +112,17 @@ const Fields<LawOptions>& law_fields() {
   static const Fields<LawOptions> f = [] {
     Fields<LawOptions> l;
     auto law = [](FieldDecl& d) -> FieldDecl& { d.group = "law"; return d; };
-    law(l.add("model", &LawOptions::model, "", "normal law"))
-        .one_of({"hooke", "hertz", "hunt-crossley", "flores", "lankarani-nikravesh", "gonthier"});
-    law(l.add("K", &LawOptions::K, "N/m^n", "stiffness; unset: the rugby-ball study's fit, 101054")).in(ranges::stiffness);
-    law(l.add("n", &LawOptions::n, "", "exponent in [1, 3]; unset: the rugby-ball study's fit 1.51 (hertz 1.5, hooke 1)"));
+    law(l.add("model", &LawOptions::model, "", "normal law")).one_of(normal_model_names());
+    law(l.add("K", &LawOptions::K, "N/m^n", fmt::format("stiffness; unset: the rugby-ball study's fit, {:g}", Seed001Law::K)))
+        .in(ranges::stiffness);
+    law(l.add("n", &LawOptions::n, "",
+              fmt::format("exponent in [1, 3]; unset: the rugby-ball study's fit {:g} (hertz 1.5, hooke 1)", Seed001Law::n)));
     law(l.add("D", &LawOptions::D, "N s/m^(n+1)",
-              "damping (hooke: N s/m); unset: the rugby-ball study's fit 60423 (hertz, hooke 0)")).in(ranges::damping);
+              fmt::format("damping (hooke: N s/m); unset: the rugby-ball study's fit {:g} (hertz, hooke 0)", Seed001Law::D)))
+        .in(ranges::damping);
     law(l.add("restitution", &LawOptions::restitution, "", "target central-impact restitution in (0, 1], instead of D"));
     law(l.add("mu", &LawOptions::mu, "", "friction coefficient")).in(ranges::friction);
-    law(l.add("friction", &LawOptions::friction, "", "friction model")).one_of({"coulomb", "regularized", "spring"});
+    law(l.add("friction", &LawOptions::friction, "", "friction model")).one_of(friction_kind_names());
     law(l.add("slip_scale", &LawOptions::slip_scale, "m/s", "v_s of the regularized law"))
         .in(PhysicalRange{0, 1e3, "m/s", true});
     law(l.add("k_t", &LawOptions::k_t, "N/m", "tangential stiffness of the spring model")).in(ranges::tangential_stiffness);

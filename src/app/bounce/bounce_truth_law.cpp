@@ -26,14 +26,13 @@ const Fields<TruthLawOptions>& truth_law_fields() {
     using O = TruthLawOptions;
     Fields<O> d;
     auto law = [](FieldDecl& x) -> FieldDecl& { x.group = "truth law"; return x; };
-    law(d.add("model", &O::model, "", "normal law"))
-        .one_of({"hooke", "hertz", "hunt-crossley", "flores", "lankarani-nikravesh", "gonthier"});
+    law(d.add("model", &O::model, "", "normal law")).one_of(bounce::normal_model_names());
     law(d.add("K", &O::K, "N/m^n", "stiffness")).in(ranges::stiffness);
     law(d.add("n", &O::n, "", "exponent (hooke: 1 whatever is given)"));
     law(d.add("D", &O::D, "N s/m^(n+1)", "damping (hertz: 0 whatever is given)")).in(ranges::damping);
     law(d.add("restitution", &O::restitution, "", "target restitution instead of D"));
     law(d.add("mu", &O::mu, "", "friction coefficient")).in(ranges::friction);
-    law(d.add("friction", &O::friction, "", "friction model")).one_of({"coulomb", "regularized", "spring"});
+    law(d.add("friction", &O::friction, "", "friction model")).one_of(bounce::friction_kind_names());
     law(d.add("slip_scale", &O::slip_scale, "m/s", "v_s of the regularized law")).in(PhysicalRange{0, 1e3, "m/s", true});
     return d;
   }();

@@ -8,6 +8,7 @@
 
 #include "app/common/option_fields.hpp"
 #include "app/bounce/bounce_options.hpp"
+#include "bounce/normal_law.hpp"
 
 #include <optional>
 #include <string>
@@ -17,9 +18,9 @@ namespace tribolab::app {
 /// --model --K --n --D --restitution --mu --friction --slip-scale of the generators.
 struct TruthLawOptions {
   std::string model = "hunt-crossley";  ///< normal law (bounce::parse_normal_model)
-  double K = 101054;                    ///< stiffness, N/m^n
-  double n = 1.51;                      ///< exponent (hooke: 1 whatever is given)
-  double D = 60423;                     ///< damping, N s/m^(n+1) (hertz: 0 whatever is given)
+  double K = bounce::Seed001Law::K;     ///< stiffness, N/m^n
+  double n = bounce::Seed001Law::n;     ///< exponent (hooke: 1 whatever is given)
+  double D = bounce::Seed001Law::D;     ///< damping, N s/m^(n+1) (hertz: 0 whatever is given)
   std::optional<double> restitution;    ///< target central restitution, instead of D
   double mu = 0.5;                      ///< friction coefficient
   std::string friction = "coulomb";     ///< coulomb|regularized|spring

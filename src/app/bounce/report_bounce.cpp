@@ -19,7 +19,6 @@ using report::Table;
 
 constexpr double kDeg = kDegPerRad;
 
-std::string v4(double x) { return report::format_value(x, 4); }
 
 Series history_series(const ContactCurve& c, const std::string& name,
                       const std::function<double(const ContactSample&)>& fy,
@@ -113,10 +112,10 @@ void add_contact_equations(report::Section& s, const bounce::NormalLaw& law) {
   s.add_equation("d = Y(θ) − y,   d' = −(v_y + ω X),   v_t = v_x + ω Y", "docs/theory.md#bounce-geometry");
   if (law.linear) {
     s.add_equation("N = max(0, K d + D d')", "docs/theory.md#bounce-normal-laws",
-                   "K = " + v4(law.K) + " N/m, D = " + v4(law.D) + " N s/m");
+                   "K = " + report::format_value(law.K) + " N/m, D = " + report::format_value(law.D) + " N s/m");
   } else {
     s.add_equation("N = max(0, K d^n (1 + (D/K) d'))", "rugby-ball study, research methods 6 (研究方法 六) (Hunt & Crossley 1975)",
-                   "K = " + v4(law.K) + " N/m^n, n = " + v4(law.n) + ", D = " + v4(law.D) + " N s/m^(n+1)");
+                   "K = " + report::format_value(law.K) + " N/m^n, n = " + report::format_value(law.n) + ", D = " + report::format_value(law.D) + " N s/m^(n+1)");
   }
   s.add_equation("|f| ≤ μ N (Coulomb: stick when |f| < μ N, else f = −μ N sign v_t)",
                  "docs/theory.md#bounce-friction");
@@ -126,10 +125,10 @@ report::Table ball_table(const bounce::Ball& ball) {
   Table t;
   t.caption = "Ball";
   t.header = {"quantity", "value"};
-  t.rows = {{"a (semi-major axis), m", v4(ball.a)},
-            {"b (semi-minor axis), m", v4(ball.b)},
-            {"mass, kg", v4(ball.mass)},
-            {"I (about the centre), kg m^2", v4(ball.inertia)}};
+  t.rows = {{"a (semi-major axis), m", report::format_value(ball.a)},
+            {"b (semi-minor axis), m", report::format_value(ball.b)},
+            {"mass, kg", report::format_value(ball.mass)},
+            {"I (about the centre), kg m^2", report::format_value(ball.inertia)}};
   return t;
 }
 
@@ -150,25 +149,25 @@ report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::Fr
   s.add_table(ball_table(ball));
   add_contact_equations(s, r.law);
   s.add_paragraph(std::string("Friction: ") + std::string(bounce::to_string(friction.kind)) +
-                  ", μ = " + v4(friction.mu) + ". Status: " + std::string(r.message) + ".");
+                  ", μ = " + report::format_value(friction.mu) + ". Status: " + std::string(r.message) + ".");
   Table io;
   io.caption = "In and out";
   io.header = {"quantity", "at first touch", "at separation"};
-  io.rows = {{"θ (deg)", v4(r.in.theta * kDeg), v4(r.out.theta * kDeg)},
-             {"v_x (m/s)", v4(r.in.vx), v4(r.out.vx)},
-             {"v_y (m/s)", v4(r.in.vy), v4(r.out.vy)},
-             {"ω (rad/s)", v4(r.in.omega), v4(r.out.omega)},
-             {"kinetic energy (J)", v4(r.energy_in.total()), v4(r.energy_out.total())}};
+  io.rows = {{"θ (deg)", report::format_value(r.in.theta * kDeg), report::format_value(r.out.theta * kDeg)},
+             {"v_x (m/s)", report::format_value(r.in.vx), report::format_value(r.out.vx)},
+             {"v_y (m/s)", report::format_value(r.in.vy), report::format_value(r.out.vy)},
+             {"ω (rad/s)", report::format_value(r.in.omega), report::format_value(r.out.omega)},
+             {"kinetic energy (J)", report::format_value(r.energy_in.total()), report::format_value(r.energy_out.total())}};
   s.add_table(std::move(io));
   Table key;
   key.caption = "Key numbers";
   key.header = {"quantity", "value"};
-  key.rows = {{"e = −v_y,out / v_y,in", v4(r.restitution)},
-              {"contact duration (ms)", v4(1e3 * r.contact_duration)},
-              {"peak normal force (N)", v4(r.peak_force)},
-              {"max penetration (mm)", v4(1e3 * r.max_penetration)},
-              {"energy dissipated by normal damping (J)", v4(r.dissipated_normal)},
-              {"energy dissipated by friction (J)", v4(r.dissipated_friction)},
+  key.rows = {{"e = −v_y,out / v_y,in", report::format_value(r.restitution)},
+              {"contact duration (ms)", report::format_value(1e3 * r.contact_duration)},
+              {"peak normal force (N)", report::format_value(r.peak_force)},
+              {"max penetration (mm)", report::format_value(1e3 * r.max_penetration)},
+              {"energy dissipated by normal damping (J)", report::format_value(r.dissipated_normal)},
+              {"energy dissipated by friction (J)", report::format_value(r.dissipated_friction)},
               {"energy balance residual (J)", report::format_value(r.energy_residual, 2)}};
   s.add_table(std::move(key));
   Table phases;
@@ -177,7 +176,7 @@ report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::Fr
   const std::size_t n = std::min(r.n_phases, bounce::kMaxStoredPhases);
   for (std::size_t i = 0; i < n; ++i) {
     phases.rows.push_back({std::to_string(i + 1), std::string(bounce::to_string(r.phases[i].kind)),
-                           v4(1e3 * r.phases[i].t_start), v4(1e3 * r.phases[i].t_end)});
+                           report::format_value(1e3 * r.phases[i].t_start), report::format_value(1e3 * r.phases[i].t_end)});
   }
   if (r.n_phases > n) phases.caption += " (first " + std::to_string(n) + " of " + std::to_string(r.n_phases) + ")";
   s.add_table(std::move(phases));
@@ -193,18 +192,18 @@ report::Report bounce_drop_report(const bounce::Ball& ball, const bounce::Fricti
   auto& s = rep.add_section("Drop");
   s.add_table(ball_table(ball));
   if (!r.bounces.empty()) add_contact_equations(s, r.bounces.front().contact.law);
-  s.add_paragraph("Release: centre height " + v4(release.height) + " m, θ = " + v4(release.theta * kDeg) +
-                  " deg, ω = " + v4(release.omega) + " rad/s, v_x = " + v4(release.vx) + " m/s, v_y = " +
-                  v4(release.vy) + " m/s. Friction: " + std::string(bounce::to_string(friction.kind)) +
-                  ", μ = " + v4(friction.mu) + ". Status: " + std::string(bounce::to_string(r.status)) + ".");
+  s.add_paragraph("Release: centre height " + report::format_value(release.height) + " m, θ = " + report::format_value(release.theta * kDeg) +
+                  " deg, ω = " + report::format_value(release.omega) + " rad/s, v_x = " + report::format_value(release.vx) + " m/s, v_y = " +
+                  report::format_value(release.vy) + " m/s. Friction: " + std::string(bounce::to_string(friction.kind)) +
+                  ", μ = " + report::format_value(friction.mu) + ". Status: " + std::string(bounce::to_string(r.status)) + ".");
   Table t;
   t.caption = "Bounces";
   t.header = {"bounce", "t_touch (s)", "collision angle (deg)", "v_y,in (m/s)", "ω_in (rad/s)", "e",
               "apex after (m)", "above release?"};
   for (std::size_t i = 0; i < r.bounces.size(); ++i) {
     const auto& b = r.bounces[i];
-    t.rows.push_back({std::to_string(i + 1), v4(b.t_touch), v4(b.collision_angle_deg), v4(b.touch.vy),
-                      v4(b.touch.omega), v4(b.contact.restitution), v4(b.apex_height),
+    t.rows.push_back({std::to_string(i + 1), report::format_value(b.t_touch), report::format_value(b.collision_angle_deg), report::format_value(b.touch.vy),
+                      report::format_value(b.touch.omega), report::format_value(b.contact.restitution), report::format_value(b.apex_height),
                       b.above_release ? "yes" : "no"});
   }
   s.add_table(std::move(t));
@@ -267,13 +266,13 @@ report::Report bounce_contact_time_report(const bounce::Ball& ball, const bounce
   Table t;
   t.caption = "Result";
   t.header = {"quantity", "value"};
-  t.rows = {{"H (m)", v4(apex.y)},
-            {"ω (rad/s)", v4(apex.omega)},
-            {"θ_0 (deg)", v4(apex.theta * kDeg)},
+  t.rows = {{"H (m)", report::format_value(apex.y)},
+            {"ω (rad/s)", report::format_value(apex.omega)},
+            {"θ_0 (deg)", report::format_value(apex.theta * kDeg)},
             {"t_contact (s)", report::format_value(r.t_contact, 5)},
-            {"earliest / latest possible (s)", v4(r.t_min) + " / " + v4(r.t_max)},
-            {"θ at contact (deg)", v4(bounce::wrap_angle(r.state.theta) * kDeg)},
-            {"collision angle (deg)", v4(bounce::collision_angle_deg(ball, r.state.theta, direction))},
+            {"earliest / latest possible (s)", report::format_value(r.t_min) + " / " + report::format_value(r.t_max)},
+            {"θ at contact (deg)", report::format_value(bounce::wrap_angle(r.state.theta) * kDeg)},
+            {"collision angle (deg)", report::format_value(bounce::collision_angle_deg(ball, r.state.theta, direction))},
             {"grazing", r.grazing ? "yes" : "no"}};
   s.add_table(std::move(t));
   Figure gap;

@@ -27,7 +27,6 @@ using report::Table;
 
 constexpr double kDeg = kDegPerRad;
 
-std::string v4(double x) { return format_value(x, 4); }
 
 Figure figure(std::string title, std::string x, std::string y, int height = 380) {
   return make_figure(std::move(title), std::move(x), std::move(y), height);
@@ -187,8 +186,8 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     }
     mark_impact(f, r);
     f.caption = "Centre minus fitted line (x) or parabola (y) on the fitted frames; rms " +
-                v4(1e3 * r.pre.x_line.rms) + " / " + v4(1e3 * r.pre.y_parabola.rms) + " mm before, " +
-                v4(1e3 * r.post.x_line.rms) + " / " + v4(1e3 * r.post.y_parabola.rms) +
+                format_value(1e3 * r.pre.x_line.rms) + " / " + format_value(1e3 * r.pre.y_parabola.rms) + " mm before, " +
+                format_value(1e3 * r.post.x_line.rms) + " / " + format_value(1e3 * r.post.y_parabola.rms) +
                 " mm after (x / y). A trend here would mean a contact frame was kept.";
     s.add_figure(std::move(f));
   }
@@ -200,7 +199,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     mark_impact(f, r);
     f.caption = "Orientation of the line from tip A to tip B, unwrapped, with the fitted spin lines; θ at the "
                 "first touch = " + format_uncertain(r.theta_touch_deg, r.sigma_theta_touch_deg) + " deg, at the impact time " +
-                v4(r.theta_impact_deg) + " deg (wrapped).";
+                format_value(r.theta_impact_deg) + " deg (wrapped).";
     s.add_figure(std::move(f));
   }
   {
@@ -238,11 +237,11 @@ report::Table bounce_segments_table(const BounceAnalysis& r) {
   row("R² of x–t", [](const SegmentFit& s) { return r2(s.x_line.r_squared); });
   row("R² of y–t", [](const SegmentFit& s) { return r2(s.y_parabola.r_squared); });
   row("frames fitted", [](const SegmentFit& s) { return std::to_string(s.n_points); });
-  row("apex time (s)", [](const SegmentFit& s) { return v4(s.apex_time); });
+  row("apex time (s)", [](const SegmentFit& s) { return format_value(s.apex_time); });
   row("apex height above the floor (m)", [](const SegmentFit& s) { return format_uncertain(s.apex_height, s.sigma_apex_height); });
-  row("kinetic energy, translational (J)", [](const SegmentFit& s) { return v4(s.energy.translational_x + s.energy.translational_y); });
-  row("kinetic energy, rotational (J)", [](const SegmentFit& s) { return v4(s.energy.rotational); });
-  row("kinetic energy, total (J)", [](const SegmentFit& s) { return v4(s.energy.total()); });
+  row("kinetic energy, translational (J)", [](const SegmentFit& s) { return format_value(s.energy.translational_x + s.energy.translational_y); });
+  row("kinetic energy, rotational (J)", [](const SegmentFit& s) { return format_value(s.energy.rotational); });
+  row("kinetic energy, total (J)", [](const SegmentFit& s) { return format_value(s.energy.total()); });
   return t;
 }
 
@@ -256,7 +255,7 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
                     "lowest point of the post-impact flight leaves the floor"});
   t.rows.push_back({"contact duration (s)", format_uncertain(r.contact_duration, r.sigma_contact_duration),
                     r.floor_method == analysis::FloorMethod::contact_duration ? "given (--contact-duration)" : "t_s − t_c"});
-  t.rows.push_back({"impact time t_i (s)", v4(r.impact_time), "where the two y–t parabolas meet (impulse centroid)"});
+  t.rows.push_back({"impact time t_i (s)", format_value(r.impact_time), "where the two y–t parabolas meet (impulse centroid)"});
   t.rows.push_back({"e from velocities", format_uncertain(r.e_velocity, r.sigma_e_velocity),
                     "−v_y(t_s) / v_y(t_c): as bounce simulate"});
   t.rows.push_back({"e at one instant", format_uncertain(r.e_velocity_common, r.sigma_e_velocity_common),
@@ -265,27 +264,27 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
       r.floor_method == analysis::FloorMethod::given ? "--floor-y"
       : r.floor_method == analysis::FloorMethod::contact_duration
           ? "where both flights touch the floor a contact duration apart"
-          : "middle of a ±" + v4(1e3 * r.floor_half_width) + " mm bracket from the flights (not trusted for e)";
+          : "middle of a ±" + format_value(1e3 * r.floor_half_width) + " mm bracket from the flights (not trusted for e)";
   t.rows.push_back({"e from apex heights", format_uncertain(r.e_height, r.sigma_e_height),
                     r.floor_method == analysis::FloorMethod::bracket
                         ? "not reported: the floor estimated without --floor-y or --contact-duration is not "
                           "reliable enough (docs/theory.md#bounce-analysis)"
                         : "sqrt(H'/H)"});
-  t.rows.push_back({"floor y (m)", v4(r.floor_y), floor_note});
+  t.rows.push_back({"floor y (m)", format_value(r.floor_y), floor_note});
   t.rows.push_back({"θ at the first touch (deg)", format_uncertain(r.theta_touch_deg, r.sigma_theta_touch_deg),
                     "pre-impact spin line at t_c"});
   t.rows.push_back({"collision angle (deg)", format_uncertain(r.collision_angle_deg, r.sigma_collision_angle_deg),
                     "at the first touch, the rugby-ball study's figure 30 (三十) (as bounce simulate and sweep)"});
-  t.rows.push_back({"θ, collision angle at t_i (deg)", v4(r.theta_impact_deg) + ", " + v4(r.collision_angle_impact_deg),
+  t.rows.push_back({"θ, collision angle at t_i (deg)", format_value(r.theta_impact_deg) + ", " + format_value(r.collision_angle_impact_deg),
                     "at the impact time, for comparison only"});
   t.rows.push_back({"contact point speed at touch (m/s)", format_uncertain(r.contact_point_speed, r.sigma_contact_point_speed),
-                    "(v_x, v_y) = (" + v4(r.contact_point_vx) + ", " + v4(r.contact_point_vy) +
+                    "(v_x, v_y) = (" + format_value(r.contact_point_vx) + ", " + format_value(r.contact_point_vy) +
                         "): centre velocity + ω × r_contact, the rugby-ball study's figure 52"});
   const double e0 = r.pre.energy.total(), e1 = r.post.energy.total();
-  t.rows.push_back({"kinetic energy before → after (J)", v4(e0) + " → " + v4(e1),
-                    "change " + v4(e1 - e0) + " J (" + v4(100 * (e1 - e0) / e0) + " %)"});
+  t.rows.push_back({"kinetic energy before → after (J)", format_value(e0) + " → " + format_value(e1),
+                    "change " + format_value(e1 - e0) + " J (" + format_value(100 * (e1 - e0) / e0) + " %)"});
   t.rows.push_back({"rotational → translational (J)",
-                    v4(r.pre.energy.rotational - r.post.energy.rotational),
+                    format_value(r.pre.energy.rotational - r.post.energy.rotational),
                     "rotational energy lost in the contact"});
   if (r.mean_normal_force) {
     t.rows.push_back({"mean normal force (N)", format_uncertain(*r.mean_normal_force, *r.sigma_mean_normal_force),
@@ -298,7 +297,7 @@ report::Table bounce_restitution_table(const BounceAnalysis& r) {
   for (const auto& w : r.warnings) t.rows.push_back({"warning", w, ""});
   t.rows.push_back({"tip distance (m)", format_uncertain(r.body.length_mean, r.body.length_sd),
                     "mean ± sd over frames; should be 2a"});
-  t.rows.push_back({"position noise of the centre (mm)", v4(1e3 * r.impacts.noise_y), "robust estimate"});
+  t.rows.push_back({"position noise of the centre (mm)", format_value(1e3 * r.impacts.noise_y), "robust estimate"});
   return t;
 }
 
@@ -403,7 +402,7 @@ int add_bounce_fit_figures(report::Section& s, const std::string& title,
     }
     f.series = {std::move(a), std::move(b), std::move(c)};
     f.caption = "Residuals of the outgoing v_x, v_y and of ω times the semi-minor axis b (a surface speed), "
-                "the quantities the fit minimises; rms " + v4(r.rms) + " m/s. A trend would show a law that "
+                "the quantities the fit minimises; rms " + format_value(r.rms) + " m/s. A trend would show a law that "
                 "misses part of the physics.";
     s.add_figure(std::move(f));
   };
@@ -422,7 +421,7 @@ report::Table bounce_fit_parameters_table(const analysis::BounceFitOptions& o, c
   t.header = {"parameter", "value", "status"};
   auto row = [&](const std::string& name, const std::string& label, double v, double sigma) {
     const bool free = is_free(name);
-    t.rows.push_back({label, free ? format_uncertain(v, sigma) : v4(v), free ? "fitted" : "fixed"});
+    t.rows.push_back({label, free ? format_uncertain(v, sigma) : format_value(v), free ? "fitted" : "fixed"});
   };
   const bool hooke = o.model == bounce::NormalModel::hooke;
   row("K", hooke ? "K (N/m)" : "K (N/m^n)", r.K, r.sigma_K);
@@ -433,7 +432,7 @@ report::Table bounce_fit_parameters_table(const analysis::BounceFitOptions& o, c
     row("D", hooke ? "D (N s/m)" : "D (N s/m^(n+1))", r.D, r.sigma_D);
   }
   row("mu", "μ", r.mu, r.sigma_mu);
-  t.rows.push_back({"rms of the residuals (m/s)", v4(r.rms), "over 3 × " + std::to_string(r.rows.size()) + " residuals"});
+  t.rows.push_back({"rms of the residuals (m/s)", format_value(r.rms), "over 3 × " + std::to_string(r.rows.size()) + " residuals"});
   t.rows.push_back({"degrees of freedom", std::to_string(r.fit.dof), std::to_string(r.fit.iterations) + " iterations"});
   return t;
 }
@@ -457,7 +456,7 @@ void add_bounce_fit_equations(report::Section& s, const std::vector<analysis::Bo
   if (o.restitution_model) {
     s.add_paragraph("Restitution-based law: D follows from the fitted e and each bounce's incoming speed "
                     "(docs/theory.md#hunt-crossley-restitution); the D shown is at the median |v_y,in| = " +
-                    v4(v_med) + " m/s.");
+                    format_value(v_med) + " m/s.");
   }
   s.add_equation("r = (v_{x,pred} − v_{x,out},  v_{y,pred} − v_{y,out},  b (ω_{pred} − ω_{out}))", "docs/theory.md#bounce-fit",
                  "residuals of each bounce, all in m/s; minimised with a robust loss");
@@ -489,8 +488,8 @@ report::Report bounce_fit_report(const std::string& command, const std::vector<a
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& m = rows[i];
     const auto& p = r.rows[i];
-    t.rows.push_back({std::to_string(i + 1), v4(m.theta_deg), v4(m.vx_in), v4(m.vy_in), v4(m.omega_in),
-                      v4(m.vx_out), v4(p.vx_pred), v4(m.vy_out), v4(p.vy_pred), v4(m.omega_out), v4(p.omega_pred)});
+    t.rows.push_back({std::to_string(i + 1), format_value(m.theta_deg), format_value(m.vx_in), format_value(m.vy_in), format_value(m.omega_in),
+                      format_value(m.vx_out), format_value(p.vx_pred), format_value(m.vy_out), format_value(p.vy_pred), format_value(m.omega_out), format_value(p.omega_pred)});
   }
   eq.add_table(std::move(t));
   return rep;

@@ -26,7 +26,6 @@ using report::format_value;
 using report::Series;
 using report::Table;
 
-std::string v4(double x) { return format_value(x, 4); }
 
 Figure figure(std::string title, std::string x, std::string y, int height = 420) {
   return make_figure(std::move(title), std::move(x), std::move(y), height);
@@ -39,7 +38,7 @@ std::string mean_cell(const analysis::WeightedMean& m) {
 
 std::string consistency(const analysis::WeightedMean& m) {
   if (m.dof <= 0) return "one run: no test";
-  return "χ² = " + v4(m.chi2) + " on " + std::to_string(m.dof) + " dof, p = " + v4(m.p_value);
+  return "χ² = " + format_value(m.chi2) + " on " + std::to_string(m.dof) + " dof, p = " + format_value(m.p_value);
 }
 
 std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
@@ -84,35 +83,35 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
       return std::to_string(a.above) + " of " + std::to_string(a.n) + " (" + std::to_string(a.significant) +
              " significantly)";
     };
-    const std::string z_note = "significantly: (e − 1)/σ_e > " + v4(o.z_above_one) + " (one-sided 95 %)";
+    const std::string z_note = "significantly: (e − 1)/σ_e > " + format_value(o.z_above_one) + " (one-sided 95 %)";
     t.rows.push_back({"runs with e_v > 1", above(s.above_one_velocity), z_note});
     t.rows.push_back({"runs with e_h > 1", above(s.above_one_height), z_note});
-    t.rows.push_back({"kinetic energy after / before, mean", v4(s.energy_ratio_mean),
+    t.rows.push_back({"kinetic energy after / before, mean", format_value(s.energy_ratio_mean),
                       std::to_string(s.n_energy_gain) + " run(s) gained energy"});
     if (s.n_force > 0) {
       t.rows.push_back({"mean normal force, mean ± sd (N)", format_uncertain(s.force_mean, s.force_sd),
                         std::to_string(s.n_force) + " run(s) with a contact duration"});
-      t.rows.push_back({"correlation of the mean force with e_v", v4(s.force_e_correlation),
+      t.rows.push_back({"correlation of the mean force with e_v", format_value(s.force_e_correlation),
                         "Pearson r (the study: a higher mean force gives a higher rebound)"});
     }
     if (!points.empty()) {
       const auto& f = points[s.fastest_contact_run];
       const auto& w = points[s.slowest_contact_run];
-      t.rows.push_back({"fastest contact point (m/s)", v4(f.contact_point_speed),
-                        point_files[s.fastest_contact_run] + " at " + v4(f.collision_angle_deg) + " deg"});
-      t.rows.push_back({"slowest contact point (m/s)", v4(w.contact_point_speed),
-                        point_files[s.slowest_contact_run] + " at " + v4(w.collision_angle_deg) + " deg"});
+      t.rows.push_back({"fastest contact point (m/s)", format_value(f.contact_point_speed),
+                        point_files[s.fastest_contact_run] + " at " + format_value(f.collision_angle_deg) + " deg"});
+      t.rows.push_back({"slowest contact point (m/s)", format_value(w.contact_point_speed),
+                        point_files[s.slowest_contact_run] + " at " + format_value(w.collision_angle_deg) + " deg"});
     }
     sum.add_table(std::move(t));
   }
   if (s.outliers.empty()) {
-    sum.add_paragraph("Outliers: none (a run is named when its e_v lies more than " + v4(o.outlier_z) +
+    sum.add_paragraph("Outliers: none (a run is named when its e_v lies more than " + format_value(o.outlier_z) +
                       " robust deviations from the median of its angle bin, in bins of at least " +
                       std::to_string(o.outlier_min_bin) + " runs).");
   } else {
     std::vector<std::string> items;
     for (const auto& out : s.outliers) items.push_back(point_files[out.run] + ": " + out.reason);
-    sum.add_paragraph("Outliers (modified z-score of Iglewicz & Hoaglin > " + v4(o.outlier_z) +
+    sum.add_paragraph("Outliers (modified z-score of Iglewicz & Hoaglin > " + format_value(o.outlier_z) +
                       " within the run's angle bin). e also depends on the spin and speed of the throw, so such a run "
                       "may be a different kind of throw rather than a bad measurement: look at its own report.");
     sum.add_list(std::move(items));
@@ -137,7 +136,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     if (!std::all_of(ev.x_error.begin(), ev.x_error.end(), [](double v) { return std::isfinite(v); })) ev.x_error.clear();
     f.series.push_back(std::move(ev));
     if (!eh.x.empty()) f.series.push_back(std::move(eh));
-    Series bins = named("weighted mean of e_v per " + v4(o.bin_width_deg) + "° bin", report::Mode::LinesMarkers);
+    Series bins = named("weighted mean of e_v per " + format_value(o.bin_width_deg) + "° bin", report::Mode::LinesMarkers);
     for (const auto& b : s.bins) {
       bins.x.push_back(b.centre_deg);
       bins.y.push_back(b.e_velocity.mean);
@@ -158,11 +157,11 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
   }
   {
     Table t;
-    t.caption = "Restitution per " + v4(o.bin_width_deg) + "° bin of collision angle";
+    t.caption = "Restitution per " + format_value(o.bin_width_deg) + "° bin of collision angle";
     t.header = {"angle (deg)", "runs", "e_v weighted mean", "consistency", "e_v range", "e_v > 1"};
     for (const auto& b : s.bins) {
-      t.rows.push_back({v4(b.low_deg) + "–" + v4(b.high_deg), std::to_string(b.n), mean_cell(b.e_velocity),
-                        consistency(b.e_velocity), v4(b.e_min) + " – " + v4(b.e_max), std::to_string(b.n_above_one)});
+      t.rows.push_back({format_value(b.low_deg) + "–" + format_value(b.high_deg), std::to_string(b.n), mean_cell(b.e_velocity),
+                        consistency(b.e_velocity), format_value(b.e_min) + " – " + format_value(b.e_max), std::to_string(b.n_above_one)});
     }
     e.add_table(std::move(t));
   }
@@ -249,9 +248,9 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
       for (const auto& out : s.outliers)
         if (out.run == j) note = "outlier";
       if (p.e_velocity > 1) note += std::string(note.empty() ? "" : ", ") + "e_v > 1";
-      t.rows.push_back({file_name(runs[i].source), run, v4(p.collision_angle_deg),
+      t.rows.push_back({file_name(runs[i].source), run, format_value(p.collision_angle_deg),
                         format_uncertain(p.e_velocity, p.sigma_e_velocity), format_uncertain(p.e_height, p.sigma_e_height),
-                        v4(p.energy_pre.total()), v4(p.energy_post.total()),
+                        format_value(p.energy_pre.total()), format_value(p.energy_post.total()),
                         format_uncertain(p.mean_normal_force, p.sigma_mean_normal_force),
                         format_uncertain(p.contact_point_speed, p.sigma_contact_point_speed), note});
       ++j;

@@ -44,7 +44,6 @@ NormalLawSpec low_damping_law() {
   return s;
 }
 
-std::string v4(double x) { return format_value(x, 4); }
 
 /// The demo's impact convention for the maps (docs/cli.md, demo): the seed's collision angle
 /// with the ball moving to +x (direction +1, v_x = 0 at touch), clockwise spin (omega < 0,
@@ -107,7 +106,7 @@ void add_geometry(report::Section& s) {
   }
   f.series = {ok, seed, brute};
   f.caption = "Default ball a = 0.145 m, b = 0.095 m. At θ = 90 deg the study's formula gives a²/b = " +
-              v4(ball.a * ball.a / ball.b) + " m instead of a = " + v4(ball.a) + " m.";
+              format_value(ball.a * ball.a / ball.b) + " m instead of a = " + format_value(ball.a) + " m.";
   s.add_figure(std::move(f));
 }
 
@@ -132,10 +131,10 @@ void add_table4(report::Section& s, std::ostream& log) {
     const double cw = first_contact_from_apex(ball, r.H, -r.spin, r.angle).t_contact;
     const double ccw = first_contact_from_apex(ball, r.H, r.spin, r.angle).t_contact;
     const double latest = std::sqrt(2 * (r.H - ball.b) / kDefaultG);
-    t.rows.push_back({v4(r.H), v4(r.spin), v4(r.angle), format_value(r.predicted, 3), format_value(r.measured, 3),
-                      v4(cw), v4(ccw), v4(latest)});
-    log << "    " << r.H << "  " << r.predicted << "  " << r.measured << "  " << v4(cw) << "  " << v4(ccw)
-        << "  " << v4(latest) << '\n';
+    t.rows.push_back({format_value(r.H), format_value(r.spin), format_value(r.angle), format_value(r.predicted, 3), format_value(r.measured, 3),
+                      format_value(cw), format_value(ccw), format_value(latest)});
+    log << "    " << r.H << "  " << r.predicted << "  " << r.measured << "  " << format_value(cw) << "  " << format_value(ccw)
+        << "  " << format_value(latest) << '\n';
   }
   s.add_table(std::move(t));
   s.add_paragraph("Row 1 is reproduced. Rows 2 and 3 of the prediction, and all three measurements, exceed the "
@@ -151,11 +150,11 @@ void add_one_contact(report::Section& s, std::ostream& log) {
   const ContactResult seed = simulate_contact(ball, seed_law(), friction, touch, {}, &h_seed);
   const ContactResult low = simulate_contact(ball, low_damping_law(), friction, touch, {}, &h_low);
   add_contact_equations(s, seed.law);
-  s.add_paragraph("A representative impact: collision angle " + v4(angle) + " deg (θ = " + v4(touch.theta * kDegPerRad) +
-                  " deg), v_y = −" + v4(speed) + " m/s, ω = −" + v4(spin) + " rad/s (clockwise), v_x = 0, Coulomb "
-                  "friction μ = 0.5. Solid: the study's fitted law (e = " + v4(seed.restitution) + ", contact " +
-                  v4(1e3 * seed.contact_duration) + " ms); dashed: the same K and n with D = 6000 (e = " +
-                  v4(low.restitution) + ").");
+  s.add_paragraph("A representative impact: collision angle " + format_value(angle) + " deg (θ = " + format_value(touch.theta * kDegPerRad) +
+                  " deg), v_y = −" + format_value(speed) + " m/s, ω = −" + format_value(spin) + " rad/s (clockwise), v_x = 0, Coulomb "
+                  "friction μ = 0.5. Solid: the study's fitted law (e = " + format_value(seed.restitution) + ", contact " +
+                  format_value(1e3 * seed.contact_duration) + " ms); dashed: the same K and n with D = 6000 (e = " +
+                  format_value(low.restitution) + ").");
   ContactCurve a{"the study's law (D = 60423)", h_seed, report::Dash::Solid, "#1f77b4"};
   ContactCurve b{"low damping (D = 6000)", h_low, report::Dash::Dash, "#d62728"};
   ContactPanels panels;
@@ -165,8 +164,8 @@ void add_one_contact(report::Section& s, std::ostream& log) {
   ContactPanels energy;
   energy = {false, false, false, false, false, false, true};
   add_contact_figures(s, "The study's law", ball, g, {a}, energy);
-  log << "  one contact at 135 deg, 40 rad/s, 4 m/s: e = " << v4(seed.restitution) << " (the study's law), "
-      << v4(low.restitution) << " (D = 6000)\n";
+  log << "  one contact at 135 deg, 40 rad/s, 4 m/s: e = " << format_value(seed.restitution) << " (the study's law), "
+      << format_value(low.restitution) << " (D = 6000)\n";
 }
 
 void add_drop(report::Section& s, std::ostream& log) {
@@ -208,7 +207,7 @@ void add_drop(report::Section& s, std::ostream& log) {
     }
     f.series.push_back(std::move(y));
     std::vector<std::string> row{name};
-    for (std::size_t i = 0; i < 3; ++i) row.push_back(i < r->bounces.size() ? v4(r->bounces[i].apex_height) : "—");
+    for (std::size_t i = 0; i < 3; ++i) row.push_back(i < r->bounces.size() ? format_value(r->bounces[i].apex_height) : "—");
     row.push_back(r->first_above_release >= 0 ? "bounce " + std::to_string(r->first_above_release + 1) : "never");
     t.rows.push_back(std::move(row));
   }
@@ -266,7 +265,7 @@ void add_maps(report::Section& s, std::ostream& log) {
       const double speed = slice == 0 ? 4 : 8;
       const double emax = max_of(values, n_out, e, slice * 396, (slice + 1) * 396);
       report::Figure f = heat_map("As the study's figure " + std::string(slice == 0 ? "53" : "54") + ", v_y = −" +
-                                      v4(speed) + " m/s: " + name,
+                                      format_value(speed) + " m/s: " + name,
                                   grid, values, n_out, e, slice, contour, "spin |ω| (rad/s), clockwise");
       const bool seeds = law.D == seed_law().D;
       // The computed description (describe_heat_map), and what it means for the study.
@@ -275,7 +274,7 @@ void add_maps(report::Section& s, std::ostream& log) {
                              "from its fitted law as printed (errata)."
                            : " No cell reaches e = 1 at this speed with this law either.";
       s.add_figure(std::move(f));
-      log << "  map v_y = -" << speed << " m/s, " << name << ": largest e = " << v4(emax) << '\n';
+      log << "  map v_y = -" << speed << " m/s, " << name << ": largest e = " << format_value(emax) << '\n';
     }
   }
   // Figure 55: the spin/speed ratio at v_y = -4 m/s, low damping.

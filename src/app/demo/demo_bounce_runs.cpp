@@ -84,12 +84,11 @@ analysis::SynthTableOptions table_options() {
   return o;
 }
 
-std::string v4(double x) { return format_value(x, 4); }
 
 std::vector<std::string> truth_row(const std::string& name, double value, double sigma, double truth) {
   const TruthCheck c{name, value, sigma, truth};
   const bool defined = std::isfinite(value) && std::isfinite(sigma);
-  return {name, format_uncertain(value, sigma), v4(truth), defined ? (c.covered() ? "yes" : "no") : "—"};
+  return {name, format_uncertain(value, sigma), format_value(truth), defined ? (c.covered() ? "yes" : "no") : "—"};
 }
 
 std::string check_same(std::string_view shipped, const std::string& regenerated, const std::string& name) {
@@ -125,17 +124,17 @@ void add_run(report::Report& rep, const Run& run, const std::string& data_dir, s
   s.add_paragraph("File data/" + run.file + " (" + note + "). Reproduce this analysis from the demo folder with:");
   s.add_list({command});
   s.add_paragraph("The floor is y = 0 in the file, as the study sets it in Tracker; the contact duration is the "
-                  "number of frames in contact (" + v4(contact * 1e3) + " ms; truth " +
-                  v4(1e3 * (truth.t_separation - truth.t_touch)) + " ms).");
+                  "number of frames in contact (" + format_value(contact * 1e3) + " ms; truth " +
+                  format_value(1e3 * (truth.t_separation - truth.t_touch)) + " ms).");
   s.add_table(bounce_truth_table(r, truth, run.options.ball));
   s.add_table(bounce_segments_table(r));
   s.add_table(bounce_restitution_table(r));
   add_bounce_analysis_figures(s, run.title, r);
   log << "  " << run.file << ": e_velocity " << format_uncertain(r.e_velocity, r.sigma_e_velocity) << " (truth "
-      << v4(-truth.separation.vy / truth.touch.vy) << "), collision angle "
+      << format_value(-truth.separation.vy / truth.touch.vy) << "), collision angle "
       << format_uncertain(r.collision_angle_deg, r.sigma_collision_angle_deg) << " deg (truth "
-      << v4(bounce::collision_angle_deg(run.options.ball, truth.touch.theta, truth.touch.vx < 0 ? -1 : 1)) << "), e_height "
-      << format_uncertain(r.e_height, r.sigma_e_height) << " (truth " << v4(std::sqrt(truth.post_apex / truth.release_apex))
+      << format_value(bounce::collision_angle_deg(run.options.ball, truth.touch.theta, truth.touch.vx < 0 ? -1 : 1)) << "), e_height "
+      << format_uncertain(r.e_height, r.sigma_e_height) << " (truth " << format_value(std::sqrt(truth.post_apex / truth.release_apex))
       << ")\n";
 }
 
@@ -168,7 +167,7 @@ void add_fit(report::Report& rep, const std::string& data_dir, std::ostream& log
   s.add_table(t);
   s.add_paragraph("K and n are weakly determined by outgoing velocities alone (a central Hunt–Crossley impact's "
                   "restitution depends only on χ = D/K), so their intervals are wide; D/K and μ are sharp. "
-                  "rms of the residuals " + v4(r.rms) + " m/s against a noise of 0.02 m/s.");
+                  "rms of the residuals " + format_value(r.rms) + " m/s against a noise of 0.02 m/s.");
   s.add_table(bounce_fit_parameters_table(o, r));
   add_bounce_fit_figures(s, "Table fit", rows, r);
   add_bounce_fit_equations(s, rows, o, r);

@@ -31,7 +31,6 @@ using report::format_uncertain;
 using report::format_value;
 
 
-std::string v4(double x) { return format_value(x, 4); }
 
 /// The throws of data/demo/bounce_series/make.sh, option for option (checked byte for byte).
 std::vector<analysis::SynthVideoOptions> throws() {
@@ -121,11 +120,11 @@ void add_bounce_series_case_study(report::Report& rep, std::ostream& log, const 
       const auto& r = analyses[i];
       const auto& tr = truths[i];
       const double angle_true = bounce::collision_angle_deg(ball, tr.touch.theta, tr.touch.vx >= 0 ? 1 : -1);
-      t.rows.push_back({std::filesystem::path(files[i]).filename().string(), v4(opts[i].theta_deg), v4(opts[i].omega),
-                        format_uncertain(r.collision_angle_deg, r.sigma_collision_angle_deg), v4(angle_true),
+      t.rows.push_back({std::filesystem::path(files[i]).filename().string(), format_value(opts[i].theta_deg), format_value(opts[i].omega),
+                        format_uncertain(r.collision_angle_deg, r.sigma_collision_angle_deg), format_value(angle_true),
                         format_uncertain(r.e_velocity, r.sigma_e_velocity),
-                        v4(-tr.separation.vy / tr.touch.vy), format_uncertain(r.e_height, r.sigma_e_height),
-                        v4(std::sqrt(tr.post_apex / tr.release_apex))});
+                        format_value(-tr.separation.vy / tr.touch.vy), format_uncertain(r.e_height, r.sigma_e_height),
+                        format_value(std::sqrt(tr.post_apex / tr.release_apex))});
     }
     intro.add_table(std::move(t));
   }

@@ -7,12 +7,6 @@
 #include <numbers>
 
 namespace tribolab::app {
-namespace {
-
-
-std::string v4(double x) { return report::format_value(x, 4); }
-
-}  // namespace
 
 bool TruthCheck::covered() const {
   return std::isfinite(value) && std::isfinite(sigma) && std::abs(value - truth) <= kZ95 * sigma;
@@ -47,13 +41,13 @@ report::Table bounce_truth_table(const analysis::BounceAnalysis& r, const analys
   tab.header = {"quantity", "tribolab (± 1 s.u.)", "truth", "truth in the 95% interval"};
   for (const TruthCheck& c : bounce_truth_checks(r, t, ball)) {
     const bool defined = std::isfinite(c.value) && std::isfinite(c.sigma);
-    tab.rows.push_back({c.quantity, report::format_uncertain(c.value, c.sigma), v4(c.truth),
+    tab.rows.push_back({c.quantity, report::format_uncertain(c.value, c.sigma), report::format_value(c.truth),
                         defined ? (c.covered() ? "yes" : "no") : "—"});
   }
   const double ti = r.impact_time;
   const double theta_true = bounce::wrap_angle(t.touch.theta + t.touch.omega * (ti - t.t_touch)) * kDegPerRad;
-  tab.rows.push_back({"θ at the impact time (deg)", v4(r.theta_impact_deg), v4(theta_true), "—"});
-  tab.rows.push_back({"impact time (s)", v4(ti), v4(t.t_touch) + " – " + v4(t.t_separation),
+  tab.rows.push_back({"θ at the impact time (deg)", report::format_value(r.theta_impact_deg), report::format_value(theta_true), "—"});
+  tab.rows.push_back({"impact time (s)", report::format_value(ti), report::format_value(t.t_touch) + " – " + report::format_value(t.t_separation),
                       ti >= t.t_touch && ti <= t.t_separation ? "within the contact" : "outside the contact"});
   return tab;
 }

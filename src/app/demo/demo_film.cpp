@@ -30,7 +30,6 @@ namespace fs = std::filesystem;
 using report::format_uncertain;
 using report::format_value;
 
-std::string v4(double x) { return format_value(x, 4); }
 
 double median(std::vector<double> v) {
   if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
@@ -88,8 +87,8 @@ FilmTrackingError tracking_error(const FilmCase& c) {
 
 std::string throw_text(const video::ThrowFilmOptions& o) {
   const auto& m = o.motion;
-  return "released at " + v4(m.height) + " m, " + v4(m.vx) + " m/s, orientation " + v4(m.theta_deg) + "°, spin " +
-         v4(m.omega) + " rad/s (clockwise: topspin for a ball moving to +x), the low-damping law D = " + v4(m.law.D);
+  return "released at " + format_value(m.height) + " m, " + format_value(m.vx) + " m/s, orientation " + format_value(m.theta_deg) + "°, spin " +
+         format_value(m.omega) + " rad/s (clockwise: topspin for a ball moving to +x), the low-damping law D = " + format_value(m.law.D);
 }
 
 }  // namespace
@@ -200,10 +199,10 @@ void add_film_sections(report::Report& rep, const FilmCase& c, std::ostream& log
       "it simulated itself (" + throw_text(c.options) + "), tracks the ball in that film with its ellipse tracker, "
       "and analyses the two tracked tips as a team would, so every number below can be checked against the "
       "simulation's truth. The film: " + std::to_string(ro.width) + " × " + std::to_string(ro.height) + " px, " +
-      v4(ro.fps) + " fps, " + std::to_string(c.film.frames) + " frames, exposure " + v4(ro.shutter_fraction) +
-      " of a frame (motion blur), sensor noise σ = " + v4(ro.noise_sigma) + " grey levels, MJPG; " +
-      v4(1e3 * view.scale_m_per_px) + " mm per px, the ball " + v4(c.options.motion.ball.a / view.scale_m_per_px) +
-      " × " + v4(c.options.motion.ball.b / view.scale_m_per_px) + " px (semi-axes). It is rendered when the demo "
+      format_value(ro.fps) + " fps, " + std::to_string(c.film.frames) + " frames, exposure " + format_value(ro.shutter_fraction) +
+      " of a frame (motion blur), sensor noise σ = " + format_value(ro.noise_sigma) + " grey levels, MJPG; " +
+      format_value(1e3 * view.scale_m_per_px) + " mm per px, the ball " + format_value(c.options.motion.ball.a / view.scale_m_per_px) +
+      " × " + format_value(c.options.motion.ball.b / view.scale_m_per_px) + " px (semi-axes). It is rendered when the demo "
       "runs (no video is shipped). Reproduce the tracking and the analysis from the demo folder with:");
   s.add_list(film_commands(c));
   {
@@ -244,12 +243,12 @@ void add_film_sections(report::Report& rep, const FilmCase& c, std::ostream& log
     for (const TruthCheck& k : bounce_truth_checks(r, c.truth, c.options.motion.ball)) {
       if (k.covered() || !std::isfinite(k.sigma) || k.sigma <= 0) continue;
       outside += (outside.empty() ? "" : "; ") + k.quantity + " " + format_uncertain(k.value, k.sigma) + " against " +
-                 v4(k.truth) + " (" + format_value(std::abs(k.value - k.truth) / k.sigma, 2) + " σ, " +
+                 format_value(k.truth) + " (" + format_value(std::abs(k.value - k.truth) / k.sigma, 2) + " σ, " +
                  format_value(100 * std::abs(k.value - k.truth) / std::abs(k.truth), 2) + " %)";
     }
     s.add_paragraph(
         "How to read it: the uncertainties come from the scatter of the tracked points about the fitted flights "
-        "(and a floor line located to one pixel: σ = " + v4(1e3 * c.analyze.sigma_floor_y) + " mm). They do not "
+        "(and a floor line located to one pixel: σ = " + format_value(1e3 * c.analyze.sigma_floor_y) + " mm). They do not "
         "include systematic errors of the tracking. " +
         (outside.empty() ? std::string("Every truth lies inside its 95 % interval.")
                          : "Outside its 95 % interval: " + outside + ". The tracking is good to a few hundredths "
@@ -258,16 +257,16 @@ void add_film_sections(report::Report& rep, const FilmCase& c, std::ostream& log
                            "than scattering like noise, and the fits' uncertainties count only the scatter. An error "
                            "of a few σ that is a fraction of a percent is what that leaves."));
   }
-  s.add_paragraph("Times are the video's: frame k at k / " + v4(ro.fps) + " s (the release happened " +
-                  v4(1e3 * c.film.t0) + " ms before frame 0). The contact duration given to the analysis is the "
-                  "frames in contact counted on the film (" + v4(1e3 * *c.analyze.contact_duration) + " ms; truth " +
-                  v4(1e3 * (c.truth.t_separation - c.truth.t_touch)) + " ms).");
+  s.add_paragraph("Times are the video's: frame k at k / " + format_value(ro.fps) + " s (the release happened " +
+                  format_value(1e3 * c.film.t0) + " ms before frame 0). The contact duration given to the analysis is the "
+                  "frames in contact counted on the film (" + format_value(1e3 * *c.analyze.contact_duration) + " ms; truth " +
+                  format_value(1e3 * (c.truth.t_separation - c.truth.t_touch)) + " ms).");
   s.add_table(bounce_segments_table(r));
   s.add_table(bounce_restitution_table(r));
   add_bounce_analysis_figures(s, "Film", r);
   log << "  film: " << c.film.frames << " frames tracked to " << format_value(e.median_centre_px, 2)
       << " px (median centre), e_velocity " << format_uncertain(r.e_velocity, r.sigma_e_velocity) << " (truth "
-      << v4(-c.truth.separation.vy / c.truth.touch.vy) << "), tracking report " << c.tracking_report << "\n";
+      << format_value(-c.truth.separation.vy / c.truth.touch.vy) << "), tracking report " << c.tracking_report << "\n";
 }
 
 }  // namespace tribolab::app

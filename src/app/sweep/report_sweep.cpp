@@ -19,7 +19,6 @@ using report::format_value;
 /// in docs/theory.md#errata-in-the-seeds).
 constexpr double kSeedEnergyRatio = 2.56;
 
-std::string v4(double x) { return std::isnan(x) ? "—" : format_value(x, 4); }
 
 /// Every k-th index of 0..n-1 (k the smallest stride giving at most max_side values); the
 /// last index is added when the stride skips it, so the map spans the whole axis.
@@ -366,7 +365,7 @@ report::Report sweep_report(const SweepReportData& d) {
   sum.rows = {
       {"cells", std::to_string(all.cells)},
       {"cells without a result (no contact or failed: nan)", std::to_string(all.cells - all.finite)},
-      {"largest e", v4(all.e_max)},
+      {"largest e", format_value(all.e_max)},
       {"largest e at", where(grid, all.at)},
       {"cells with e > 1 (of the cells with a result)", std::to_string(all.above) + " (" + percent(all.above, all.finite) + ")"},
       {"e = 1 boundary", std::to_string(d.boundary.lines.size()) +
@@ -375,7 +374,7 @@ report::Report sweep_report(const SweepReportData& d) {
       {"angles with a spin threshold (e reaches 1 inside the grid)",
        std::to_string(found) + " of " + std::to_string(d.thresholds.size())},
       {"smallest energy ratio E_rot/E_y at a threshold (the study: 2.56)",
-       er_at ? v4(er_min) + " at theta_deg = " + io::format_number_exact(er_at->theta_deg) : "—"},
+       er_at ? format_value(er_min) + " at theta_deg = " + io::format_number_exact(er_at->theta_deg) : "—"},
   };
   const int contacts = index_of("contacts"), e_first = index_of("e_first");
   if (contacts >= 0 && e_first >= 0) {
@@ -383,7 +382,7 @@ report::Report sweep_report(const SweepReportData& d) {
     const std::int64_t several = map.several_contacts, differ = map.first_phase_differs;
     const SliceStats& first = map.first_phase;
     sum.rows.push_back({"cells whose impact has several contacts", std::to_string(several)});
-    sum.rows.push_back({"largest e of the first contact phase alone", v4(first.e_max)});
+    sum.rows.push_back({"largest e of the first contact phase alone", format_value(first.e_max)});
     sum.rows.push_back({"cells where the first phase alone is on the other side of e = 1", std::to_string(differ)});
   }
   s.add_table(std::move(sum));
@@ -393,7 +392,7 @@ report::Report sweep_report(const SweepReportData& d) {
     per.header = {"slice", "largest e", "at", "cells with e > 1"};
     for (std::int64_t k = 0; k < n_slices && k < 200; ++k) {
       const SliceStats& st = map.slices.at(k);
-      per.rows.push_back({slice_label(d.boundary, k), v4(st.e_max), where(grid, st.at),
+      per.rows.push_back({slice_label(d.boundary, k), format_value(st.e_max), where(grid, st.at),
                           std::to_string(st.above) + " (" + percent(st.above, st.finite) + ")"});
     }
     if (n_slices > 200) per.caption += " (the first 200 of " + std::to_string(n_slices) + ")";
@@ -424,7 +423,7 @@ report::Report sweep_report(const SweepReportData& d) {
     report::Figure f = heat_map_of(grid, map.rows, map.cols, map.e_map.at(slice), slice, &d.boundary, st);
     const SliceStats& ss = map.slices.at(slice);
     if (ss.finite > 0 && (th.count > kReportMaxSide || sp.count > kReportMaxSide))
-      f.caption += " Over the whole grid of this slice: largest e " + v4(ss.e_max) +
+      f.caption += " Over the whole grid of this slice: largest e " + format_value(ss.e_max) +
                    (ss.at >= 0 ? " at " + where(grid, ss.at) : "") + "; e > 1 in " + percent(ss.above, ss.finite) +
                    " of the cells with a result.";
     m.add_figure(std::move(f));

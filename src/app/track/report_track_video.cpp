@@ -22,7 +22,6 @@ using video::TrackedSeries;
 using video::TrackVideoResult;
 
 
-std::string v4(double x) { return format_value(x, 4); }
 
 /// "m" when the video is calibrated, else "px" (world positions in pixels, y up).
 std::string world_unit(const TrackVideoResult& r) { return r.input.calibration.calibrated ? "m" : "px"; }
@@ -88,7 +87,7 @@ Table video_table(const TrackVideoResult& r) {
   t.rows.push_back({"clip", "start frame " + std::to_string(in.clip.start_frame) + ", step " +
                                 std::to_string(in.clip.step_size) + ", " +
                                 (in.clip.step_count > 0 ? std::to_string(in.clip.step_count) + " steps" : "to the end")});
-  t.rows.push_back({"frame rate in the container (1/s)", in.info.fps > 0 ? v4(in.info.fps) : "unknown"});
+  t.rows.push_back({"frame rate in the container (1/s)", in.info.fps > 0 ? format_value(in.info.fps) : "unknown"});
   t.rows.push_back({"frame duration Δt (s)", format_value(in.time.frame_duration_s, 6)});
   t.rows.push_back({"time of the start frame t_0 (s)", format_value(in.time.start_time_s, 6)});
   t.rows.push_back({"time scale (real s per video s)", format_value(in.time.time_scale, 6)});
@@ -101,8 +100,8 @@ Table video_table(const TrackVideoResult& r) {
     if (c.metres_per_unit != 1)
       t.rows.push_back({"length unit", format_value(c.metres_per_unit, 6) + " m per unit; positions below in m"});
     // One quantity per row, its unit last: "origin (px), axes (deg)" put "deg" under both.
-    t.rows.push_back({"origin x, y (px)", v4(k.origin_x) + ", " + v4(k.origin_y)});
-    t.rows.push_back({"axes' angle (deg)", v4(k.angle_deg)});
+    t.rows.push_back({"origin x, y (px)", format_value(k.origin_x) + ", " + format_value(k.origin_y)});
+    t.rows.push_back({"axes' angle (deg)", format_value(k.angle_deg)});
   } else {
     t.rows.push_back({"calibration", "none: positions in pixels, y up (no scale given)"});
   }
