@@ -280,18 +280,30 @@ void PathTracker::Impl::update(const Frame& f) {
   StepCandidates out;
   out.index = f.index;
   const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
-  cv::Mat w32, res;
+  cv::Mat w32, all;
   std::vector<Candidate> found;
   std::vector<std::size_t> window_best;  // index in `found` of each window's best peak
+  // The anchors' windows overlap (the oldest anchor's covers most of the image): the
+  // correlation is computed once over their union, and each window reads its part of it
+  // (the same values as correlating the window alone: the template inside the window).
+  std::vector<cv::Rect> wins;
+  cv::Rect uni;
   for (const Anchor& a : anchors) {
     const double r = reach * a.age + h + 1;
     const cv::Rect win = cv::Rect(static_cast<int>(std::floor(a.at.x - r)), static_cast<int>(std::floor(a.at.y - r)),
                                   static_cast<int>(std::ceil(2 * r)) + 1, static_cast<int>(std::ceil(2 * r)) + 1) &
                          cv::Rect(0, 0, gray.cols, gray.rows);
     if (win.width <= p + 2 || win.height <= p + 2) continue;
-    gray(win).convertTo(w32, CV_32F);
-    cv::matchTemplate(w32, templ, res, cv::TM_CCOEFF_NORMED);
-    cv::patchNaNs(res, -1);
+    wins.push_back(win);
+    uni = uni.area() == 0 ? win : (uni | win);
+  }
+  if (!wins.empty()) {
+    gray(uni).convertTo(w32, CV_32F);
+    cv::matchTemplate(w32, templ, all, cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(all, -1);
+  }
+  for (const cv::Rect& win : wins) {
+    const cv::Mat res = all(cv::Rect(win.x - uni.x, win.y - uni.y, win.width - p + 1, win.height - p + 1));
     cv::Mat scratch = res.clone();
     for (int k = 0; k < kPerWindow; ++k) {
       double v;
