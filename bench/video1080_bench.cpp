@@ -75,6 +75,23 @@ void BM_Decode1080pH264(benchmark::State& state) {
 }
 BENCHMARK(BM_Decode1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+/// Decoding and the grey image every tracker of `track video` is given.
+void BM_DecodeAndGray1080pH264(benchmark::State& state) {
+  const Clip1080& c = clip1080();
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    video::Frame f;
+    while (cap.read(f.bgr)) {
+      video::make_gray(f);
+      benchmark::DoNotOptimize(f.gray.data);
+      ++frames;
+    }
+  }
+  state.SetItemsProcessed(frames);
+}
+BENCHMARK(BM_DecodeAndGray1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 /// Decoding, the grey image and the default point tracker (the path tracker) on the sticker.
 void BM_DecodeTrackPath1080pH264(benchmark::State& state) {
   const Clip1080& c = clip1080();
