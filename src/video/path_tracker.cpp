@@ -662,7 +662,8 @@ std::string PathTracker::loss_hint() const {
   }
   if (m.lost_score >= m.lost_none) {
     return "the object matched its first look poorly in " + std::to_string(m.lost_score) +
-           " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch";
+           " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch; "
+           "for a mark that turns (on a wheel), --point-tracker frame";
   }
   return "the object was not found in " + std::to_string(m.lost_none) +
          " frame(s) (hidden, out of view, or moving more than --search px per frame): a larger --search or --max-gap";
