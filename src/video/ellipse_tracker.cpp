@@ -413,7 +413,9 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
     const double d_found = std::hypot(found.cx - pred.x, found.cy - pred.y);
     for (const double fraction : kExposures) {
       if (moving && fraction == s.exposure) continue;  // the fits above assumed this one
-      if (score >= kConfidentScore) break;
+      // The refit with the motion just measured is always made (fraction 1, ties kept: its
+      // windows fit the motion); shorter exposures only while the fit is not clearly good.
+      if (score >= kConfidentScore && (moving || fraction != 1.0)) break;
       const EdgeFitOptions eo2 = s.edge_options(v, omega, 0, fraction);
       if (const cv::Rect roi = window(s.a_ref + d_found + eo2.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
         const double before = score;
