@@ -23,7 +23,7 @@ constexpr std::size_t kSpinPoints = 6;    ///< orientations in the spin fit
 constexpr double kRoundRatio = 0.05;      ///< (a - b) / a below this: no orientation
 constexpr double kRoundPx = 0.5;          ///< nor with the axes closer than this, px
 constexpr double kConfidentScore = 0.9;   ///< a fit from the prediction this good needs no search
-/// Exposures tried, as fractions of the frame period, when a fit scores below kConfidentScore:
+/// Exposures tried, as fractions of the frame period, when a fit scores below min_score:
 /// a full-period shutter first (the widest edge windows), then shorter ones. A phone's or a
 /// messenger's 30 fps video of a short exposure (or 120 fps footage re-encoded to 30 fps)
 /// blurs an object by a fraction of its travel between frames; edge windows sized for the
@@ -402,25 +402,34 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
     }
   }
   double exposure_used = s.exposure;
-  if (score > 0 && (!moving || score < kConfidentScore)) {
-    // Refit from the ellipse found, with the motion just measured when none was known (every
-    // edge window then allowed for a fast throw's blur), and with shorter exposures than the
-    // one assumed so far when the fit is not clearly good: each is a sharper edge window, less
-    // of the background in it. The same score decides; nothing outside the gate is considered.
+  if (score > 0) {
+    // Refit from the ellipse found: with the motion just measured when none was known (every
+    // edge window then allowed for a fast throw's blur; ties kept, as its windows fit the
+    // motion), and, when the fit would be lost (below min_score; below kConfidentScore once a
+    // short exposure has been learned), with every other exposure:
+    // each a sharper edge window, less of the background in it. The same score decides;
+    // nothing outside the gate is considered. A fit that holds is left as it is.
     const cv::Point2d v = moving ? velocity
                                  : (cv::Point2d(found.cx, found.cy) - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps;
     const Ellipse from = found;
     const double d_found = std::hypot(found.cx - pred.x, found.cy - pred.y);
+    bool decided = false, weak = false;
     for (const double fraction : kExposures) {
       if (moving && fraction == s.exposure) continue;  // the fits above assumed this one
-      // The refit with the motion just measured is always made (fraction 1, ties kept: its
-      // windows fit the motion); shorter exposures only while the fit is not clearly good.
-      if (score >= kConfidentScore && (moving || fraction != 1.0)) break;
+      const bool motion_refit = !moving && fraction == 1.0;
+      if (!motion_refit) {
+        // Once a short exposure has been learned, every fit short of clearly good is retried.
+        if (!decided) {
+          weak = score < s.options.min_score || (s.exposure < 1 && score < kConfidentScore);
+          decided = true;
+        }
+        if (!weak) break;
+      }
       const EdgeFitOptions eo2 = s.edge_options(v, omega, 0, fraction);
       if (const cv::Rect roi = window(s.a_ref + d_found + eo2.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
         const double before = score;
-        try_fit(colour_distance(frame, roi, s.colour), roi.tl(), from, eo2, !moving && fraction == 1.0);
-        if (score > before || (!moving && fraction == 1.0)) exposure_used = fraction;
+        try_fit(colour_distance(frame, roi, s.colour), roi.tl(), from, eo2, motion_refit);
+        if (score > before || motion_refit) exposure_used = fraction;
       }
     }
   }
