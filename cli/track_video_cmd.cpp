@@ -113,7 +113,7 @@ void register_track_video(CLI::App& track_area) {
     }
     // Several videos (docs/cli.md#several-videos): one row each, in order; one that fails
     // never loses the others' files; the exit status says whether any failed.
-    const TrackVideoSeries series = track_video_series(*o, *inputs);
+    const TrackVideoSeries series = track_video_series(*o, *inputs, cli_series_options("videos"));
     print_series(series.rows, series.summary, *as_json, {"out", "frames", "track_names"});
     for (const auto& row : series.rows)
       if (row.contains("error")) std::cerr << "tribolab: error: " << row["error"].get<std::string>() << '\n';

@@ -253,7 +253,8 @@ std::string series_output_name(std::size_t index, const std::string& input, std:
   return name.substr(0, name.size() - 5) + extension;
 }
 
-TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::vector<std::string>& inputs) {
+TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::vector<std::string>& inputs,
+                                    const analysis::SeriesOptions& series) {
   namespace fs = std::filesystem;
   if (base.out.empty()) throw MissingOptionError(field("out"), "the output folder is required");
   {
@@ -273,7 +274,6 @@ TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::ve
   }
   const std::size_t n = inputs.size();
   std::vector<std::string> reports(n);
-  analysis::SeriesOptions so;  // all cores; each video is decoded and tracked on one thread
   const auto runs = analysis::run_series<nlohmann::json>(
       inputs,
       [&](std::size_t i, const std::string& input) {
@@ -297,7 +297,7 @@ TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::ve
         if (!o.report.empty()) reports[i] = o.report;
         return r.json;
       },
-      so);
+      series);
   TrackVideoSeries out;
   out.rows = series_rows(runs, [](const nlohmann::json& j) { return j; });
   out.summary = series_counts(runs);

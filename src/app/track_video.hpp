@@ -4,6 +4,7 @@
 // are parsed here, so every front end accepts the same words.
 #pragma once
 
+#include "analysis/series.hpp"
 #include "video/track_video.hpp"
 #include "report/plotly_script.hpp"
 
@@ -75,6 +76,8 @@ std::string series_output_name(std::size_t index, const std::string& input, std:
 /// run in parallel; one that fails (missing, corrupt, a start outside the image, a track lost
 /// in every frame after its start) is a row with its error and leaves no file of its own,
 /// never the others'. Throws InputError only for bad output folders or options (before any work).
-TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::vector<std::string>& inputs);
+/// `series`: threads and progress callback (analysis::SeriesOptions; default: all cores, none).
+TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::vector<std::string>& inputs,
+                                    const analysis::SeriesOptions& series = {});
 
 }  // namespace tribolab::app
