@@ -115,9 +115,12 @@ void register_track_video(CLI::App& track_area) {
     // never loses the others' files; the exit status says whether any failed.
     const TrackVideoSeries series = track_video_series(*o, *inputs, cli_series_options("videos"));
     print_series(series.rows, series.summary, *as_json, {"out", "frames", "track_names"});
-    for (const auto& row : series.rows)
+    // Field marks in the messages spelled as flags (--from-track), as for one video.
+    for (const auto& row : spelled_for_cli(series.rows))
       if (row.contains("error")) std::cerr << "tribolab: error: " << row["error"].get<std::string>() << '\n';
-    finish_series(inputs->size(), series.errors);
+    std::vector<std::string> errors;
+    for (const auto& e : spelled_for_cli(nlohmann::json(series.errors))) errors.push_back(e.get<std::string>());
+    finish_series(inputs->size(), errors);
   });
 }
 
