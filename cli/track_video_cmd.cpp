@@ -7,10 +7,12 @@
 
 #include "app.hpp"
 #include "report_option.hpp"
+#include "series_cmd.hpp"
 
 #include "app/track/track_video.hpp"
 
 #include <cstdio>
+#include <iostream>
 #include <memory>
 #include <unistd.h>
 
@@ -52,8 +54,15 @@ void register_track_video(CLI::App& track_area) {
                "write track,frame,t,x,y,x_px,y_px,score");
   auto o = std::make_shared<TrackVideoOptions>();
   auto as_json = std::make_shared<bool>(false);
-  cmd->add_option("INPUT", o->input, "Video file (mp4, mov, avi, ...) or Tracker project .trk/.trz")->required();
-  cmd->add_option("--out", o->out, "Output CSV: track,frame,t,x,y,x_px,y_px,score")->required();
+  auto inputs = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("INPUT", *inputs,
+                  "Video file (mp4, mov, avi, ...) or Tracker project .trk/.trz; several: each tracked with "
+                  "the same options, its outputs named NN_<stem> in the --out (and --write-trk) folder")
+      ->required();
+  cmd->add_option("--out", o->out,
+                  "Output CSV: track,frame,t,x,y,x_px,y_px,score (with several inputs: a folder, created "
+                  "if missing, holding NN_<stem>.csv per video)")
+      ->required();
   cmd->add_option("--start", o->start,
                   "Follow a textured point: NAME=X,Y[@FRAME] in image pixels (x right, y down), "
                   "from FRAME (when not given: the clip's first); repeatable");
@@ -88,15 +97,32 @@ void register_track_video(CLI::App& track_area) {
                   "Ellipses: below this edge-fit quality (0..1) the object is lost");
   cmd->add_option("--max-gap", o->max_gap, "Frames the motion model may bridge; beyond, an ellipse is given up and a point is searched for afresh");
   cmd->add_option("--write-trk", o->write_trk,
-                  "Also write the tracks as a Tracker project (opens in Tracker with its video)");
+                  "Also write the tracks as a Tracker project (opens in Tracker with its video; with several "
+                  "inputs: a folder holding NN_<stem>.trk per video)");
   add_json_flag(*cmd, *as_json);
   add_report_option(*cmd, o->report, o->plotly);
   declare_results(*cmd, track_video_result_keys());
-  cmd->callback([o, as_json] {
-    Progress progress;
-    TrackVideoOptions options = *o;
-    options.progress = [&progress](int done, int expected) { progress(done, expected); };
-    print_result(track_video(options).json, *as_json, track_video_result_keys());
+  declare_series_results(*cmd, track_video_series_result_keys());
+  cmd->callback([o, as_json, inputs] {
+    if (inputs->size() == 1) {  // exactly the single-video command
+      Progress progress;
+      TrackVideoOptions options = *o;
+      options.input = inputs->front();
+      options.progress = [&progress](int done, int expected) { progress(done, expected); };
+      print_result(track_video(options).json, *as_json, track_video_result_keys());
+      return;
+    }
+    // Several videos (docs/cli.md#several-videos): one row each, in order; one that fails
+    // never loses the others' files; the exit status says whether any failed.
+    const TrackVideoSeries series = track_video_series(*o, *inputs, cli_series_options("videos"));
+    print_series(series.rows, series.summary, *as_json, {"out", "frames", "track_names"}, track_video_result_keys(),
+                 track_video_series_result_keys());
+    // Field marks in the messages spelled as flags (--from-track), as for one video.
+    for (const auto& row : spelled_for_cli(series.rows))
+      if (row.contains("error")) std::cerr << "tribolab: error: " << row["error"].get<std::string>() << '\n';
+    std::vector<std::string> errors;
+    for (const auto& e : spelled_for_cli(nlohmann::json(series.errors))) errors.push_back(e.get<std::string>());
+    finish_series(inputs->size(), errors);
   });
 }
 

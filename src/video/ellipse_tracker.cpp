@@ -23,6 +23,13 @@ constexpr std::size_t kSpinPoints = 6;    ///< orientations in the spin fit
 constexpr double kRoundRatio = 0.05;      ///< (a - b) / a below this: no orientation
 constexpr double kRoundPx = 0.5;          ///< nor with the axes closer than this, px
 constexpr double kConfidentScore = 0.9;   ///< a fit from the prediction this good needs no search
+/// Exposures tried, as fractions of the frame period, when a fit scores below min_score:
+/// a full-period shutter first (the widest edge windows), then shorter ones. A phone's or a
+/// messenger's 30 fps video of a short exposure (or 120 fps footage re-encoded to 30 fps)
+/// blurs an object by a fraction of its travel between frames; edge windows sized for the
+/// whole travel then hold tens of pixels of background texture and lose most edge points
+/// (docs/theory.md#ellipse-tracking, item 8).
+constexpr double kExposures[] = {1.0, 0.5, 0.25, 0.125};
 
 /// Distance of every pixel of `roi` to `colour` (per channel, grey levels): low inside the
 /// object, |background - object| outside, linear in the mixing fraction across an edge.
@@ -125,6 +132,11 @@ struct EllipseTracker::Impl {
   double speed_hint = 0;       ///< px per frame to allow for when the motion model is short
   int lost_run = 0;            ///< consecutive lost frames
   bool gave_up = false;
+  double exposure = 1;         ///< exposure as a fraction of the frame period (learned, sticky)
+  int short_exposure_frames = 0;  ///< accepted frames whose best fit assumed exposure < 1
+  int weak_frames = 0;         ///< lost frames with an ellipse found in the gate but a weak fit
+  int empty_frames = 0;        ///< lost frames with nothing of the object's outline found
+  int given_up_frames = 0;     ///< frames after more than max_gap_frames lost in a row
 
   cv::Point2d predict_centre(int index) const {
     const Centre& last = centres.back();
@@ -175,12 +187,16 @@ struct EllipseTracker::Impl {
   /// `spin_per_frame` (screen, rad); `blur_px`: motion of unknown direction (no velocity
   /// measured yet), px per frame. The edge ramp of a blurred object is as wide as its travel
   /// during the exposure (at most one frame's travel): profiles reach past half of it.
-  EdgeFitOptions edge_options(cv::Point2d velocity, double spin_per_frame, double blur_px = 0) const {
+  /// `exposure`: the shutter's fraction of the frame period; the blur along a normal is that
+  /// fraction of the boundary point's travel (the reach, which must hold the prediction's
+  /// error, is not scaled).
+  EdgeFitOptions edge_options(cv::Point2d velocity, double spin_per_frame, double blur_px = 0,
+                              double exposure_fraction = 1) const {
     EdgeFitOptions eo;
     eo.known_a = a_ref, eo.known_b = b_ref;
-    eo.vx_px = velocity.x, eo.vy_px = velocity.y;
-    eo.dpsi_rad = -spin_per_frame;  // screen counter-clockwise is clockwise in image axes
-    eo.blur_px = blur_px;
+    eo.vx_px = exposure_fraction * velocity.x, eo.vy_px = exposure_fraction * velocity.y;
+    eo.dpsi_rad = -exposure_fraction * spin_per_frame;  // screen counter-clockwise is clockwise in image axes
+    eo.blur_px = exposure_fraction * blur_px;
     // Blur beyond about the minor axis leaves no ellipse to fit (docs/theory.md#ellipse-tracking),
     // and a short exposure leaves a fast object sharp: the reach stops at 2 b of travel.
     const double travel = std::hypot(velocity.x, velocity.y) + a_ref * std::abs(spin_per_frame) + blur_px;
@@ -322,6 +338,7 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   const double phi_pred = s.phi_last + omega * (index - s.index_last);
   Ellipse pred_e{pred.x, pred.y, s.a_ref, s.b_ref, -phi_pred};
   if (s.gave_up || img.empty()) {
+    ++s.given_up_frames;
     return s.observe(index, pred_e, phi_pred, 0, true, false, 0);
   }
   const int steps = std::max(1, index - s.centres.back().index);
@@ -334,7 +351,7 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   const double gate = 4 + 0.5 * s.b_ref + 2.2 * speed + 3.0 * s.lost_run;
   // Without a velocity, allow for blur up to the minor semi-axis (a longer smear is no ellipse
   // any more); the fit is redone below with the motion measured.
-  const EdgeFitOptions eo = s.edge_options(velocity, omega, moving ? 0 : std::min(s.speed_hint, s.b_ref));
+  const EdgeFitOptions eo = s.edge_options(velocity, omega, moving ? 0 : std::min(s.speed_hint, s.b_ref), moving ? s.exposure : 1);
   const cv::Rect image_rect(0, 0, img.cols, img.rows);
   const auto window = [&](double pad) {
     // Clamped before the conversion to int: a prediction far outside the image stays defined.
@@ -384,17 +401,40 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
       if (seg.a > 1 && seg.b > 1) try_fit(dist, roi.tl(), seg, eo);
     }
   }
-  if (!moving && score >= s.options.min_score) {
-    // No velocity was known, so every edge window allowed for a fast throw's blur: refit with
-    // the motion just measured (sharper windows, less sensitive to the background).
-    const cv::Point2d v = (cv::Point2d(found.cx, found.cy) - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps;
-    const EdgeFitOptions eo2 = s.edge_options(v, omega);
-    if (const cv::Rect roi = window(s.a_ref + std::hypot(found.cx - pred.x, found.cy - pred.y) + eo2.reach_px + 3);
-        roi.width >= 3 && roi.height >= 3) {
-      try_fit(colour_distance(frame, roi, s.colour), roi.tl(), found, eo2, true);
+  double exposure_used = s.exposure;
+  if (score > 0) {
+    // Refit from the ellipse found: with the motion just measured when none was known (every
+    // edge window then allowed for a fast throw's blur; ties kept, as its windows fit the
+    // motion), and, when the fit would be lost (below min_score; below kConfidentScore once a
+    // short exposure has been learned), with every other exposure:
+    // each a sharper edge window, less of the background in it. The same score decides;
+    // nothing outside the gate is considered. A fit that holds is left as it is.
+    const cv::Point2d v = moving ? velocity
+                                 : (cv::Point2d(found.cx, found.cy) - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps;
+    const Ellipse from = found;
+    const double d_found = std::hypot(found.cx - pred.x, found.cy - pred.y);
+    bool decided = false, weak = false;
+    for (const double fraction : kExposures) {
+      if (moving && fraction == s.exposure) continue;  // the fits above assumed this one
+      const bool motion_refit = !moving && fraction == 1.0;
+      if (!motion_refit) {
+        // Once a short exposure has been learned, every fit short of clearly good is retried.
+        if (!decided) {
+          weak = score < s.options.min_score || (s.exposure < 1 && score < kConfidentScore);
+          decided = true;
+        }
+        if (!weak) break;
+      }
+      const EdgeFitOptions eo2 = s.edge_options(v, omega, 0, fraction);
+      if (const cv::Rect roi = window(s.a_ref + d_found + eo2.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
+        const double before = score;
+        try_fit(colour_distance(frame, roi, s.colour), roi.tl(), from, eo2, motion_refit);
+        if (score > before || motion_refit) exposure_used = fraction;
+      }
     }
   }
   if (score < s.options.min_score) {
+    (score > 0 ? s.weak_frames : s.empty_frames) += 1;
     ++s.lost_run;
     if (s.lost_run > s.options.max_gap_frames) s.gave_up = true;
     return s.observe(index, pred_e, phi_pred, score, true, false, 0);
@@ -419,7 +459,30 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   s.a_ref = 0.8 * s.a_ref + 0.2 * found.a;
   s.b_ref = 0.8 * s.b_ref + 0.2 * found.b;
   s.lost_run = 0;
+  s.exposure = exposure_used;
+  if (exposure_used < 1) ++s.short_exposure_frames;
   return s.observe(index, found, phi, score, false, round, rms);
+}
+
+std::string EllipseTracker::loss_hint() const {
+  const Impl& s = *impl_;
+  std::string hint;
+  if (s.weak_frames == 0 && s.empty_frames == 0) return hint;
+  if (s.weak_frames >= s.empty_frames) {
+    hint = "in " + std::to_string(s.weak_frames) +
+           " frame(s) the ball's outline was found near its predicted place but fitted poorly (blur, a lossy "
+           "video's blocks and colour smearing, a partly hidden ball, a background of the ball's colour): a lower "
+           "--ellipse-min-score (e.g. 0.4) keeps such frames; check them in the report";
+  } else {
+    hint = "in " + std::to_string(s.empty_frames) +
+           " frame(s) nothing of the ball's outline was found near its predicted place (hidden, out of view, or "
+           "a bounce faster than the motion model): a larger --max-gap bridges a hidden ball";
+  }
+  if (s.given_up_frames > 0) {
+    hint += "; given up after more than --max-gap (" + std::to_string(s.options.max_gap_frames) +
+            ") lost frames in a row, so the last " + std::to_string(s.given_up_frames) + " frame(s) were not searched";
+  }
+  return hint;
 }
 
 }  // namespace tribolab::video

@@ -44,6 +44,10 @@ class EllipseTracker {
   /// Returns the ellipse fitted in `first`.
   EllipseObservation start(const Frame& first, double x_px, double y_px, const std::string& name);
   EllipseObservation update(const Frame& frame);
+  /// Why frames were lost, and the option that helps, for the warning listing them (empty
+  /// when none was lost): a weak edge fit (blur, lossy video: --ellipse-min-score) or nothing
+  /// found near the prediction (hidden: --max-gap); and whether the tracker gave up.
+  std::string loss_hint() const;
 
  private:
   struct Impl;

@@ -25,6 +25,13 @@ constexpr int kPerWindow = 3;
 // A best candidate correlating this well is a confident sighting (the lead anchor).
 constexpr double kConfident = 0.9;
 constexpr double kCandidateFloor = 0.3;
+// Coarse to fine (PathTracker::Impl::update): a union of windows larger than this, px², with a
+// template of at least kCoarseMinPatch px, is correlated at half resolution first (floor
+// kCoarseFloor there: halving blurs a peak), each peak refined within kRefinePx at full resolution.
+constexpr int kCoarseMinArea = 400000;
+constexpr int kCoarseMinPatch = 15;
+constexpr double kCoarseFloor = 0.2;
+constexpr int kRefinePx = 3;
 // Background samples kept (grey frames spread over the clip, one per block of `stride`;
 // when full, every other one is dropped and the stride doubles): the temporal median of at
 // most 16 frames.
@@ -108,6 +115,7 @@ struct PathTracker::Impl {
   double radius = 0;       // object radius from scale selection, px
   double reach = 0;        // largest motion per frame, px
   cv::Mat templ;           // CV_32F
+  cv::Mat templ_half;      // templ at half resolution (coarse search), made when first needed
   std::vector<StepCandidates> steps;  // steps[0]: the start (the click)
   std::vector<cv::Mat> samples;       // background samples (grey)
   int stride = 1, seen = 0;
@@ -212,6 +220,7 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
                                "): there is nothing to follow; start on the object");
   }
   m.templ = templ;
+  m.templ_half.release();
   m.steps.clear();
   m.samples.clear();
   m.stride = 1;
@@ -280,27 +289,104 @@ void PathTracker::Impl::update(const Frame& f) {
   StepCandidates out;
   out.index = f.index;
   const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
-  cv::Mat w32, res;
+  cv::Mat w32, all;
   std::vector<Candidate> found;
   std::vector<std::size_t> window_best;  // index in `found` of each window's best peak
+  // The anchors' windows overlap (the oldest anchor's covers most of the image): the
+  // correlation is computed once over their union, and each window reads its part of it
+  // (the same values as correlating the window alone: the template inside the window).
+  std::vector<cv::Rect> wins;
+  cv::Rect uni;
   for (const Anchor& a : anchors) {
     const double r = reach * a.age + h + 1;
     const cv::Rect win = cv::Rect(static_cast<int>(std::floor(a.at.x - r)), static_cast<int>(std::floor(a.at.y - r)),
                                   static_cast<int>(std::ceil(2 * r)) + 1, static_cast<int>(std::ceil(2 * r)) + 1) &
                          cv::Rect(0, 0, gray.cols, gray.rows);
     if (win.width <= p + 2 || win.height <= p + 2) continue;
-    gray(win).convertTo(w32, CV_32F);
-    cv::matchTemplate(w32, templ, res, cv::TM_CCOEFF_NORMED);
-    cv::patchNaNs(res, -1);
-    cv::Mat scratch = res.clone();
-    for (int k = 0; k < kPerWindow; ++k) {
-      double v;
-      cv::Point at;
-      cv::minMaxLoc(scratch, nullptr, &v, nullptr, &at);
-      if (v < kCandidateFloor) break;
-      cv::circle(scratch, at, suppress, cv::Scalar(-1), cv::FILLED);
-      double fitted = v;
-      const cv::Point2d off = subpixel_peak(res, at, &fitted);
+    wins.push_back(win);
+    uni = uni.area() == 0 ? win : (uni | win);
+  }
+  // A large union with a template that survives halving is searched coarse to fine: the
+  // correlation at half resolution finds each window's peaks, each refined by the
+  // full-resolution correlation within 3 px (a quarter of the work over the union).
+  const bool coarse = !wins.empty() && p >= kCoarseMinPatch && uni.area() > kCoarseMinArea;
+  cv::Mat coarse_res;
+  if (!wins.empty()) {
+    gray(uni).convertTo(w32, CV_32F);
+    if (coarse) {
+      if (templ_half.empty()) cv::pyrDown(templ, templ_half);
+      cv::Mat half;
+      cv::pyrDown(w32, half);
+      cv::matchTemplate(half, templ_half, coarse_res, cv::TM_CCOEFF_NORMED);
+      cv::patchNaNs(coarse_res, -1);
+    } else {
+      cv::matchTemplate(w32, templ, all, cv::TM_CCOEFF_NORMED);
+      cv::patchNaNs(all, -1);
+    }
+  }
+  struct Peak {
+    cv::Point at;     // template top-left in the window's result, px
+    double v;         // correlation there
+    cv::Point2d off;  // sub-pixel offset
+    double fitted;    // the peak fit's value
+  };
+  for (const cv::Rect& win : wins) {
+    const cv::Rect rrect(win.x - uni.x, win.y - uni.y, win.width - p + 1, win.height - p + 1);  // in the union's result
+    std::vector<Peak> peaks;
+    if (!coarse) {
+      const cv::Mat res = all(rrect);
+      cv::Mat scratch = res.clone();
+      for (int k = 0; k < kPerWindow; ++k) {
+        Peak pk;
+        cv::minMaxLoc(scratch, nullptr, &pk.v, nullptr, &pk.at);
+        if (pk.v < kCandidateFloor) break;
+        cv::circle(scratch, pk.at, suppress, cv::Scalar(-1), cv::FILLED);
+        pk.fitted = pk.v;
+        pk.off = subpixel_peak(res, pk.at, &pk.fitted);
+        peaks.push_back(pk);
+      }
+    } else {
+      const cv::Rect crect = cv::Rect(rrect.x / 2, rrect.y / 2, (rrect.width + 1) / 2, (rrect.height + 1) / 2) &
+                             cv::Rect(0, 0, coarse_res.cols, coarse_res.rows);
+      if (crect.width < 1 || crect.height < 1) continue;
+      cv::Mat scratch = coarse_res(crect).clone();
+      std::vector<Peak> refined;
+      for (int k = 0; k < 2 * kPerWindow; ++k) {
+        double v;
+        cv::Point c;
+        cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
+        if (v < kCoarseFloor) break;
+        cv::circle(scratch, c, std::max(1, suppress / 2), cv::Scalar(-1), cv::FILLED);
+        // Refine: the full-resolution correlation within kRefinePx of the coarse peak.
+        const cv::Point tl(2 * (crect.x + c.x) - rrect.x, 2 * (crect.y + c.y) - rrect.y);  // in the window's result
+        const cv::Rect near = cv::Rect(tl.x - kRefinePx, tl.y - kRefinePx, 2 * kRefinePx + 1, 2 * kRefinePx + 1) &
+                              cv::Rect(0, 0, rrect.width, rrect.height);
+        if (near.width < 1 || near.height < 1) continue;
+        cv::Mat fine;
+        cv::matchTemplate(w32(cv::Rect(rrect.x + near.x, rrect.y + near.y, near.width + p - 1, near.height + p - 1)),
+                          templ, fine, cv::TM_CCOEFF_NORMED);
+        cv::patchNaNs(fine, -1);
+        Peak pk;
+        cv::Point in;
+        cv::minMaxLoc(fine, nullptr, &pk.v, nullptr, &in);
+        pk.fitted = pk.v;
+        pk.off = subpixel_peak(fine, in, &pk.fitted);
+        pk.at = near.tl() + in;
+        refined.push_back(pk);
+      }
+      std::sort(refined.begin(), refined.end(), [](const Peak& a, const Peak& b) { return a.v > b.v; });
+      for (const Peak& pk : refined) {
+        if (static_cast<int>(peaks.size()) >= kPerWindow || pk.v < kCandidateFloor) break;
+        const bool dup = std::any_of(peaks.begin(), peaks.end(), [&](const Peak& q) {
+          return std::hypot(q.at.x - pk.at.x, q.at.y - pk.at.y) <= suppress;
+        });
+        if (!dup) peaks.push_back(pk);
+      }
+    }
+    for (std::size_t k = 0; k < peaks.size(); ++k) {
+      const cv::Point at = peaks[k].at;
+      const cv::Point2d off = peaks[k].off;
+      const double fitted = peaks[k].fitted;
       const double x = win.x + at.x + off.x + h, y = win.y + at.y + off.y + h;
       // The same peak seen from two windows is kept once.
       const auto same = std::find_if(found.begin(), found.end(), [&](const Candidate& c) {
@@ -576,7 +662,8 @@ std::string PathTracker::loss_hint() const {
   }
   if (m.lost_score >= m.lost_none) {
     return "the object matched its first look poorly in " + std::to_string(m.lost_score) +
-           " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch";
+           " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch; "
+           "for a mark that turns (on a wheel), --point-tracker frame";
   }
   return "the object was not found in " + std::to_string(m.lost_none) +
          " frame(s) (hidden, out of view, or moving more than --search px per frame): a larger --search or --max-gap";

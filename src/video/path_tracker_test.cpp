@@ -131,6 +131,41 @@ TEST(PathTracker, ReportsTheFramesOfAnOcclusionLost) {
   EXPECT_LT(r.worst_px, 1.5);
 }
 
+TEST(PathTracker, CoarseToFineSearchAt720pFollowsADiscAsTheFullSearchDid) {
+  // 1280x720: the anchors' windows cover over 400 000 px² and the disc's template is 37 px,
+  // so every step is searched at half resolution first and refined within 3 px. The disc
+  // (radius 12, on texture) moves 14 px/frame and accelerates down: every frame on it, to a
+  // fraction of a pixel (the full search gave the same on the smaller videos above).
+  const RenderOptions o = textured_video(1280, 720);
+  auto at = [](int i) { return cv::Point2d(200 + 14.0 * i, 150 + 2.0 * i + 0.3 * i * i); };
+  const Scene scene = [&](double t) {
+    return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 12)};
+  };
+  PathTrackerOptions opt;
+  PathTracker probe(opt);
+  probe.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
+  ASSERT_GE(probe.patch_px(), 15);  // the coarse search's condition holds
+  const Result r = track_path(scene, o, 24, at, opt);
+  EXPECT_EQ(r.lost, 0);
+  EXPECT_LT(r.median_px, 0.3);
+  EXPECT_LT(r.worst_px, 1.0);
+}
+
+TEST(PathTracker, CoarseToFineSearchAt720pNeverTakesTheCrossingLookAlike) {
+  // The crossing of DoesNotJumpToALookAlikeThatCrossesIt at 1280x720, discs of radius 12:
+  // the coarse search finds both, the rival check keeps the look-alike out.
+  const RenderOptions o = textured_video(1280, 720);
+  auto ours = [](int i) { return cv::Point2d(300 + 12.0 * i, 360); };
+  auto other = [](int i) { return cv::Point2d(480, 180 + 12.0 * i); };
+  const Scene scene = [&](double t) {
+    const int i = static_cast<int>(std::lround(t * 30));
+    return std::vector<ShapePose>{disc(other(i), 12), disc(ours(i), 12)};
+  };
+  const Result r = track_path(scene, o, 30, ours);
+  EXPECT_LT(r.worst_px, 1.5);
+  EXPECT_LE(r.lost, 6);
+}
+
 TEST(PathTracker, RefusesAStartOutsideTheImage) {
   const RenderOptions o = textured_video();
   const Scene scene = [](double) { return std::vector<ShapePose>{}; };

@@ -330,6 +330,8 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
       const std::vector<Observation> obs = path->finish();
       for (std::size_t i = 0; i < obs.size() && i < w.pending.size(); ++i) record(w, w.pending[i], in, result.series, obs[i]);
       hint = path->loss_hint();
+    } else if (const auto* ellipse = std::get_if<EllipseTracker>(&w.tracker)) {
+      hint = ellipse->loss_hint();
     }
     hints.push_back(hint);
   }

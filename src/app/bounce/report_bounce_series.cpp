@@ -5,7 +5,8 @@
 
 #include "app/bounce/report_bounce.hpp"
 #include "app/bounce/report_bounce_analysis.hpp"
-#include "app/incline/report_incline_series.hpp"  // series_runs_folder, series_run_file
+#include "app/common/series_files.hpp"
+#include "app/incline/report_incline_series.hpp"
 #include "app/common/report_util.hpp"
 
 #include "report/format.hpp"

@@ -41,6 +41,8 @@ const ResultKeys& track_rotation_result_keys();
 const ResultKeys& incline_analyze_series_result_keys();
 const ResultKeys& incline_mu_from_slide_series_result_keys();
 const ResultKeys& bounce_analyze_series_result_keys();
+/// `track video` on several videos (docs/cli.md#several-videos). In track_video.cpp.
+const ResultKeys& track_video_series_result_keys();
 /// `demo` (docs/cli.md#demo). In demo.cpp.
 const ResultKeys& demo_result_keys();
 

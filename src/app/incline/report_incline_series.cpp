@@ -7,6 +7,7 @@
 #include "report/html.hpp"
 #include "app/incline/report_incline_analysis.hpp"
 #include "app/common/report_util.hpp"
+#include "app/common/series_files.hpp"
 #include "app/incline/incline_series.hpp"
 
 #include <algorithm>
@@ -159,21 +160,6 @@ std::string run_link(const std::string& report_path, std::size_t i, const std::s
 }
 
 }  // namespace
-
-std::string series_runs_folder(const std::string& report_path) {
-  const fs::path p(report_path);
-  return (p.parent_path() / (p.stem().string() + "_runs")).string();
-}
-
-std::string series_run_file(std::size_t index, const std::string& source, std::size_t n_runs) {
-  const std::size_t width = std::to_string(n_runs).size();
-  std::string number = std::to_string(index + 1);
-  number.insert(0, width - std::min(width, number.size()), '0');
-  std::string stem = fs::path(source).stem().string();
-  for (char& c : stem)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_')) c = '_';
-  return number + "_" + (stem.empty() ? "run" : stem) + ".html";
-}
 
 int add_incline_series(report::Report& r, const std::string& title, const std::vector<InclineSeriesRun>& runs,
                        const analysis::InclineSeriesSummary& sum, const std::vector<std::string>& links) {

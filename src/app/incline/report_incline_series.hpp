@@ -32,14 +32,6 @@ struct SlideSeriesRun {
   std::string error;
 };
 
-/// Folder of the runs' own reports beside `report_path`: "DIR/<stem>_runs" for DIR/<stem>.html.
-std::string series_runs_folder(const std::string& report_path);
-
-/// The file name (inside series_runs_folder) of run `index` (0-based) from `source`:
-/// "<NN>_<file stem>.html" with characters other than letters, digits, '.', '-' and '_'
-/// replaced by '_' (NN = index + 1, zero-padded so the names sort in run order).
-std::string series_run_file(std::size_t index, const std::string& source, std::size_t n_runs);
-
 /// `incline analyze --report` over several files. Writes each analysed run's own report
 /// (incline_analyze_report) into series_runs_folder(report_path) and returns the series
 /// report linking to them. `report_path` empty: no run reports, no links (for the demo's

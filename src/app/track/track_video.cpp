@@ -3,8 +3,11 @@
 
 #include "app/common/output_paths.hpp"
 
+#include "app/common/series_files.hpp"
+#include "app/common/series_json.hpp"
 #include "app/track/report_track_video.hpp"
 #include "app/track/track_import.hpp"
+#include "analysis/series.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text.hpp"
 #include "io/tracker_trk.hpp"
@@ -13,7 +16,9 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <memory>
+#include <system_error>
 
 namespace tribolab::app {
 
@@ -215,6 +220,134 @@ TrackVideoResult track_video(const TrackVideoOptions& options) {
   return result;
 }
 
+namespace {
+
+/// A series' output folder: an existing folder, or created (its parent must exist).
+void ensure_folder(const std::string& path, const std::string& option) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    if (!fs::is_directory(path, ec)) {
+      throw InputError(field(option) + " " + path,
+                       "with several inputs this names a folder (each video's file is written into it), "
+                       "but it is a file");
+    }
+    return;
+  }
+  if (!fs::create_directory(path, ec) || ec) {
+    throw InputError(field(option) + " " + path,
+                     "cannot create the folder (" + (ec ? ec.message() : std::string("its parent is missing")) + ")");
+  }
+}
+
+void remove_quietly(const std::string& path) {
+  if (path.empty()) return;
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+}
+
+}  // namespace
+
+std::string series_output_name(std::size_t index, const std::string& input, std::size_t n, const std::string& extension) {
+  std::string name = series_run_file(index, input, n);  // NN_<stem>.html
+  return name.substr(0, name.size() - 5) + extension;
+}
+
+TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::vector<std::string>& inputs,
+                                    const analysis::SeriesOptions& series) {
+  namespace fs = std::filesystem;
+  if (base.out.empty()) throw MissingOptionError(field("out"), "the output folder is required");
+  {
+    TrackVideoOptions probe = base;  // the options' own checks, once, before any work
+    probe.write_trk.clear();
+    (void)build_options(probe);
+  }
+  ensure_folder(base.out, "out");
+  if (!base.write_trk.empty()) ensure_folder(base.write_trk, "write_trk");
+  std::string runs_folder;
+  if (!base.report.empty()) {
+    check_output_paths(inputs, {{"report", base.report}});
+    runs_folder = series_runs_folder(base.report);
+    std::error_code ec;
+    fs::create_directories(runs_folder, ec);
+    if (ec) throw InputError(field("report") + " " + base.report, "cannot create " + runs_folder + " (" + ec.message() + ")");
+  }
+  const std::size_t n = inputs.size();
+  std::vector<std::string> reports(n);
+  const auto runs = analysis::run_series<nlohmann::json>(
+      inputs,
+      [&](std::size_t i, const std::string& input) {
+        TrackVideoOptions o = base;
+        o.input = input;
+        o.progress = nullptr;
+        o.out = (fs::path(base.out) / series_output_name(i, input, n, ".csv")).string();
+        if (!base.write_trk.empty()) o.write_trk = (fs::path(base.write_trk) / series_output_name(i, input, n, ".trk")).string();
+        if (!base.report.empty()) o.report = (fs::path(runs_folder) / series_output_name(i, input, n, ".html")).string();
+        TrackVideoResult r = track_video(o);
+        // A track with no position after its start frame: nothing was tracked in this video.
+        for (const auto& sr : r.series) {
+          if (sr.rows.size() < 2 || sr.tracked > 1) continue;
+          std::string why;
+          for (const auto& w : r.json["warnings"])
+            if (w.is_string() && w.get<std::string>().rfind("track '" + sr.name + "': lost", 0) == 0) why = w.get<std::string>();
+          remove_quietly(o.out), remove_quietly(o.write_trk), remove_quietly(o.report);
+          throw InputError(input, "track '" + sr.name + "' was lost in every frame after its start frame" +
+                                      (why.empty() ? std::string() : " (" + why + ")") + "; no file written for this video");
+        }
+        if (!o.report.empty()) reports[i] = o.report;
+        return r.json;
+      },
+      series);
+  TrackVideoSeries out;
+  out.rows = series_rows(runs, [](const nlohmann::json& j) { return j; });
+  out.summary = series_counts(runs);
+  out.summary["out_dir"] = base.out;
+  out.summary["write_trk_dir"] = base.write_trk.empty() ? nlohmann::json(nullptr) : nlohmann::json(base.write_trk);
+  out.summary["report"] = base.report.empty() ? nlohmann::json(nullptr) : nlohmann::json(base.report);
+  out.errors = series_errors(runs);
+  if (!base.report.empty()) {
+    report::Report page;
+    page.title = "tribolab: track video, " + std::to_string(n) + " videos";
+    page.subtitle = "Each video's tracks, and its own report (linked from its row)";
+    report::Table t;
+    t.caption = "Videos in the order given; rows, tracked and lost per track; a failed video shows its error";
+    t.header = {"video", "CSV", "tracks", "tracked / rows", "lost frames", "error"};
+    const std::string folder = fs::path(runs_folder).filename().string();
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& row = out.rows[i];
+      std::vector<std::string> cells{inputs[i]};
+      if (row.contains("error")) {
+        cells.insert(cells.end(), {"-", "-", "-", "-", row["error"].get<std::string>()});
+        t.links.emplace_back();
+      } else {
+        std::string names, counts, lost;
+        for (const auto& name : row["track_names"]) {
+          const auto& tr = row["tracks"][name.get<std::string>()];
+          names += (names.empty() ? "" : ", ") + name.get<std::string>();
+          counts += (counts.empty() ? "" : ", ") + std::to_string(tr["tracked"].get<int>()) + "/" + std::to_string(tr["rows"].get<int>());
+          lost += (lost.empty() ? "" : ", ") + std::to_string(tr["lost"].get<int>());
+        }
+        cells.insert(cells.end(), {row["out"].get<std::string>(), names, counts, lost, ""});
+        const std::string link = folder + "/" + fs::path(reports[i]).filename().string();
+        t.links.push_back(report::is_relative_link(link) ? link : std::string());
+      }
+      t.rows.push_back(std::move(cells));
+    }
+    page.add_section("Videos").add_table(std::move(t));
+    if (out.summary["n_ok"].get<std::size_t>() > 0) report::write_html(page, base.report, base.plotly);
+  }
+  return out;
+}
+
+
+const ResultKeys& track_video_series_result_keys() {
+  static const ResultKeys k = {
+      {"n_runs", "", "videos given"}, {"n_ok", "", ""}, {"n_failed", "", ""}, {"failed", "", "videos that failed"},
+      {"out_dir", "", "the folder of the CSV files"}, {"write_trk_dir", "", "the folder of the .trk files, null: none"},
+      {"report", "", "the series page, null: none"},
+  };
+  return k;
+}
 
 const ResultKeys& track_video_result_keys() {
   static const ResultKeys k = {
@@ -232,6 +365,7 @@ const ResultKeys& track_video_result_keys() {
       {"tracks.*.vs_human.frames", "", ""}, {"tracks.*.vs_human.median_px", "px", ""},
       {"tracks.*.vs_human.max_px", "px", ""}, {"tracks.*.vs_human", "", "null without human marks"},
       {"warnings", "", ""}, {"out", "", ""}, {"write_trk", "", ""}, {"report", "", ""},
+      {"file", "", "a run of several videos"}, {"error", "", "why the video failed"},
   };
   return k;
 }

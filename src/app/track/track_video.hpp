@@ -4,6 +4,7 @@
 // are parsed here, so every front end accepts the same words.
 #pragma once
 
+#include "analysis/series.hpp"
 #include "video/track_video.hpp"
 #include "report/plotly_script.hpp"
 
@@ -54,5 +55,29 @@ struct TrackVideoResult {
 /// --write-trk, --fps, ...), opens the outputs, tracks, writes CSV, project and report
 /// (all or nothing) and summarises.
 TrackVideoResult track_video(const TrackVideoOptions& options);
+
+/// Several videos in one call (docs/cli.md#track-video, "Several videos").
+struct TrackVideoSeries {
+  nlohmann::json rows;      ///< per input, in order: {"file", ...the single-video object} or {"file", "error"}
+  nlohmann::json summary;   ///< n_runs, n_ok, n_failed, failed, out_dir, write_trk_dir, report
+  std::vector<std::string> errors;  ///< the failed inputs' located errors, in order
+};
+
+/// The file name of input `index` (0-based) of `n` inputs in a series' output folder:
+/// "NN_<stem><extension>" (NN = index + 1 zero-padded to the width of n; characters other
+/// than letters, digits, '.', '-', '_' in the stem replaced by '_'), as the runs' reports of
+/// the other several-file commands are named.
+std::string series_output_name(std::size_t index, const std::string& input, std::size_t n, const std::string& extension);
+
+/// Tracks every input with the same options (`base.input` is ignored). `base.out` (and
+/// `base.write_trk` when given) name folders, created when missing (their parent must exist);
+/// input i writes series_output_name(i, input, n, ".csv") (".trk") there. `base.report`, when
+/// given, is a series page linking each video's own report in <stem>_runs/ beside it. Inputs
+/// run in parallel; one that fails (missing, corrupt, a start outside the image, a track lost
+/// in every frame after its start) is a row with its error and leaves no file of its own,
+/// never the others'. Throws InputError only for bad output folders or options (before any work).
+/// `series`: threads and progress callback (analysis::SeriesOptions; default: all cores, none).
+TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::vector<std::string>& inputs,
+                                    const analysis::SeriesOptions& series = {});
 
 }  // namespace tribolab::app

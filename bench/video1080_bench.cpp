@@ -1,0 +1,156 @@
+// Tracking at 1080p against decoding alone (issue 24's speed bar: tracking one object may add
+// at most 25 % to decoding; docs/benchmarks.md#tracking-at-1080p). The video is a rendered
+// throw at 1920x1080, 240 fps, textured background, a checker sticker on the ball (the point
+// target), written once as H.264 (.mp4, libx264 through OpenCV's FFmpeg backend: what a phone
+// records). Every benchmark decodes the whole file; the tracking ones also make the grey image
+// and run the tracker on every frame, as `track video` does.
+#include "video/frame.hpp"
+#include "video/ellipse_tracker.hpp"
+#include "video/path_tracker.hpp"
+#include "video/render.hpp"
+#include "video/render_throw.hpp"
+
+#include <benchmark/benchmark.h>
+#include <opencv2/videoio.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+
+namespace {
+
+using namespace tribolab;
+
+struct Clip1080 {
+  std::string path;
+  cv::Point2d ball, sticker;  ///< px in frame 0
+  int frames = 0;
+  ~Clip1080() { std::filesystem::remove(path); }
+};
+
+const Clip1080& clip1080() {
+  static const Clip1080 c = [] {
+    Clip1080 c;
+    video::ThrowFilmOptions o;
+    o.render.width = 1920;
+    o.render.height = 1080;
+    o.render.background = video::RenderOptions::Background::texture;
+    o.render.background_colour = cv::Scalar(180, 185, 190);
+    o.render.supersample = 2;   // the rendering is set-up only: cheaper, still anti-aliased
+    o.render.blur_samples = 4;
+    o.sticker = true;
+    o.motion.after = 0.05;
+    o.motion.omega = 0;  // the sticker does not turn in flight: the path tracker's template does not rotate
+    const auto film = video::plan_throw_film(o);
+    c.path = (std::filesystem::temp_directory_path() / ("video1080_bench_" + std::to_string(::getpid()) + ".mp4")).string();
+    cv::VideoWriter w(c.path, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('a', 'v', 'c', '1'), o.render.fps,
+                      cv::Size(o.render.width, o.render.height));
+    if (!w.isOpened()) throw std::runtime_error("video1080_bench: cannot write H.264 here");
+    const int n = std::min(film.frames, 120);
+    for (int k = 0; k < n; ++k) w.write(video::render_frame(film.scene, k / o.render.fps, film.render, k));
+    c.frames = n;
+    const auto shape = film.scene(0).front();
+    c.ball = {shape.cx_px, shape.cy_px};
+    c.sticker = {shape.cx_px + shape.mark_u_px * std::cos(shape.angle_rad),
+                 shape.cy_px - shape.mark_u_px * std::sin(shape.angle_rad)};
+    return c;
+  }();
+  return c;
+}
+
+void BM_Decode1080pH264(benchmark::State& state) {
+  const Clip1080& c = clip1080();
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    cv::Mat m;
+    while (cap.read(m)) {
+      benchmark::DoNotOptimize(m.data);
+      ++frames;
+    }
+  }
+  state.SetItemsProcessed(frames);  // items_per_second = frames per second
+}
+BENCHMARK(BM_Decode1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// Decoding and the grey image every tracker of `track video` is given.
+void BM_DecodeAndGray1080pH264(benchmark::State& state) {
+  const Clip1080& c = clip1080();
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    video::Frame f;
+    while (cap.read(f.bgr)) {
+      video::make_gray(f);
+      benchmark::DoNotOptimize(f.gray.data);
+      ++frames;
+    }
+  }
+  state.SetItemsProcessed(frames);
+}
+BENCHMARK(BM_DecodeAndGray1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// Decoding, the grey image and the default point tracker (the path tracker) on the sticker.
+void BM_DecodeTrackPath1080pH264(benchmark::State& state) {
+  const Clip1080& c = clip1080();
+  std::int64_t frames = 0;
+  int lost = 0;
+  for (auto _ : state) {
+    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    video::PathTracker tracker;
+    video::Frame f;
+    bool started = false;
+    while (cap.read(f.bgr)) {
+      f.t = f.index / 240.0;
+      video::make_gray(f);
+      if (!started) {
+        benchmark::DoNotOptimize(tracker.start(f, c.sticker.x, c.sticker.y, "sticker"));
+        started = true;
+      } else {
+        tracker.update(f);
+      }
+      ++f.index;
+      ++frames;
+    }
+    lost = 0;
+    for (const auto& o : tracker.finish()) lost += o.lost;
+  }
+  state.SetItemsProcessed(frames);
+  state.counters["lost"] = lost;
+}
+BENCHMARK(BM_DecodeTrackPath1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// Decoding, the grey image and the ellipse tracker on the ball.
+void BM_DecodeTrackEllipse1080pH264(benchmark::State& state) {
+  const Clip1080& c = clip1080();
+  std::int64_t frames = 0;
+  int lost = 0;
+  for (auto _ : state) {
+    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    video::EllipseTracker tracker;
+    video::Frame f;
+    bool started = false;
+    lost = 0;
+    while (cap.read(f.bgr)) {
+      f.t = f.index / 240.0;
+      video::make_gray(f);
+      if (!started) {
+        benchmark::DoNotOptimize(tracker.start(f, c.ball.x, c.ball.y, "ball"));
+        started = true;
+      } else {
+        lost += tracker.update(f).centre.lost;
+      }
+      ++f.index;
+      ++frames;
+    }
+  }
+  state.SetItemsProcessed(frames);
+  state.counters["lost"] = lost;
+}
+BENCHMARK(BM_DecodeTrackEllipse1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
