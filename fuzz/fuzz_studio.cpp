@@ -22,6 +22,7 @@ struct AnsweringBackend : Backend {
   std::string frame_jpeg(int step) override { return std::to_string(step); }
   json calibrate(const CalibrationInput& c) override { return to_json(c); }
   json track(const TrackStart& s) override { return to_json(s); }
+  json mark(const MarkInput& m) override { return {{"track", m.track}, {"frame", m.frame}, {"remove", m.remove}}; }
   json forms() override { return json::object(); }
   json analyze(const std::string& c, const json& v) override { return {{"command", c}, {"values", v}}; }
   json state() override { return json::object(); }

@@ -11,6 +11,7 @@
 #include "numerics/error.hpp"
 #include "report/html.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <memory>
@@ -53,6 +54,23 @@ video::Target parse_target(const std::string& text, video::Target::Kind kind, co
   t.x_px = xy[0];
   t.y_px = xy[1];
   return t;
+}
+
+/// NAME@FRAME=X,Y: the user's mark of track NAME in FRAME (an ellipse's: of its centre).
+std::pair<std::string, video::ManualMark> parse_mark(const std::string& text) {
+  const std::string where = field("mark") + " " + text.substr(0, 60);
+  const auto at = text.find('@'), eq = text.find('=');
+  if (at == std::string::npos || eq == std::string::npos || at == 0 || eq < at) {
+    throw InputError(where, "expected NAME@FRAME=X,Y (pixels: x right, y down)");
+  }
+  const double f = io::parse_double(text.substr(at + 1, eq - at - 1), where + " (frame)");
+  if (f != std::floor(f) || f < 0 || f > 1e8) throw InputError(where, "the frame after @ must be a whole number from 0");
+  const auto xy = numbers(text.substr(eq + 1), 2, where);
+  video::ManualMark m;
+  m.frame = static_cast<int>(f);
+  m.x_px = xy[0];
+  m.y_px = xy[1];
+  return {text.substr(0, at), m};
 }
 
 bool ends_with_trk(const std::string& path) {
@@ -103,6 +121,17 @@ video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
     t.name = name;
     t.from_track = name;
     o.targets.push_back(t);
+  }
+  for (const auto& text : a.mark) {
+    auto [name, m] = parse_mark(text);
+    const auto t = std::find_if(o.targets.begin(), o.targets.end(), [&](const video::Target& x) { return x.name == name; });
+    if (t == o.targets.end()) {
+      std::string names;
+      for (const auto& x : o.targets) names += (names.empty() ? "'" : ", '") + x.name + "'";
+      throw InputError(field("mark") + " " + text.substr(0, 60),
+                       "no track named '" + name.substr(0, 40) + "' is followed (" + names + ")");
+    }
+    t->marks.push_back(m);
   }
   if (!a.calibrate.empty()) {
     const auto v = numbers(a.calibrate, 5, field("calibrate"));
@@ -166,6 +195,7 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
                         {"lost", lost_rows},
                         {"lost_ranges", lost},
                         {"refound_frames", s.refound_frames},
+                        {"manual_frames", s.manual_frames},
                         {"median_score", s.median_score}};
     if (s.vs_human) {
       t["vs_human"] = {{"frames", s.vs_human->frames},
@@ -228,7 +258,7 @@ const ResultKeys& track_video_result_keys() {
       {"calibration.axes_deg", "deg", ""}, {"calibration.key_frames", "", ""},
       {"track_names", "", ""}, {"tracks.*.kind", "", ""}, {"tracks.*.start_frame", "", ""}, {"tracks.*.rows", "", ""},
       {"tracks.*.tracked", "", ""}, {"tracks.*.lost", "", ""}, {"tracks.*.lost_ranges", "", "[first, last] frames"},
-      {"tracks.*.refound_frames", "", ""}, {"tracks.*.median_score", "", ""},
+      {"tracks.*.refound_frames", "", ""}, {"tracks.*.manual_frames", "", "frames of the --mark corrections"}, {"tracks.*.median_score", "", ""},
       {"tracks.*.vs_human.frames", "", ""}, {"tracks.*.vs_human.median_px", "px", ""},
       {"tracks.*.vs_human.max_px", "px", ""}, {"tracks.*.vs_human", "", "null without human marks"},
       {"warnings", "", ""}, {"out", "", ""}, {"write_trk", "", ""}, {"report", "", ""},

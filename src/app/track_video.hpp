@@ -22,6 +22,7 @@ struct TrackVideoOptions {
   std::vector<std::string> start;      ///< points: NAME=X,Y[@FRAME], image px (x right, y down)
   std::vector<std::string> ellipse;    ///< balls/discs: NAME=X,Y[@FRAME] inside the object, px
   std::vector<std::string> from_track; ///< Tracker project tracks to follow from their first mark
+  std::vector<std::string> mark;       ///< corrections: NAME@FRAME=X,Y, image px; the track passes there (manual, score 1)
   std::optional<double> scale;         ///< plain video: metres per pixel
   std::string calibrate;               ///< plain video: X1,Y1,X2,Y2,LENGTH (px, px, px, px, m)
   std::string origin;                  ///< world origin in the image, X,Y px; empty: bottom-left pixel

@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tribolab::studio {
 
@@ -28,12 +29,27 @@ struct CalibrationInput {
   double time_scale = 1;                          ///< real s per video s (slow motion 240 -> 30 fps: 0.125)
 };
 
+/// The user's position of a track in one frame (a dragged point): the track passes there.
+struct TrackMark {
+  int frame = 0;              ///< the video's frame index
+  double x_px = 0, y_px = 0;  ///< image px
+};
+
 /// A click on an object: follow it from there.
 struct TrackStart {
   std::string name = "ball";  ///< track name: letters, digits, '_' or '-'
   std::string kind = "point"; ///< "point" (the path tracker) or "ellipse" (a ball contrasting with its background)
   double x_px = 0, y_px = 0;  ///< the click, image px
   int frame = 0;              ///< the video's frame index clicked on
+  std::vector<TrackMark> marks;  ///< corrections, by frame (app::TrackVideoOptions::mark)
+};
+
+/// A request to set (a dragged or placed point) or remove the mark of a track in one frame.
+struct MarkInput {
+  std::string track;          ///< the track's name (an ellipse's: its centre's)
+  int frame = 0;              ///< the video's frame index
+  bool remove = false;        ///< true: remove the frame's mark (x_px, y_px unused)
+  double x_px = 0, y_px = 0;  ///< image px
 };
 
 /// The page's JSON (also the autosave's) as typed values; InputError naming the key for a
@@ -41,6 +57,7 @@ struct TrackStart {
 /// digits, '_' and '-').
 CalibrationInput calibration_from_json(const nlohmann::json& j);
 TrackStart start_from_json(const nlohmann::json& j);
+MarkInput mark_from_json(const nlohmann::json& j);
 nlohmann::json to_json(const CalibrationInput& c);
 nlohmann::json to_json(const TrackStart& s);
 
@@ -54,6 +71,8 @@ class Backend {
   virtual std::string frame_jpeg(int step) = 0;                          ///< the clip's step-th frame as JPEG
   virtual nlohmann::json calibrate(const CalibrationInput& c) = 0;
   virtual nlohmann::json track(const TrackStart& start) = 0;
+  /// Sets or removes a mark and re-tracks that track (the state, with the new track).
+  virtual nlohmann::json mark(const MarkInput& mark) = 0;
   virtual nlohmann::json forms() = 0;                                    ///< the analyses' declared fields
   virtual nlohmann::json analyze(const std::string& command, const nlohmann::json& values) = 0;
   virtual nlohmann::json state() = 0;                                    ///< the project as autosaved

@@ -26,6 +26,8 @@ struct RecordingBackend : Backend {
   std::string frame_jpeg(int step) override { ++calls; return "jpeg" + std::to_string(step); }
   json calibrate(const CalibrationInput& c) override { ++calls; return {{"length", c.stick_length_m}}; }
   json track(const TrackStart& s) override { ++calls; return {{"name", s.name}}; }
+  MarkInput marked;
+  json mark(const MarkInput& m) override { ++calls; marked = m; return {{"track", m.track}}; }
   json forms() override { ++calls; return json::object(); }
   json analyze(const std::string& command, const json&) override { ++calls; return {{"command", command}}; }
   json state() override { ++calls; return json::object(); }
@@ -171,6 +173,40 @@ TEST_F(HandlerTest, MalformedJsonIsAnsweredNotCrashed) {
   EXPECT_EQ(handler->handle(good("GET", "/api/frame?i=-1")).status, 400);
   EXPECT_EQ(handler->handle(good("GET", "/api/frame?i=%zz")).status, 400);
   EXPECT_EQ(backend.calls, 0);
+}
+
+TEST_F(HandlerTest, MarkRequestsAreCheckedBeforeTheBackend) {
+  const Response set = handler->handle(good("POST", "/api/mark", R"({"track": "ball", "frame": 12, "x": 10.5, "y": 20})"));
+  EXPECT_EQ(set.status, 200) << set.body;
+  EXPECT_EQ(backend.marked.track, "ball");
+  EXPECT_EQ(backend.marked.frame, 12);
+  EXPECT_FALSE(backend.marked.remove);
+  EXPECT_DOUBLE_EQ(backend.marked.x_px, 10.5);
+  EXPECT_DOUBLE_EQ(backend.marked.y_px, 20);
+  const Response removed = handler->handle(good("POST", "/api/mark", R"({"track": "ball", "frame": 12, "remove": true})"));
+  EXPECT_EQ(removed.status, 200) << removed.body;
+  EXPECT_TRUE(backend.marked.remove);
+  EXPECT_EQ(backend.calls, 2);
+  // NaN and an overflow are no JSON numbers; as text, a string, a fraction of a frame, a negative
+  // frame, no track, a track name with a space, no position: each answered with its reason.
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {R"({"track": "ball", "frame": 3, "x": NaN, "y": 2})", "not valid JSON"},
+      {R"({"track": "ball", "frame": 3, "x": "NaN", "y": 2})", "'x' must be a number"},
+      {R"({"track": "ball", "frame": 3, "x": 1e999, "y": 2})", "not valid JSON"},  // an overflow is no JSON number
+      {R"({"track": "ball", "frame": 2.5, "x": 1, "y": 2})", "'frame' must be a whole number"},
+      {R"({"track": "ball", "frame": -1, "x": 1, "y": 2})", "'frame' must not be negative"},
+      {R"({"frame": 3, "x": 1, "y": 2})", "'track' must have 1 to 40 characters"},
+      {R"({"track": "a b", "frame": 3, "x": 1, "y": 2})", "'track' may hold only"},
+      {R"({"track": "ball", "frame": 3})", "'x' must be a number"},
+      {R"({"track": "ball", "frame": 3, "remove": "yes"})", "'remove' must be true or false"},
+  };
+  for (const auto& [body, message] : bad) {
+    const Response a = handler->handle(good("POST", "/api/mark", body));
+    EXPECT_EQ(a.status, 400) << body;
+    EXPECT_NE(error_of(a).find(message), std::string::npos) << body << " -> " << error_of(a);
+  }
+  EXPECT_EQ(handler->handle(good("GET", "/api/mark")).status, 405);
+  EXPECT_EQ(backend.calls, 2);
 }
 
 TEST_F(HandlerTest, UnknownRouteAndWrongMethodAreAnswered) {

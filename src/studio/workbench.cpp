@@ -39,11 +39,12 @@ json series_json(const std::vector<video::TrackedSeries>& series) {
     json rows = json::array();
     for (const auto& r : s.rows)
       rows.push_back({{"frame", r.frame}, {"t", r.t}, {"x", r.x}, {"y", r.y}, {"x_px", r.x_px}, {"y_px", r.y_px},
-                      {"score", r.score}, {"lost", r.lost}});
+                      {"score", r.score}, {"lost", r.lost}, {"manual", r.manual}});
     a.push_back({{"name", s.name},
                  {"kind", s.kind == video::Target::Kind::point ? "point" : "ellipse"},
                  {"rows", rows},
                  {"lost_ranges", s.lost_ranges},
+                 {"manual_frames", s.manual_frames},
                  {"tracked", s.tracked},
                  {"median_score", s.median_score}});
   }
@@ -113,6 +114,8 @@ json Workbench::open(const fs::path& file) {
   file_ = file;
   jpeg_ = std::move(jpeg);
   frames_ = std::move(frames);
+  width_ = input.info.width;
+  height_ = input.info.height;
   video_ = {{"width", input.info.width}, {"height", input.info.height}, {"fps", input.info.fps},
             {"codec", input.info.codec}, {"calibrated", input.calibration.calibrated}};
   calibration_ = {};
@@ -169,10 +172,60 @@ json Workbench::track(const TrackStart& start) {
   require_open();
   const std::vector<TrackStart> before = starts_;
   auto same = std::find_if(starts_.begin(), starts_.end(), [&](const TrackStart& s) { return s.name == start.name; });
-  if (same != starts_.end())
-    *same = start;  // a new click on a track restarts it there
-  else
+  if (same != starts_.end()) {
+    // A new click on a track restarts it there; its marks after the new start are kept.
+    std::vector<TrackMark> kept;
+    for (const TrackMark& m : same->marks)
+      if (m.frame > start.frame) kept.push_back(m);
+    *same = start;
+    if (same->marks.empty()) same->marks = kept;
+  } else
     starts_.push_back(start);
+  try {
+    run_tracks();
+  } catch (...) {
+    starts_ = before;
+    throw;
+  }
+  autosave();
+  return state();
+}
+
+json Workbench::mark(const MarkInput& m) {
+  require_open();
+  auto start = std::find_if(starts_.begin(), starts_.end(), [&](const TrackStart& s) { return s.name == m.track; });
+  if (start == starts_.end()) {
+    std::string names;
+    for (const auto& s : starts_) names += (names.empty() ? "'" : ", '") + s.name + "'";
+    throw InputError(fmt::format("no track named '{}'{}", m.track,
+                                 names.empty() ? ": start one by clicking the object" : "; the tracks: " + names));
+  }
+  const bool in_clip = std::any_of(frames_.begin(), frames_.end(), [&](const json& f) { return f["frame"] == m.frame; });
+  if (!in_clip)
+    throw InputError(fmt::format("frame {} is not one of the clip's frames ({} to {})", m.frame,
+                                 frames_.front()["frame"].get<int>(), frames_.back()["frame"].get<int>()));
+  if (!m.remove && !(m.x_px >= 0 && m.y_px >= 0 && m.x_px <= width_ - 1 && m.y_px <= height_ - 1))
+    throw InputError(fmt::format("the mark ({}, {}) px is outside the {}x{} image", m.x_px, m.y_px, width_, height_));
+  if (m.frame < start->frame)
+    throw InputError(fmt::format("track '{}' starts at frame {}: a mark must come after its start (click the object "
+                                 "in frame {} to start the track there)", m.track, start->frame, m.frame));
+  const std::vector<TrackStart> before = starts_;
+  auto& marks = start->marks;
+  const auto at = std::find_if(marks.begin(), marks.end(), [&](const TrackMark& k) { return k.frame == m.frame; });
+  if (m.remove) {
+    if (m.frame == start->frame) throw InputError(fmt::format("frame {} is where track '{}' starts: its start cannot be removed", m.frame, m.track));
+    if (at == marks.end()) throw InputError(fmt::format("track '{}' has no mark in frame {}", m.track, m.frame));
+    marks.erase(at);
+  } else if (m.frame == start->frame) {
+    start->x_px = m.x_px;  // the start dragged: the track starts there
+    start->y_px = m.y_px;
+  } else if (at != marks.end()) {
+    at->x_px = m.x_px;
+    at->y_px = m.y_px;
+  } else {
+    marks.push_back({m.frame, m.x_px, m.y_px});
+    std::sort(marks.begin(), marks.end(), [](const TrackMark& a, const TrackMark& b) { return a.frame < b.frame; });
+  }
   try {
     run_tracks();
   } catch (...) {
@@ -188,8 +241,10 @@ void Workbench::run_tracks() {
   o.input = file_.string();
   o.out = beside(".tracks.csv").string();
   o.write_trk = beside(".tracks.trk").string();
-  for (const TrackStart& s : starts_)
+  for (const TrackStart& s : starts_) {
     (s.kind == "ellipse" ? o.ellipse : o.start).push_back(fmt::format("{}={},{}@{}", s.name, s.x_px, s.y_px, s.frame));
+    for (const TrackMark& m : s.marks) o.mark.push_back(fmt::format("{}@{}={},{}", s.name, m.frame, m.x_px, m.y_px));
+  }
   const CalibrationInput& c = calibration_;
   if (c.stick_px)
     o.calibrate = fmt::format("{},{},{},{},{}", (*c.stick_px)[0], (*c.stick_px)[1], (*c.stick_px)[2], (*c.stick_px)[3],

@@ -26,6 +26,8 @@ class Workbench : public Backend {
   std::string frame_jpeg(int step) override;
   nlohmann::json calibrate(const CalibrationInput& c) override;
   nlohmann::json track(const TrackStart& start) override;
+  /// Sets or removes a mark of a track (on its start frame: moves the start) and re-tracks.
+  nlohmann::json mark(const MarkInput& mark) override;
   nlohmann::json forms() override;
   nlohmann::json analyze(const std::string& command, const nlohmann::json& values) override;
   nlohmann::json state() override;
@@ -45,6 +47,7 @@ class Workbench : public Backend {
   std::vector<std::string> jpeg_;       ///< per clip step
   nlohmann::json frames_ = nlohmann::json::array();  ///< per clip step: {frame, t}
   nlohmann::json video_;                ///< width, height, fps, frames
+  int width_ = 0, height_ = 0;          ///< image size, px
   CalibrationInput calibration_;
   std::vector<TrackStart> starts_;
   nlohmann::json tracks_ = nlohmann::json::object();  ///< the last tracking, for the page

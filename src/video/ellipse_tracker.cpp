@@ -422,4 +422,34 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   return s.observe(index, found, phi, score, false, round, rms);
 }
 
+EllipseObservation EllipseTracker::mark(const Frame& frame, double x_px, double y_px) {
+  Impl& s = *impl_;
+  TRIBOLAB_ASSERT(!s.centres.empty(), std::string("EllipseTracker::mark before start"));
+  const cv::Mat& img = frame.bgr.empty() ? frame.gray : frame.bgr;
+  if (!(x_px >= 0 && y_px >= 0 && x_px <= img.cols - 1 && y_px <= img.rows - 1)) {
+    throw InputError("ellipse " + s.name, "the mark " + fmt_point(x_px, y_px) + " of frame " +
+                                              std::to_string(frame.index) + " is outside the image");
+  }
+  double omega = s.spin_per_frame();
+  if (!std::isfinite(omega)) omega = 0;
+  const double phi = s.phi_last + omega * (frame.index - s.index_last);
+  // The motion restarts from the mark: the frames before it may have followed something else.
+  const int steps = std::max(1, frame.index - s.centres.back().index);
+  const double speed = s.centres.size() >= 2
+                           ? std::hypot(s.predict_centre(frame.index).x - s.centres.back().x,
+                                        s.predict_centre(frame.index).y - s.centres.back().y) / steps
+                           : s.speed_hint;
+  s.speed_hint = std::max({s.speed_hint, speed, 1.0});
+  s.centres.clear();
+  s.centres.push_back({frame.index, x_px, y_px});
+  s.phi_last = phi;
+  s.index_last = frame.index;
+  s.lost_run = 0;
+  s.gave_up = false;
+  const bool round = s.a_ref - s.b_ref < std::max(kRoundRatio * s.a_ref, kRoundPx);
+  EllipseObservation o = s.observe(frame.index, Ellipse{x_px, y_px, s.a_ref, s.b_ref, -phi}, phi, 1, false, round, 0);
+  o.centre.manual = true;
+  return o;
+}
+
 }  // namespace tribolab::video

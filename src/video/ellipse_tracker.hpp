@@ -44,6 +44,10 @@ class EllipseTracker {
   /// Returns the ellipse fitted in `first`.
   EllipseObservation start(const Frame& first, double x_px, double y_px, const std::string& name);
   EllipseObservation update(const Frame& frame);
+  /// The user's mark of the centre for this frame (instead of update()): reported at the mark,
+  /// manual, score 1, with the running axes and the predicted orientation; the motion model
+  /// restarts from it (a lost object is searched for there again).
+  EllipseObservation mark(const Frame& frame, double x_px, double y_px);
 
  private:
   struct Impl;

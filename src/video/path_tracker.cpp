@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace tribolab::video {
 namespace {
@@ -52,6 +53,12 @@ constexpr double kRivalMargin = 3;
 // A run of consecutive path points differing from the background by less than this share of
 // the path's median difference (medians over the run and over the path) is background (when that median is well above noise, 2 kFgHalf).
 constexpr double kFgShare = 0.15;
+// Where a manual mark is one of the three points of an acceleration, the path may turn
+// sharply (the user marks a bounce, or a point the tracker had wrong): that acceleration is
+// not gated but costs at most this (the gate's cost), and a mark has no reach limit.
+constexpr double kMarkAccCap = 0.5 * kAccGate * kAccGate;
+// Steps before a mark searched around it as well (the path re-tracks backward from it).
+constexpr int kMarkAheadSteps = 3;
 
 struct Candidate {
   double x = 0, y = 0;  // px
@@ -60,6 +67,7 @@ struct Candidate {
   double fg = 0;        // difference from the background, grey levels
   cv::Mat patch;        // CV_8U, template-sized grey patch at the rounded position
   cv::Point at;         // the patch's centre, px
+  bool manual = false;  // the user's mark: the step's only candidate
 };
 
 struct StepCandidates {
@@ -109,6 +117,7 @@ struct PathTracker::Impl {
   double reach = 0;        // largest motion per frame, px
   cv::Mat templ;           // CV_32F
   std::vector<StepCandidates> steps;  // steps[0]: the start (the click)
+  std::map<int, ManualMark> marks;    // by frame index
   std::vector<cv::Mat> samples;       // background samples (grey)
   int stride = 1, seen = 0;
   cv::Point2d lead[2];            // the last two confident sightings, px
@@ -213,6 +222,7 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   }
   m.templ = templ;
   m.steps.clear();
+  m.marks.clear();
   m.samples.clear();
   m.stride = 1;
   m.seen = 0;
@@ -234,6 +244,25 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   return o;
 }
 
+void PathTracker::set_marks(std::vector<ManualMark> marks) {
+  Impl& m = *impl_;
+  if (m.steps.empty()) throw InputError("path tracker: set_marks() before start()");
+  if (m.steps.size() > 1) throw InputError(m.name, "the marks must be given before the first update()");
+  m.marks.clear();
+  for (const ManualMark& k : marks) {
+    const std::string where = m.name + " mark at frame " + std::to_string(k.frame);
+    if (!(k.x_px >= 0 && k.y_px >= 0 && k.x_px <= m.size.width - 1 && k.y_px <= m.size.height - 1)) {
+      throw InputError(where, "(" + std::to_string(k.x_px) + ", " + std::to_string(k.y_px) + ") px lies outside the " +
+                                  std::to_string(m.size.width) + "x" + std::to_string(m.size.height) + " image");
+    }
+    if (k.frame <= m.steps.front().index) {
+      throw InputError(where, "the track starts at frame " + std::to_string(m.steps.front().index) +
+                                  ": a mark must come after its start (move the start instead)");
+    }
+    if (!m.marks.emplace(k.frame, k).second) throw InputError(where, "two marks on one frame");
+  }
+}
+
 void PathTracker::update(const Frame& frame) {
   if (!impl_ || impl_->steps.empty()) throw InputError("path tracker: update() before start()");
   impl_->update(frame);
@@ -245,6 +274,19 @@ void PathTracker::Impl::update(const Frame& f) {
     throw InputError(name, "frame " + std::to_string(f.index) + " has no grey image of the start frame's size");
   }
   sample(gray);
+  if (const auto mk = marks.find(f.index); mk != marks.end()) {
+    // The user's mark is the frame's only candidate, and a confident sighting.
+    StepCandidates out;
+    out.index = f.index;
+    out.c.push_back(make_candidate(gray, mk->second.x_px, mk->second.y_px, 1));
+    out.c.back().manual = true;
+    lead[0] = lead[1];
+    lead_frames[0] = lead_frames[1];
+    lead[1] = cv::Point2d(mk->second.x_px, mk->second.y_px);
+    lead_frames[1] = static_cast<int>(steps.size());
+    steps.push_back(std::move(out));
+    return;
+  }
   // Where the object can be: within reach (times the frames elapsed) of the best three
   // candidates of the last step that had any and of the best one of the two such steps
   // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
@@ -276,6 +318,13 @@ void PathTracker::Impl::update(const Frame& f) {
     const double k = double(n - lead_frames[1]) / (lead_frames[1] - lead_frames[0]);
     const cv::Point2d at = lead[1] + k * (lead[1] - lead[0]);
     if (at.x >= 0 && at.y >= 0 && at.x < size.width && at.y < size.height) anchors.push_back({at, 1});
+  }
+  // And around the next mark, a few steps ahead: the path re-tracks backward from it, also
+  // where the object was lost or mistaken before the user marked it.
+  if (const auto next = marks.upper_bound(f.index); next != marks.end()) {
+    const int step = std::max(1, f.index - steps.back().index);
+    const int age = (next->first - f.index + step - 1) / step;
+    if (age <= kMarkAheadSteps) anchors.push_back({cv::Point2d(next->second.x_px, next->second.y_px), age});
   }
   StepCandidates out;
   out.index = f.index;
@@ -357,9 +406,20 @@ std::vector<Observation> PathTracker::Impl::finish() {
   for (int t = 1; t < T; ++t) {
     for (Candidate& c : steps[t].c) {
       c.fg = foreground(c);
-      c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
+      c.cost = c.manual ? 0.0 : (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
     }
   }
+  // Manual marks: the path passes through every one (no transition skips a marked step, the
+  // path ends at or after the last).
+  std::vector<int> marks_before(T + 1, 0);  // marked steps among 0 .. t-1
+  int last_mark = 0;
+  for (int t = 0; t < T; ++t) {
+    const bool marked = t > 0 && !steps[t].c.empty() && steps[t].c.front().manual;
+    marks_before[t + 1] = marks_before[t] + (marked ? 1 : 0);
+    if (marked) last_mark = t;
+  }
+  auto skips_mark = [&](int t0, int t1) { return marks_before[t1] - marks_before[t0 + 1] > 0; };  // a mark in (t0, t1)
+  auto manual = [&](int t, int k) { return steps[t].c[k].manual; };
   // States: (step t, candidate k, back step g, candidate j of step t - g): the path's last
   // two points, enough for its acceleration at the next one. off[t][k * G + g - 1] is the
   // first state of the block (k, g); the block holds one state per candidate of t - g.
@@ -376,6 +436,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
     // From the start (no velocity known) a gap does not widen the reach: the object was
     // clicked where it is, and something far away found frames later is something else.
+    if (manual(t0, k0) || manual(t1, k1)) return true;  // the user's mark: anywhere
     return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
   };
   // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
@@ -388,6 +449,10 @@ std::vector<Observation> PathTracker::Impl::finish() {
     const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
                                       : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
     const double sigma = kAccAbs + kAccRel * speed;
+    if (manual(ta, ka) || manual(tb, kb) || manual(tc, kc)) {
+      const double z = std::hypot(a.x, a.y) / sigma;
+      return std::min(0.5 * z * z, kMarkAccCap);
+    }
     if (tc - tb > 1) {
       // Found again after a gap: within reach of where the motion before it leads (linear
       // extrapolation), else something else has been found.
@@ -425,7 +490,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
   for (int t = 1; t < T; ++t) {
     for (State& s : S[t]) {
       const int tp = t - s.g;
-      if (!gate(tp, s.j, t, s.k)) continue;
+      if (skips_mark(tp, t) || !gate(tp, s.j, t, s.k)) continue;
       const double u = steps[t].c[s.k].cost + kMissCost * (s.g - 1);
       if (tp == 0) {
         s.F = static_cast<float>(u);
@@ -455,9 +520,10 @@ std::vector<Observation> PathTracker::Impl::finish() {
   // Backward: the best cost after a state, ending anywhere (the frames left cost kMissCost).
   for (int t = T - 1; t >= 0; --t) {
     for (State& s : S[t]) {
-      double best = kMissCost * (T - 1 - t);
+      double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
       for (int g3 = 1; g3 <= G && t + g3 < T; ++g3) {
         const int t3 = t + g3;
+        if (skips_mark(t, t3)) break;
         for (int k3 = 0; k3 < static_cast<int>(steps[t3].c.size()); ++k3) {
           const auto [a, b] = block(t3, k3, g3);
           const int idx = a + s.k;  // the successor whose previous point is this state's
@@ -473,9 +539,9 @@ std::vector<Observation> PathTracker::Impl::finish() {
   }
   // The best path (forward and backward agree on its cost: F + B is the same along it).
   // (The optimum is also S[0][0].B, the backward pass's best from the start.)
-  double total = kMissCost * (T - 1);  // the start alone, every further frame lost
+  double total = last_mark == 0 ? kMissCost * (T - 1) : kInf;  // the start alone, every further frame lost
   int bt = 0, bs = 0;
-  for (int t = 1; t < T; ++t) {
+  for (int t = std::max(1, last_mark); t < T; ++t) {
     for (int i = 0; i < static_cast<int>(S[t].size()); ++i) {
       const double c = S[t][i].F + kMissCost * (T - 1 - t);
       if (c < total) {
@@ -529,6 +595,16 @@ std::vector<Observation> PathTracker::Impl::finish() {
     o.frame = steps[t].index;
     o.lost = true;
     const int k = chosen[t];
+    if (k < 0 && !steps[t].c.empty() && steps[t].c.front().manual) {
+      // No path reaches the mark (the object hidden longer than max_gap_frames around it): the mark stands.
+      o.x_px = steps[t].c.front().x;
+      o.y_px = steps[t].c.front().y;
+      o.score = 1;
+      o.lost = false;
+      o.manual = true;
+      obs.push_back(o);
+      continue;
+    }
     if (k < 0) {
       ++lost_none;
       obs.push_back(o);
@@ -538,6 +614,13 @@ std::vector<Observation> PathTracker::Impl::finish() {
     o.x_px = c.x;
     o.y_px = c.y;
     o.score = std::clamp(c.ncc, 0.0, 1.0);
+    if (c.manual) {
+      o.lost = false;
+      o.manual = true;
+      o.score = 1;
+      obs.push_back(o);
+      continue;
+    }
     bool rival = false;
     for (int r = 0; r < static_cast<int>(steps[t].c.size()) && !rival; ++r) {
       const Candidate& q = steps[t].c[r];

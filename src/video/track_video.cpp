@@ -53,6 +53,13 @@ std::string TrackVideoOptions::validate() const {
       if (!std::isfinite(t.x_px) || !std::isfinite(t.y_px)) return opt + " " + t.name + ": position must be finite";
       if (t.frame < -1) return opt + " " + t.name + ": the start frame must not be negative";
     }
+    std::set<int> marked;
+    for (const ManualMark& m : t.marks) {
+      const std::string where = field("mark") + " " + t.name + "@" + std::to_string(m.frame);
+      if (!std::isfinite(m.x_px) || !std::isfinite(m.y_px)) return where + ": the position must be finite";
+      if (m.frame < 0) return where + ": the frame must not be negative";
+      if (!marked.insert(m.frame).second) return where + ": two marks on one frame";
+    }
     for (const std::string& n : output_names(t)) {
       if (!names.insert(n).second) return opt + ": the track name '" + n + "' is used twice";
     }
@@ -74,11 +81,12 @@ struct Follower {
 };
 
 TrackedRow make_row(const Frame& f, const VideoInput& in, double x_px, double y_px, double score,
-                    bool lost) {
+                    bool lost, bool manual = false) {
   TrackedRow r;
   r.frame = f.index;
   r.t = f.t;
   r.lost = lost;
+  r.manual = manual && !lost;
   if (lost || !std::isfinite(x_px) || !std::isfinite(y_px)) {
     r.lost = true;
     r.x = r.y = r.x_px = r.y_px = kNaN;
@@ -96,9 +104,10 @@ TrackedRow make_row(const Frame& f, const VideoInput& in, double x_px, double y_
 
 void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<TrackedSeries>& out,
             const Observation& o) {
-  out[w.series[0]].rows.push_back(make_row(f, in, o.x_px, o.y_px, o.score, o.lost));
+  out[w.series[0]].rows.push_back(make_row(f, in, o.x_px, o.y_px, o.score, o.lost, o.manual));
   out[w.series[0]].angle_rad.push_back(o.angle_rad);
   if (o.refound && !o.lost) out[w.series[0]].refound_frames.push_back(f.index);
+  if (o.manual) out[w.series[0]].manual_frames.push_back(f.index);
 }
 
 void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<TrackedSeries>& out,
@@ -106,8 +115,30 @@ void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<Track
   const Observation& c = e.centre;
   const double pos[3][2] = {{c.x_px, c.y_px}, {e.ax_px, e.ay_px}, {e.bx_px, e.by_px}};
   for (int k = 0; k < 3; ++k) {
-    out[w.series[k]].rows.push_back(make_row(f, in, pos[k][0], pos[k][1], c.score, c.lost));
+    // The mark is of the centre; the ends follow from the running axes and orientation.
+    out[w.series[k]].rows.push_back(make_row(f, in, pos[k][0], pos[k][1], c.score, c.lost, c.manual && k == 0));
     out[w.series[k]].angle_rad.push_back(c.angle_rad);
+    if (c.manual && k == 0) out[w.series[k]].manual_frames.push_back(f.index);
+  }
+}
+
+void check_marks(const Follower& w, const VideoInput& in) {
+  for (const ManualMark& m : w.target.marks) {
+    const std::string where = field("mark") + " " + w.target.name + "@" + std::to_string(m.frame);
+    if (!in.clip.contains(m.frame)) {
+      throw InputError(where, "frame " + std::to_string(m.frame) + " is not one of the clip's frames (from " +
+                                  std::to_string(in.clip.start_frame) + " every " + std::to_string(in.clip.step_size) +
+                                  ")");
+    }
+    if (m.frame <= w.start_frame) {
+      throw InputError(where, "the track starts at frame " + std::to_string(w.start_frame) +
+                                  ": a mark must come after its start (to move the start, start the track there)");
+    }
+    if (m.x_px < 0 || m.y_px < 0 || m.x_px > in.info.width - 1 || m.y_px > in.info.height - 1) {
+      throw InputError(where, "the mark (" + io::format_number(m.x_px) + ", " + io::format_number(m.y_px) +
+                                  ") px is outside the " + std::to_string(in.info.width) + "x" +
+                                  std::to_string(in.info.height) + " image");
+    }
   }
 }
 
@@ -269,6 +300,7 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
       w.tracker = PathTracker(options.path);
     }
     resolve_start(w, in);
+    check_marks(w, in);
     for (const std::string& n : output_names(t)) {
       w.series.push_back(result.series.size());
       TrackedSeries s;
@@ -290,15 +322,21 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
       if (!w.started && f.index != w.start_frame) continue;
       std::visit(
           [&](auto& tracker) {
+            using Tracker = std::decay_t<decltype(tracker)>;
+            const auto mark = std::find_if(w.target.marks.begin(), w.target.marks.end(),
+                                           [&](const ManualMark& m) { return m.frame == f.index; });
             if (!w.started) {
               record(w, f, in, result.series, tracker.start(f, w.start_x, w.start_y, w.target.name));
+              if constexpr (std::is_same_v<Tracker, PathTracker>) tracker.set_marks(w.target.marks);
               w.started = true;
-            } else if constexpr (std::is_same_v<std::decay_t<decltype(tracker)>, PathTracker>) {
+            } else if constexpr (std::is_same_v<Tracker, PathTracker>) {
               tracker.update(f);  // answers in finish(), after the last frame
               Frame meta;
               meta.index = f.index;
               meta.t = f.t;
               w.pending.push_back(std::move(meta));
+            } else if (mark != w.target.marks.end()) {
+              record(w, f, in, result.series, tracker.mark(f, mark->x_px, mark->y_px));
             } else {
               record(w, f, in, result.series, tracker.update(f));
             }
@@ -334,6 +372,16 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
     hints.push_back(hint);
   }
   for (TrackedSeries& s : result.series) summarise(s);
+  for (const Follower& w : followers) {
+    const std::vector<int>& done = result.series[w.series[0]].manual_frames;
+    for (const ManualMark& m : w.target.marks) {
+      if (std::find(done.begin(), done.end(), m.frame) == done.end()) {
+        throw InputError(field("mark") + " " + w.target.name + "@" + std::to_string(m.frame),
+                         "frame " + std::to_string(m.frame) + " is beyond the end of the clip (" +
+                             std::to_string(result.frames) + " frames decoded)");
+      }
+    }
+  }
   for (const Follower& w : followers) {
     if (w.target.from_track.empty()) continue;
     for (const auto& m : in.marks_px) {

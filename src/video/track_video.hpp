@@ -25,6 +25,10 @@ struct Target {
   double x_px = 0, y_px = 0;  ///< start position in image pixels
   int frame = -1;          ///< start frame (-1: the clip's first frame)
   std::string from_track;  ///< non-empty: start from this project track's first mark
+  /// The user's corrections (docs/cli.md#track-video, --mark): frames after the start, each
+  /// reported as marked (manual, score 1), the tracking restarting from each; an ellipse's
+  /// marks are of its centre.
+  std::vector<ManualMark> marks;
 };
 
 struct TrackVideoOptions {
@@ -50,6 +54,7 @@ struct TrackedRow {
   double x_px = 0, y_px = 0;  ///< image position, px
   double score = 0;        ///< [0, 1]
   bool lost = false;       ///< no reliable position (x, y, x_px, y_px are NaN)
+  bool manual = false;     ///< the user's mark (Target::marks), not tracked; score 1
 };
 
 struct TrackedSeries;
@@ -86,6 +91,7 @@ struct TrackedSeries {
   /// Frames where the point was found again after more than max_gap_frames lost in a row
   /// (its motion model restarted there); empty for an ellipse.
   std::vector<int> refound_frames;
+  std::vector<int> manual_frames;      ///< frames of the user's marks (Target::marks)
   double median_score = 0;
   std::optional<HumanComparison> vs_human;
 };

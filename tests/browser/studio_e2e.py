@@ -2,7 +2,10 @@
 short throw (`bounce render`), start `tribolab studio` on its folder, open the video, calibrate
 by clicking a stick's two ends and the origin, click the ball, wait for the track, step through
 every frame checking the drawn point against the rendered truth, run the `track kinematics` form
-and read g back from its listing. Screenshots of each step are left in OUT_DIR.
+and read g back from its listing, then drag the ball's point in one frame off by a few pixels
+(a correction), wait for the re-tracking, and read the saved .trk back with `track import`:
+the dragged frame holds the dragged position, the others are still on the ball. Screenshots of
+each step are left in OUT_DIR.
 
     /usr/bin/python3 tests/browser/studio_e2e.py TRIBOLAB OUT_DIR
 """
@@ -58,7 +61,7 @@ def main(tribolab, out):
             options.add_argument(a)
         driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
         try:
-            run_page(driver, url, out, truth, scale, render["ball_start_px"], render["origin_px"])
+            dragged = run_page(driver, url, out, truth, scale, render["ball_start_px"], render["origin_px"])
         finally:
             logs = driver.get_log("browser")
             driver.quit()
@@ -68,11 +71,30 @@ def main(tribolab, out):
     finally:
         server.terminate()
         server.wait(timeout=10)
-    # The autosaved Tracker project reads back with `track import`: the ball on every frame.
-    imported = json.loads(subprocess.run([tribolab, "track", "import", os.path.join(folder, "throw.avi.tracks.trk"), "--json"],
+    # The saved Tracker project reads back with `track import`: the ball on every frame, the
+    # dragged frame where it was dragged (the CSV beside it gives that frame's world position).
+    imported_csv = os.path.join(out, "studio_imported.csv")
+    imported = json.loads(subprocess.run([tribolab, "track", "import", os.path.join(folder, "throw.avi.tracks.trk"),
+                                          "--track", "ball", "--out", imported_csv, "--json"],
                                          check=True, capture_output=True, text=True).stdout)
     if "ball" not in json.dumps(imported):
         fail("the saved .trk holds no track 'ball': " + json.dumps(imported)[:300])
+    with open(os.path.join(folder, "throw.avi.tracks.csv")) as f:
+        saved = {int(r["frame"]): r for r in csv.DictReader(f) if r["track"] == "ball"}
+    with open(imported_csv) as f:
+        back = {int(r["frame"]): r for r in csv.DictReader(f) if r["track"] == "ball"}
+    frame, x_px, y_px = dragged
+    row = saved[frame]
+    if abs(float(row["x_px"]) - x_px) > 1e-3 or abs(float(row["y_px"]) - y_px) > 1e-3 or float(row["score"]) != 1:
+        fail("the saved CSV's frame %d is %s, %s px (score %s), dragged to %.3f, %.3f" %
+             (frame, row["x_px"], row["y_px"], row["score"], x_px, y_px))
+    if frame not in back or abs(float(back[frame]["x"]) - float(row["x"])) > 1e-9 or \
+            abs(float(back[frame]["y"]) - float(row["y"])) > 1e-9:
+        fail("track import reads frame %d of the .trk as %s, the CSV says %s, %s" %
+             (frame, back.get(frame), row["x"], row["y"]))
+    if sorted(back) != sorted(truth):
+        fail("track import reads frames %s from the .trk, the clip has %s" % (sorted(back), sorted(truth)))
+    print("dragged frame %d read back from the .trk at x = %s m, y = %s m" % (frame, back[frame]["x"], back[frame]["y"]))
     print("ok studio")
 
 
@@ -156,6 +178,49 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px):
     if abs(ay + 9.8) > 0.1 or unit != "m/s^2":
         fail("the first flight's ay is %s %s, the render's is -9.8 m/s^2" % (ay, unit))
     print("first flight: ay = %s %s" % (ay, unit))
+
+    # Correct: drag the ball's point in frame DRAG 4 px right and 3 px up (8, -6 CSS px), off
+    # the truth on purpose so that the saved position is seen to be the dragged one.
+    DRAG = 10
+    while int(canvas.get_attribute("data-frame")) != DRAG:
+        current = int(canvas.get_attribute("data-frame"))
+        driver.find_element(By.ID, "next" if current < DRAG else "prev").click()
+        wait.until(lambda d: canvas.get_attribute("data-frame") != str(current))
+    before = [p for p in json.loads(canvas.get_attribute("data-drawn")) if p["track"] == "ball"][0]
+    if before["manual"]:
+        fail("frame %d is drawn as a manual mark before any drag" % DRAG)
+    dx = round((before["x_px"] + 0.5) * ZOOM + 1 - canvas.size["width"] / 2)
+    dy = round((before["y_px"] + 0.5) * ZOOM + 1 - canvas.size["height"] / 2)
+    ActionChains(driver).move_to_element_with_offset(canvas, dx, dy).click_and_hold() \
+        .move_by_offset(4, -3).move_by_offset(4, -3).release().perform()
+    wait.until(lambda d: "re-tracking ball: " in status() or error())
+    if error():
+        fail("re-tracking after the drag: " + error())
+    wait.until(lambda d: [p for p in json.loads(canvas.get_attribute("data-drawn") or "[]")
+                          if p["track"] == "ball" and p["manual"]])
+    after = [p for p in json.loads(canvas.get_attribute("data-drawn")) if p["track"] == "ball"][0]
+    if abs(after["x_px"] - (before["x_px"] + 4)) > 1e-3 or abs(after["y_px"] - (before["y_px"] - 3)) > 1e-3:
+        fail("frame %d dragged from %.3f, %.3f by (4, -3) px is drawn at %.3f, %.3f" %
+             (DRAG, before["x_px"], before["y_px"], after["x_px"], after["y_px"]))
+    if "marks of ball at frame %d" % DRAG not in driver.find_element(By.ID, "marks-text").text:
+        fail("the mark is not listed: " + driver.find_element(By.ID, "marks-text").text)
+    driver.save_screenshot(os.path.join(out, "studio_4_corrected.png"))
+    # The other frames: the ball again (the ellipse tracker restarts from the mark; the frames
+    # before it are as they were).
+    worst = 0
+    for frame in sorted(truth):
+        if frame == DRAG:
+            continue
+        driver.execute_script("showFrame(arguments[0])", sorted(truth).index(frame))
+        wait.until(lambda d: canvas.get_attribute("data-frame") == str(frame))
+        drawn = [p for p in json.loads(canvas.get_attribute("data-drawn")) if p["track"] == "ball"]
+        if not drawn or drawn[0]["frame"] != frame or drawn[0]["manual"]:
+            fail("after the drag, frame %d: no tracked ball drawn" % frame)
+        worst = max(worst, math.hypot(drawn[0]["x_px"] - truth[frame][0], drawn[0]["y_px"] - truth[frame][1]))
+    if worst > 1.0:
+        fail("after the drag, a drawn point is %.2f px from the truth" % worst)
+    print("after the drag: largest distance of another drawn point from the truth: %.3f px" % worst)
+    return DRAG, after["x_px"], after["y_px"]
 
 
 if __name__ == "__main__":

@@ -1,0 +1,186 @@
+// Manual marks (docs/theory.md#manual-marks): a user's correction of one frame makes the
+// trackers report that frame as marked and track on from it; the path tracker re-tracks the
+// frames before it as well, frames far from it are left as they were.
+#include "numerics/error.hpp"
+#include "video/path_tracker.hpp"
+#include "video/point_tracker.hpp"
+#include "video/render.hpp"
+#include "video/test_videos.hpp"
+#include "video/track_video.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <vector>
+#include <unistd.h>
+
+namespace tribolab::video {
+namespace {
+
+// The scene: our ball rolls right at 4 px/frame, bounces off a wall at frame 15 (x = 100 px)
+// and rolls back; a look-alike rolls through the bounce point along the way ours would have
+// gone on (right and slightly down). A smooth-motion prior prefers the look-alike after the
+// bounce: the path tracker reports the frames after it lost (the look-alike explains them as
+// well) or on the look-alike, the frame tracker follows the look-alike.
+constexpr int kMarkSceneFrames = 31;
+constexpr int kBounceFrame = 15;
+
+cv::Point2d marked_scene_ours(int i) {
+  return i <= kBounceFrame ? cv::Point2d(40 + 4.0 * i, 80) : cv::Point2d(100 - 4.0 * (i - kBounceFrame), 80);
+}
+cv::Point2d marked_scene_other(int i) { return {104 + 4.0 * (i - 16), 80 + 3.0 * (i - 16)}; }
+
+RenderOptions marked_scene_options() {
+  RenderOptions o;
+  o.width = 240;
+  o.height = 160;
+  o.fps = 30;
+  o.shutter_fraction = 0;
+  o.supersample = 2;
+  o.background = RenderOptions::Background::texture;
+  o.noise_sigma = 2;
+  return o;
+}
+
+Scene marked_scene() {
+  return [](double t) {
+    const int i = static_cast<int>(std::lround(t * 30));
+    std::vector<ShapePose> shapes;
+    for (const cv::Point2d c : {marked_scene_other(i), marked_scene_ours(i)}) {
+      ShapePose s;
+      s.cx_px = c.x;
+      s.cy_px = c.y;
+      s.a_px = s.b_px = 6;
+      s.colour = {40, 40, 200};
+      shapes.push_back(s);
+    }
+    return shapes;
+  };
+}
+
+std::vector<Observation> path_track_marked_scene(const std::vector<ManualMark>& marks) {
+  const RenderOptions o = marked_scene_options();
+  const Scene scene = marked_scene();
+  PathTracker tracker;
+  const cv::Point2d p0 = marked_scene_ours(0);
+  tracker.start(testing::rendered_frame(scene, 0, o), p0.x, p0.y, "ball");
+  tracker.set_marks(marks);
+  for (int i = 1; i < kMarkSceneFrames; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+  return tracker.finish();
+}
+
+bool on_ours(const Observation& ob) {
+  const cv::Point2d t = marked_scene_ours(ob.frame);
+  return !ob.lost && std::hypot(ob.x_px - t.x, ob.y_px - t.y) < 1.5;
+}
+
+TEST(ManualMark, PathTrackerRetracksBothWaysFromAMarkAndLeavesFarFramesAlone) {
+  const std::vector<Observation> before = path_track_marked_scene({});
+  ASSERT_EQ(before.size(), static_cast<std::size_t>(kMarkSceneFrames - 1));
+  int right_after = 0, wrong_after = 0;
+  for (const Observation& ob : before) {
+    right_after += ob.frame > kBounceFrame && on_ours(ob);
+    wrong_after += ob.frame > kBounceFrame && !ob.lost && !on_ours(ob);
+  }
+  std::printf("without a mark: of the %d frames after the bounce %d on our ball, %d reported on something else\n",
+              kMarkSceneFrames - 1 - kBounceFrame, right_after, wrong_after);
+  ASSERT_LE(right_after, 3) << "the scene no longer fools the tracker: the test shows nothing";
+
+  constexpr int kMarkFrame = 22;
+  const cv::Point2d m = marked_scene_ours(kMarkFrame) + cv::Point2d(0.4, -0.3);  // a click is never exact
+  const std::vector<Observation> after = path_track_marked_scene({{kMarkFrame, m.x, m.y}});
+  ASSERT_EQ(after.size(), before.size());
+  int fixed = 0;
+  for (std::size_t k = 0; k < after.size(); ++k) {
+    const Observation& a = after[k];
+    const Observation& b = before[k];
+    if (a.frame == kMarkFrame) {
+      EXPECT_TRUE(a.manual);
+      EXPECT_FALSE(a.lost);
+      EXPECT_EQ(a.score, 1);
+      EXPECT_EQ(a.x_px, m.x);
+      EXPECT_EQ(a.y_px, m.y);
+      continue;
+    }
+    EXPECT_FALSE(a.manual) << a.frame;
+    if (a.frame <= kBounceFrame - 4) {
+      // Far from the mark (and before the bounce): exactly as without it.
+      EXPECT_EQ(a.lost, b.lost) << a.frame;
+      EXPECT_EQ(a.x_px, b.x_px) << a.frame;
+      EXPECT_EQ(a.y_px, b.y_px) << a.frame;
+    } else if (a.frame > kBounceFrame) {
+      fixed += on_ours(a);
+      EXPECT_FALSE(!a.lost && !on_ours(a)) << "frame " << a.frame << " reported on something else";
+    }
+  }
+  // Backward (16..21) and forward (23..30) from the mark: on our ball, at most the frame right
+  // after the bounce left lost.
+  std::printf("with a mark at frame %d: %d frames after the bounce on our ball\n", kMarkFrame, fixed);
+  EXPECT_GE(fixed, kMarkSceneFrames - 1 - kBounceFrame - 1 - 1);
+}
+
+TEST(ManualMark, PathTrackerRefusesMarksItCannotHonour) {
+  const RenderOptions o = marked_scene_options();
+  PathTracker tracker;
+  tracker.start(testing::rendered_frame(marked_scene(), 0, o), 40, 80, "ball");
+  EXPECT_THROW(tracker.set_marks({{5, 300, 20}}), InputError);              // outside the image
+  EXPECT_THROW(tracker.set_marks({{0, 41, 80}}), InputError);               // the start frame
+  EXPECT_THROW(tracker.set_marks({{5, 60, 80}, {5, 61, 80}}), InputError);  // twice one frame
+}
+
+TEST(ManualMark, FrameTrackerRestartsFromAMark) {
+  // The frame-to-frame tracker follows the look-alike after the bounce (or loses the ball);
+  // from a mark on our ball it follows ours again.
+  const std::string dir = (std::filesystem::temp_directory_path() / ("manual_mark_" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(dir);
+  const std::string video = dir + "/bounce.avi";
+  write_video(video, marked_scene(), kMarkSceneFrames, marked_scene_options());
+  TrackVideoOptions o;
+  o.offline_points = false;
+  o.thumbnails = 0;
+  Target t;
+  t.name = "ball";
+  t.x_px = marked_scene_ours(0).x;
+  t.y_px = marked_scene_ours(0).y;
+  t.frame = 0;
+  o.targets.push_back(t);
+  const TrackVideoResult plain = track_video(video, o);
+  constexpr int kMarkFrame = 20;
+  o.targets[0].marks.push_back({kMarkFrame, marked_scene_ours(kMarkFrame).x, marked_scene_ours(kMarkFrame).y});
+  const TrackVideoResult marked = track_video(video, o);
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(marked.series[0].rows.size(), plain.series[0].rows.size());
+  EXPECT_EQ(marked.series[0].manual_frames, std::vector<int>{kMarkFrame});
+  int plain_on = 0, marked_on = 0;
+  for (std::size_t k = 0; k < plain.series[0].rows.size(); ++k) {
+    const TrackedRow& a = plain.series[0].rows[k];
+    const TrackedRow& b = marked.series[0].rows[k];
+    if (a.frame < kMarkFrame) {  // before the mark: the frame tracker does not go back
+      EXPECT_EQ(a.lost, b.lost) << a.frame;
+      if (!a.lost) {
+        EXPECT_EQ(a.x_px, b.x_px) << a.frame;
+      }
+      continue;
+    }
+    if (a.frame == kMarkFrame) {
+      EXPECT_TRUE(b.manual);
+      EXPECT_EQ(b.score, 1);
+      continue;
+    }
+    auto on = [](const TrackedRow& r) {
+      const cv::Point2d c = marked_scene_ours(r.frame);
+      return !r.lost && std::hypot(r.x_px - c.x, r.y_px - c.y) < 1.5;
+    };
+    plain_on += on(a);
+    marked_on += on(b);
+  }
+  std::printf("frames after the mark on our ball: %d without it, %d with it\n", plain_on, marked_on);
+  EXPECT_LE(plain_on, 2);
+  EXPECT_GE(marked_on, kMarkSceneFrames - 1 - kMarkFrame - 1);
+}
+
+}  // namespace
+}  // namespace tribolab::video
