@@ -122,6 +122,39 @@ TEST(ManualMark, PathTrackerRetracksBothWaysFromAMarkAndLeavesFarFramesAlone) {
   EXPECT_GE(fixed, kMarkSceneFrames - 1 - kBounceFrame - 1 - 1);
 }
 
+TEST(ManualMark, PathTrackerRetracksWithoutTheFramesAsIfMarkedFromTheStart) {
+  // finish() again after set_marks (the studio's correction): the same answer as a tracker
+  // given the mark before the first frame, bit for bit, without a frame.
+  const RenderOptions o = marked_scene_options();
+  const Scene scene = marked_scene();
+  PathTracker tracker;
+  tracker.start(testing::rendered_frame(scene, 0, o), marked_scene_ours(0).x, marked_scene_ours(0).y, "ball");
+  for (int i = 1; i < kMarkSceneFrames; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+  const std::vector<Observation> plain = tracker.finish();
+  const ManualMark m{22, marked_scene_ours(22).x, marked_scene_ours(22).y};
+  tracker.set_marks({m});
+  const std::vector<Observation> again = tracker.finish();
+  const std::vector<Observation> fresh = path_track_marked_scene({m});
+  ASSERT_EQ(again.size(), fresh.size());
+  int changed = 0;
+  for (std::size_t k = 0; k < again.size(); ++k) {
+    EXPECT_EQ(again[k].lost, fresh[k].lost) << again[k].frame;
+    EXPECT_EQ(again[k].manual, fresh[k].manual) << again[k].frame;
+    if (!fresh[k].lost) {
+      EXPECT_EQ(again[k].x_px, fresh[k].x_px) << again[k].frame;
+      EXPECT_EQ(again[k].y_px, fresh[k].y_px) << again[k].frame;
+    }
+    changed += again[k].lost != plain[k].lost;
+  }
+  EXPECT_GT(changed, 5);  // the mark did change the track
+  tracker.set_marks({});  // and removed, the track is as at first
+  const std::vector<Observation> removed = tracker.finish();
+  for (std::size_t k = 0; k < removed.size(); ++k) {
+    EXPECT_EQ(removed[k].lost, plain[k].lost) << removed[k].frame;
+    EXPECT_EQ(removed[k].x_px, plain[k].x_px) << removed[k].frame;
+  }
+}
+
 TEST(ManualMark, PathTrackerRefusesMarksItCannotHonour) {
   const RenderOptions o = marked_scene_options();
   PathTracker tracker;
@@ -180,6 +213,66 @@ TEST(ManualMark, FrameTrackerRestartsFromAMark) {
   std::printf("frames after the mark on our ball: %d without it, %d with it\n", plain_on, marked_on);
   EXPECT_LE(plain_on, 2);
   EXPECT_GE(marked_on, kMarkSceneFrames - 1 - kMarkFrame - 1);
+}
+
+TEST(ManualMark, RetrackingASessionEqualsTrackingWithTheMarks) {
+  const std::string dir = (std::filesystem::temp_directory_path() / ("manual_retrack_" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(dir);
+  const std::string video = dir + "/bounce.avi";
+  write_video(video, marked_scene(), kMarkSceneFrames, marked_scene_options());
+  TrackVideoOptions o;
+  o.thumbnails = 2;
+  Target t;
+  t.name = "ball";
+  t.x_px = marked_scene_ours(0).x;
+  t.y_px = marked_scene_ours(0).y;
+  t.frame = 0;
+  Target e = t;  // a frame-to-frame point on the same ball
+  e.name = "framed";
+  o.targets = {t};
+  TrackSession session;
+  const TrackVideoResult plain = track_video(video, o, &session);
+  ASSERT_FALSE(session.empty());
+  std::vector<Target> marked = o.targets;
+  marked[0].marks.push_back({22, marked_scene_ours(22).x, marked_scene_ours(22).y});
+  const std::optional<TrackVideoResult> again = retrack(session, marked);
+  ASSERT_TRUE(again.has_value());
+  o.targets = marked;
+  const TrackVideoResult fresh = track_video(video, o);
+  ASSERT_EQ(again->series[0].rows.size(), fresh.series[0].rows.size());
+  int differ_from_plain = 0;
+  for (std::size_t k = 0; k < fresh.series[0].rows.size(); ++k) {
+    const TrackedRow& a = again->series[0].rows[k];
+    const TrackedRow& b = fresh.series[0].rows[k];
+    EXPECT_EQ(a.lost, b.lost) << a.frame;
+    EXPECT_EQ(a.manual, b.manual) << a.frame;
+    if (!b.lost) {
+      EXPECT_EQ(a.x_px, b.x_px) << a.frame;
+    }
+    differ_from_plain += a.lost != plain.series[0].rows[k].lost;
+  }
+  EXPECT_GT(differ_from_plain, 5);
+  EXPECT_EQ(again->series[0].manual_frames, std::vector<int>{22});
+  EXPECT_EQ(again->warnings, fresh.warnings);
+  EXPECT_EQ(again->thumbnails.size(), fresh.thumbnails.size());
+  // A bad mark: refused, the session as it was.
+  std::vector<Target> bad = marked;
+  bad[0].marks[0].x_px = 1e6;
+  EXPECT_THROW(retrack(session, bad), InputError);
+  EXPECT_EQ(retrack(session, marked)->series[0].manual_frames, std::vector<int>{22});
+  // Other targets, or a frame-to-frame track's marks: no re-tracking, track afresh.
+  std::vector<Target> moved = marked;
+  moved[0].x_px += 1;
+  EXPECT_FALSE(retrack(session, moved).has_value());
+  TrackVideoOptions f = o;
+  f.offline_points = false;
+  f.targets = {e};
+  TrackSession framed;
+  track_video(video, f, &framed);
+  std::vector<Target> framed_marked = f.targets;
+  framed_marked[0].marks.push_back({20, marked_scene_ours(20).x, marked_scene_ours(20).y});
+  EXPECT_FALSE(retrack(framed, framed_marked).has_value());
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -57,8 +57,6 @@ constexpr double kFgShare = 0.15;
 // sharply (the user marks a bounce, or a point the tracker had wrong): that acceleration is
 // not gated but costs at most this (the gate's cost), and a mark has no reach limit.
 constexpr double kMarkAccCap = 0.5 * kAccGate * kAccGate;
-// Steps before a mark searched around it as well (the path re-tracks backward from it).
-constexpr int kMarkAheadSteps = 3;
 
 struct Candidate {
   double x = 0, y = 0;  // px
@@ -116,8 +114,11 @@ struct PathTracker::Impl {
   double radius = 0;       // object radius from scale selection, px
   double reach = 0;        // largest motion per frame, px
   cv::Mat templ;           // CV_32F
-  std::vector<StepCandidates> steps;  // steps[0]: the start (the click)
+  // The candidates found in every step, steps[0] the start (the click): they do not depend on
+  // the marks, so that finish() can be run again with other marks without a frame.
+  std::vector<StepCandidates> steps;
   std::map<int, ManualMark> marks;    // by frame index
+  bool fg_done = false;               // the candidates' fg and cost are computed (at the first finish())
   std::vector<cv::Mat> samples;       // background samples (grey)
   int stride = 1, seen = 0;
   cv::Point2d lead[2];            // the last two confident sightings, px
@@ -223,6 +224,7 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   m.templ = templ;
   m.steps.clear();
   m.marks.clear();
+  m.fg_done = false;
   m.samples.clear();
   m.stride = 1;
   m.seen = 0;
@@ -247,7 +249,6 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
 void PathTracker::set_marks(std::vector<ManualMark> marks) {
   Impl& m = *impl_;
   if (m.steps.empty()) throw InputError("path tracker: set_marks() before start()");
-  if (m.steps.size() > 1) throw InputError(m.name, "the marks must be given before the first update()");
   m.marks.clear();
   for (const ManualMark& k : marks) {
     const std::string where = m.name + " mark at frame " + std::to_string(k.frame);
@@ -274,19 +275,6 @@ void PathTracker::Impl::update(const Frame& f) {
     throw InputError(name, "frame " + std::to_string(f.index) + " has no grey image of the start frame's size");
   }
   sample(gray);
-  if (const auto mk = marks.find(f.index); mk != marks.end()) {
-    // The user's mark is the frame's only candidate, and a confident sighting.
-    StepCandidates out;
-    out.index = f.index;
-    out.c.push_back(make_candidate(gray, mk->second.x_px, mk->second.y_px, 1));
-    out.c.back().manual = true;
-    lead[0] = lead[1];
-    lead_frames[0] = lead_frames[1];
-    lead[1] = cv::Point2d(mk->second.x_px, mk->second.y_px);
-    lead_frames[1] = static_cast<int>(steps.size());
-    steps.push_back(std::move(out));
-    return;
-  }
   // Where the object can be: within reach (times the frames elapsed) of the best three
   // candidates of the last step that had any and of the best one of the two such steps
   // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
@@ -318,13 +306,6 @@ void PathTracker::Impl::update(const Frame& f) {
     const double k = double(n - lead_frames[1]) / (lead_frames[1] - lead_frames[0]);
     const cv::Point2d at = lead[1] + k * (lead[1] - lead[0]);
     if (at.x >= 0 && at.y >= 0 && at.x < size.width && at.y < size.height) anchors.push_back({at, 1});
-  }
-  // And around the next mark, a few steps ahead: the path re-tracks backward from it, also
-  // where the object was lost or mistaken before the user marked it.
-  if (const auto next = marks.upper_bound(f.index); next != marks.end()) {
-    const int step = std::max(1, f.index - steps.back().index);
-    const int age = (next->first - f.index + step - 1) / step;
-    if (age <= kMarkAheadSteps) anchors.push_back({cv::Point2d(next->second.x_px, next->second.y_px), age});
   }
   StepCandidates out;
   out.index = f.index;
@@ -400,14 +381,33 @@ std::vector<Observation> PathTracker::finish() {
 }
 
 std::vector<Observation> PathTracker::Impl::finish() {
-  const int T = static_cast<int>(steps.size());
+  const int T = static_cast<int>(this->steps.size());
   const int G = opt.max_gap_frames + 1;  // largest step between two path points
-  // Unary costs: likeness and difference from the background median.
-  for (int t = 1; t < T; ++t) {
-    for (Candidate& c : steps[t].c) {
-      c.fg = foreground(c);
-      c.cost = c.manual ? 0.0 : (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
+  // Unary costs: likeness and difference from the background median (once: the background
+  // samples are complete at the first finish()).
+  if (!fg_done) {
+    for (int t = 1; t < T; ++t) {
+      for (Candidate& c : this->steps[t].c) {
+        c.fg = foreground(c);
+        c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
+      }
     }
+    fg_done = true;
+  }
+  // The steps the path is chosen among: a marked step's only candidate is its mark (cost 0;
+  // no fg: it takes no part in the background check below).
+  std::vector<StepCandidates> steps = this->steps;
+  for (int t = 1; t < T; ++t) {
+    const auto mk = marks.find(steps[t].index);
+    if (mk == marks.end()) continue;
+    Candidate c;
+    c.x = mk->second.x_px;
+    c.y = mk->second.y_px;
+    c.ncc = 1;
+    c.cost = 0;
+    c.fg = std::numeric_limits<double>::quiet_NaN();
+    c.manual = true;
+    steps[t].c.assign(1, c);
   }
   // Manual marks: the path passes through every one (no transition skips a marked step, the
   // path ends at or after the last).
@@ -565,7 +565,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
   // the path (a still patch of texture reached across a gap) is not the object.
   std::vector<double> path_fg;
   for (int t = 1; t < T; ++t) {
-    if (chosen[t] >= 0) path_fg.push_back(steps[t].c[chosen[t]].fg);
+    if (chosen[t] >= 0 && !steps[t].c[chosen[t]].manual) path_fg.push_back(steps[t].c[chosen[t]].fg);
   }
   double typical_fg = 0;
   if (!path_fg.empty()) {
@@ -583,9 +583,15 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     int e = t;
     std::vector<double> v;
-    while (e < T && chosen[e] >= 0) v.push_back(steps[e].c[chosen[e]].fg), ++e;
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    for (int i = t; i < e; ++i) run_fg[i] = v[v.size() / 2];
+    for (; e < T && chosen[e] >= 0; ++e) {
+      if (!steps[e].c[chosen[e]].manual) v.push_back(steps[e].c[chosen[e]].fg);
+    }
+    double run = typical_fg;  // a run of marks alone is not background
+    if (!v.empty()) {
+      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+      run = v[v.size() / 2];
+    }
+    for (int i = t; i < e; ++i) run_fg[i] = run;
     t = e;
   }
   std::vector<Observation> obs;

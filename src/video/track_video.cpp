@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <type_traits>
 #include <variant>
@@ -122,16 +123,16 @@ void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<Track
   }
 }
 
-void check_marks(const Follower& w, const VideoInput& in) {
-  for (const ManualMark& m : w.target.marks) {
-    const std::string where = field("mark") + " " + w.target.name + "@" + std::to_string(m.frame);
+void check_marks(const Target& target, int start_frame, const VideoInput& in) {
+  for (const ManualMark& m : target.marks) {
+    const std::string where = field("mark") + " " + target.name + "@" + std::to_string(m.frame);
     if (!in.clip.contains(m.frame)) {
       throw InputError(where, "frame " + std::to_string(m.frame) + " is not one of the clip's frames (from " +
                                   std::to_string(in.clip.start_frame) + " every " + std::to_string(in.clip.step_size) +
                                   ")");
     }
-    if (m.frame <= w.start_frame) {
-      throw InputError(where, "the track starts at frame " + std::to_string(w.start_frame) +
+    if (m.frame <= start_frame) {
+      throw InputError(where, "the track starts at frame " + std::to_string(start_frame) +
                                   ": a mark must come after its start (to move the start, start the track there)");
     }
     if (m.x_px < 0 || m.y_px < 0 || m.x_px > in.info.width - 1 || m.y_px > in.info.height - 1) {
@@ -286,8 +287,25 @@ HumanComparison compare_with_human(const TrackedSeries& s, const track::Track& h
   return c;
 }
 
-TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options) {
-  if (const auto err = options.validate(); !err.empty()) throw InputError(err);
+/// What the frame loop leaves for the end of the tracking (and for a re-tracking).
+struct TrackSession::Impl {
+  std::string input;
+  TrackVideoResult streamed;       // input, frames, and the rows recorded while streaming
+  std::vector<Follower> followers;
+  std::vector<std::pair<Frame, cv::Mat>> thumbs;  // frame facts and its downscaled image
+  double scale = 1;                // thumbnails' scale
+  std::vector<std::string> reader_warnings;
+};
+
+TrackSession::TrackSession() = default;
+TrackSession::~TrackSession() = default;
+bool TrackSession::empty() const { return !impl; }
+
+namespace {
+
+/// Starts every target and streams the clip through its tracker (the rows of the frame
+/// trackers; the path trackers collect candidates).
+void stream(TrackSession::Impl& session, const std::string& input, const TrackVideoOptions& options) {
   TrackVideoResult result;
   result.input = open_input(input, options.source);
   const VideoInput& in = result.input;
@@ -300,7 +318,7 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
       w.tracker = PathTracker(options.path);
     }
     resolve_start(w, in);
-    check_marks(w, in);
+    check_marks(w.target, w.start_frame, in);
     for (const std::string& n : output_names(t)) {
       w.series.push_back(result.series.size());
       TrackedSeries s;
@@ -315,7 +333,8 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
   const int expected = reader.expected_steps();
   const std::set<int> thumb_steps = thumbnail_steps(options.thumbnails, expected);
   const double scale = std::min(1.0, double(kThumbWidth) / std::max(1, in.info.width));
-  std::vector<std::pair<Frame, cv::Mat>> thumbs;  // frame facts and its downscaled image
+  session.scale = scale;
+  std::vector<std::pair<Frame, cv::Mat>>& thumbs = session.thumbs;
   Frame f;
   while (reader.next(f)) {
     for (Follower& w : followers) {
@@ -361,6 +380,21 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
                            std::to_string(result.frames) + " frames decoded)");
     }
   }
+  session.reader_warnings = reader.warnings();
+  session.input = input;
+  session.streamed = std::move(result);
+  session.followers = std::move(followers);
+}
+
+/// The end of a tracking: the path trackers' answers, summaries, checks, thumbnails, warnings.
+TrackVideoResult conclude(TrackSession::Impl& session) {
+  TrackVideoResult result;
+  result.input = session.streamed.input;
+  result.series = session.streamed.series;
+  result.frames = session.streamed.frames;
+  const VideoInput& in = result.input;
+  std::vector<Follower>& followers = session.followers;
+  const std::string& input = session.input;
   std::vector<std::string> hints;  // per follower: why a path track lost frames
   for (Follower& w : followers) {
     std::string hint;
@@ -390,8 +424,9 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
       }
     }
   }
-  for (auto& [meta, img] : thumbs) {
-    draw_tracks(img, scale, meta.index, result.series);
+  for (const auto& [meta, small] : session.thumbs) {
+    cv::Mat img = small.clone();  // drawn again at every re-tracking
+    draw_tracks(img, session.scale, meta.index, result.series);
     Thumbnail t;
     t.frame = meta.index;
     t.t = meta.t;
@@ -401,7 +436,7 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
     result.thumbnails.push_back(std::move(t));
   }
   result.warnings = in.warnings;
-  for (const auto& w : reader.warnings()) result.warnings.push_back(w);
+  for (const auto& w : session.reader_warnings) result.warnings.push_back(w);
   for (std::size_t wi = 0; wi < followers.size(); ++wi) {  // an ellipse's ends are lost with its centre
     const Follower& w = followers[wi];
     const TrackedSeries& s = result.series[w.series[0]];
@@ -429,6 +464,48 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
   }
   return result;
 }
+
+}  // namespace
+
+TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options, TrackSession* keep) {
+  if (const auto err = options.validate(); !err.empty()) throw InputError(err);
+  auto session = std::make_unique<TrackSession::Impl>();
+  stream(*session, input, options);
+  TrackVideoResult result = conclude(*session);
+  if (keep != nullptr) keep->impl = std::move(session);
+  return result;
+}
+
+std::optional<TrackVideoResult> retrack(TrackSession& session, const std::vector<Target>& targets) {
+  if (!session.impl || targets.size() != session.impl->followers.size()) return std::nullopt;
+  TrackSession::Impl& s = *session.impl;
+  std::vector<std::size_t> changed;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const Target& a = targets[i];
+    const Follower& w = s.followers[i];
+    const Target& b = w.target;
+    if (a.kind != b.kind || a.name != b.name || a.x_px != b.x_px || a.y_px != b.y_px || a.frame != b.frame ||
+        a.from_track != b.from_track) {
+      return std::nullopt;
+    }
+    const bool same = a.marks.size() == b.marks.size() &&
+                      std::equal(a.marks.begin(), a.marks.end(), b.marks.begin(), [](const ManualMark& x, const ManualMark& y) {
+                        return x.frame == y.frame && x.x_px == y.x_px && x.y_px == y.y_px;
+                      });
+    if (same) continue;
+    if (!std::holds_alternative<PathTracker>(w.tracker)) return std::nullopt;  // streams forward: decode again
+    changed.push_back(i);
+  }
+  for (std::size_t i : changed) check_marks(targets[i], s.followers[i].start_frame, s.streamed.input);  // before any change
+  for (std::size_t i : changed) {
+    Follower& w = s.followers[i];
+    std::get<PathTracker>(w.tracker).set_marks(targets[i].marks);
+    w.target.marks = targets[i].marks;
+  }
+  return conclude(s);
+}
+
+
 
 track::TrackSet to_track_set(const TrackVideoResult& result) {
   track::TrackSet set;
