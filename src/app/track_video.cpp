@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <optional>
 #include <cmath>
 #include <memory>
 
@@ -220,6 +222,40 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
   return j;
 }
 
+/// Everything a tracking depends on but the marks and the output paths (a session is re-used
+/// only for the same): the input file (and its size and time), targets, calibration, trackers.
+std::string session_key(const TrackVideoOptions& a) {
+  std::string k;
+  auto add = [&](const std::string& s) { k += std::to_string(s.size()) + ":" + s + ";"; };
+  auto num = [&](const std::optional<double>& v) { add(v ? io::format_number(*v) : "-"); };
+  add(a.input);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(a.input, ec);
+  add(ec ? "?" : std::to_string(size));
+  const auto time = std::filesystem::last_write_time(a.input, ec);
+  add(ec ? "?" : std::to_string(time.time_since_epoch().count()));
+  for (const auto* list : {&a.start, &a.ellipse, &a.from_track}) {
+    add(std::to_string(list->size()));
+    for (const auto& s : *list) add(s);
+  }
+  num(a.scale);
+  add(a.calibrate);
+  add(a.origin);
+  num(a.axes_deg);
+  num(a.fps);
+  num(a.time_scale);
+  add(a.entry);
+  num(a.min_score);
+  num(a.patch ? std::optional<double>(*a.patch) : std::nullopt);
+  add(a.point_tracker);
+  num(a.search ? std::optional<double>(*a.search) : std::nullopt);
+  num(a.max_turn_deg);
+  num(a.ellipse_min_score);
+  num(a.max_gap);
+  add(a.report.empty() ? "no report" : "report");  // thumbnails or none
+  return k;
+}
+
 }  // namespace
 
 TrackVideoResult track_video(const TrackVideoOptions& options) {
@@ -230,7 +266,18 @@ TrackVideoResult track_video(const TrackVideoOptions& options) {
   io::AtomicFile csv(options.out);
   std::unique_ptr<io::AtomicFile> trk;
   if (!options.write_trk.empty()) trk = std::make_unique<io::AtomicFile>(options.write_trk);
-  video::TrackVideoResult r = video::track_video(options.input, o);
+  std::optional<video::TrackVideoResult> again;
+  const std::string key = options.session ? session_key(options) : std::string();
+  if (options.session && !options.session->empty() && options.session->key == key) {
+    again = video::retrack(*options.session, o.targets);
+  }
+  video::TrackVideoResult r;
+  if (again) {
+    r = std::move(*again);
+  } else {
+    r = video::track_video(options.input, o, options.session.get());
+    if (options.session) options.session->key = key;
+  }
   video::write_csv(csv.stream(), r);
   if (trk) {
     const io::TrkWriteSpec spec = video::trk_spec(r, options.write_trk, r.warnings);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,10 @@ struct TrackVideoOptions {
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   /// Called after each frame with (frames done, frames expected); may be empty.
   std::function<void(int, int)> progress;
+  /// Kept between runs (the studio): a run whose options differ from the session's only in
+  /// `mark` re-tracks from it (video::retrack: no decoding, no search) when it can; every run
+  /// leaves its tracking there. Empty: track afresh.
+  std::shared_ptr<video::TrackSession> session;
 };
 
 struct TrackVideoResult {

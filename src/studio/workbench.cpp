@@ -119,6 +119,7 @@ json Workbench::open(const fs::path& file) {
   video_ = {{"width", input.info.width}, {"height", input.info.height}, {"fps", input.info.fps},
             {"codec", input.info.codec}, {"calibrated", input.calibration.calibrated}};
   calibration_ = {};
+  session_ = std::make_shared<video::TrackSession>();
   starts_.clear();
   tracks_ = json::object();
   analysis_ = nullptr;
@@ -252,6 +253,8 @@ void Workbench::run_tracks() {
   if (c.origin_px) o.origin = fmt::format("{},{}", (*c.origin_px)[0], (*c.origin_px)[1]);
   o.fps = c.fps;
   o.time_scale = c.time_scale;
+  if (!session_) session_ = std::make_shared<video::TrackSession>();
+  o.session = session_;
   const app::TrackVideoResult r = app::track_video(o);
   tracks_ = {{"summary", r.json}, {"series", series_json(r.series)}, {"csv", relative(o.out)}, {"trk", relative(o.write_trk)}};
   analysis_ = nullptr;  // it was of the tracks before

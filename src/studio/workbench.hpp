@@ -11,8 +11,13 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace tribolab::video {
+class TrackSession;
+}
 
 namespace tribolab::studio {
 
@@ -52,6 +57,9 @@ class Workbench : public Backend {
   std::vector<TrackStart> starts_;
   nlohmann::json tracks_ = nlohmann::json::object();  ///< the last tracking, for the page
   nlohmann::json analysis_ = nullptr;   ///< the last analysis
+  /// The last tracking, kept so that a mark re-tracks a path-tracked point without decoding
+  /// the video again (app::TrackVideoOptions::session).
+  std::shared_ptr<video::TrackSession> session_;
 };
 
 }  // namespace tribolab::studio

@@ -148,6 +148,12 @@ TEST_F(WorkbenchTest, AMarkRetracksIsSavedAndBadMarksAreClearErrors) {
   r = again.calibrate(c);  // re-tracks every track from the saved clicks and marks
   EXPECT_EQ(r["tracks"]["series"][0]["manual_frames"], json::array({kMarked}));
   EXPECT_EQ(r["tracks"]["series"][0]["rows"][kMarked]["x_px"].get<double>(), m.x);
+  // The mark above re-tracked from the kept session (no decoding); tracking afresh gives the
+  // same pixels in every frame.
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_EQ(r["tracks"]["series"][0]["rows"][k]["x_px"], rows[k]["x_px"]) << k;
+    EXPECT_EQ(r["tracks"]["series"][0]["rows"][k]["y_px"], rows[k]["y_px"]) << k;
+  }
   // Removed: the frame is tracked again.
   r = again.mark({"patch", kMarked, true, 0, 0});
   EXPECT_TRUE(r["tracks"]["series"][0]["manual_frames"].empty());
