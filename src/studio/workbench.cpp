@@ -1,5 +1,6 @@
 #include "studio/workbench.hpp"
 
+#include "app/bounce_analyze.hpp"
 #include "app/result_keys.hpp"
 #include "app/track_kinematics.hpp"
 #include "app/track_video.hpp"
@@ -260,21 +261,42 @@ void Workbench::run_tracks() {
   analysis_ = nullptr;  // it was of the tracks before
 }
 
-json Workbench::forms() {
+namespace {
+
+/// A form: the command's declared fields but those the studio sets, and its declared result keys.
+template <class O>
+json form_of(const app::Fields<O>& declared, const app::ResultKeys& results) {
   json fields = json::array();
-  for (const json& f : app::fields_schema(app::track_kinematics_fields()))
+  for (const json& f : app::fields_schema(declared))
     if (!set_by_the_studio(f["name"])) fields.push_back(f);
-  return {{"track kinematics",
-           {{"fields", fields},
-            {"results", app::result_keys_schema(app::track_kinematics_result_keys())}}}};
+  return {{"fields", fields}, {"results", app::result_keys_schema(results)}};
+}
+
+}  // namespace
+
+json Workbench::forms() {
+  return {{"track kinematics", form_of(app::track_kinematics_fields(), app::track_kinematics_result_keys())},
+          {"bounce analyze", form_of(app::bounce_analyze_fields(), app::bounce_analyze_result_keys())}};
 }
 
 json Workbench::analyze(const std::string& command, const json& values) {
   require_open();
-  if (command != "track kinematics") throw InputError("the studio offers the analysis 'track kinematics', not '" + command + "'");
+  if (command != "track kinematics" && command != "bounce analyze")
+    throw InputError("the studio offers the analyses 'track kinematics' and 'bounce analyze', not '" + command + "'");
   if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");
   for (auto it = values.begin(); it != values.end(); ++it)
     if (set_by_the_studio(it.key())) throw InputError(field(it.key()), "is set by the studio: its tracks are in s and m");
+  if (command == "bounce analyze") {
+    app::BounceAnalyzeOptions o;
+    apply_form_values(o, app::bounce_analyze_fields(), values);
+    o.file = (root_ / tracks_["csv"].get<std::string>()).string();
+    o.bounces_out = beside(".bounce.csv").string();
+    const app::BounceAnalyzeResult r = app::bounce_analyze(o);
+    analysis_ = {{"command", command}, {"values", values}, {"result", r.json}, {"out", relative(o.bounces_out)},
+                 {"results", app::result_keys_schema(app::bounce_analyze_result_keys())}};
+    autosave();
+    return state();
+  }
   app::TrackKinematicsOptions o;
   apply_form_values(o, app::track_kinematics_fields(), values);
   o.input.file = (root_ / tracks_["csv"].get<std::string>()).string();

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <unistd.h>
@@ -162,6 +163,28 @@ TEST_F(WorkbenchTest, AMarkRetracksIsSavedAndBadMarksAreClearErrors) {
   r = again.mark({"patch", 0, false, 31, 60});
   EXPECT_EQ(r["starts"][0]["x"].get<double>(), 31);
   EXPECT_TRUE(r["starts"][0]["marks"].empty());
+}
+
+TEST_F(WorkbenchTest, BounceAnalyzeFormIsItsDeclaredFields) {
+  Workbench wb(root);
+  const json forms = wb.forms();
+  ASSERT_TRUE(forms.contains("bounce analyze"));
+  std::vector<std::string> names;
+  for (const json& f : forms["bounce analyze"]["fields"]) names.push_back(f["name"]);
+  for (const char* want : {"track_a", "track_b", "a", "b", "mass", "inertia", "floor_y", "contact_duration", "impact"})
+    EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+  for (const char* studio : {"time_scale", "length_unit"})  // the tracks are in s and m
+    EXPECT_EQ(std::find(names.begin(), names.end(), studio), names.end()) << studio;
+  bool unit_of_floor = false;
+  for (const json& f : forms["bounce analyze"]["fields"]) unit_of_floor |= f["name"] == "floor_y" && f["unit"] == "m";
+  EXPECT_TRUE(unit_of_floor);
+  EXPECT_FALSE(forms["bounce analyze"]["results"].empty());
+  wb.open(root / "patch.avi");
+  EXPECT_THROW(wb.analyze("bounce analyze", {{"track_a", "patch"}, {"track_b", "patch"}}), InputError);  // not tracked yet
+  wb.track({"patch", "point", 30, 60, 0, {}});
+  EXPECT_THROW(wb.analyze("bounce analyze", {{"track_a", "patch"}, {"track_b", "patch"}, {"mass", -1}}), InputError);
+  EXPECT_THROW(wb.analyze("bounce analyze", {{"track_a", "patch"}, {"track_b", "nosuch"}}), InputError);
+  EXPECT_THROW(wb.analyze("bounce analyze", {{"bounces_out", "/tmp/x.csv"}}), InputError);  // the studio's file
 }
 
 TEST_F(WorkbenchTest, NoOutputThroughASymlinkOutOfTheFolder) {
