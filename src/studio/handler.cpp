@@ -2,6 +2,7 @@
 
 #include "numerics/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 
@@ -142,9 +143,23 @@ json to_json(const TrackStart& s) {
 }
 
 Handler::Handler(const std::filesystem::path& root, AccessRules rules, Assets assets, Backend& backend)
-    : root_(std::filesystem::canonical(root)), rules_(std::move(rules)), assets_(assets), backend_(backend) {}
+    : root_(std::filesystem::canonical(root)), rules_(std::move(rules)), assets_(assets), backend_(backend),
+      tokens_(rules_.request_burst), refilled_(std::chrono::steady_clock::now()) {}
 
 Response Handler::handle(const Request& request) {
+  {
+    // The rate limit first: a flood (of good or bad requests) costs one comparison each.
+    std::lock_guard lock(rate_mutex_);
+    const auto now = std::chrono::steady_clock::now();
+    tokens_ = std::min(rules_.request_burst,
+                       tokens_ + rules_.requests_per_second * std::chrono::duration<double>(now - refilled_).count());
+    refilled_ = now;
+    if (tokens_ < 1) {
+      return json_error(429, "too many requests: the studio answers at most " +
+                                 std::to_string(static_cast<long>(rules_.requests_per_second)) + " a second");
+    }
+    tokens_ -= 1;
+  }
   try {
     const auto target = parse_target(request.target);
     if (!target) return json_error(400, "the request target is malformed");
@@ -177,6 +192,33 @@ Response Handler::route(const Request& request, const Target& target) {
   }
   if (path.rfind("/api/", 0) != 0) return json_error(404, "no such page: " + path);
 
+  // While an action runs: how far it is, and stopping it (no lock: the backend's are thread-safe).
+  if (path == "/api/progress") {
+    need(get);
+    return json_ok(backend_.progress());
+  }
+  if (path == "/api/cancel") {
+    need(post);
+    return json_ok(backend_.cancel());
+  }
+  // One action at a time: another asked meanwhile is refused, not queued behind it.
+  const bool action = path == "/api/open" || path == "/api/calibration" || path == "/api/track" ||
+                      path == "/api/mark" || path == "/api/analyze";
+  struct ActionFlag {
+    std::atomic<bool>* flag = nullptr;
+    ~ActionFlag() {
+      if (flag) *flag = false;
+    }
+  } running;
+  if (action && request.method == "POST") {
+    bool idle = false;
+    if (!action_running_.compare_exchange_strong(idle, true)) {
+      const nlohmann::json p = backend_.progress();
+      throw BadRequest{409, "another action is running (" + p.value("action", std::string("an action")) +
+                                "): wait for it to end, or cancel it (POST /api/cancel)"};
+    }
+    running.flag = &action_running_;
+  }
   std::lock_guard lock(backend_mutex_);
   if (path == "/api/files") {
     need(get);

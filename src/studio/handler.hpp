@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <mutex>
 #include <optional>
@@ -76,6 +78,12 @@ class Backend {
   virtual nlohmann::json forms() = 0;                                    ///< the analyses' declared fields
   virtual nlohmann::json analyze(const std::string& command, const nlohmann::json& values) = 0;
   virtual nlohmann::json state() = 0;                                    ///< the project as autosaved
+  /// The long action under way: {"running", "action", "done", "expected"} (frames). Called
+  /// while another thread runs an action: must be thread-safe.
+  virtual nlohmann::json progress() = 0;
+  /// Asks the long action under way to stop (it ends with an InputError, the project as
+  /// before it); nothing when none runs. Thread-safe as progress().
+  virtual nlohmann::json cancel() = 0;
 };
 
 /// What the page is made of: the HTML+JS page and Plotly.js (page.hpp, report/embedded.hpp).
@@ -88,7 +96,10 @@ class Handler {
  public:
   /// `root`: the folder the studio serves (made canonical here; must exist).
   Handler(const std::filesystem::path& root, AccessRules rules, Assets assets, Backend& backend);
-  /// The answer to `request`; never throws. One request reaches the backend at a time.
+  /// The answer to `request`; never throws. One request reaches the backend at a time, but
+  /// progress and cancel, which reach it while an action runs; an action (open, calibrate,
+  /// track, mark, analyze) asked while another runs is answered 409 at once, not queued.
+  /// More requests than the rules' rate are answered 429.
   Response handle(const Request& request);
   const std::filesystem::path& root() const { return root_; }
 
@@ -99,6 +110,10 @@ class Handler {
   Assets assets_;
   Backend& backend_;
   std::mutex backend_mutex_;
+  std::atomic<bool> action_running_{false};
+  std::mutex rate_mutex_;
+  double tokens_ = 0;                                   ///< the rate limit's bucket
+  std::chrono::steady_clock::time_point refilled_;
 };
 
 }  // namespace tribolab::studio

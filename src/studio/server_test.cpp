@@ -31,6 +31,8 @@ struct EchoBackend : Backend {
   json forms() override { return json::object(); }
   json analyze(const std::string& c, const json&) override { return {{"command", c}}; }
   json state() override { return json::object(); }
+  json progress() override { return {{"running", false}}; }
+  json cancel() override { return {{"cancelling", false}}; }
 };
 
 /// Sends raw bytes to 127.0.0.1:port and returns what comes back (until the server closes).

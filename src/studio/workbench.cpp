@@ -62,6 +62,44 @@ bool set_by_the_studio(const std::string& name) {
 
 Workbench::Workbench(fs::path root) : root_(fs::canonical(root)) {}
 
+class Workbench::Action {
+ public:
+  Action(Workbench& wb, const char* what) : wb_(wb) {
+    wb_.cancel_ = false;
+    wb_.done_ = 0;
+    wb_.expected_ = 0;
+    wb_.action_ = what;
+    wb_.running_ = true;
+  }
+  ~Action() {
+    wb_.running_ = false;
+    wb_.cancel_ = false;
+  }
+  Action(const Action&) = delete;
+  Action& operator=(const Action&) = delete;
+
+ private:
+  Workbench& wb_;
+};
+
+void Workbench::step(int done, int expected) {
+  done_ = done;
+  expected_ = expected;
+  if (cancel_) throw InputError(std::string(action_.load()) + " cancelled: the project is as it was before");
+}
+
+json Workbench::progress() {
+  const bool running = running_;
+  return {{"running", running}, {"action", running ? action_.load() : ""}, {"done", done_.load()},
+          {"expected", expected_.load()}};
+}
+
+json Workbench::cancel() {
+  const bool running = running_;
+  if (running) cancel_ = true;
+  return {{"cancelling", running}};
+}
+
 fs::path Workbench::beside(const std::string& suffix) const {
   const fs::path p = file_.parent_path() / (file_.filename().string() + suffix);
   // The file is inside the folder; a symlink of this name pointing out of it is refused.
@@ -93,8 +131,10 @@ json Workbench::files() {
 }
 
 json Workbench::open(const fs::path& file) {
+  Action action(*this, "opening");
   video::VideoInput input = video::open_input(file.string(), video::SourceOptions{});
   video::FrameReader reader(input);
+  const int expected = reader.expected_steps();
   std::vector<std::string> jpeg;
   json frames = json::array();
   std::size_t total = 0;
@@ -110,6 +150,7 @@ json Workbench::open(const fs::path& file) {
                                                   kMaxFrameBytes >> 20, f.index));
     jpeg.emplace_back(buf.begin(), buf.end());
     frames.push_back({{"frame", f.index}, {"t", f.t}});
+    step(static_cast<int>(jpeg.size()), std::max(expected, static_cast<int>(jpeg.size())));
   }
   if (jpeg.empty()) throw InputError(file.string(), "the clip holds no frame");
   file_ = file;
@@ -153,6 +194,7 @@ std::string Workbench::frame_jpeg(int step) {
 
 json Workbench::calibrate(const CalibrationInput& c) {
   require_open();
+  Action action(*this, "calibrating");
   if (c.stick_px && !(c.stick_length_m > 0)) throw InputError("'length' of the stick must be positive, m");
   if (c.stick_px && std::hypot((*c.stick_px)[2] - (*c.stick_px)[0], (*c.stick_px)[3] - (*c.stick_px)[1]) < 1)
     throw InputError("the two ends of the stick are less than a pixel apart");
@@ -172,6 +214,7 @@ json Workbench::calibrate(const CalibrationInput& c) {
 
 json Workbench::track(const TrackStart& start) {
   require_open();
+  Action action(*this, "tracking");
   const std::vector<TrackStart> before = starts_;
   auto same = std::find_if(starts_.begin(), starts_.end(), [&](const TrackStart& s) { return s.name == start.name; });
   if (same != starts_.end()) {
@@ -195,6 +238,7 @@ json Workbench::track(const TrackStart& start) {
 
 json Workbench::mark(const MarkInput& m) {
   require_open();
+  Action action(*this, "re-tracking");
   auto start = std::find_if(starts_.begin(), starts_.end(), [&](const TrackStart& s) { return s.name == m.track; });
   if (start == starts_.end()) {
     std::string names;
@@ -256,6 +300,7 @@ void Workbench::run_tracks() {
   o.time_scale = c.time_scale;
   if (!session_) session_ = std::make_shared<video::TrackSession>();
   o.session = session_;
+  o.progress = [this](int done, int expected) { step(done, expected); };
   const app::TrackVideoResult r = app::track_video(o);
   tracks_ = {{"summary", r.json}, {"series", series_json(r.series)}, {"csv", relative(o.out)}, {"trk", relative(o.write_trk)}};
   analysis_ = nullptr;  // it was of the tracks before
@@ -281,6 +326,7 @@ json Workbench::forms() {
 
 json Workbench::analyze(const std::string& command, const json& values) {
   require_open();
+  Action action(*this, "analysing");
   if (command != "track kinematics" && command != "bounce analyze")
     throw InputError("the studio offers the analyses 'track kinematics' and 'bounce analyze', not '" + command + "'");
   if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");

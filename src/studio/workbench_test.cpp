@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <thread>
 #include <filesystem>
 #include <unistd.h>
 
@@ -185,6 +187,60 @@ TEST_F(WorkbenchTest, BounceAnalyzeFormIsItsDeclaredFields) {
   EXPECT_THROW(wb.analyze("bounce analyze", {{"track_a", "patch"}, {"track_b", "patch"}, {"mass", -1}}), InputError);
   EXPECT_THROW(wb.analyze("bounce analyze", {{"track_a", "patch"}, {"track_b", "nosuch"}}), InputError);
   EXPECT_THROW(wb.analyze("bounce analyze", {{"bounces_out", "/tmp/x.csv"}}), InputError);  // the studio's file
+}
+
+TEST_F(WorkbenchTest, ACancelledTrackingLeavesTheProjectAsItWas) {
+  // A longer clip (400 frames of the disc going back and forth): cancelled from another thread
+  // as soon as its progress shows frames done, the tracking ends with an InputError, no track
+  // and no output is left, and the next tracking runs.
+  video::RenderOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.fps = 50;
+  o.background = video::RenderOptions::Background::plain;
+  o.noise_sigma = 1;
+  const auto scene = [](double t) {
+    video::ShapePose disc;
+    disc.cx_px = 160 + 100 * std::sin(t);
+    disc.cy_px = 120;
+    disc.a_px = disc.b_px = 12;
+    disc.colour = cv::Scalar(90, 160, 90);
+    disc.mark = true;
+    disc.mark_size_px = 15;
+    return std::vector<video::ShapePose>{disc};
+  };
+  video::write_video((root / "long.avi").string(), scene, 400, o);
+  Workbench wb(root);
+  wb.open(root / "long.avi");
+  EXPECT_FALSE(wb.progress()["running"].get<bool>());
+  EXPECT_FALSE(wb.cancel()["cancelling"].get<bool>());  // nothing to cancel
+  std::atomic<bool> stop_watching{false};
+  std::thread canceller([&] {
+    while (!stop_watching) {
+      const json p = wb.progress();
+      if (p["running"].get<bool>() && p["done"].get<int>() > 0) {
+        EXPECT_EQ(p["action"], "tracking");
+        EXPECT_EQ(p["expected"], 400);
+        EXPECT_TRUE(wb.cancel()["cancelling"].get<bool>());
+        return;
+      }
+      std::this_thread::yield();
+    }
+  });
+  std::string message;
+  try {
+    wb.track({"disc", "point", 160, 120, 0, {}});
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  stop_watching = true;
+  canceller.join();
+  EXPECT_NE(message.find("tracking cancelled"), std::string::npos) << message;
+  EXPECT_TRUE(wb.state()["starts"].empty());
+  EXPECT_FALSE(fs::exists(root / "long.avi.tracks.csv"));
+  EXPECT_FALSE(wb.progress()["running"].get<bool>());
+  const json s = wb.track({"disc", "point", 160, 120, 0, {}});  // not cancelled: the flag was the last action's
+  EXPECT_EQ(s["tracks"]["series"][0]["rows"].size(), 400u);
 }
 
 TEST_F(WorkbenchTest, NoOutputThroughASymlinkOutOfTheFolder) {

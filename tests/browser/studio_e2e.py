@@ -139,14 +139,16 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     click_image(round(origin_px[0]) + 0.5, round(origin_px[1]) + 0.5)  # the render's, to a pixel (only shifts x, y)
     clicked_origin = [float(v) for v in driver.find_element(By.ID, "origin-text").text.split(":")[1].split("px")[0].split(",")]
     driver.find_element(By.ID, "apply-calibration").click()
-    wait.until(lambda d: "calibrating: " in status())
+    # (while an action runs the status shows its progress, "WHAT: frame N of M"; it ends "WHAT: done" or "WHAT: failed")
+    ended = lambda what: status() in (what + ": done", what + ": failed")
+    wait.until(lambda d: ended("calibrating"))
     if error():
         fail("calibration: " + error())
 
     # Track: one click on the ball in frame 0.
     driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
     click_image(*ball_start)
-    wait.until(lambda d: "tracking: " in status() or error())
+    wait.until(lambda d: ended("tracking"))
     wait.until(lambda d: canvas.get_attribute("data-drawn") not in (None, "", "[]") or error())
     if error():
         fail("tracking: " + error())
@@ -223,7 +225,7 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     dy = round((before["y_px"] + 0.5) * ZOOM + 1 - canvas.size["height"] / 2)
     ActionChains(driver).move_to_element_with_offset(canvas, dx, dy).click_and_hold() \
         .move_by_offset(2, -1).move_by_offset(2, -2).release().perform()
-    wait.until(lambda d: "re-tracking ball: " in status() or error())
+    wait.until(lambda d: ended("re-tracking ball"))
     if error():
         fail("re-tracking after the drag: " + error())
     wait.until(lambda d: [p for p in json.loads(canvas.get_attribute("data-drawn") or "[]")
