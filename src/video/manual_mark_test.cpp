@@ -113,6 +113,7 @@ TEST(ManualMark, PathTrackerRetracksBothWaysFromAMarkAndLeavesFarFramesAlone) {
       EXPECT_EQ(a.y_px, b.y_px) << a.frame;
     } else if (a.frame > kBounceFrame) {
       fixed += on_ours(a);
+      if (!on_ours(a)) std::printf("with the mark, frame %d is %s\n", a.frame, a.lost ? "lost" : "elsewhere");
       EXPECT_FALSE(!a.lost && !on_ours(a)) << "frame " << a.frame << " reported on something else";
     }
   }
