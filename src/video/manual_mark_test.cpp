@@ -165,9 +165,10 @@ TEST(ManualMark, PathTrackerRefusesMarksItCannotHonour) {
   EXPECT_THROW(tracker.set_marks({{5, 60, 80}, {5, 61, 80}}), InputError);  // twice one frame
 }
 
-TEST(ManualMark, FrameTrackerRestartsFromAMark) {
+TEST(ManualMark, FrameTrackerRestartsFromAMarkBothWays) {
   // The frame-to-frame tracker follows the look-alike after the bounce (or loses the ball);
-  // from a mark on our ball it follows ours again.
+  // from a mark on our ball it follows ours again, forward, and backward (a fresh tracker run
+  // over the held frames in reverse) until it meets the forward track before the bounce.
   const std::string dir = (std::filesystem::temp_directory_path() / ("manual_mark_" + std::to_string(::getpid()))).string();
   std::filesystem::create_directories(dir);
   const std::string video = dir + "/bounce.avi";
@@ -188,15 +189,25 @@ TEST(ManualMark, FrameTrackerRestartsFromAMark) {
   std::filesystem::remove_all(dir);
   ASSERT_EQ(marked.series[0].rows.size(), plain.series[0].rows.size());
   EXPECT_EQ(marked.series[0].manual_frames, std::vector<int>{kMarkFrame});
-  int plain_on = 0, marked_on = 0;
+  auto on = [](const TrackedRow& r) {
+    const cv::Point2d c = marked_scene_ours(r.frame);
+    return !r.lost && std::hypot(r.x_px - c.x, r.y_px - c.y) < 1.5;
+  };
+  int plain_on = 0, marked_on = 0, plain_back = 0, marked_back = 0;
   for (std::size_t k = 0; k < plain.series[0].rows.size(); ++k) {
     const TrackedRow& a = plain.series[0].rows[k];
     const TrackedRow& b = marked.series[0].rows[k];
-    if (a.frame < kMarkFrame) {  // before the mark: the frame tracker does not go back
+    if (a.frame <= kBounceFrame) {  // where the forward track was right: as it was
       EXPECT_EQ(a.lost, b.lost) << a.frame;
       if (!a.lost) {
         EXPECT_EQ(a.x_px, b.x_px) << a.frame;
       }
+      continue;
+    }
+    if (a.frame < kMarkFrame) {  // after the bounce, before the mark: re-tracked backward
+      EXPECT_FALSE(b.manual);
+      plain_back += on(a);
+      marked_back += on(b);
       continue;
     }
     if (a.frame == kMarkFrame) {
@@ -204,16 +215,15 @@ TEST(ManualMark, FrameTrackerRestartsFromAMark) {
       EXPECT_EQ(b.score, 1);
       continue;
     }
-    auto on = [](const TrackedRow& r) {
-      const cv::Point2d c = marked_scene_ours(r.frame);
-      return !r.lost && std::hypot(r.x_px - c.x, r.y_px - c.y) < 1.5;
-    };
     plain_on += on(a);
     marked_on += on(b);
   }
-  std::printf("frames after the mark on our ball: %d without it, %d with it\n", plain_on, marked_on);
+  std::printf("frames after the mark on our ball: %d without it, %d with it; between the bounce and the mark: %d, %d\n",
+              plain_on, marked_on, plain_back, marked_back);
   EXPECT_LE(plain_on, 2);
   EXPECT_GE(marked_on, kMarkSceneFrames - 1 - kMarkFrame - 1);
+  EXPECT_LE(plain_back, 1);
+  EXPECT_EQ(marked_back, kMarkFrame - kBounceFrame - 1);  // frames 16..19 all on our ball
 }
 
 TEST(ManualMark, RetrackingASessionEqualsTrackingWithTheMarks) {

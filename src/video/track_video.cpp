@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <optional>
 #include <set>
@@ -79,7 +80,17 @@ struct Follower {
   bool started = false;
   std::vector<Frame> pending;  // PathTracker: the frames (index, t; no image) it answers at the end
   std::vector<std::size_t> series;  // indices into the result's series
+  // Frame and ellipse trackers with marks: the frames just before the next mark (copies),
+  // re-tracked backward from it when it is reached; and the last frame they may reach back to.
+  std::deque<Frame> recent;
+  int reach_back_to = 0;
 };
+
+/// Frames before a mark that a frame or ellipse tracker re-tracks backward from it (copies of
+/// them are held while the mark approaches: 16 frames of 1080p are 130 MB).
+constexpr std::size_t kBackwardFrames = 16;
+/// A backward and a forward position this close (px) agree: the forward track is kept from there.
+constexpr double kAgreePx = 2;
 
 TrackedRow make_row(const Frame& f, const VideoInput& in, double x_px, double y_px, double score,
                     bool lost, bool manual = false) {
@@ -303,6 +314,77 @@ bool TrackSession::empty() const { return !impl; }
 
 namespace {
 
+/// The rows of `w` from frame `m`'s mark backward: a fresh tracker of the follower's kind started
+/// at the mark runs over the held frames in reverse (their indices mirrored, 2 m - k, so that
+/// they increase as the trackers expect), and replaces the forward rows until the two agree
+/// (within kAgreePx) or the backward one is lost; never at or before `w.reach_back_to`.
+void track_backward(Follower& w, const Frame& marked, const ManualMark& mk, const VideoInput& in,
+                    std::vector<TrackedSeries>& out, const TrackVideoOptions& options) {
+  const auto mirrored = [&](const Frame& f) {
+    Frame g = f;  // shares the images
+    g.index = 2 * marked.index - f.index;
+    return g;
+  };
+  const bool ellipse = std::holds_alternative<EllipseTracker>(w.tracker);
+  std::vector<EllipseObservation> back;  // per frame from the mark backward (a point's in .centre)
+  try {
+    if (ellipse) {
+      EllipseTracker t(options.ellipse);
+      back.push_back(t.start(mirrored(marked), mk.x_px, mk.y_px, w.target.name));
+      for (auto it = w.recent.rbegin(); it != w.recent.rend() && it->index > w.reach_back_to; ++it) {
+        back.push_back(t.update(mirrored(*it)));
+        if (back.back().centre.lost) break;
+      }
+    } else {
+      PointTracker t(options.point);
+      EllipseObservation e;
+      e.centre = t.start(mirrored(marked), mk.x_px, mk.y_px, w.target.name);
+      back.push_back(e);
+      for (auto it = w.recent.rbegin(); it != w.recent.rend() && it->index > w.reach_back_to; ++it) {
+        e.centre = t.update(mirrored(*it));
+        back.push_back(e);
+        if (e.centre.lost) break;
+      }
+    }
+  } catch (const InputError&) {
+    return;  // no object to start on at the mark (too little texture, no contrasting ball): forward only
+  }
+  TrackedSeries& centre = out[w.series[0]];
+  const std::size_t at_mark = centre.rows.size() - 1;  // the mark's row, just recorded
+  // An ellipse's ends: the backward tracker labels them afresh; A is the end nearest the
+  // forward A at the mark, and the orientation continues the forward one.
+  bool swap = false;
+  double turn = 0;
+  if (ellipse) {
+    const TrackedRow& fa = out[w.series[1]].rows[at_mark];
+    const EllipseObservation& b0 = back.front();
+    swap = std::hypot(b0.ax_px - fa.x_px, b0.ay_px - fa.y_px) > std::hypot(b0.bx_px - fa.x_px, b0.by_px - fa.y_px);
+    const double a0 = b0.centre.angle_rad + (swap ? kPi : 0);
+    turn = 2 * kPi * std::round((centre.angle_rad[at_mark] - a0) / (2 * kPi)) + (swap ? kPi : 0);
+  } else {
+    turn = centre.angle_rad[at_mark];  // the backward pattern's angle is relative to the mark's
+  }
+  for (std::size_t k = 1; k < back.size() && k <= at_mark; ++k) {
+    const Observation& b = back[k].centre;
+    const std::size_t row = at_mark - k;
+    TrackedRow& f = centre.rows[row];
+    if (b.lost) break;
+    if (!f.lost && std::hypot(f.x_px - b.x_px, f.y_px - b.y_px) <= kAgreePx) break;
+    Frame meta;
+    meta.index = f.frame;
+    meta.t = f.t;
+    const double pos[3][2] = {{b.x_px, b.y_px},
+                              {swap ? back[k].bx_px : back[k].ax_px, swap ? back[k].by_px : back[k].ay_px},
+                              {swap ? back[k].ax_px : back[k].bx_px, swap ? back[k].ay_px : back[k].by_px}};
+    for (std::size_t s = 0; s < w.series.size(); ++s) {
+      out[w.series[s]].rows[row] = make_row(meta, in, pos[s][0], pos[s][1], b.score, false);
+      out[w.series[s]].angle_rad[row] = b.angle_rad + turn;
+      auto& refound = out[w.series[s]].refound_frames;
+      refound.erase(std::remove(refound.begin(), refound.end(), f.frame), refound.end());
+    }
+  }
+}
+
 /// Starts every target and streams the clip through its tracker (the rows of the frame
 /// trackers; the path trackers collect candidates).
 void stream(TrackSession::Impl& session, const std::string& input, const TrackVideoOptions& options) {
@@ -311,7 +393,7 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
   const VideoInput& in = result.input;
   std::vector<Follower> followers;
   for (const Target& t : options.targets) {
-    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}, {}};
+    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}, {}, {}, 0};
     if (w.target.kind == Target::Kind::ellipse) {
       w.tracker = EllipseTracker(options.ellipse);
     } else if (options.offline_points) {
@@ -319,6 +401,7 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
     }
     resolve_start(w, in);
     check_marks(w.target, w.start_frame, in);
+    w.reach_back_to = w.start_frame;
     for (const std::string& n : output_names(t)) {
       w.series.push_back(result.series.size());
       TrackedSeries s;
@@ -356,8 +439,26 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
               w.pending.push_back(std::move(meta));
             } else if (mark != w.target.marks.end()) {
               record(w, f, in, result.series, tracker.mark(f, mark->x_px, mark->y_px));
+              track_backward(w, f, *mark, in, result.series, options);
+              w.recent.clear();
+              w.reach_back_to = f.index;
             } else {
               record(w, f, in, result.series, tracker.update(f));
+            }
+            if constexpr (!std::is_same_v<Tracker, PathTracker>) {
+              // Hold this frame when a mark follows within kBackwardFrames frames.
+              const bool near_mark = std::any_of(w.target.marks.begin(), w.target.marks.end(), [&](const ManualMark& m) {
+                return m.frame > f.index && m.frame - f.index <= static_cast<int>(kBackwardFrames) * std::max(1, in.clip.step_size);
+              });
+              if (near_mark && mark == w.target.marks.end()) {
+                Frame copy;
+                copy.index = f.index;
+                copy.t = f.t;
+                copy.bgr = f.bgr.clone();
+                copy.gray = f.gray.clone();
+                w.recent.push_back(std::move(copy));
+                if (w.recent.size() > kBackwardFrames) w.recent.pop_front();
+              }
             }
           },
           w.tracker);
