@@ -226,6 +226,80 @@ TEST(ManualMark, FrameTrackerRestartsFromAMarkBothWays) {
   EXPECT_EQ(marked_back, kMarkFrame - kBounceFrame - 1);  // frames 16..19 all on our ball
 }
 
+TEST(ManualMark, EllipseTrackerFoundAgainBothWaysFromAMarkAfterAnOcclusion) {
+  // A ball rolls behind a board for longer than the ellipse tracker bridges (max_gap 2): it
+  // gives up and every later frame is lost. A mark at frame 27 resumes it forward, and the
+  // backward pass finds the ball in the frames between the board and the mark.
+  const std::string dir = (std::filesystem::temp_directory_path() / ("manual_ellipse_" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(dir);
+  const std::string video = dir + "/board.avi";
+  auto ball_at = [](int i) { return cv::Point2d(30 + 5.0 * i, 80); };
+  RenderOptions r = marked_scene_options();
+  r.background = RenderOptions::Background::plain;
+  const Scene scene = [&](double t) {
+    const int i = static_cast<int>(std::lround(t * 30));
+    ShapePose ball;
+    ball.cx_px = ball_at(i).x;
+    ball.cy_px = ball_at(i).y;
+    ball.a_px = ball.b_px = 9;
+    ball.colour = {40, 40, 200};
+    ShapePose board;
+    board.kind = ShapePose::Kind::rectangle;
+    board.cx_px = 125;
+    board.cy_px = 80;
+    board.a_px = 20;
+    board.b_px = 40;
+    board.colour = {150, 170, 190};
+    return std::vector<ShapePose>{ball, board};
+  };
+  write_video(video, scene, kMarkSceneFrames, r);
+  TrackVideoOptions o;
+  o.thumbnails = 0;
+  o.ellipse.max_gap_frames = 2;
+  Target t;
+  t.kind = Target::Kind::ellipse;
+  t.name = "ball";
+  t.x_px = ball_at(0).x;
+  t.y_px = ball_at(0).y;
+  t.frame = 0;
+  o.targets = {t};
+  const TrackVideoResult plain = track_video(video, o);
+  constexpr int kMarkFrame = 27;
+  o.targets[0].marks.push_back({kMarkFrame, ball_at(kMarkFrame).x, ball_at(kMarkFrame).y});
+  const TrackVideoResult marked = track_video(video, o);
+  std::filesystem::remove_all(dir);
+  auto on = [&](const TrackedRow& row) {
+    return !row.lost && std::hypot(row.x_px - ball_at(row.frame).x, row.y_px - ball_at(row.frame).y) < 1.0;
+  };
+  int plain_after = 0, marked_before = 0, marked_after = 0;
+  ASSERT_EQ(plain.series[0].rows.size(), marked.series[0].rows.size());
+  for (std::size_t k = 0; k < plain.series[0].rows.size(); ++k) {
+    const TrackedRow& a = plain.series[0].rows[k];
+    const TrackedRow& b = marked.series[0].rows[k];
+    if (a.frame <= 12) {  // before the board: as it was
+      EXPECT_EQ(a.lost, b.lost) << a.frame;
+      EXPECT_EQ(a.x_px, b.x_px) << a.frame;
+    } else if (a.frame >= 24 && a.frame < kMarkFrame) {  // out from behind the board, before the mark
+      plain_after += on(a);
+      marked_before += on(b);
+    } else if (a.frame > kMarkFrame) {
+      plain_after += on(a);
+      marked_after += on(b);
+    }
+  }
+  std::printf("after the board: %d frames on the ball without the mark; with it %d before the mark, %d after\n",
+              plain_after, marked_before, marked_after);
+  EXPECT_EQ(plain_after, 0);
+  EXPECT_EQ(marked_before, 3);  // 24, 25, 26
+  EXPECT_EQ(marked_after, kMarkSceneFrames - 1 - kMarkFrame);
+  // The ends: A and B on the ellipse's major axis either side of the centre (a round ball: 9 px out).
+  for (std::size_t k = 0; k < marked.series[0].rows.size(); ++k) {
+    const TrackedRow& c = marked.series[0].rows[k];
+    if (c.frame < 24 || c.lost) continue;
+    EXPECT_NEAR(std::hypot(marked.series[1].rows[k].x_px - c.x_px, marked.series[1].rows[k].y_px - c.y_px), 9, 1.0) << c.frame;
+  }
+}
+
 TEST(ManualMark, RetrackingASessionEqualsTrackingWithTheMarks) {
   const std::string dir = (std::filesystem::temp_directory_path() / ("manual_retrack_" + std::to_string(::getpid()))).string();
   std::filesystem::create_directories(dir);
