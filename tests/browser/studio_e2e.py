@@ -2,7 +2,8 @@
 short throw (`bounce render`), start `tribolab studio` on its folder, open the video, calibrate
 by clicking a stick's two ends and the origin, click the ball, wait for the track, step through
 every frame checking the drawn point against the rendered truth, run the `track kinematics` form
-and read g back from its listing, then drag the ball's point in one frame off by a few pixels
+and read g back from its listing, run the `bounce analyze` form and find e within its sigma of
+the render's, then drag the ball's point in one frame off by a few pixels
 (a correction), wait for the re-tracking, and read the saved .trk back with `track import`:
 the dragged frame holds the dragged position, the others are still on the ball. Screenshots of
 each step are left in OUT_DIR.
