@@ -433,15 +433,20 @@ EllipseObservation EllipseTracker::mark(const Frame& frame, double x_px, double 
   double omega = s.spin_per_frame();
   if (!std::isfinite(omega)) omega = 0;
   const double phi = s.phi_last + omega * (frame.index - s.index_last);
-  // The motion restarts from the mark: the frames before it may have followed something else.
+  // A mark where the motion model predicts the ball (as an accepted centre would be, within
+  // 3 px + a quarter of a frame's travel) continues it; elsewhere the motion restarts from the
+  // mark: the frames before it may have followed something else.
   const int steps = std::max(1, frame.index - s.centres.back().index);
+  const cv::Point2d pred = s.predict_centre(frame.index);
   const double speed = s.centres.size() >= 2
-                           ? std::hypot(s.predict_centre(frame.index).x - s.centres.back().x,
-                                        s.predict_centre(frame.index).y - s.centres.back().y) / steps
+                           ? std::hypot(pred.x - s.centres.back().x, pred.y - s.centres.back().y) / steps
                            : s.speed_hint;
+  const bool continues = s.centres.size() >= 2 && !s.gave_up && s.lost_run == 0 &&
+                         std::hypot(x_px - pred.x, y_px - pred.y) <= 3 + 0.25 * speed;
   s.speed_hint = std::max({s.speed_hint, speed, 1.0});
-  s.centres.clear();
+  if (!continues) s.centres.clear();
   s.centres.push_back({frame.index, x_px, y_px});
+  while (s.centres.size() > kMotionPoints) s.centres.pop_front();
   s.phi_last = phi;
   s.index_last = frame.index;
   s.lost_run = 0;

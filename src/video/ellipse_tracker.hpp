@@ -46,7 +46,8 @@ class EllipseTracker {
   EllipseObservation update(const Frame& frame);
   /// The user's mark of the centre for this frame (instead of update()): reported at the mark,
   /// manual, score 1, with the running axes and the predicted orientation; the motion model
-  /// restarts from it (a lost object is searched for there again).
+  /// goes on through the mark when it lies where the model predicts the centre (as an accepted
+  /// centre would), else restarts from it (a lost object is searched for there again).
   EllipseObservation mark(const Frame& frame, double x_px, double y_px);
 
  private:

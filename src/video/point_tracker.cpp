@@ -442,17 +442,26 @@ Observation PointTracker::mark(const Frame& frame, double x_px, double y_px) {
     throw InputError(m.name, "the mark (" + std::to_string(x_px) + ", " + std::to_string(y_px) +
                                  ") px of frame " + std::to_string(frame.index) + " lies outside the image");
   }
-  // The pattern's angle carries on from the prediction; the motion restarts from the mark
-  // (what was followed before it may have been something else), as after a start.
-  const double angle = m.model.size() > 0 ? m.model.predict(frame.index).angle_rad : 0;
+  // The pattern's angle carries on from the prediction. A mark where the motion model predicts
+  // the point (within the gate an accepted match must fall in) continues it; elsewhere the
+  // motion restarts from the mark (what was followed before it may have been something else),
+  // as after a start.
+  const MotionState pred = m.model.predict(frame.index);
+  const double angle = pred.angle_rad;
+  double worst = 0;
+  for (double e : m.innovation_px) worst = std::max(worst, e);
+  const bool continues = m.model.size() >= 3 && m.gap == 0 && !m.gave_up &&
+                         std::hypot(x_px - pred.x_px, y_px - pred.y_px) <= std::max<double>(m.half(), 4 + 3 * worst);
   m.last_frame = frame.index;
-  m.model.reset();
+  if (!continues) {
+    m.model.reset();
+    m.restarted = true;
+    m.innovation_px.clear();
+    m.innovation_rad.clear();
+  }
   m.model.add(frame.index, x_px, y_px, angle);
   m.gap = 0;
   m.gave_up = false;
-  m.restarted = true;
-  m.innovation_px.clear();
-  m.innovation_rad.clear();
   Observation o;
   o.frame = frame.index;
   o.x_px = x_px;

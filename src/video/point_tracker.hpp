@@ -59,7 +59,8 @@ class PointTracker {
   /// Finds the point in the next frame.
   Observation update(const Frame& frame);
   /// The user's mark for this frame (instead of update()): reported manual with score 1; the
-  /// motion model restarts from it (its velocity from the last points found), the template is kept.
+  /// template is kept; the motion model goes on through the mark when it lies where the model
+  /// predicts the point (within its gate), else restarts from it (as after a start).
   Observation mark(const Frame& frame, double x_px, double y_px);
 
  private:

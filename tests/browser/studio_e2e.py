@@ -253,6 +253,25 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     if worst > 1.0:
         fail("after the drag, a drawn point is %.2f px from the truth" % worst)
     print("after the drag: largest distance of another drawn point from the truth: %.3f px" % worst)
+
+    # Place: "place the track's point here" and a click in frame PLACE (at a half pixel, so the
+    # click lands exactly): a second mark, listed with the first.
+    PLACE = 20
+    driver.execute_script("showFrame(arguments[0])", sorted(truth).index(PLACE))
+    wait.until(lambda d: canvas.get_attribute("data-frame") == str(PLACE))
+    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=mark]").click()
+    px, py = math.floor(truth[PLACE][0]) + 0.5, math.floor(truth[PLACE][1]) + 0.5
+    click_image(px, py)
+    wait.until(lambda d: ended("re-tracking ball"))
+    if error():
+        fail("placing a mark: " + error())
+    wait.until(lambda d: [p for p in json.loads(canvas.get_attribute("data-drawn") or "[]") if p["track"] == "ball" and p["manual"]])
+    placed = [p for p in json.loads(canvas.get_attribute("data-drawn")) if p["track"] == "ball"][0]
+    if abs(placed["x_px"] - px) > 1e-6 or abs(placed["y_px"] - py) > 1e-6:
+        fail("the point placed at %.1f, %.1f in frame %d is drawn at %.3f, %.3f" % (px, py, PLACE, placed["x_px"], placed["y_px"]))
+    if "marks of ball at frames %d, %d" % (DRAG, PLACE) not in driver.find_element(By.ID, "marks-text").text:
+        fail("the marks are not listed: " + driver.find_element(By.ID, "marks-text").text)
+    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
     return DRAG, after["x_px"], after["y_px"]
 
 
