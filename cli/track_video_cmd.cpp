@@ -73,6 +73,9 @@ void register_track_video(CLI::App& track_area) {
   cmd->add_option("--from-track", o->from_track,
                   "Tracker project: follow this track from its first mark, and compare with its "
                   "further marks; repeatable");
+  cmd->add_option("--mark", o->mark,
+                  "Correct a track: NAME@FRAME=X,Y in image pixels; the track passes there (reported "
+                  "manual, score 1) and is re-tracked from it forward and backward; repeatable");
   cmd->add_option("--scale", o->scale, "Plain video: metres per pixel");
   cmd->add_option("--calibrate", o->calibrate,
                   "Plain video: a stick of known length, X1,Y1,X2,Y2,LENGTH (px, px, px, px, m)");

@@ -142,10 +142,56 @@ TEST(TrackVideoCli, ReportShowsThumbnailsAndTracks) {
                                    dir + "/x.csv");
 }
 
+TEST(TrackVideoCli, MarkCorrectsAFrameInCsvProjectAndSummary) {
+  // A mark 2.5 px off the sticker's centre in frame 10 (a click is never exact): that row is
+  // the user's position with score 1, in the CSV, the project and the summary; the frames
+  // before it stay where they were, those after it are tracked on from it.
+  const std::string dir = temp_dir("tv_mark");
+  const std::string video = film(dir), out = dir + "/tracks.csv", plain = dir + "/plain.csv", trk = dir + "/tracks.trk";
+  run_json("track video " + q(video) + " --start mark=30,60 --ellipse ball=60,170 --scale 0.001 --out " + q(plain));
+  const cv::Point2d m = mark_at(10) + cv::Point2d(2.5, 0);
+  const auto j = run_json("track video " + q(video) + " --start mark=30,60 --ellipse ball=60,170 --mark mark@10=" +
+                          std::to_string(m.x) + "," + std::to_string(m.y) + " --mark ball@12=108,146 --scale 0.001 --out " +
+                          q(out) + " --write-trk " + q(trk));
+  EXPECT_EQ(j["tracks"]["mark"]["manual_frames"], nlohmann::json::array({10}));
+  EXPECT_EQ(j["tracks"]["ball"]["manual_frames"], nlohmann::json::array({12}));
+  EXPECT_EQ(j["tracks"]["ball.A"]["manual_frames"], nlohmann::json::array());
+  const track::TrackSet a = io::read_tracks(out), before = io::read_tracks(plain), project = io::read_tracks(trk);
+  const track::Track& marked = a.tracks[0];
+  ASSERT_EQ(marked.name, "mark");
+  ASSERT_EQ(marked.points.size(), static_cast<std::size_t>(kFrames));
+  ASSERT_EQ(before.tracks[0].points.size(), marked.points.size());
+  for (std::size_t k = 0; k < marked.points.size(); ++k) {
+    const int f = marked.points[k].frame;
+    if (f == 10) {
+      // (std::to_string's six decimals are the mark as given)
+      EXPECT_NEAR(marked.points[k].x, 0.001 * m.x, 1e-9);  // m, y up from the bottom-left pixel
+      EXPECT_NEAR(marked.points[k].y, 0.001 * (239 - m.y), 1e-9);
+      EXPECT_NEAR(project.tracks[0].points[k].x, marked.points[k].x, 1e-12);
+      EXPECT_NEAR(project.tracks[0].points[k].y, marked.points[k].y, 1e-12);
+    } else if (f <= 5) {
+      EXPECT_EQ(marked.points[k].x, before.tracks[0].points[k].x) << f;
+    } else {
+      EXPECT_NEAR(marked.points[k].x, 0.001 * mark_at(f).x, 1e-3) << f;  // tracked on the sticker again (1 px)
+    }
+  }
+  const std::string csv = slurp(out);
+  EXPECT_NE(csv.find("mark,10,"), std::string::npos);
+  const std::string tail = " --start mark=30,60 --out " + q(dir + "/bad.csv");
+  expect_error(run_tribolab("track video " + q(video) + tail + " --mark nobody@3=40,60"), "no track named 'nobody' is followed ('mark')");
+  expect_error(run_tribolab("track video " + q(video) + tail + " --mark mark=40,60"), "NAME@FRAME=X,Y");
+  expect_error(run_tribolab("track video " + q(video) + tail + " --mark mark@3=nan,60"), "--mark mark@3");
+  expect_error(run_tribolab("track video " + q(video) + tail + " --mark mark@3=400,60"), "outside the 320x240 image");
+  expect_error(run_tribolab("track video " + q(video) + tail + " --mark mark@99=40,60"), "frame 99 is beyond the end of the clip (24 frames decoded)");
+  expect_error(run_tribolab("track video " + q(video) + tail + " --mark mark@0=40,60"), "a mark must come after its start");
+  expect_error(run_tribolab("track video " + q(video) + tail + " --mark mark@3=40,60 --mark mark@3=41,60"), "two marks on one frame");
+  EXPECT_FALSE(fs::exists(dir + "/bad.csv"));
+}
+
 TEST(TrackVideoCli, HelpListsEveryOption) {
   const auto r = run_tribolab("track video --help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* opt : {"--out", "--start", "--ellipse", "--from-track", "--scale", "--calibrate",
+  for (const char* opt : {"--out", "--start", "--ellipse", "--from-track", "--mark", "--scale", "--calibrate",
                           "--origin", "--axes-deg", "--fps", "--time-scale", "--write-trk", "--report", "--json"}) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
   }

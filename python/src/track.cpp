@@ -134,6 +134,7 @@ void bind_track(py::module_& m) {
     TRIBOLAB_OPT(c, start);
     TRIBOLAB_OPT(c, ellipse);
     TRIBOLAB_OPT(c, from_track);
+    TRIBOLAB_OPT(c, mark);
     TRIBOLAB_OPT(c, scale);
     TRIBOLAB_OPT(c, calibrate);
     TRIBOLAB_OPT(c, origin);

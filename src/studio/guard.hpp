@@ -18,6 +18,10 @@ struct AccessRules {
   std::string token;                     ///< the secret every request carries (make_token())
   int port = 0;                          ///< the port the server listens on (Host/Origin must name it)
   std::size_t max_body_bytes = 1 << 20;  ///< largest request body, bytes (the page sends small JSON)
+  /// Requests answered per second on average, and in a burst (a token bucket over every
+  /// request): beyond, 429. The page scrubbing frames sends some tens per second.
+  double requests_per_second = 200;
+  double request_burst = 400;
 };
 
 /// The header a script sends the token in (a link or an <img> sends it as ?token=).

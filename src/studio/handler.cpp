@@ -2,6 +2,7 @@
 
 #include "numerics/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 
@@ -76,19 +77,55 @@ CalibrationInput calibration_from_json(const json& j) {
   return c;
 }
 
+namespace {
+
+std::string track_name(const json& j, const char* key, const std::string& fallback) {
+  const std::string name = text(j, key, fallback);
+  if (name.empty() || name.size() > 40) throw InputError(std::string("'") + key + "' must have 1 to 40 characters");
+  for (char ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-')
+      throw InputError(std::string("'") + key + "' may hold only letters, digits, '_' and '-'");
+  return name;
+}
+
+int frame_number(const json& j) {
+  const int f = integer(number(j, "frame"), "frame");
+  if (f < 0) throw InputError("'frame' must not be negative");
+  return f;
+}
+
+}  // namespace
+
 TrackStart start_from_json(const json& j) {
   TrackStart s;
-  s.name = text(j, "name", s.name);
-  if (s.name.empty() || s.name.size() > 40) throw InputError("'name' must have 1 to 40 characters");
-  for (char ch : s.name)
-    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-')
-      throw InputError("'name' may hold only letters, digits, '_' and '-'");
+  s.name = track_name(j, "name", s.name);
   s.kind = text(j, "kind", s.kind);
   if (s.kind != "point" && s.kind != "ellipse") throw InputError("'kind' must be point or ellipse");
   s.x_px = number(j, "x");
   s.y_px = number(j, "y");
   s.frame = integer(number(j, "frame"), "frame");
+  if (j.contains("marks") && !j["marks"].is_null()) {
+    if (!j["marks"].is_array() || j["marks"].size() > 100000) throw InputError("'marks' must be a list of {frame, x, y}");
+    for (const json& m : j["marks"]) {
+      if (!m.is_object()) throw InputError("'marks' must be a list of {frame, x, y}");
+      s.marks.push_back({frame_number(m), number(m, "x"), number(m, "y")});
+    }
+  }
   return s;
+}
+
+MarkInput mark_from_json(const json& j) {
+  MarkInput m;
+  m.track = track_name(j, "track", "");
+  m.frame = frame_number(j);
+  const auto remove = j.find("remove");
+  if (remove != j.end() && !remove->is_null() && !remove->is_boolean()) throw InputError("'remove' must be true or false");
+  m.remove = remove != j.end() && remove->is_boolean() && remove->get<bool>();
+  if (!m.remove) {
+    m.x_px = number(j, "x");
+    m.y_px = number(j, "y");
+  }
+  return m;
 }
 
 json to_json(const CalibrationInput& c) {
@@ -100,13 +137,29 @@ json to_json(const CalibrationInput& c) {
 }
 
 json to_json(const TrackStart& s) {
-  return {{"name", s.name}, {"kind", s.kind}, {"x", s.x_px}, {"y", s.y_px}, {"frame", s.frame}};
+  json marks = json::array();
+  for (const TrackMark& m : s.marks) marks.push_back({{"frame", m.frame}, {"x", m.x_px}, {"y", m.y_px}});
+  return {{"name", s.name}, {"kind", s.kind}, {"x", s.x_px}, {"y", s.y_px}, {"frame", s.frame}, {"marks", marks}};
 }
 
 Handler::Handler(const std::filesystem::path& root, AccessRules rules, Assets assets, Backend& backend)
-    : root_(std::filesystem::canonical(root)), rules_(std::move(rules)), assets_(assets), backend_(backend) {}
+    : root_(std::filesystem::canonical(root)), rules_(std::move(rules)), assets_(assets), backend_(backend),
+      tokens_(rules_.request_burst), refilled_(std::chrono::steady_clock::now()) {}
 
 Response Handler::handle(const Request& request) {
+  {
+    // The rate limit first: a flood (of good or bad requests) costs one comparison each.
+    std::lock_guard lock(rate_mutex_);
+    const auto now = std::chrono::steady_clock::now();
+    tokens_ = std::min(rules_.request_burst,
+                       tokens_ + rules_.requests_per_second * std::chrono::duration<double>(now - refilled_).count());
+    refilled_ = now;
+    if (tokens_ < 1) {
+      return json_error(429, "too many requests: the studio answers at most " +
+                                 std::to_string(static_cast<long>(rules_.requests_per_second)) + " a second");
+    }
+    tokens_ -= 1;
+  }
   try {
     const auto target = parse_target(request.target);
     if (!target) return json_error(400, "the request target is malformed");
@@ -139,6 +192,33 @@ Response Handler::route(const Request& request, const Target& target) {
   }
   if (path.rfind("/api/", 0) != 0) return json_error(404, "no such page: " + path);
 
+  // While an action runs: how far it is, and stopping it (no lock: the backend's are thread-safe).
+  if (path == "/api/progress") {
+    need(get);
+    return json_ok(backend_.progress());
+  }
+  if (path == "/api/cancel") {
+    need(post);
+    return json_ok(backend_.cancel());
+  }
+  // One action at a time: another asked meanwhile is refused, not queued behind it.
+  const bool action = path == "/api/open" || path == "/api/calibration" || path == "/api/track" ||
+                      path == "/api/mark" || path == "/api/analyze";
+  struct ActionFlag {
+    std::atomic<bool>* flag = nullptr;
+    ~ActionFlag() {
+      if (flag) *flag = false;
+    }
+  } running;
+  if (action && request.method == "POST") {
+    bool idle = false;
+    if (!action_running_.compare_exchange_strong(idle, true)) {
+      const nlohmann::json p = backend_.progress();
+      throw BadRequest{409, "another action is running (" + p.value("action", std::string("an action")) +
+                                "): wait for it to end, or cancel it (POST /api/cancel)"};
+    }
+    running.flag = &action_running_;
+  }
   std::lock_guard lock(backend_mutex_);
   if (path == "/api/files") {
     need(get);
@@ -175,6 +255,10 @@ Response Handler::route(const Request& request, const Target& target) {
   if (path == "/api/track") {
     need(post);
     return json_ok(backend_.track(start_from_json(object_body(request))));
+  }
+  if (path == "/api/mark") {
+    need(post);
+    return json_ok(backend_.mark(mark_from_json(object_body(request))));
   }
   if (path == "/api/analyze") {
     need(post);

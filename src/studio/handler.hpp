@@ -11,11 +11,14 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tribolab::studio {
 
@@ -28,12 +31,27 @@ struct CalibrationInput {
   double time_scale = 1;                          ///< real s per video s (slow motion 240 -> 30 fps: 0.125)
 };
 
+/// The user's position of a track in one frame (a dragged point): the track passes there.
+struct TrackMark {
+  int frame = 0;              ///< the video's frame index
+  double x_px = 0, y_px = 0;  ///< image px
+};
+
 /// A click on an object: follow it from there.
 struct TrackStart {
   std::string name = "ball";  ///< track name: letters, digits, '_' or '-'
   std::string kind = "point"; ///< "point" (the path tracker) or "ellipse" (a ball contrasting with its background)
   double x_px = 0, y_px = 0;  ///< the click, image px
   int frame = 0;              ///< the video's frame index clicked on
+  std::vector<TrackMark> marks;  ///< corrections, by frame (app::TrackVideoOptions::mark)
+};
+
+/// A request to set (a dragged or placed point) or remove the mark of a track in one frame.
+struct MarkInput {
+  std::string track;          ///< the track's name (an ellipse's: its centre's)
+  int frame = 0;              ///< the video's frame index
+  bool remove = false;        ///< true: remove the frame's mark (x_px, y_px unused)
+  double x_px = 0, y_px = 0;  ///< image px
 };
 
 /// The page's JSON (also the autosave's) as typed values; InputError naming the key for a
@@ -41,6 +59,7 @@ struct TrackStart {
 /// digits, '_' and '-').
 CalibrationInput calibration_from_json(const nlohmann::json& j);
 TrackStart start_from_json(const nlohmann::json& j);
+MarkInput mark_from_json(const nlohmann::json& j);
 nlohmann::json to_json(const CalibrationInput& c);
 nlohmann::json to_json(const TrackStart& s);
 
@@ -54,9 +73,17 @@ class Backend {
   virtual std::string frame_jpeg(int step) = 0;                          ///< the clip's step-th frame as JPEG
   virtual nlohmann::json calibrate(const CalibrationInput& c) = 0;
   virtual nlohmann::json track(const TrackStart& start) = 0;
+  /// Sets or removes a mark and re-tracks that track (the state, with the new track).
+  virtual nlohmann::json mark(const MarkInput& mark) = 0;
   virtual nlohmann::json forms() = 0;                                    ///< the analyses' declared fields
   virtual nlohmann::json analyze(const std::string& command, const nlohmann::json& values) = 0;
   virtual nlohmann::json state() = 0;                                    ///< the project as autosaved
+  /// The long action under way: {"running", "action", "done", "expected"} (frames). Called
+  /// while another thread runs an action: must be thread-safe.
+  virtual nlohmann::json progress() = 0;
+  /// Asks the long action under way to stop (it ends with an InputError, the project as
+  /// before it); nothing when none runs. Thread-safe as progress().
+  virtual nlohmann::json cancel() = 0;
 };
 
 /// What the page is made of: the HTML+JS page and Plotly.js (page.hpp, report/embedded.hpp).
@@ -69,7 +96,10 @@ class Handler {
  public:
   /// `root`: the folder the studio serves (made canonical here; must exist).
   Handler(const std::filesystem::path& root, AccessRules rules, Assets assets, Backend& backend);
-  /// The answer to `request`; never throws. One request reaches the backend at a time.
+  /// The answer to `request`; never throws. One request reaches the backend at a time, but
+  /// progress and cancel, which reach it while an action runs; an action (open, calibrate,
+  /// track, mark, analyze) asked while another runs is answered 409 at once, not queued.
+  /// More requests than the rules' rate are answered 429.
   Response handle(const Request& request);
   const std::filesystem::path& root() const { return root_; }
 
@@ -80,6 +110,10 @@ class Handler {
   Assets assets_;
   Backend& backend_;
   std::mutex backend_mutex_;
+  std::atomic<bool> action_running_{false};
+  std::mutex rate_mutex_;
+  double tokens_ = 0;                                   ///< the rate limit's bucket
+  std::chrono::steady_clock::time_point refilled_;
 };
 
 }  // namespace tribolab::studio

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <future>
+#include <thread>
 #include <fstream>
 #include <vector>
 #include <unistd.h>
@@ -26,9 +28,14 @@ struct RecordingBackend : Backend {
   std::string frame_jpeg(int step) override { ++calls; return "jpeg" + std::to_string(step); }
   json calibrate(const CalibrationInput& c) override { ++calls; return {{"length", c.stick_length_m}}; }
   json track(const TrackStart& s) override { ++calls; return {{"name", s.name}}; }
+  MarkInput marked;
+  json mark(const MarkInput& m) override { ++calls; marked = m; return {{"track", m.track}}; }
   json forms() override { ++calls; return json::object(); }
   json analyze(const std::string& command, const json&) override { ++calls; return {{"command", command}}; }
   json state() override { ++calls; return json::object(); }
+  std::atomic<int> progress_calls{0}, cancel_calls{0};
+  json progress() override { ++progress_calls; return {{"running", false}, {"action", "tracking"}}; }
+  json cancel() override { ++cancel_calls; return {{"cancelling", false}}; }
 };
 
 const std::string kToken = std::string(64, 'a');
@@ -171,6 +178,84 @@ TEST_F(HandlerTest, MalformedJsonIsAnsweredNotCrashed) {
   EXPECT_EQ(handler->handle(good("GET", "/api/frame?i=-1")).status, 400);
   EXPECT_EQ(handler->handle(good("GET", "/api/frame?i=%zz")).status, 400);
   EXPECT_EQ(backend.calls, 0);
+}
+
+TEST_F(HandlerTest, MarkRequestsAreCheckedBeforeTheBackend) {
+  const Response set = handler->handle(good("POST", "/api/mark", R"({"track": "ball", "frame": 12, "x": 10.5, "y": 20})"));
+  EXPECT_EQ(set.status, 200) << set.body;
+  EXPECT_EQ(backend.marked.track, "ball");
+  EXPECT_EQ(backend.marked.frame, 12);
+  EXPECT_FALSE(backend.marked.remove);
+  EXPECT_DOUBLE_EQ(backend.marked.x_px, 10.5);
+  EXPECT_DOUBLE_EQ(backend.marked.y_px, 20);
+  const Response removed = handler->handle(good("POST", "/api/mark", R"({"track": "ball", "frame": 12, "remove": true})"));
+  EXPECT_EQ(removed.status, 200) << removed.body;
+  EXPECT_TRUE(backend.marked.remove);
+  EXPECT_EQ(backend.calls, 2);
+  // NaN and an overflow are no JSON numbers; as text, a string, a fraction of a frame, a negative
+  // frame, no track, a track name with a space, no position: each answered with its reason.
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {R"({"track": "ball", "frame": 3, "x": NaN, "y": 2})", "not valid JSON"},
+      {R"({"track": "ball", "frame": 3, "x": "NaN", "y": 2})", "'x' must be a number"},
+      {R"({"track": "ball", "frame": 3, "x": 1e999, "y": 2})", "not valid JSON"},  // an overflow is no JSON number
+      {R"({"track": "ball", "frame": 2.5, "x": 1, "y": 2})", "'frame' must be a whole number"},
+      {R"({"track": "ball", "frame": -1, "x": 1, "y": 2})", "'frame' must not be negative"},
+      {R"({"frame": 3, "x": 1, "y": 2})", "'track' must have 1 to 40 characters"},
+      {R"({"track": "a b", "frame": 3, "x": 1, "y": 2})", "'track' may hold only"},
+      {R"({"track": "ball", "frame": 3})", "'x' must be a number"},
+      {R"({"track": "ball", "frame": 3, "remove": "yes"})", "'remove' must be true or false"},
+  };
+  for (const auto& [body, message] : bad) {
+    const Response a = handler->handle(good("POST", "/api/mark", body));
+    EXPECT_EQ(a.status, 400) << body;
+    EXPECT_NE(error_of(a).find(message), std::string::npos) << body << " -> " << error_of(a);
+  }
+  EXPECT_EQ(handler->handle(good("GET", "/api/mark")).status, 405);
+  EXPECT_EQ(backend.calls, 2);
+}
+
+TEST_F(HandlerTest, MoreRequestsThanTheRateAreAnswered429) {
+  // 5 a second, a burst of 5: the sixth request in a row (microseconds apart) is refused,
+  // whatever it is, before any other check; a moment later requests pass again.
+  Handler limited(root, AccessRules{kToken, kPort, 1000, 5, 5}, Assets{"", ""}, backend);
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(limited.handle(good("GET", "/api/files")).status, 200) << i;
+  const Response refused = limited.handle(good("GET", "/api/files"));
+  EXPECT_EQ(refused.status, 429);
+  EXPECT_NE(error_of(refused).find("too many requests"), std::string::npos);
+  EXPECT_EQ(limited.handle(Request{"GET", "/api/files", {}, ""}).status, 429);  // no token either
+  EXPECT_EQ(backend.calls, 5);
+  std::this_thread::sleep_for(std::chrono::milliseconds(450));  // 2 requests' worth
+  EXPECT_EQ(limited.handle(good("GET", "/api/files")).status, 200);
+}
+
+TEST_F(HandlerTest, OneActionAtATimeWithProgressAndCancel) {
+  // A tracking that runs until released: meanwhile another action is refused at once (409,
+  // naming the action), progress and cancel are answered (they do not wait for it).
+  struct Slow : RecordingBackend {
+    std::promise<void> started, release;
+    json track(const TrackStart& s) override {
+      started.set_value();
+      release.get_future().wait();
+      return {{"name", s.name}};
+    }
+  } slow;
+  Handler h(root, AccessRules{kToken, kPort, 1000}, Assets{"", ""}, slow);
+  auto tracking = std::async(std::launch::async, [&] {
+    return h.handle(good("POST", "/api/track", R"({"x": 1, "y": 2, "frame": 0})"));
+  });
+  slow.started.get_future().wait();
+  const Response other = h.handle(good("POST", "/api/mark", R"({"track": "ball", "frame": 3, "x": 1, "y": 2})"));
+  EXPECT_EQ(other.status, 409);
+  EXPECT_NE(error_of(other).find("another action is running (tracking)"), std::string::npos) << error_of(other);
+  EXPECT_EQ(h.handle(good("POST", "/api/open", R"({"file": "clip.avi"})")).status, 409);
+  EXPECT_EQ(h.handle(good("GET", "/api/progress")).status, 200);
+  EXPECT_EQ(h.handle(good("POST", "/api/cancel", "{}")).status, 200);
+  EXPECT_EQ(slow.cancel_calls, 1);
+  EXPECT_EQ(h.handle(good("GET", "/api/cancel")).status, 405);
+  slow.release.set_value();
+  EXPECT_EQ(tracking.get().status, 200);
+  // Ended: the next action runs.
+  EXPECT_EQ(h.handle(good("POST", "/api/mark", R"({"track": "ball", "frame": 3, "x": 1, "y": 2})")).status, 200);
 }
 
 TEST_F(HandlerTest, UnknownRouteAndWrongMethodAreAnswered) {

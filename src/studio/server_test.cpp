@@ -27,9 +27,12 @@ struct EchoBackend : Backend {
   std::string frame_jpeg(int step) override { return std::string("\xff\xd8", 2) + std::to_string(step); }
   json calibrate(const CalibrationInput& c) override { return {{"length", c.stick_length_m}}; }
   json track(const TrackStart& s) override { return {{"name", s.name}, {"x", s.x_px}}; }
+  json mark(const MarkInput& m) override { return {{"track", m.track}, {"frame", m.frame}}; }
   json forms() override { return json::object(); }
   json analyze(const std::string& c, const json&) override { return {{"command", c}}; }
   json state() override { return json::object(); }
+  json progress() override { return {{"running", false}}; }
+  json cancel() override { return {{"cancelling", false}}; }
 };
 
 /// Sends raw bytes to 127.0.0.1:port and returns what comes back (until the server closes).

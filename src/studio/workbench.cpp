@@ -1,5 +1,6 @@
 #include "studio/workbench.hpp"
 
+#include "app/bounce/bounce_analyze.hpp"
 #include "app/common/result_keys.hpp"
 #include "app/track/track_kinematics.hpp"
 #include "app/track/track_video.hpp"
@@ -39,11 +40,12 @@ json series_json(const std::vector<video::TrackedSeries>& series) {
     json rows = json::array();
     for (const auto& r : s.rows)
       rows.push_back({{"frame", r.frame}, {"t", r.t}, {"x", r.x}, {"y", r.y}, {"x_px", r.x_px}, {"y_px", r.y_px},
-                      {"score", r.score}, {"lost", r.lost}});
+                      {"score", r.score}, {"lost", r.lost}, {"manual", r.manual}});
     a.push_back({{"name", s.name},
                  {"kind", s.kind == video::Target::Kind::point ? "point" : "ellipse"},
                  {"rows", rows},
                  {"lost_ranges", s.lost_ranges},
+                 {"manual_frames", s.manual_frames},
                  {"tracked", s.tracked},
                  {"median_score", s.median_score}});
   }
@@ -59,6 +61,44 @@ bool set_by_the_studio(const std::string& name) {
 }  // namespace
 
 Workbench::Workbench(fs::path root) : root_(fs::canonical(root)) {}
+
+class Workbench::Action {
+ public:
+  Action(Workbench& wb, const char* what) : wb_(wb) {
+    wb_.cancel_ = false;
+    wb_.done_ = 0;
+    wb_.expected_ = 0;
+    wb_.action_ = what;
+    wb_.running_ = true;
+  }
+  ~Action() {
+    wb_.running_ = false;
+    wb_.cancel_ = false;
+  }
+  Action(const Action&) = delete;
+  Action& operator=(const Action&) = delete;
+
+ private:
+  Workbench& wb_;
+};
+
+void Workbench::step(int done, int expected) {
+  done_ = done;
+  expected_ = expected;
+  if (cancel_) throw InputError(std::string(action_.load()) + " cancelled: the project is as it was before");
+}
+
+json Workbench::progress() {
+  const bool running = running_;
+  return {{"running", running}, {"action", running ? action_.load() : ""}, {"done", done_.load()},
+          {"expected", expected_.load()}};
+}
+
+json Workbench::cancel() {
+  const bool running = running_;
+  if (running) cancel_ = true;
+  return {{"cancelling", running}};
+}
 
 fs::path Workbench::beside(const std::string& suffix) const {
   const fs::path p = file_.parent_path() / (file_.filename().string() + suffix);
@@ -91,8 +131,10 @@ json Workbench::files() {
 }
 
 json Workbench::open(const fs::path& file) {
+  Action action(*this, "opening");
   video::VideoInput input = video::open_input(file.string(), video::SourceOptions{});
   video::FrameReader reader(input);
+  const int expected = reader.expected_steps();
   std::vector<std::string> jpeg;
   json frames = json::array();
   std::size_t total = 0;
@@ -108,14 +150,18 @@ json Workbench::open(const fs::path& file) {
                                                   kMaxFrameBytes >> 20, f.index));
     jpeg.emplace_back(buf.begin(), buf.end());
     frames.push_back({{"frame", f.index}, {"t", f.t}});
+    step(static_cast<int>(jpeg.size()), std::max(expected, static_cast<int>(jpeg.size())));
   }
   if (jpeg.empty()) throw InputError(file.string(), "the clip holds no frame");
   file_ = file;
   jpeg_ = std::move(jpeg);
   frames_ = std::move(frames);
+  width_ = input.info.width;
+  height_ = input.info.height;
   video_ = {{"width", input.info.width}, {"height", input.info.height}, {"fps", input.info.fps},
             {"codec", input.info.codec}, {"calibrated", input.calibration.calibrated}};
   calibration_ = {};
+  session_ = std::make_shared<video::TrackSession>();
   starts_.clear();
   tracks_ = json::object();
   analysis_ = nullptr;
@@ -148,6 +194,7 @@ std::string Workbench::frame_jpeg(int step) {
 
 json Workbench::calibrate(const CalibrationInput& c) {
   require_open();
+  Action action(*this, "calibrating");
   if (c.stick_px && !(c.stick_length_m > 0)) throw InputError("'length' of the stick must be positive, m");
   if (c.stick_px && std::hypot((*c.stick_px)[2] - (*c.stick_px)[0], (*c.stick_px)[3] - (*c.stick_px)[1]) < 1)
     throw InputError("the two ends of the stick are less than a pixel apart");
@@ -167,12 +214,64 @@ json Workbench::calibrate(const CalibrationInput& c) {
 
 json Workbench::track(const TrackStart& start) {
   require_open();
+  Action action(*this, "tracking");
   const std::vector<TrackStart> before = starts_;
   auto same = std::find_if(starts_.begin(), starts_.end(), [&](const TrackStart& s) { return s.name == start.name; });
-  if (same != starts_.end())
-    *same = start;  // a new click on a track restarts it there
-  else
+  if (same != starts_.end()) {
+    // A new click on a track restarts it there; its marks after the new start are kept.
+    std::vector<TrackMark> kept;
+    for (const TrackMark& m : same->marks)
+      if (m.frame > start.frame) kept.push_back(m);
+    *same = start;
+    if (same->marks.empty()) same->marks = kept;
+  } else
     starts_.push_back(start);
+  try {
+    run_tracks();
+  } catch (...) {
+    starts_ = before;
+    throw;
+  }
+  autosave();
+  return state();
+}
+
+json Workbench::mark(const MarkInput& m) {
+  require_open();
+  Action action(*this, "re-tracking");
+  auto start = std::find_if(starts_.begin(), starts_.end(), [&](const TrackStart& s) { return s.name == m.track; });
+  if (start == starts_.end()) {
+    std::string names;
+    for (const auto& s : starts_) names += (names.empty() ? "'" : ", '") + s.name + "'";
+    throw InputError(fmt::format("no track named '{}'{}", m.track,
+                                 names.empty() ? ": start one by clicking the object" : "; the tracks: " + names));
+  }
+  const bool in_clip = std::any_of(frames_.begin(), frames_.end(), [&](const json& f) { return f["frame"] == m.frame; });
+  if (!in_clip)
+    throw InputError(fmt::format("frame {} is not one of the clip's frames ({} to {})", m.frame,
+                                 frames_.front()["frame"].get<int>(), frames_.back()["frame"].get<int>()));
+  if (!m.remove && !(m.x_px >= 0 && m.y_px >= 0 && m.x_px <= width_ - 1 && m.y_px <= height_ - 1))
+    throw InputError(fmt::format("the mark ({}, {}) px is outside the {}x{} image", m.x_px, m.y_px, width_, height_));
+  if (m.frame < start->frame)
+    throw InputError(fmt::format("track '{}' starts at frame {}: a mark must come after its start (click the object "
+                                 "in frame {} to start the track there)", m.track, start->frame, m.frame));
+  const std::vector<TrackStart> before = starts_;
+  auto& marks = start->marks;
+  const auto at = std::find_if(marks.begin(), marks.end(), [&](const TrackMark& k) { return k.frame == m.frame; });
+  if (m.remove) {
+    if (m.frame == start->frame) throw InputError(fmt::format("frame {} is where track '{}' starts: its start cannot be removed", m.frame, m.track));
+    if (at == marks.end()) throw InputError(fmt::format("track '{}' has no mark in frame {}", m.track, m.frame));
+    marks.erase(at);
+  } else if (m.frame == start->frame) {
+    start->x_px = m.x_px;  // the start dragged: the track starts there
+    start->y_px = m.y_px;
+  } else if (at != marks.end()) {
+    at->x_px = m.x_px;
+    at->y_px = m.y_px;
+  } else {
+    marks.push_back({m.frame, m.x_px, m.y_px});
+    std::sort(marks.begin(), marks.end(), [](const TrackMark& a, const TrackMark& b) { return a.frame < b.frame; });
+  }
   try {
     run_tracks();
   } catch (...) {
@@ -188,8 +287,10 @@ void Workbench::run_tracks() {
   o.input = file_.string();
   o.out = beside(".tracks.csv").string();
   o.write_trk = beside(".tracks.trk").string();
-  for (const TrackStart& s : starts_)
+  for (const TrackStart& s : starts_) {
     (s.kind == "ellipse" ? o.ellipse : o.start).push_back(fmt::format("{}={},{}@{}", s.name, s.x_px, s.y_px, s.frame));
+    for (const TrackMark& m : s.marks) o.mark.push_back(fmt::format("{}@{}={},{}", s.name, m.frame, m.x_px, m.y_px));
+  }
   const CalibrationInput& c = calibration_;
   if (c.stick_px)
     o.calibrate = fmt::format("{},{},{},{},{}", (*c.stick_px)[0], (*c.stick_px)[1], (*c.stick_px)[2], (*c.stick_px)[3],
@@ -197,26 +298,51 @@ void Workbench::run_tracks() {
   if (c.origin_px) o.origin = fmt::format("{},{}", (*c.origin_px)[0], (*c.origin_px)[1]);
   o.fps = c.fps;
   o.time_scale = c.time_scale;
+  if (!session_) session_ = std::make_shared<video::TrackSession>();
+  o.session = session_;
+  o.progress = [this](int done, int expected) { step(done, expected); };
   const app::TrackVideoResult r = app::track_video(o);
   tracks_ = {{"summary", r.json}, {"series", series_json(r.series)}, {"csv", relative(o.out)}, {"trk", relative(o.write_trk)}};
   analysis_ = nullptr;  // it was of the tracks before
 }
 
-json Workbench::forms() {
+namespace {
+
+/// A form: the command's declared fields but those the studio sets, and its declared result keys.
+template <class O>
+json form_of(const app::Fields<O>& declared, const app::ResultKeys& results) {
   json fields = json::array();
-  for (const json& f : app::fields_schema(app::track_kinematics_fields()))
+  for (const json& f : app::fields_schema(declared))
     if (!set_by_the_studio(f["name"])) fields.push_back(f);
-  return {{"track kinematics",
-           {{"fields", fields},
-            {"results", app::result_keys_schema(app::track_kinematics_result_keys())}}}};
+  return {{"fields", fields}, {"results", app::result_keys_schema(results)}};
+}
+
+}  // namespace
+
+json Workbench::forms() {
+  return {{"track kinematics", form_of(app::track_kinematics_fields(), app::track_kinematics_result_keys())},
+          {"bounce analyze", form_of(app::bounce_analyze_fields(), app::bounce_analyze_result_keys())}};
 }
 
 json Workbench::analyze(const std::string& command, const json& values) {
   require_open();
-  if (command != "track kinematics") throw InputError("the studio offers the analysis 'track kinematics', not '" + command + "'");
+  Action action(*this, "analysing");
+  if (command != "track kinematics" && command != "bounce analyze")
+    throw InputError("the studio offers the analyses 'track kinematics' and 'bounce analyze', not '" + command + "'");
   if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");
   for (auto it = values.begin(); it != values.end(); ++it)
     if (set_by_the_studio(it.key())) throw InputError(field(it.key()), "is set by the studio: its tracks are in s and m");
+  if (command == "bounce analyze") {
+    app::BounceAnalyzeOptions o;
+    apply_form_values(o, app::bounce_analyze_fields(), values);
+    o.file = (root_ / tracks_["csv"].get<std::string>()).string();
+    o.bounces_out = beside(".bounce.csv").string();
+    const app::BounceAnalyzeResult r = app::bounce_analyze(o);
+    analysis_ = {{"command", command}, {"values", values}, {"result", r.json}, {"out", relative(o.bounces_out)},
+                 {"results", app::result_keys_schema(app::bounce_analyze_result_keys())}};
+    autosave();
+    return state();
+  }
   app::TrackKinematicsOptions o;
   apply_form_values(o, app::track_kinematics_fields(), values);
   o.input.file = (root_ / tracks_["csv"].get<std::string>()).string();

@@ -9,7 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <thread>
 #include <filesystem>
 #include <unistd.h>
 
@@ -57,7 +60,7 @@ TEST_F(WorkbenchTest, ClickTracksSavesAndReopens) {
   ASSERT_EQ(s["frames"].size(), static_cast<std::size_t>(kFrames));
   EXPECT_EQ(wb.frame_jpeg(0).substr(0, 2), std::string("\xff\xd8", 2));  // a JPEG
   EXPECT_THROW(wb.frame_jpeg(kFrames), InputError);
-  s = wb.track({"patch", "point", 30, 60, 0});
+  s = wb.track({"patch", "point", 30, 60, 0, {}});
   const json& rows = s["tracks"]["series"][0]["rows"];
   ASSERT_EQ(rows.size(), static_cast<std::size_t>(kFrames));
   double worst = 0;
@@ -91,12 +94,161 @@ TEST_F(WorkbenchTest, ClickTracksSavesAndReopens) {
   EXPECT_EQ(restored["analysis"]["result"]["points"], kFrames);
 }
 
+TEST_F(WorkbenchTest, AMarkRetracksIsSavedAndBadMarksAreClearErrors) {
+  Workbench wb(root);
+  wb.open(root / "patch.avi");
+  const json before = wb.track({"patch", "point", 30, 60, 0, {}})["tracks"]["series"][0]["rows"];
+  // A mark deliberately 2.5 px off the mark's centre: the row is the user's, not the tracker's.
+  constexpr int kMarked = 6;
+  const cv::Point2d m = mark_at(kMarked) + cv::Point2d(2.5, -1.5);
+  json s = wb.mark({"patch", kMarked, false, m.x, m.y});
+  const json& rows = s["tracks"]["series"][0]["rows"];
+  ASSERT_EQ(rows.size(), before.size());
+  EXPECT_EQ(s["tracks"]["series"][0]["manual_frames"], json::array({kMarked}));
+  EXPECT_EQ(s["tracks"]["summary"]["tracks"]["patch"]["manual_frames"], json::array({kMarked}));
+  for (const json& r : rows) {
+    const int f = r["frame"].get<int>();
+    if (f == kMarked) {
+      EXPECT_TRUE(r["manual"].get<bool>());
+      EXPECT_EQ(r["x_px"].get<double>(), m.x);
+      EXPECT_EQ(r["y_px"].get<double>(), m.y);
+      EXPECT_EQ(r["score"].get<double>(), 1.0);
+      continue;
+    }
+    EXPECT_FALSE(r["manual"].get<bool>()) << f;
+    ASSERT_FALSE(r["lost"].get<bool>()) << f;
+    const cv::Point2d truth = mark_at(f);
+    EXPECT_LT(std::hypot(r["x_px"].get<double>() - truth.x, r["y_px"].get<double>() - truth.y), 1.0) << f;
+    if (f <= 2) {  // far from the mark: unchanged
+      EXPECT_EQ(r["x_px"], before[static_cast<std::size_t>(f)]["x_px"]) << f;
+    }
+  }
+  // The bad requests: each a clear InputError, the project as it was.
+  auto message = [&](const MarkInput& bad) {
+    try {
+      wb.mark(bad);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_NE(message({"nosuch", 3, false, 40, 60}).find("no track named 'nosuch'; the tracks: 'patch'"), std::string::npos);
+  EXPECT_NE(message({"patch", 50, false, 40, 60}).find("frame 50 is not one of the clip's frames (0 to 11)"), std::string::npos);
+  EXPECT_NE(message({"patch", 3, false, 400, 60}).find("outside the 320x240 image"), std::string::npos);
+  EXPECT_NE(message({"patch", 3, false, std::nan(""), 60}).find("outside the 320x240 image"), std::string::npos);
+  EXPECT_NE(message({"patch", 3, true, 0, 0}).find("has no mark in frame 3"), std::string::npos);
+  EXPECT_NE(message({"patch", 0, true, 0, 0}).find("its start cannot be removed"), std::string::npos);
+  EXPECT_EQ(wb.state()["starts"][0]["marks"].size(), 1u);
+
+  // Reopened (a killed server): the mark is read back and used when tracking again.
+  Workbench again(root);
+  json r = again.open(root / "patch.avi");
+  ASSERT_EQ(r["starts"][0]["marks"].size(), 1u);
+  EXPECT_EQ(r["starts"][0]["marks"][0]["frame"], kMarked);
+  EXPECT_EQ(r["starts"][0]["marks"][0]["x"].get<double>(), m.x);
+  CalibrationInput c;
+  c.fps = 50;
+  r = again.calibrate(c);  // re-tracks every track from the saved clicks and marks
+  EXPECT_EQ(r["tracks"]["series"][0]["manual_frames"], json::array({kMarked}));
+  EXPECT_EQ(r["tracks"]["series"][0]["rows"][kMarked]["x_px"].get<double>(), m.x);
+  // The mark above re-tracked from the kept session (no decoding); tracking afresh gives the
+  // same pixels in every frame.
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_EQ(r["tracks"]["series"][0]["rows"][k]["x_px"], rows[k]["x_px"]) << k;
+    EXPECT_EQ(r["tracks"]["series"][0]["rows"][k]["y_px"], rows[k]["y_px"]) << k;
+  }
+  // Removed: the frame is tracked again.
+  r = again.mark({"patch", kMarked, true, 0, 0});
+  EXPECT_TRUE(r["tracks"]["series"][0]["manual_frames"].empty());
+  EXPECT_LT(std::abs(r["tracks"]["series"][0]["rows"][kMarked]["x_px"].get<double>() - mark_at(kMarked).x), 1.0);
+  // A mark on the start frame moves the start.
+  r = again.mark({"patch", 0, false, 31, 60});
+  EXPECT_EQ(r["starts"][0]["x"].get<double>(), 31);
+  EXPECT_TRUE(r["starts"][0]["marks"].empty());
+}
+
+TEST_F(WorkbenchTest, BounceAnalyzeFormIsItsDeclaredFields) {
+  Workbench wb(root);
+  const json forms = wb.forms();
+  ASSERT_TRUE(forms.contains("bounce analyze"));
+  std::vector<std::string> names;
+  for (const json& f : forms["bounce analyze"]["fields"]) names.push_back(f["name"]);
+  for (const char* want : {"track_a", "track_b", "a", "b", "mass", "inertia", "floor_y", "contact_duration", "impact"})
+    EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+  for (const char* studio : {"time_scale", "length_unit"})  // the tracks are in s and m
+    EXPECT_EQ(std::find(names.begin(), names.end(), studio), names.end()) << studio;
+  bool unit_of_floor = false;
+  for (const json& f : forms["bounce analyze"]["fields"]) unit_of_floor |= f["name"] == "floor_y" && f["unit"] == "m";
+  EXPECT_TRUE(unit_of_floor);
+  EXPECT_FALSE(forms["bounce analyze"]["results"].empty());
+  wb.open(root / "patch.avi");
+  EXPECT_THROW(wb.analyze("bounce analyze", {{"track_a", "patch"}, {"track_b", "patch"}}), InputError);  // not tracked yet
+  wb.track({"patch", "point", 30, 60, 0, {}});
+  EXPECT_THROW(wb.analyze("bounce analyze", {{"track_a", "patch"}, {"track_b", "patch"}, {"mass", -1}}), InputError);
+  EXPECT_THROW(wb.analyze("bounce analyze", {{"track_a", "patch"}, {"track_b", "nosuch"}}), InputError);
+  EXPECT_THROW(wb.analyze("bounce analyze", {{"bounces_out", "/tmp/x.csv"}}), InputError);  // the studio's file
+}
+
+TEST_F(WorkbenchTest, ACancelledTrackingLeavesTheProjectAsItWas) {
+  // A longer clip (400 frames of the disc going back and forth): cancelled from another thread
+  // as soon as its progress shows frames done, the tracking ends with an InputError, no track
+  // and no output is left, and the next tracking runs.
+  video::RenderOptions o;
+  o.width = 320;
+  o.height = 240;
+  o.fps = 50;
+  o.background = video::RenderOptions::Background::plain;
+  o.noise_sigma = 1;
+  const auto scene = [](double t) {
+    video::ShapePose disc;
+    disc.cx_px = 160 + 100 * std::sin(t);
+    disc.cy_px = 120;
+    disc.a_px = disc.b_px = 12;
+    disc.colour = cv::Scalar(90, 160, 90);
+    disc.mark = true;
+    disc.mark_size_px = 15;
+    return std::vector<video::ShapePose>{disc};
+  };
+  video::write_video((root / "long.avi").string(), scene, 400, o);
+  Workbench wb(root);
+  wb.open(root / "long.avi");
+  EXPECT_FALSE(wb.progress()["running"].get<bool>());
+  EXPECT_FALSE(wb.cancel()["cancelling"].get<bool>());  // nothing to cancel
+  std::atomic<bool> stop_watching{false};
+  std::thread canceller([&] {
+    while (!stop_watching) {
+      const json p = wb.progress();
+      if (p["running"].get<bool>() && p["done"].get<int>() > 0) {
+        EXPECT_EQ(p["action"], "tracking");
+        EXPECT_EQ(p["expected"], 400);
+        EXPECT_TRUE(wb.cancel()["cancelling"].get<bool>());
+        return;
+      }
+      std::this_thread::yield();
+    }
+  });
+  std::string message;
+  try {
+    wb.track({"disc", "point", 160, 120, 0, {}});
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  stop_watching = true;
+  canceller.join();
+  EXPECT_NE(message.find("tracking cancelled"), std::string::npos) << message;
+  EXPECT_TRUE(wb.state()["starts"].empty());
+  EXPECT_FALSE(fs::exists(root / "long.avi.tracks.csv"));
+  EXPECT_FALSE(wb.progress()["running"].get<bool>());
+  const json s = wb.track({"disc", "point", 160, 120, 0, {}});  // not cancelled: the flag was the last action's
+  EXPECT_EQ(s["tracks"]["series"][0]["rows"].size(), 400u);
+}
+
 TEST_F(WorkbenchTest, NoOutputThroughASymlinkOutOfTheFolder) {
   const fs::path outside = root.string() + "_outside.csv";
   fs::create_symlink(outside, root / "patch.avi.tracks.csv");
   Workbench wb(root);
   wb.open(root / "patch.avi");
-  EXPECT_THROW(wb.track({"patch", "point", 30, 60, 0}), InputError);
+  EXPECT_THROW(wb.track({"patch", "point", 30, 60, 0, {}}), InputError);
   EXPECT_FALSE(fs::exists(outside));
 }
 

@@ -485,4 +485,39 @@ std::string EllipseTracker::loss_hint() const {
   return hint;
 }
 
+EllipseObservation EllipseTracker::mark(const Frame& frame, double x_px, double y_px) {
+  Impl& s = *impl_;
+  TRIBOLAB_ASSERT(!s.centres.empty(), std::string("EllipseTracker::mark before start"));
+  const cv::Mat& img = frame.bgr.empty() ? frame.gray : frame.bgr;
+  if (!(x_px >= 0 && y_px >= 0 && x_px <= img.cols - 1 && y_px <= img.rows - 1)) {
+    throw InputError("ellipse " + s.name, "the mark " + fmt_point(x_px, y_px) + " of frame " +
+                                              std::to_string(frame.index) + " is outside the image");
+  }
+  double omega = s.spin_per_frame();
+  if (!std::isfinite(omega)) omega = 0;
+  const double phi = s.phi_last + omega * (frame.index - s.index_last);
+  // A mark where the motion model predicts the ball (as an accepted centre would be, within
+  // 3 px + a quarter of a frame's travel) continues it; elsewhere the motion restarts from the
+  // mark: the frames before it may have followed something else.
+  const int steps = std::max(1, frame.index - s.centres.back().index);
+  const cv::Point2d pred = s.predict_centre(frame.index);
+  const double speed = s.centres.size() >= 2
+                           ? std::hypot(pred.x - s.centres.back().x, pred.y - s.centres.back().y) / steps
+                           : s.speed_hint;
+  const bool continues = s.centres.size() >= 2 && !s.gave_up && s.lost_run == 0 &&
+                         std::hypot(x_px - pred.x, y_px - pred.y) <= 3 + 0.25 * speed;
+  s.speed_hint = std::max({s.speed_hint, speed, 1.0});
+  if (!continues) s.centres.clear();
+  s.centres.push_back({frame.index, x_px, y_px});
+  while (s.centres.size() > kMotionPoints) s.centres.pop_front();
+  s.phi_last = phi;
+  s.index_last = frame.index;
+  s.lost_run = 0;
+  s.gave_up = false;
+  const bool round = s.a_ref - s.b_ref < std::max(kRoundRatio * s.a_ref, kRoundPx);
+  EllipseObservation o = s.observe(frame.index, Ellipse{x_px, y_px, s.a_ref, s.b_ref, -phi}, phi, 1, false, round, 0);
+  o.centre.manual = true;
+  return o;
+}
+
 }  // namespace tribolab::video

@@ -48,6 +48,11 @@ class EllipseTracker {
   /// when none was lost): a weak edge fit (blur, lossy video: --ellipse-min-score) or nothing
   /// found near the prediction (hidden: --max-gap); and whether the tracker gave up.
   std::string loss_hint() const;
+  /// The user's mark of the centre for this frame (instead of update()): reported at the mark,
+  /// manual, score 1, with the running axes and the predicted orientation; the motion model
+  /// goes on through the mark when it lies where the model predicts the centre (as an accepted
+  /// centre would), else restarts from it (a lost object is searched for there again).
+  EllipseObservation mark(const Frame& frame, double x_px, double y_px);
 
  private:
   struct Impl;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace tribolab::video {
 namespace {
@@ -59,6 +60,10 @@ constexpr double kRivalMargin = 3;
 // A run of consecutive path points differing from the background by less than this share of
 // the path's median difference (medians over the run and over the path) is background (when that median is well above noise, 2 kFgHalf).
 constexpr double kFgShare = 0.15;
+// Where a manual mark is one of the three points of an acceleration, the path may turn
+// sharply (the user marks a bounce, or a point the tracker had wrong): that acceleration is
+// not gated but costs at most this (the gate's cost), and a mark has no reach limit.
+constexpr double kMarkAccCap = 0.5 * kAccGate * kAccGate;
 
 struct Candidate {
   double x = 0, y = 0;  // px
@@ -67,6 +72,7 @@ struct Candidate {
   double fg = 0;        // difference from the background, grey levels
   cv::Mat patch;        // CV_8U, template-sized grey patch at the rounded position
   cv::Point at;         // the patch's centre, px
+  bool manual = false;  // the user's mark: the step's only candidate
 };
 
 struct StepCandidates {
@@ -116,7 +122,11 @@ struct PathTracker::Impl {
   double reach = 0;        // largest motion per frame, px
   cv::Mat templ;           // CV_32F
   cv::Mat templ_half;      // templ at half resolution (coarse search), made when first needed
-  std::vector<StepCandidates> steps;  // steps[0]: the start (the click)
+  // The candidates found in every step, steps[0] the start (the click): they do not depend on
+  // the marks, so that finish() can be run again with other marks without a frame.
+  std::vector<StepCandidates> steps;
+  std::map<int, ManualMark> marks;    // by frame index
+  bool fg_done = false;               // the candidates' fg and cost are computed (at the first finish())
   std::vector<cv::Mat> samples;       // background samples (grey)
   int stride = 1, seen = 0;
   cv::Point2d lead[2];            // the last two confident sightings, px
@@ -222,6 +232,8 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   m.templ = templ;
   m.templ_half.release();
   m.steps.clear();
+  m.marks.clear();
+  m.fg_done = false;
   m.samples.clear();
   m.stride = 1;
   m.seen = 0;
@@ -241,6 +253,24 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   o.y_px = y_px;
   o.score = 1;
   return o;
+}
+
+void PathTracker::set_marks(std::vector<ManualMark> marks) {
+  Impl& m = *impl_;
+  if (m.steps.empty()) throw InputError("path tracker: set_marks() before start()");
+  m.marks.clear();
+  for (const ManualMark& k : marks) {
+    const std::string where = m.name + " mark at frame " + std::to_string(k.frame);
+    if (!(k.x_px >= 0 && k.y_px >= 0 && k.x_px <= m.size.width - 1 && k.y_px <= m.size.height - 1)) {
+      throw InputError(where, "(" + std::to_string(k.x_px) + ", " + std::to_string(k.y_px) + ") px lies outside the " +
+                                  std::to_string(m.size.width) + "x" + std::to_string(m.size.height) + " image");
+    }
+    if (k.frame <= m.steps.front().index) {
+      throw InputError(where, "the track starts at frame " + std::to_string(m.steps.front().index) +
+                                  ": a mark must come after its start (move the start instead)");
+    }
+    if (!m.marks.emplace(k.frame, k).second) throw InputError(where, "two marks on one frame");
+  }
 }
 
 void PathTracker::update(const Frame& frame) {
@@ -437,15 +467,45 @@ std::vector<Observation> PathTracker::finish() {
 }
 
 std::vector<Observation> PathTracker::Impl::finish() {
-  const int T = static_cast<int>(steps.size());
+  const int T = static_cast<int>(this->steps.size());
   const int G = opt.max_gap_frames + 1;  // largest step between two path points
-  // Unary costs: likeness and difference from the background median.
-  for (int t = 1; t < T; ++t) {
-    for (Candidate& c : steps[t].c) {
-      c.fg = foreground(c);
-      c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
+  // Unary costs: likeness and difference from the background median (once: the background
+  // samples are complete at the first finish()).
+  if (!fg_done) {
+    for (int t = 1; t < T; ++t) {
+      for (Candidate& c : this->steps[t].c) {
+        c.fg = foreground(c);
+        c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
+      }
     }
+    fg_done = true;
   }
+  // The steps the path is chosen among: a marked step's only candidate is its mark (cost 0;
+  // no fg: it takes no part in the background check below).
+  std::vector<StepCandidates> steps = this->steps;
+  for (int t = 1; t < T; ++t) {
+    const auto mk = marks.find(steps[t].index);
+    if (mk == marks.end()) continue;
+    Candidate c;
+    c.x = mk->second.x_px;
+    c.y = mk->second.y_px;
+    c.ncc = 1;
+    c.cost = 0;
+    c.fg = std::numeric_limits<double>::quiet_NaN();
+    c.manual = true;
+    steps[t].c.assign(1, c);
+  }
+  // Manual marks: the path passes through every one (no transition skips a marked step, the
+  // path ends at or after the last).
+  std::vector<int> marks_before(T + 1, 0);  // marked steps among 0 .. t-1
+  int last_mark = 0;
+  for (int t = 0; t < T; ++t) {
+    const bool marked = t > 0 && !steps[t].c.empty() && steps[t].c.front().manual;
+    marks_before[t + 1] = marks_before[t] + (marked ? 1 : 0);
+    if (marked) last_mark = t;
+  }
+  auto skips_mark = [&](int t0, int t1) { return marks_before[t1] - marks_before[t0 + 1] > 0; };  // a mark in (t0, t1)
+  auto manual = [&](int t, int k) { return steps[t].c[k].manual; };
   // States: (step t, candidate k, back step g, candidate j of step t - g): the path's last
   // two points, enough for its acceleration at the next one. off[t][k * G + g - 1] is the
   // first state of the block (k, g); the block holds one state per candidate of t - g.
@@ -462,6 +522,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
     // From the start (no velocity known) a gap does not widen the reach: the object was
     // clicked where it is, and something far away found frames later is something else.
+    if (manual(t0, k0) || manual(t1, k1)) return true;  // the user's mark: anywhere
     return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
   };
   // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
@@ -474,6 +535,10 @@ std::vector<Observation> PathTracker::Impl::finish() {
     const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
                                       : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
     const double sigma = kAccAbs + kAccRel * speed;
+    if (manual(ta, ka) || manual(tb, kb) || manual(tc, kc)) {
+      const double z = std::hypot(a.x, a.y) / sigma;
+      return std::min(0.5 * z * z, kMarkAccCap);
+    }
     if (tc - tb > 1) {
       // Found again after a gap: within reach of where the motion before it leads (linear
       // extrapolation), else something else has been found.
@@ -511,7 +576,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
   for (int t = 1; t < T; ++t) {
     for (State& s : S[t]) {
       const int tp = t - s.g;
-      if (!gate(tp, s.j, t, s.k)) continue;
+      if (skips_mark(tp, t) || !gate(tp, s.j, t, s.k)) continue;
       const double u = steps[t].c[s.k].cost + kMissCost * (s.g - 1);
       if (tp == 0) {
         s.F = static_cast<float>(u);
@@ -541,9 +606,10 @@ std::vector<Observation> PathTracker::Impl::finish() {
   // Backward: the best cost after a state, ending anywhere (the frames left cost kMissCost).
   for (int t = T - 1; t >= 0; --t) {
     for (State& s : S[t]) {
-      double best = kMissCost * (T - 1 - t);
+      double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
       for (int g3 = 1; g3 <= G && t + g3 < T; ++g3) {
         const int t3 = t + g3;
+        if (skips_mark(t, t3)) break;
         for (int k3 = 0; k3 < static_cast<int>(steps[t3].c.size()); ++k3) {
           const auto [a, b] = block(t3, k3, g3);
           const int idx = a + s.k;  // the successor whose previous point is this state's
@@ -559,9 +625,9 @@ std::vector<Observation> PathTracker::Impl::finish() {
   }
   // The best path (forward and backward agree on its cost: F + B is the same along it).
   // (The optimum is also S[0][0].B, the backward pass's best from the start.)
-  double total = kMissCost * (T - 1);  // the start alone, every further frame lost
+  double total = last_mark == 0 ? kMissCost * (T - 1) : kInf;  // the start alone, every further frame lost
   int bt = 0, bs = 0;
-  for (int t = 1; t < T; ++t) {
+  for (int t = std::max(1, last_mark); t < T; ++t) {
     for (int i = 0; i < static_cast<int>(S[t].size()); ++i) {
       const double c = S[t][i].F + kMissCost * (T - 1 - t);
       if (c < total) {
@@ -585,7 +651,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
   // the path (a still patch of texture reached across a gap) is not the object.
   std::vector<double> path_fg;
   for (int t = 1; t < T; ++t) {
-    if (chosen[t] >= 0) path_fg.push_back(steps[t].c[chosen[t]].fg);
+    if (chosen[t] >= 0 && !steps[t].c[chosen[t]].manual) path_fg.push_back(steps[t].c[chosen[t]].fg);
   }
   double typical_fg = 0;
   if (!path_fg.empty()) {
@@ -603,9 +669,15 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     int e = t;
     std::vector<double> v;
-    while (e < T && chosen[e] >= 0) v.push_back(steps[e].c[chosen[e]].fg), ++e;
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    for (int i = t; i < e; ++i) run_fg[i] = v[v.size() / 2];
+    for (; e < T && chosen[e] >= 0; ++e) {
+      if (!steps[e].c[chosen[e]].manual) v.push_back(steps[e].c[chosen[e]].fg);
+    }
+    double run = typical_fg;  // a run of marks alone is not background
+    if (!v.empty()) {
+      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+      run = v[v.size() / 2];
+    }
+    for (int i = t; i < e; ++i) run_fg[i] = run;
     t = e;
   }
   std::vector<Observation> obs;
@@ -615,6 +687,16 @@ std::vector<Observation> PathTracker::Impl::finish() {
     o.frame = steps[t].index;
     o.lost = true;
     const int k = chosen[t];
+    if (k < 0 && !steps[t].c.empty() && steps[t].c.front().manual) {
+      // No path reaches the mark (the object hidden longer than max_gap_frames around it): the mark stands.
+      o.x_px = steps[t].c.front().x;
+      o.y_px = steps[t].c.front().y;
+      o.score = 1;
+      o.lost = false;
+      o.manual = true;
+      obs.push_back(o);
+      continue;
+    }
     if (k < 0) {
       ++lost_none;
       obs.push_back(o);
@@ -624,6 +706,13 @@ std::vector<Observation> PathTracker::Impl::finish() {
     o.x_px = c.x;
     o.y_px = c.y;
     o.score = std::clamp(c.ncc, 0.0, 1.0);
+    if (c.manual) {
+      o.lost = false;
+      o.manual = true;
+      o.score = 1;
+      obs.push_back(o);
+      continue;
+    }
     bool rival = false;
     for (int r = 0; r < static_cast<int>(steps[t].c.size()) && !rival; ++r) {
       const Candidate& q = steps[t].c[r];

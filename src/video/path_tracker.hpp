@@ -37,9 +37,18 @@ class PathTracker {
   /// Takes the object around (x_px, y_px) in `first`. Throws InputError when the point is
   /// outside the image (`name` in the message); a plain, low-texture object is not refused.
   Observation start(const Frame& first, double x_px, double y_px, const std::string& name);
+  /// The user's marks (any order; frames after the start's), replacing any given before; at
+  /// any time after start(). In finish(), a marked frame's only candidate is its mark and the
+  /// best path passes through every mark (reported manual, score 1), so the path re-tracks
+  /// from a mark backward as well as forward. The candidates collected by update() do not
+  /// depend on the marks: finish() may be called again after new marks (a correction), which
+  /// re-tracks without any frame. Throws InputError for a mark outside the image or not after
+  /// the start frame, or two on one frame.
+  void set_marks(std::vector<ManualMark> marks);
   /// Collects the candidates of the next frame (nothing is decided yet).
   void update(const Frame& frame);
-  /// The track: one observation per frame given to update(), in order.
+  /// The track: one observation per frame given to update(), in order. May be called again
+  /// (after set_marks()): the same candidates, the path chosen anew.
   std::vector<Observation> finish();
   /// The template side chosen at start(), px.
   int patch_px() const;

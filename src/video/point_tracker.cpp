@@ -427,6 +427,51 @@ Observation PointTracker::update(const Frame& frame) {
   return impl_->update(frame);
 }
 
+Observation PointTracker::mark(const Frame& frame, double x_px, double y_px) {
+  if (!impl_ || impl_->big.empty()) throw InputError("point tracker: mark() before start()");
+  Impl& m = *impl_;
+  const cv::Mat& gray = frame.gray;
+  if (gray.size() != m.image_size) {
+    throw InputError(m.name, "frame " + std::to_string(frame.index) + " is not of the start frame's size");
+  }
+  if (frame.index <= m.last_frame) {
+    throw InputError(m.name, "frame " + std::to_string(frame.index) + " does not follow frame " +
+                                 std::to_string(m.last_frame));
+  }
+  if (!(x_px >= 0 && y_px >= 0 && x_px <= gray.cols - 1 && y_px <= gray.rows - 1)) {
+    throw InputError(m.name, "the mark (" + std::to_string(x_px) + ", " + std::to_string(y_px) +
+                                 ") px of frame " + std::to_string(frame.index) + " lies outside the image");
+  }
+  // The pattern's angle carries on from the prediction. A mark where the motion model predicts
+  // the point (within the gate an accepted match must fall in) continues it; elsewhere the
+  // motion restarts from the mark (what was followed before it may have been something else),
+  // as after a start.
+  const MotionState pred = m.model.predict(frame.index);
+  const double angle = pred.angle_rad;
+  double worst = 0;
+  for (double e : m.innovation_px) worst = std::max(worst, e);
+  const bool continues = m.model.size() >= 3 && m.gap == 0 && !m.gave_up &&
+                         std::hypot(x_px - pred.x_px, y_px - pred.y_px) <= std::max<double>(m.half(), 4 + 3 * worst);
+  m.last_frame = frame.index;
+  if (!continues) {
+    m.model.reset();
+    m.restarted = true;
+    m.innovation_px.clear();
+    m.innovation_rad.clear();
+  }
+  m.model.add(frame.index, x_px, y_px, angle);
+  m.gap = 0;
+  m.gave_up = false;
+  Observation o;
+  o.frame = frame.index;
+  o.x_px = x_px;
+  o.y_px = y_px;
+  o.score = 1;
+  o.angle_rad = angle;
+  o.manual = true;
+  return o;
+}
+
 Observation PointTracker::Impl::update(const Frame& frame) {
   const cv::Mat& gray = frame.gray;
   if (gray.size() != image_size || gray.type() != CV_8UC1) {

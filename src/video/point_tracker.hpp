@@ -36,6 +36,14 @@ struct Observation {
                               ///< direction (ellipse), image frame, counter-clockwise on screen, unwrapped
   double major_px = 0;        ///< ellipse semi-major axis, px (0 for a point)
   double minor_px = 0;        ///< ellipse semi-minor axis, px (0 for a point)
+  bool manual = false;        ///< true: a manual mark (the user's position, score 1), not tracked
+};
+
+/// A position the user gave for one frame of a track (docs/theory.md#manual-marks): the
+/// tracker reports it as it is (manual, score 1) and tracks on from it.
+struct ManualMark {
+  int frame = 0;              ///< video frame index
+  double x_px = 0, y_px = 0;  ///< image px (x right, y down)
 };
 
 class PointTracker {
@@ -50,6 +58,10 @@ class PointTracker {
   Observation start(const Frame& first, double x_px, double y_px, const std::string& name);
   /// Finds the point in the next frame.
   Observation update(const Frame& frame);
+  /// The user's mark for this frame (instead of update()): reported manual with score 1; the
+  /// template is kept; the motion model goes on through the mark when it lies where the model
+  /// predicts the point (within its gate), else restarts from it (as after a start).
+  Observation mark(const Frame& frame, double x_px, double y_px);
 
  private:
   struct Impl;

@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <deque>
 #include <limits>
+#include <optional>
 #include <set>
 #include <type_traits>
 #include <variant>
@@ -53,6 +55,13 @@ std::string TrackVideoOptions::validate() const {
       if (!std::isfinite(t.x_px) || !std::isfinite(t.y_px)) return opt + " " + t.name + ": position must be finite";
       if (t.frame < -1) return opt + " " + t.name + ": the start frame must not be negative";
     }
+    std::set<int> marked;
+    for (const ManualMark& m : t.marks) {
+      const std::string where = field("mark") + " " + t.name + "@" + std::to_string(m.frame);
+      if (!std::isfinite(m.x_px) || !std::isfinite(m.y_px)) return where + ": the position must be finite";
+      if (m.frame < 0) return where + ": the frame must not be negative";
+      if (!marked.insert(m.frame).second) return where + ": two marks on one frame";
+    }
     for (const std::string& n : output_names(t)) {
       if (!names.insert(n).second) return opt + ": the track name '" + n + "' is used twice";
     }
@@ -71,14 +80,25 @@ struct Follower {
   bool started = false;
   std::vector<Frame> pending;  // PathTracker: the frames (index, t; no image) it answers at the end
   std::vector<std::size_t> series;  // indices into the result's series
+  // Frame and ellipse trackers with marks: the frames just before the next mark (copies),
+  // re-tracked backward from it when it is reached; and the last frame they may reach back to.
+  std::deque<Frame> recent;
+  int reach_back_to = 0;
 };
 
+/// Frames before a mark that a frame or ellipse tracker re-tracks backward from it (copies of
+/// them are held while the mark approaches: 16 frames of 1080p are 130 MB).
+constexpr std::size_t kBackwardFrames = 16;
+/// A backward and a forward position this close (px) agree: the forward track is kept from there.
+constexpr double kAgreePx = 2;
+
 TrackedRow make_row(const Frame& f, const VideoInput& in, double x_px, double y_px, double score,
-                    bool lost) {
+                    bool lost, bool manual = false) {
   TrackedRow r;
   r.frame = f.index;
   r.t = f.t;
   r.lost = lost;
+  r.manual = manual && !lost;
   if (lost || !std::isfinite(x_px) || !std::isfinite(y_px)) {
     r.lost = true;
     r.x = r.y = r.x_px = r.y_px = kNaN;
@@ -96,9 +116,10 @@ TrackedRow make_row(const Frame& f, const VideoInput& in, double x_px, double y_
 
 void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<TrackedSeries>& out,
             const Observation& o) {
-  out[w.series[0]].rows.push_back(make_row(f, in, o.x_px, o.y_px, o.score, o.lost));
+  out[w.series[0]].rows.push_back(make_row(f, in, o.x_px, o.y_px, o.score, o.lost, o.manual));
   out[w.series[0]].angle_rad.push_back(o.angle_rad);
   if (o.refound && !o.lost) out[w.series[0]].refound_frames.push_back(f.index);
+  if (o.manual) out[w.series[0]].manual_frames.push_back(f.index);
 }
 
 void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<TrackedSeries>& out,
@@ -106,8 +127,30 @@ void record(Follower& w, const Frame& f, const VideoInput& in, std::vector<Track
   const Observation& c = e.centre;
   const double pos[3][2] = {{c.x_px, c.y_px}, {e.ax_px, e.ay_px}, {e.bx_px, e.by_px}};
   for (int k = 0; k < 3; ++k) {
-    out[w.series[k]].rows.push_back(make_row(f, in, pos[k][0], pos[k][1], c.score, c.lost));
+    // The mark is of the centre; the ends follow from the running axes and orientation.
+    out[w.series[k]].rows.push_back(make_row(f, in, pos[k][0], pos[k][1], c.score, c.lost, c.manual && k == 0));
     out[w.series[k]].angle_rad.push_back(c.angle_rad);
+    if (c.manual && k == 0) out[w.series[k]].manual_frames.push_back(f.index);
+  }
+}
+
+void check_marks(const Target& target, int start_frame, const VideoInput& in) {
+  for (const ManualMark& m : target.marks) {
+    const std::string where = field("mark") + " " + target.name + "@" + std::to_string(m.frame);
+    if (!in.clip.contains(m.frame)) {
+      throw InputError(where, "frame " + std::to_string(m.frame) + " is not one of the clip's frames (from " +
+                                  std::to_string(in.clip.start_frame) + " every " + std::to_string(in.clip.step_size) +
+                                  ")");
+    }
+    if (m.frame <= start_frame) {
+      throw InputError(where, "the track starts at frame " + std::to_string(start_frame) +
+                                  ": a mark must come after its start (to move the start, start the track there)");
+    }
+    if (m.x_px < 0 || m.y_px < 0 || m.x_px > in.info.width - 1 || m.y_px > in.info.height - 1) {
+      throw InputError(where, "the mark (" + io::format_number(m.x_px) + ", " + io::format_number(m.y_px) +
+                                  ") px is outside the " + std::to_string(in.info.width) + "x" +
+                                  std::to_string(in.info.height) + " image");
+    }
   }
 }
 
@@ -255,20 +298,110 @@ HumanComparison compare_with_human(const TrackedSeries& s, const track::Track& h
   return c;
 }
 
-TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options) {
-  if (const auto err = options.validate(); !err.empty()) throw InputError(err);
+/// What the frame loop leaves for the end of the tracking (and for a re-tracking).
+struct TrackSession::Impl {
+  std::string input;
+  TrackVideoResult streamed;       // input, frames, and the rows recorded while streaming
+  std::vector<Follower> followers;
+  std::vector<std::pair<Frame, cv::Mat>> thumbs;  // frame facts and its downscaled image
+  double scale = 1;                // thumbnails' scale
+  std::vector<std::string> reader_warnings;
+};
+
+TrackSession::TrackSession() = default;
+TrackSession::~TrackSession() = default;
+bool TrackSession::empty() const { return !impl; }
+
+namespace {
+
+/// The rows of `w` from frame `m`'s mark backward: a fresh tracker of the follower's kind started
+/// at the mark runs over the held frames in reverse (their indices mirrored, 2 m - k, so that
+/// they increase as the trackers expect), and replaces the forward rows until the two agree
+/// (within kAgreePx) or the backward one is lost; never at or before `w.reach_back_to`.
+void track_backward(Follower& w, const Frame& marked, const ManualMark& mk, const VideoInput& in,
+                    std::vector<TrackedSeries>& out, const TrackVideoOptions& options) {
+  const auto mirrored = [&](const Frame& f) {
+    Frame g = f;  // shares the images
+    g.index = 2 * marked.index - f.index;
+    return g;
+  };
+  const bool ellipse = std::holds_alternative<EllipseTracker>(w.tracker);
+  std::vector<EllipseObservation> back;  // per frame from the mark backward (a point's in .centre)
+  try {
+    if (ellipse) {
+      EllipseTracker t(options.ellipse);
+      back.push_back(t.start(mirrored(marked), mk.x_px, mk.y_px, w.target.name));
+      for (auto it = w.recent.rbegin(); it != w.recent.rend() && it->index > w.reach_back_to; ++it) {
+        back.push_back(t.update(mirrored(*it)));
+        if (back.back().centre.lost) break;
+      }
+    } else {
+      PointTracker t(options.point);
+      EllipseObservation e;
+      e.centre = t.start(mirrored(marked), mk.x_px, mk.y_px, w.target.name);
+      back.push_back(e);
+      for (auto it = w.recent.rbegin(); it != w.recent.rend() && it->index > w.reach_back_to; ++it) {
+        e.centre = t.update(mirrored(*it));
+        back.push_back(e);
+        if (e.centre.lost) break;
+      }
+    }
+  } catch (const InputError&) {
+    return;  // no object to start on at the mark (too little texture, no contrasting ball): forward only
+  }
+  TrackedSeries& centre = out[w.series[0]];
+  const std::size_t at_mark = centre.rows.size() - 1;  // the mark's row, just recorded
+  // An ellipse's ends: the backward tracker labels them afresh; A is the end nearest the
+  // forward A at the mark, and the orientation continues the forward one.
+  bool swap = false;
+  double turn = 0;
+  if (ellipse) {
+    const TrackedRow& fa = out[w.series[1]].rows[at_mark];
+    const EllipseObservation& b0 = back.front();
+    swap = std::hypot(b0.ax_px - fa.x_px, b0.ay_px - fa.y_px) > std::hypot(b0.bx_px - fa.x_px, b0.by_px - fa.y_px);
+    const double a0 = b0.centre.angle_rad + (swap ? kPi : 0);
+    turn = 2 * kPi * std::round((centre.angle_rad[at_mark] - a0) / (2 * kPi)) + (swap ? kPi : 0);
+  } else {
+    turn = centre.angle_rad[at_mark];  // the backward pattern's angle is relative to the mark's
+  }
+  for (std::size_t k = 1; k < back.size() && k <= at_mark; ++k) {
+    const Observation& b = back[k].centre;
+    const std::size_t row = at_mark - k;
+    TrackedRow& f = centre.rows[row];
+    if (b.lost) break;
+    if (!f.lost && std::hypot(f.x_px - b.x_px, f.y_px - b.y_px) <= kAgreePx) break;
+    Frame meta;
+    meta.index = f.frame;
+    meta.t = f.t;
+    const double pos[3][2] = {{b.x_px, b.y_px},
+                              {swap ? back[k].bx_px : back[k].ax_px, swap ? back[k].by_px : back[k].ay_px},
+                              {swap ? back[k].ax_px : back[k].bx_px, swap ? back[k].ay_px : back[k].by_px}};
+    for (std::size_t s = 0; s < w.series.size(); ++s) {
+      out[w.series[s]].rows[row] = make_row(meta, in, pos[s][0], pos[s][1], b.score, false);
+      out[w.series[s]].angle_rad[row] = b.angle_rad + turn;
+      auto& refound = out[w.series[s]].refound_frames;
+      refound.erase(std::remove(refound.begin(), refound.end(), f.frame), refound.end());
+    }
+  }
+}
+
+/// Starts every target and streams the clip through its tracker (the rows of the frame
+/// trackers; the path trackers collect candidates).
+void stream(TrackSession::Impl& session, const std::string& input, const TrackVideoOptions& options) {
   TrackVideoResult result;
   result.input = open_input(input, options.source);
   const VideoInput& in = result.input;
   std::vector<Follower> followers;
   for (const Target& t : options.targets) {
-    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}, {}};
+    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}, {}, {}, 0};
     if (w.target.kind == Target::Kind::ellipse) {
       w.tracker = EllipseTracker(options.ellipse);
     } else if (options.offline_points) {
       w.tracker = PathTracker(options.path);
     }
     resolve_start(w, in);
+    check_marks(w.target, w.start_frame, in);
+    w.reach_back_to = w.start_frame;
     for (const std::string& n : output_names(t)) {
       w.series.push_back(result.series.size());
       TrackedSeries s;
@@ -283,24 +416,49 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
   const int expected = reader.expected_steps();
   const std::set<int> thumb_steps = thumbnail_steps(options.thumbnails, expected);
   const double scale = std::min(1.0, double(kThumbWidth) / std::max(1, in.info.width));
-  std::vector<std::pair<Frame, cv::Mat>> thumbs;  // frame facts and its downscaled image
+  session.scale = scale;
+  std::vector<std::pair<Frame, cv::Mat>>& thumbs = session.thumbs;
   Frame f;
   while (reader.next(f)) {
     for (Follower& w : followers) {
       if (!w.started && f.index != w.start_frame) continue;
       std::visit(
           [&](auto& tracker) {
+            using Tracker = std::decay_t<decltype(tracker)>;
+            const auto mark = std::find_if(w.target.marks.begin(), w.target.marks.end(),
+                                           [&](const ManualMark& m) { return m.frame == f.index; });
             if (!w.started) {
               record(w, f, in, result.series, tracker.start(f, w.start_x, w.start_y, w.target.name));
+              if constexpr (std::is_same_v<Tracker, PathTracker>) tracker.set_marks(w.target.marks);
               w.started = true;
-            } else if constexpr (std::is_same_v<std::decay_t<decltype(tracker)>, PathTracker>) {
+            } else if constexpr (std::is_same_v<Tracker, PathTracker>) {
               tracker.update(f);  // answers in finish(), after the last frame
               Frame meta;
               meta.index = f.index;
               meta.t = f.t;
               w.pending.push_back(std::move(meta));
+            } else if (mark != w.target.marks.end()) {
+              record(w, f, in, result.series, tracker.mark(f, mark->x_px, mark->y_px));
+              track_backward(w, f, *mark, in, result.series, options);
+              w.recent.clear();
+              w.reach_back_to = f.index;
             } else {
               record(w, f, in, result.series, tracker.update(f));
+            }
+            if constexpr (!std::is_same_v<Tracker, PathTracker>) {
+              // Hold this frame when a mark follows within kBackwardFrames frames.
+              const bool near_mark = std::any_of(w.target.marks.begin(), w.target.marks.end(), [&](const ManualMark& m) {
+                return m.frame > f.index && m.frame - f.index <= static_cast<int>(kBackwardFrames) * std::max(1, in.clip.step_size);
+              });
+              if (near_mark && mark == w.target.marks.end()) {
+                Frame copy;
+                copy.index = f.index;
+                copy.t = f.t;
+                copy.bgr = f.bgr.clone();
+                copy.gray = f.gray.clone();
+                w.recent.push_back(std::move(copy));
+                if (w.recent.size() > kBackwardFrames) w.recent.pop_front();
+              }
             }
           },
           w.tracker);
@@ -323,6 +481,21 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
                            std::to_string(result.frames) + " frames decoded)");
     }
   }
+  session.reader_warnings = reader.warnings();
+  session.input = input;
+  session.streamed = std::move(result);
+  session.followers = std::move(followers);
+}
+
+/// The end of a tracking: the path trackers' answers, summaries, checks, thumbnails, warnings.
+TrackVideoResult conclude(TrackSession::Impl& session) {
+  TrackVideoResult result;
+  result.input = session.streamed.input;
+  result.series = session.streamed.series;
+  result.frames = session.streamed.frames;
+  const VideoInput& in = result.input;
+  std::vector<Follower>& followers = session.followers;
+  const std::string& input = session.input;
   std::vector<std::string> hints;  // per follower: why a path track lost frames
   for (Follower& w : followers) {
     std::string hint;
@@ -337,6 +510,16 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
   }
   for (TrackedSeries& s : result.series) summarise(s);
   for (const Follower& w : followers) {
+    const std::vector<int>& done = result.series[w.series[0]].manual_frames;
+    for (const ManualMark& m : w.target.marks) {
+      if (std::find(done.begin(), done.end(), m.frame) == done.end()) {
+        throw InputError(field("mark") + " " + w.target.name + "@" + std::to_string(m.frame),
+                         "frame " + std::to_string(m.frame) + " is beyond the end of the clip (" +
+                             std::to_string(result.frames) + " frames decoded)");
+      }
+    }
+  }
+  for (const Follower& w : followers) {
     if (w.target.from_track.empty()) continue;
     for (const auto& m : in.marks_px) {
       if (m.name == w.target.from_track) {
@@ -344,8 +527,9 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
       }
     }
   }
-  for (auto& [meta, img] : thumbs) {
-    draw_tracks(img, scale, meta.index, result.series);
+  for (const auto& [meta, small] : session.thumbs) {
+    cv::Mat img = small.clone();  // drawn again at every re-tracking
+    draw_tracks(img, session.scale, meta.index, result.series);
     Thumbnail t;
     t.frame = meta.index;
     t.t = meta.t;
@@ -355,7 +539,7 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
     result.thumbnails.push_back(std::move(t));
   }
   result.warnings = in.warnings;
-  for (const auto& w : reader.warnings()) result.warnings.push_back(w);
+  for (const auto& w : session.reader_warnings) result.warnings.push_back(w);
   for (std::size_t wi = 0; wi < followers.size(); ++wi) {  // an ellipse's ends are lost with its centre
     const Follower& w = followers[wi];
     const TrackedSeries& s = result.series[w.series[0]];
@@ -383,6 +567,48 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
   }
   return result;
 }
+
+}  // namespace
+
+TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options, TrackSession* keep) {
+  if (const auto err = options.validate(); !err.empty()) throw InputError(err);
+  auto session = std::make_unique<TrackSession::Impl>();
+  stream(*session, input, options);
+  TrackVideoResult result = conclude(*session);
+  if (keep != nullptr) keep->impl = std::move(session);
+  return result;
+}
+
+std::optional<TrackVideoResult> retrack(TrackSession& session, const std::vector<Target>& targets) {
+  if (!session.impl || targets.size() != session.impl->followers.size()) return std::nullopt;
+  TrackSession::Impl& s = *session.impl;
+  std::vector<std::size_t> changed;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const Target& a = targets[i];
+    const Follower& w = s.followers[i];
+    const Target& b = w.target;
+    if (a.kind != b.kind || a.name != b.name || a.x_px != b.x_px || a.y_px != b.y_px || a.frame != b.frame ||
+        a.from_track != b.from_track) {
+      return std::nullopt;
+    }
+    const bool same = a.marks.size() == b.marks.size() &&
+                      std::equal(a.marks.begin(), a.marks.end(), b.marks.begin(), [](const ManualMark& x, const ManualMark& y) {
+                        return x.frame == y.frame && x.x_px == y.x_px && x.y_px == y.y_px;
+                      });
+    if (same) continue;
+    if (!std::holds_alternative<PathTracker>(w.tracker)) return std::nullopt;  // streams forward: decode again
+    changed.push_back(i);
+  }
+  for (std::size_t i : changed) check_marks(targets[i], s.followers[i].start_frame, s.streamed.input);  // before any change
+  for (std::size_t i : changed) {
+    Follower& w = s.followers[i];
+    std::get<PathTracker>(w.tracker).set_marks(targets[i].marks);
+    w.target.marks = targets[i].marks;
+  }
+  return conclude(s);
+}
+
+
 
 track::TrackSet to_track_set(const TrackVideoResult& result) {
   track::TrackSet set;

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ struct Target {
   double x_px = 0, y_px = 0;  ///< start position in image pixels
   int frame = -1;          ///< start frame (-1: the clip's first frame)
   std::string from_track;  ///< non-empty: start from this project track's first mark
+  /// The user's corrections (docs/cli.md#track-video, --mark): frames after the start, each
+  /// reported as marked (manual, score 1), the tracking restarting from each; an ellipse's
+  /// marks are of its centre.
+  std::vector<ManualMark> marks;
 };
 
 struct TrackVideoOptions {
@@ -50,6 +55,7 @@ struct TrackedRow {
   double x_px = 0, y_px = 0;  ///< image position, px
   double score = 0;        ///< [0, 1]
   bool lost = false;       ///< no reliable position (x, y, x_px, y_px are NaN)
+  bool manual = false;     ///< the user's mark (Target::marks), not tracked; score 1
 };
 
 struct TrackedSeries;
@@ -86,6 +92,7 @@ struct TrackedSeries {
   /// Frames where the point was found again after more than max_gap_frames lost in a row
   /// (its motion model restarted there); empty for an ellipse.
   std::vector<int> refound_frames;
+  std::vector<int> manual_frames;      ///< frames of the user's marks (Target::marks)
   double median_score = 0;
   std::optional<HumanComparison> vs_human;
 };
@@ -105,8 +112,35 @@ struct TrackVideoResult {
   std::vector<std::string> warnings;
 };
 
+/// What a tracking keeps so that a correction re-tracks without decoding the video again
+/// (retrack()): the trackers (the path trackers' candidates and background), the rows of the
+/// frame-to-frame trackers, the thumbnails' frames.
+class TrackSession {
+ public:
+  TrackSession();
+  ~TrackSession();
+  TrackSession(const TrackSession&) = delete;
+  TrackSession& operator=(const TrackSession&) = delete;
+  /// The caller's description of what was tracked (the app: every option but the marks), to
+  /// tell whether a new run may re-track instead of tracking afresh.
+  std::string key;
+  bool empty() const;
+  struct Impl;
+  std::unique_ptr<Impl> impl;
+};
+
 /// Runs the whole workflow. Throws InputError for bad input (see source.hpp, the trackers).
-TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options);
+/// With `keep`, what a re-tracking needs is left there.
+TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& options,
+                             TrackSession* keep = nullptr);
+
+/// The tracking of `session` again with `targets` (those tracked, in the same order, with the
+/// same starts) whose marks may differ: a path-tracked point's new marks choose its path anew
+/// among the candidates already found (PathTracker::finish), every other track is as it was;
+/// the same result as track_video() with these marks. nullopt when that is not possible (no
+/// session, other targets, or new marks of a frame-to-frame or ellipse track, which stream
+/// forward: track afresh). Throws InputError for a bad mark, the session unchanged.
+std::optional<TrackVideoResult> retrack(TrackSession& session, const std::vector<Target>& targets);
 
 /// The tracked positions as a TrackSet (lost rows left out), for the analyses and --write-trk.
 track::TrackSet to_track_set(const TrackVideoResult& result);

@@ -42,6 +42,35 @@ struct BounceAnalyzeOptions {
   analysis::BounceAnalyzeOptions checked() const;
 };
 
+/// The declaration of every option of `bounce analyze` for one file (app/common/option_fields.hpp):
+/// the studio's form is made from it (src/studio/); the command line binds by hand still (its
+/// --floor-y and --contact-duration take one value per file of a series).
+inline const Fields<BounceAnalyzeOptions>& bounce_analyze_fields() {
+  using O = BounceAnalyzeOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("file", &O::file, "", "Tracker .trk/.trz, Export Data text or tidy CSV").as(FieldRole::input_files).needed();
+    d.add("track_a", &O::track_a, "", "name of the track of tip A").needed();
+    d.add("track_b", &O::track_b, "", "name of the track of tip B").needed();
+    d.add("time_scale", &O::time_scale, "", "real seconds per file second (240 fps shown at 30: 0.125)").in(ranges::time_scale);
+    d.add("length_unit", &O::length_unit, "", "unit of the file's lengths, overriding the file (m, cm, mm, ...)");
+    d.group(&O::ball, ball_fields());
+    d.add("floor_y", &O::floor_y, "m", "floor height in the file's frame; unset: from the flights and contact_duration")
+        .in(ranges::position);
+    d.add("sigma_floor_y", &O::sigma_floor_y, "m", "standard uncertainty of floor_y").in(ranges::noise);
+    d.add("contact_duration", &O::contact_duration, "s",
+          "contact duration (to half a frame): enables mean_normal_force, and locates the floor without floor_y")
+        .in(ranges::duration);
+    d.add("exclude", &O::exclude, "", "points always dropped on each side of the impact (contact frames are dropped automatically)");
+    d.add("impact", &O::impact, "", "which detected impact to analyse (1 = first)");
+    d.add("bounces_out", &O::bounces_out, "", "also write the analysed bounce as a `bounce fit` table (CSV)")
+        .as(FieldRole::output_path);
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
 struct BounceAnalyzeResult {
   nlohmann::json json;                 ///< exactly what `--json` prints
   track::Track tip_a, tip_b;           ///< the tracks as read (m, s)

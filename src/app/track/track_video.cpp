@@ -14,7 +14,10 @@
 #include "numerics/error.hpp"
 #include "report/html.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <optional>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -58,6 +61,23 @@ video::Target parse_target(const std::string& text, video::Target::Kind kind, co
   t.x_px = xy[0];
   t.y_px = xy[1];
   return t;
+}
+
+/// NAME@FRAME=X,Y: the user's mark of track NAME in FRAME (an ellipse's: of its centre).
+std::pair<std::string, video::ManualMark> parse_mark(const std::string& text) {
+  const std::string where = field("mark") + " " + text.substr(0, 60);
+  const auto at = text.find('@'), eq = text.find('=');
+  if (at == std::string::npos || eq == std::string::npos || at == 0 || eq < at) {
+    throw InputError(where, "expected NAME@FRAME=X,Y (pixels: x right, y down)");
+  }
+  const double f = io::parse_double(text.substr(at + 1, eq - at - 1), where + " (frame)");
+  if (f != std::floor(f) || f < 0 || f > 1e8) throw InputError(where, "the frame after @ must be a whole number from 0");
+  const auto xy = numbers(text.substr(eq + 1), 2, where);
+  video::ManualMark m;
+  m.frame = static_cast<int>(f);
+  m.x_px = xy[0];
+  m.y_px = xy[1];
+  return {text.substr(0, at), m};
 }
 
 bool ends_with_trk(const std::string& path) {
@@ -108,6 +128,17 @@ video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
     t.name = name;
     t.from_track = name;
     o.targets.push_back(t);
+  }
+  for (const auto& text : a.mark) {
+    auto [name, m] = parse_mark(text);
+    const auto t = std::find_if(o.targets.begin(), o.targets.end(), [&](const video::Target& x) { return x.name == name; });
+    if (t == o.targets.end()) {
+      std::string names;
+      for (const auto& x : o.targets) names += (names.empty() ? "'" : ", '") + x.name + "'";
+      throw InputError(field("mark") + " " + text.substr(0, 60),
+                       "no track named '" + name.substr(0, 40) + "' is followed (" + names + ")");
+    }
+    t->marks.push_back(m);
   }
   if (!a.calibrate.empty()) {
     const auto v = numbers(a.calibrate, 5, field("calibrate"));
@@ -171,6 +202,7 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
                         {"lost", lost_rows},
                         {"lost_ranges", lost},
                         {"refound_frames", s.refound_frames},
+                        {"manual_frames", s.manual_frames},
                         {"median_score", s.median_score}};
     if (s.vs_human) {
       t["vs_human"] = {{"frames", s.vs_human->frames},
@@ -195,6 +227,40 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
   return j;
 }
 
+/// Everything a tracking depends on but the marks and the output paths (a session is re-used
+/// only for the same): the input file (and its size and time), targets, calibration, trackers.
+std::string session_key(const TrackVideoOptions& a) {
+  std::string k;
+  auto add = [&](const std::string& s) { k += std::to_string(s.size()) + ":" + s + ";"; };
+  auto num = [&](const std::optional<double>& v) { add(v ? io::format_number(*v) : "-"); };
+  add(a.input);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(a.input, ec);
+  add(ec ? "?" : std::to_string(size));
+  const auto time = std::filesystem::last_write_time(a.input, ec);
+  add(ec ? "?" : std::to_string(time.time_since_epoch().count()));
+  for (const auto* list : {&a.start, &a.ellipse, &a.from_track}) {
+    add(std::to_string(list->size()));
+    for (const auto& s : *list) add(s);
+  }
+  num(a.scale);
+  add(a.calibrate);
+  add(a.origin);
+  num(a.axes_deg);
+  num(a.fps);
+  num(a.time_scale);
+  add(a.entry);
+  num(a.min_score);
+  num(a.patch ? std::optional<double>(*a.patch) : std::nullopt);
+  add(a.point_tracker);
+  num(a.search ? std::optional<double>(*a.search) : std::nullopt);
+  num(a.max_turn_deg);
+  num(a.ellipse_min_score);
+  num(a.max_gap);
+  add(a.report.empty() ? "no report" : "report");  // thumbnails or none
+  return k;
+}
+
 }  // namespace
 
 TrackVideoResult track_video(const TrackVideoOptions& options) {
@@ -205,7 +271,18 @@ TrackVideoResult track_video(const TrackVideoOptions& options) {
   io::AtomicFile csv(options.out);
   std::unique_ptr<io::AtomicFile> trk;
   if (!options.write_trk.empty()) trk = std::make_unique<io::AtomicFile>(options.write_trk);
-  video::TrackVideoResult r = video::track_video(options.input, o);
+  std::optional<video::TrackVideoResult> again;
+  const std::string key = options.session ? session_key(options) : std::string();
+  if (options.session && !options.session->empty() && options.session->key == key) {
+    again = video::retrack(*options.session, o.targets);
+  }
+  video::TrackVideoResult r;
+  if (again) {
+    r = std::move(*again);
+  } else {
+    r = video::track_video(options.input, o, options.session.get());
+    if (options.session) options.session->key = key;
+  }
   video::write_csv(csv.stream(), r);
   if (trk) {
     const io::TrkWriteSpec spec = video::trk_spec(r, options.write_trk, r.warnings);
@@ -361,7 +438,7 @@ const ResultKeys& track_video_result_keys() {
       {"calibration.axes_deg", "deg", ""}, {"calibration.key_frames", "", ""},
       {"track_names", "", ""}, {"tracks.*.kind", "", ""}, {"tracks.*.start_frame", "", ""}, {"tracks.*.rows", "", ""},
       {"tracks.*.tracked", "", ""}, {"tracks.*.lost", "", ""}, {"tracks.*.lost_ranges", "", "[first, last] frames"},
-      {"tracks.*.refound_frames", "", ""}, {"tracks.*.median_score", "", ""},
+      {"tracks.*.refound_frames", "", ""}, {"tracks.*.manual_frames", "", "frames of the --mark corrections"}, {"tracks.*.median_score", "", ""},
       {"tracks.*.vs_human.frames", "", ""}, {"tracks.*.vs_human.median_px", "px", ""},
       {"tracks.*.vs_human.max_px", "px", ""}, {"tracks.*.vs_human", "", "null without human marks"},
       {"warnings", "", ""}, {"out", "", ""}, {"write_trk", "", ""}, {"report", "", ""},

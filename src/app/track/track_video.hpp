@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@ struct TrackVideoOptions {
   std::vector<std::string> start;      ///< points: NAME=X,Y[@FRAME], image px (x right, y down)
   std::vector<std::string> ellipse;    ///< balls/discs: NAME=X,Y[@FRAME] inside the object, px
   std::vector<std::string> from_track; ///< Tracker project tracks to follow from their first mark
+  std::vector<std::string> mark;       ///< corrections: NAME@FRAME=X,Y, image px; the track passes there (manual, score 1)
   std::optional<double> scale;         ///< plain video: metres per pixel
   std::string calibrate;               ///< plain video: X1,Y1,X2,Y2,LENGTH (px, px, px, px, m)
   std::string origin;                  ///< world origin in the image, X,Y px; empty: bottom-left pixel
@@ -42,6 +44,10 @@ struct TrackVideoOptions {
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   /// Called after each frame with (frames done, frames expected); may be empty.
   std::function<void(int, int)> progress;
+  /// Kept between runs (the studio): a run whose options differ from the session's only in
+  /// `mark` re-tracks from it (video::retrack: no decoding, no search) when it can; every run
+  /// leaves its tracking there. Empty: track afresh.
+  std::shared_ptr<video::TrackSession> session;
 };
 
 struct TrackVideoResult {
