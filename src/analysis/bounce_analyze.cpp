@@ -175,6 +175,38 @@ bool is_hop(const track::Track& centre, const track::Segment& seg) {
   return !(apex > t.front() && apex < t.back());
 }
 
+/// Why no impact was found, for the message: when the centre falls to its lowest point and then
+/// never rises above it by more than 3 times the position noise, the ball landed without a
+/// rebound the track can show (a low, short hop under noise); "" otherwise (no velocity jump).
+std::string no_rebound_reason(const track::Track& centre, double noise) {
+  // On y averaged over 5 points (noise / sqrt 5), so that the extremes of the noise alone
+  // stay well inside 3 sds of a single point.
+  const auto& p = centre.points;
+  constexpr std::size_t w = 5;
+  if (p.size() < 4 * w || !(noise > 0)) return {};
+  std::vector<double> y(p.size() - w + 1);
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    for (std::size_t k = 0; k < w; ++k) y[i] += p[i + k].y;
+    y[i] /= w;
+  }
+  const auto low = static_cast<std::size_t>(std::min_element(y.begin(), y.end()) - y.begin());
+  if (low < w || low + w > y.size()) return {};  // still falling at the end (no landing), or no fall
+  const double fall = *std::max_element(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(low)) - y[low];
+  const double rise = *std::max_element(y.begin() + static_cast<std::ptrdiff_t>(low), y.end()) - y[low];
+  if (!(fall > 10 * noise) || !(rise < 3 * noise)) return {};
+  auto mm = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f mm", v * 1000);
+    return std::string(b);
+  };
+  char t[32];
+  std::snprintf(t, sizeof t, "%.3f s", p[low + w / 2].t);
+  return "the ball falls " + mm(fall) + " to its lowest point near t = " + t + " and then rises at most " + mm(rise) +
+         " above it (5-point means), within 3 times the position noise (~" + mm(noise) +
+         "): no rebound flight the track can show, so e cannot be measured; a larger image of the ball (less noise) "
+         "or a higher frame rate is needed";
+}
+
 /// The impact options.impact of the centre track and the flights on either side of it, less
 /// options.exclude points next to it (docs/theory.md#bounce-analysis). Fills r.impacts,
 /// r.impact_used, r.pre and r.post's ranges; throws InputError when there is no such impact
@@ -192,9 +224,12 @@ track::Impact choose_impact(const track::Track& a, const track::Track& b, const 
     }
   }
   if (r.impacts.impacts.empty()) {
-    throw InputError("no impact found in the centre track of '" + a.name + "' and '" + b.name +
-                     "' (no significant velocity jump; position noise ~" +
-                     std::to_string(r.impacts.noise_y * 1000).substr(0, 5) + " mm)");
+    const std::string why = no_rebound_reason(r.centre, r.impacts.noise_y);
+    throw InputError("no impact found in the centre track of '" + a.name + "' and '" + b.name + "' (" +
+                     (why.empty() ? "no significant velocity jump; position noise ~" +
+                                        std::to_string(r.impacts.noise_y * 1000).substr(0, 5) + " mm"
+                                  : why) +
+                     ")");
   }
   // The whole impacts: a detected impact followed by a flight that never reaches its apex
   // before the next one (the ball leaves still moving down, or touches again while rising)

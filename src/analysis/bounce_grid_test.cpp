@@ -147,5 +147,40 @@ TEST(BounceGrid, TheIssuesThrowsAreAnalysed) {
   }
 }
 
+// Issue 27: at 0.7 m with 5 mm of noise the 60 deg / -10 rad/s throw rebounds at 0.23 m/s (a
+// 2.7 mm rise of the centre against ~3.7 mm of noise): where no impact is found the message said
+// "no significant velocity jump", which is false (vy goes from -3.4 m/s to about 0). Now it says
+// that the ball lands and shows no rebound flight. Every seed is either analysed with e within
+// 4 sigmas, or refused. Measured 3 Dec 2026 over seeds 1-20: 12 analysed; of the 8 refused, 4 say
+// there is no visible rebound, 3 that the fitted post-impact flight misses the floor (a hop this
+// low is a few noisy frames), and 1 (seed 4) keeps "no significant velocity jump": after its
+// lowest point its 5-point means rise by more than 3 noise sds. Not yet analysable: issue 27.
+TEST(BounceGrid, ALandingWithoutAVisibleReboundIsSaidSo) {
+  int refused = 0, said = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    SynthVideoOptions o;
+    o.theta_deg = 60;
+    o.omega = -10;
+    o.height = 0.7;
+    o.noise = 0.005;
+    o.seed = seed;
+    const auto v = synth_video(o);
+    BounceAnalyzeOptions ao;
+    ao.floor_y = 0;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    try {
+      const auto r = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), ao);
+      EXPECT_NEAR(r.e_velocity, -v.truth.separation.vy / v.truth.touch.vy, 4 * r.sigma_e_velocity);
+    } catch (const Error& e) {
+      ++refused;
+      const std::string m = e.what();
+      std::printf("seed %llu: %s\n", static_cast<unsigned long long>(seed), m.c_str());
+      said += m.find("no rebound flight the track can show") != std::string::npos;
+    }
+  }
+  std::printf("60 deg / -10 rad/s at 5 mm: %d of 20 seeds refused, %d saying there is no visible rebound\n", refused, said);
+  EXPECT_GT(said, 0);
+}
+
 }  // namespace
 }  // namespace tribolab::analysis
