@@ -34,10 +34,11 @@ const json& schema() {
   return s;
 }
 
-/// The declared result keys of a command of the schema.
-app::ResultKeys keys_of(const json& c) {
+/// The declared keys of a command of the schema: its results, or with `which` its
+/// "series_results" (the summary of several files).
+app::ResultKeys keys_of(const json& c, const char* which = "results") {
   app::ResultKeys k;
-  for (const json& r : c["results"]) k.push_back({r["key"], r["unit"], r["help"]});
+  for (const json& r : c[which]) k.push_back({r["key"], r["unit"], r["help"]});
   return k;
 }
 
@@ -47,6 +48,7 @@ app::ResultKeys keys_of(const json& c) {
 struct SampleRun {
   using Args = std::function<std::string(const std::string& dir, const json& setup)>;
   SampleRun(Args a, std::string s = "") : args(std::move(a)), setup(std::move(s)) {}
+  SampleRun(std::string s, Args a) : args(std::move(a)), setup(std::move(s)) {}  ///< setup first, for long setups
   Args args;
   std::string setup;  ///< run first (with {dir} replaced), or empty
 };
@@ -140,13 +142,13 @@ const std::map<std::string, std::string>& without_sample_run() {
 }
 
 /// The arguments of `name`'s sample run, its setup done in a fresh folder.
-std::string sample_args(const std::string& name) {
-  const SampleRun& s = sample_runs().at(name);
+/// The arguments of run `s` (named `name`), its setup done in a fresh folder "<prefix><name>":
+/// the setup's commands, separated by " && ", run in order; the last one's JSON is kept.
+std::string args_after_setup(const SampleRun& s, const std::string& prefix, const std::string& name) {
   std::string slug = name;
-  for (char& c : slug) if (c == ' ' || c == '-') c = '_';
-  const std::string dir = temp_dir("schema_" + slug);
+  for (char& c : slug) if (c == ' ' || c == '-' || c == '@') c = '_';
+  const std::string dir = temp_dir(prefix + slug);
   json setup;
-  // The setup's commands, separated by " && ", run in order; the last one's JSON is kept.
   for (std::size_t start = 0; start < s.setup.size();) {
     const std::size_t end = std::min(s.setup.find(" && ", start), s.setup.size());
     std::string cmd = s.setup.substr(start, end - start);
@@ -156,6 +158,8 @@ std::string sample_args(const std::string& name) {
   }
   return s.args(dir, setup);
 }
+
+std::string sample_args(const std::string& name) { return args_after_setup(sample_runs().at(name), "schema_", name); }
 
 /// The commands with declared result keys, and their sample runs' JSON and listing (run once).
 struct Listed {
@@ -330,13 +334,9 @@ TEST(Schema, TheListingsOfIssue27SayTheRightUnits) {
   EXPECT_TRUE(std::regex_search(text["bounce analyze"], std::regex("\\n +x +0\\.\\d+\\n"))) << text["bounce analyze"];  // r_squared.x
 }
 
-/// A series (several files) of each command that takes them: its setup and arguments.
-struct SeriesRun {
-  std::string setup;                                ///< with {dir}, " && " between commands
-  std::function<std::string(const std::string&, const json&)> args;  ///< from the folder and the setup's last JSON
-};
-const std::map<std::string, SeriesRun>& series_runs() {
-  static const std::map<std::string, SeriesRun> m = {
+/// A series (several files) of each command that takes them ("command@variant" for a second one).
+const std::map<std::string, SampleRun>& series_runs() {
+  static const std::map<std::string, SampleRun> m = {
       {"incline analyze",  // one angle, three launch speeds: the stop relations (eqs 7-10)
        {"incline synth --mu 0.634 --phi-deg 20.96 --v0 2.0 --seed 3 --out {dir}/a.txt && "
         "incline synth --mu 0.634 --phi-deg 20.96 --v0 2.62 --seed 4 --out {dir}/b.txt && "
@@ -375,27 +375,9 @@ const std::map<std::string, SeriesRun>& series_runs() {
 
 /// Runs `name`'s series in a fresh folder with `extra` arguments; its stdout.
 std::string series_output(const std::string& name, const std::string& extra) {
-  const SeriesRun& r = series_runs().at(name);
-  std::string slug = name;
-  for (char& c : slug) if (c == ' ' || c == '-' || c == '@') c = '_';
-  const std::string dir = temp_dir("schema_series_" + slug);
-  json setup;
-  for (std::size_t start = 0; start < r.setup.size();) {
-    const std::size_t end = std::min(r.setup.find(" && ", start), r.setup.size());
-    std::string cmd = r.setup.substr(start, end - start);
-    for (std::size_t p; (p = cmd.find("{dir}")) != std::string::npos;) cmd.replace(p, 5, "'" + dir + "'");
-    setup = run_json(cmd);
-    start = end + 4;
-  }
-  const RunResult out = run_tribolab(r.args(dir, setup) + extra);
+  const RunResult out = run_tribolab(args_after_setup(series_runs().at(name), "schema_series_", name) + extra);
   EXPECT_EQ(out.exit_code, 0) << name << ": " << out.err;
   return out.out;
-}
-
-app::ResultKeys series_keys_of(const json& c) {
-  app::ResultKeys k;
-  for (const json& r : c["series_results"]) k.push_back({r["key"], r["unit"], r["help"]});
-  return k;
 }
 
 TEST(Schema, EveryKeyOfASeriesIsDeclared) {
@@ -415,7 +397,7 @@ TEST(Schema, EveryKeyOfASeriesIsDeclared) {
     const json& c = *it;
     ASSERT_TRUE(c.contains("series_results")) << command << " takes several files but declares no summary keys";
     const json j = json::parse(series_output(name, " --json"));
-    const app::ResultKeys rows = keys_of(c), summary = series_keys_of(c);
+    const app::ResultKeys rows = keys_of(c), summary = keys_of(c, "series_results");
     std::vector<std::string> paths;
     schema_leaves(j["runs"], "", paths);
     for (const std::string& p : paths) EXPECT_NE(app::find_result_key(rows, p), nullptr) << c["command"] << ": row key " << p;
