@@ -292,6 +292,23 @@ TEST(TrackerTrk, MarkBeyondAMillionPixelsIsRefused) {
   expect_trk_error(bad, "x (px) = 1e+308 is beyond");
 }
 
+// Found by fuzz_trk_roundtrip in CI: 3e27 px per unit on one axis and 31 on the other made
+// the writer put a mark at 1e11 px, which its own reader then refused.
+TEST(TrackerTrk, TheWriterRefusesAMarkItsReaderWouldRefuse) {
+  TrkWriteSpec s = spec();
+  const std::vector<Track> far{{"far", {{3, 0, 3000.0, 0.5}}}};  // at 400 px/m, 30 deg: x = 1.04e6 px
+  try {
+    write_trk(far, s);
+    FAIL() << "a mark at 1.04e6 px was written";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("track 'far' frame 3: the position maps to pixel"),
+              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("beyond +-1000000 px"), std::string::npos) << e.what();
+  }
+  const std::vector<Track> near{{"near", {{3, 0, 2000.0, 0.5}}}};  // x = 6.9e5 px: written, read
+  EXPECT_EQ(parse_trk_project(write_trk(near, s), "n.trk").marks_px.at(0).points.size(), 1u);
+}
+
 // Regression (issue 26): two tracks of one name: --track picked the first, silently.
 TEST(TrackImport, TwoTracksOfOneNameAreRefused) {
   std::vector<Track> tracks = world_tracks();

@@ -1,6 +1,7 @@
 // Writing Tracker projects (.trk XML, .trz zip): see tracker_trk.hpp.
 #include "io/tracker_trk.hpp"
 
+#include "io/text.hpp"
 #include "numerics/error.hpp"
 
 #include <zip.h>
@@ -122,9 +123,18 @@ std::string write_trk(const std::vector<track::Track>& tracks, const TrkWriteSpe
     for (const auto& p : t.points) {
       // key frame in force at this frame
       const auto [px, py] = world_to_image(coord_at(spec.coords, p.frame), p.x, p.y);
+      // The reader refuses a mark beyond kMaxTrackCoordinate pixels, so the writer does too:
+      // nothing is written that would not read back (a scale of 1e27 px per unit against 31
+      // on the other axis turns a rounding of the world position into 1e11 px).
       if (!std::isfinite(px) || !std::isfinite(py)) {
         throw InputError("write_trk", "track '" + t.name + "' frame " + std::to_string(p.frame) +
                                           ": the position maps to no finite pixel");
+      }
+      if (std::abs(px) > kMaxTrackCoordinate || std::abs(py) > kMaxTrackCoordinate) {
+        throw InputError("write_trk", "track '" + t.name + "' frame " + std::to_string(p.frame) +
+                                          ": the position maps to pixel (" + format_number(px) + ", " +
+                                          format_number(py) + "), beyond +-" + format_number(kMaxTrackCoordinate) +
+                                          " px, which tribolab would refuse to read back");
       }
       o << "                <property name=\"[" << p.frame << "]\" type=\"object\">\n"
         << "                <object class=\"org.opensourcephysics.cabrillo.tracker.PointMass$FrameData\">\n"
