@@ -54,24 +54,10 @@ void add_analyze(CLI::App* area) {
   };
   auto opts = std::make_shared<Opts>();
   auto& s = opts->o;
-  auto& o = s.each;
   auto* cmd = area->add_subcommand("analyze", "The rugby-ball study's experiment 1: v, omega, e and energies before/after one bounce from the two tracked tips");
   cmd->footer(help::kBounceAnalyze);
-  cmd->add_option("FILE", s.files, "Tracker .trk/.trz, Export Data text or tidy CSV; several files: a series with a summary (the rugby-ball study's experiment 2)")->required();
-  cmd->add_option("--track-a", o.track_a, "name of the track of tip A")->required();
-  cmd->add_option("--track-b", o.track_b, "name of the track of tip B")->required();
-  cmd->add_option("--time-scale", o.time_scale, "real seconds per file second (240 fps shown at 30: 0.125)");
-  cmd->add_option("--length-unit", o.length_unit, "unit of the file's lengths, overriding the file (m, cm, mm, ...)");
-  add_ball_options(cmd, o.ball);
-  add_number(*cmd, "--floor-y", s.floor_y, "floor height in the file's frame, m; unset: from the flights and --contact-duration (needed for e_height without it); one, or one per file (comma separated)")->type_name("NUM[,NUM...]");
-  cmd->add_option("--sigma-floor-y", o.sigma_floor_y, "standard uncertainty of --floor-y, m (the same for every file)");
-  add_number(*cmd, "--contact-duration", s.contact_duration, "contact duration, s (to half a frame): enables mean_normal_force, and locates the floor when --floor-y is not given; one, or one per file (comma separated)")->type_name("NUM[,NUM...]");
-  cmd->add_option("--exclude", o.exclude, "points always dropped on each side of the impact (contact frames are dropped automatically)");
-  cmd->add_option("--impact", o.impact, "which detected impact to analyse");
-  cmd->add_option("--bounces-out", o.bounces_out, "also write the analysed bounces as a `bounce fit` table (CSV)")->type_name("FILE.csv");
-  add_report_option(*cmd, o.report, o.plotly);
+  add_declared_options(*cmd, s, bounce_analyze_series_fields(), bounce_analyze_result_keys());
   add_json_flag(*cmd, opts->json);
-  declare_results(*cmd, bounce_analyze_result_keys());
   declare_series_results(*cmd, bounce_analyze_series_result_keys());
   cmd->callback([opts] {
     opts->o.series = cli_series_options();

@@ -2,6 +2,8 @@
 
 #include "text_listing.hpp"
 
+#include <cctype>
+
 namespace tribolab::cli {
 
 std::map<const CLI::App*, DeclaredCommand>& declared_commands() {
@@ -23,6 +25,24 @@ std::string declared_help(const app::FieldDecl& f) {
   }
   if (!f.unit.empty()) h += ", " + f.unit;
   return h;
+}
+
+std::string flags_for_field_names(std::string help, const std::vector<std::string>& names) {
+  const auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
+  for (const std::string& name : names) {
+    if (name.find('_') == std::string::npos) continue;
+    const std::string flag = flag_of(name);
+    for (std::size_t at = help.find(name); at != std::string::npos; at = help.find(name, at)) {
+      const std::size_t end = at + name.size();
+      if ((at > 0 && word_char(help[at - 1])) || (end < help.size() && word_char(help[end]))) {
+        at = end;
+        continue;
+      }
+      help.replace(at, name.size(), flag);
+      at += flag.size();
+    }
+  }
+  return help;
 }
 
 void print_declared(const CLI::App& cmd, const nlohmann::json& result, bool as_json) {

@@ -26,6 +26,7 @@
 #include <variant>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace tribolab::cli {
 
@@ -49,6 +50,11 @@ void declare_series_results(const CLI::App& cmd, const app::ResultKeys& keys);
 /// "<help>[: a|b|c], <unit>": the help line of a declared field.
 std::string declared_help(const app::FieldDecl& f);
 
+/// `help` with every whole-word mention of one of `names` (the command's other fields, where a
+/// declaration's help says "unset: from the flights and contact_duration") spelled as its flag
+/// (--contact-duration). Only names with an underscore: a one-word name ("mass") is prose too.
+std::string flags_for_field_names(std::string help, const std::vector<std::string>& names);
+
 /// Prints a declared command's result as print_result does, the listing's units from the
 /// command's declared result keys.
 void print_declared(const CLI::App& cmd, const nlohmann::json& result, bool as_json);
@@ -58,9 +64,11 @@ void print_declared(const CLI::App& cmd, const nlohmann::json& result, bool as_j
 template <class O>
 void add_declared_options(CLI::App& cmd, O& o, const app::Fields<O>& fields, const app::ResultKeys& results) {
   using app::FieldRole;
+  std::vector<std::string> names;
+  for (const app::Field<O>& f : fields) names.push_back(f.name);
   for (const app::Field<O>& f : fields) {
     if (f.role == FieldRole::notebook || f.role == FieldRole::plotly) continue;
-    const std::string help = declared_help(f);
+    const std::string help = flags_for_field_names(declared_help(f), names);
     if (f.role == FieldRole::report) {
       const app::Field<O>* plotly = fields.find("plotly");
       const app::FieldRef path_ref = f.ref(o);

@@ -48,7 +48,8 @@ void tidy(CLI::Option& opt) {
     return;
   }
   if (type == "FLOAT") {
-    opt.type_name("NUM");
+    // a list split at commas (add_number on a vector): one value, or several
+    opt.type_name(opt.get_delimiter() == ',' ? "NUM[,NUM...]" : "NUM");
   } else if (type == "UINT") {
     opt.type_name("INT");
   } else if (type == "TEXT") {

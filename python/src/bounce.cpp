@@ -157,24 +157,8 @@ void bind_bounce(py::module_& m) {
         "Tracked bounces from the two tips of the ball (`tribolab bounce analyze`, the rugby-ball study's "
         "experiment 1): velocities, spin, e and energies before and after, with uncertainties; "
         "several files: a series with a summary (the rugby-ball study's experiment 2).");
-    TRIBOLAB_ARG(c, files);
-    TRIBOLAB_OPT(c, each.track_a);
-    TRIBOLAB_OPT(c, each.track_b);
-    TRIBOLAB_OPT(c, each.time_scale);
-    TRIBOLAB_OPT(c, each.length_unit);
-    TRIBOLAB_OPT(c, each.ball.ball.a);
-    TRIBOLAB_OPT(c, each.ball.ball.b);
-    TRIBOLAB_OPT(c, each.ball.ball.mass);
-    TRIBOLAB_OPT(c, each.ball.ball.inertia);
-    TRIBOLAB_OPT(c, floor_y);
-    TRIBOLAB_OPT(c, each.sigma_floor_y);
-    TRIBOLAB_OPT(c, contact_duration);
-    TRIBOLAB_OPT(c, each.exclude);
-    TRIBOLAB_OPT(c, each.impact);
-    TRIBOLAB_OPT(c, each.bounces_out);
-    TRIBOLAB_OPT(c, series.threads);
-    TRIBOLAB_OPT(c, each.report);
-    TRIBOLAB_OPT(c, each.plotly);
+    c.declared(app::bounce_analyze_series_fields());
+    TRIBOLAB_OPT(c, series.threads);  // a notebook may limit the cores; the command line uses them all
     c.def(&app::bounce_analyze_series,
           [](const app::BounceAnalyzeSeriesResult& r, py::dict& d) {
             using track::RigidBodyRow;

@@ -1,6 +1,7 @@
 #include "app/bounce/bounce_series.hpp"
 
 #include "app/bounce/report_bounce_series.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 #include "app/common/series_json.hpp"
 #include "analysis/series_plausibility.hpp"
@@ -18,11 +19,9 @@ namespace {
 using nlohmann::json;
 using namespace tribolab::analysis;
 
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
 json mean_json(const WeightedMean& m) {
-  return {{"n", m.n}, {"mean", num(m.mean)}, {"sigma", num(m.sigma)}, {"sigma_scaled", num(m.sigma_scaled)},
-          {"chi2", num(m.chi2)}, {"dof", m.dof}, {"p_value", num(m.p_value)}};
+  return {{"n", m.n}, {"mean", json_number(m.mean)}, {"sigma", json_number(m.sigma)}, {"sigma_scaled", json_number(m.sigma_scaled)},
+          {"chi2", json_number(m.chi2)}, {"dof", m.dof}, {"p_value", json_number(m.p_value)}};
 }
 
 json above_json(const AboveOne& a) { return {{"n", a.n}, {"above", a.above}, {"significant", a.significant}}; }
@@ -47,25 +46,25 @@ json bounce_series_json(const BounceSeriesSummary& s, const std::vector<BounceSe
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
     pts.push_back({{"file", files[i]},
-                   {"collision_angle_deg", num(p.collision_angle_deg)},
-                   {"sigma_collision_angle_deg", num(p.sigma_collision_angle_deg)},
-                   {"theta_deg", num(p.theta_deg)},
-                   {"e_velocity", num(p.e_velocity)},
-                   {"sigma_e_velocity", num(p.sigma_e_velocity)},
-                   {"e_height", num(p.e_height)},
-                   {"sigma_e_height", num(p.sigma_e_height)},
+                   {"collision_angle_deg", json_number(p.collision_angle_deg)},
+                   {"sigma_collision_angle_deg", json_number(p.sigma_collision_angle_deg)},
+                   {"theta_deg", json_number(p.theta_deg)},
+                   {"e_velocity", json_number(p.e_velocity)},
+                   {"sigma_e_velocity", json_number(p.sigma_e_velocity)},
+                   {"e_height", json_number(p.e_height)},
+                   {"sigma_e_height", json_number(p.sigma_e_height)},
                    {"energy_pre", energy_json(p.energy_pre)},
                    {"energy_post", energy_json(p.energy_post)},
-                   {"mean_normal_force", num(p.mean_normal_force)},
-                   {"sigma_mean_normal_force", num(p.sigma_mean_normal_force)},
-                   {"contact_point_vx", num(p.contact_point_vx)},
-                   {"contact_point_vy", num(p.contact_point_vy)},
-                   {"contact_point_speed", num(p.contact_point_speed)},
-                   {"sigma_contact_point_speed", num(p.sigma_contact_point_speed)}});
+                   {"mean_normal_force", json_number(p.mean_normal_force)},
+                   {"sigma_mean_normal_force", json_number(p.sigma_mean_normal_force)},
+                   {"contact_point_vx", json_number(p.contact_point_vx)},
+                   {"contact_point_vy", json_number(p.contact_point_vy)},
+                   {"contact_point_speed", json_number(p.contact_point_speed)},
+                   {"sigma_contact_point_speed", json_number(p.sigma_contact_point_speed)}});
   }
   auto named_run = [&](std::size_t i) {
-    return json{{"file", files[i]}, {"contact_point_speed", num(points[i].contact_point_speed)},
-                {"collision_angle_deg", num(points[i].collision_angle_deg)}};
+    return json{{"file", files[i]}, {"contact_point_speed", json_number(points[i].contact_point_speed)},
+                {"collision_angle_deg", json_number(points[i].collision_angle_deg)}};
   };
   return {{"e_velocity", mean_json(s.e_velocity)},
           {"e_height", mean_json(s.e_height)},
@@ -78,10 +77,10 @@ json bounce_series_json(const BounceSeriesSummary& s, const std::vector<BounceSe
                          {"height", above_json(s.above_one_height)}}},
           {"bin_width_deg", o.bin_width_deg},
           {"bins", bins},
-          {"energy_ratio_mean", num(s.energy_ratio_mean)},
+          {"energy_ratio_mean", json_number(s.energy_ratio_mean)},
           {"n_energy_gain", s.n_energy_gain},
-          {"mean_normal_force", {{"n", s.n_force}, {"mean", num(s.force_mean)}, {"sd", num(s.force_sd)},
-                                 {"e_correlation", num(s.force_e_correlation)}}},
+          {"mean_normal_force", {{"n", s.n_force}, {"mean", json_number(s.force_mean)}, {"sd", json_number(s.force_sd)},
+                                 {"e_correlation", json_number(s.force_e_correlation)}}},
           {"contact_point", {{"fastest", named_run(s.fastest_contact_run)}, {"slowest", named_run(s.slowest_contact_run)}}},
           {"outliers", outliers},
           {"points", pts}};
@@ -90,6 +89,28 @@ json bounce_series_json(const BounceSeriesSummary& s, const std::vector<BounceSe
 }  // namespace tribolab::app
 
 namespace tribolab::app {
+
+const Fields<BounceAnalyzeSeriesOptions>& bounce_analyze_series_fields() {
+  using S = BounceAnalyzeSeriesOptions;
+  static const Fields<S> f = [] {
+    Fields<S> d;
+    for (const Field<BounceAnalyzeOptions>& g : bounce_analyze_fields()) {
+      if (g.name == "file") {
+        d.add("files", &S::files, "", g.help + "; several files: a series with a summary (the rugby-ball study's experiment 2)")
+            .as(FieldRole::input_files)
+            .needed();
+      } else if (g.name == "floor_y" || g.name == "contact_duration") {
+        FieldDecl& v = d.add(g.name, g.name == "floor_y" ? &S::floor_y : &S::contact_duration, g.unit,
+                             g.help + "; one, or one per file (comma separated)");
+        v.range = g.range;
+      } else {
+        d.add_from(&S::each, g);
+      }
+    }
+    return d;
+  }();
+  return f;
+}
 
 std::vector<BounceAnalyzeOptions> BounceAnalyzeSeriesOptions::per_file() const {
   if (files.empty()) throw MissingOptionError("FILE", "is required");

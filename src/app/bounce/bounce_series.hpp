@@ -35,6 +35,11 @@ struct BounceAnalyzeSeriesOptions {
   std::vector<BounceAnalyzeOptions> per_file() const;
 };
 
+/// The declaration of `bounce analyze FILE...` (the command line binds from it): the one-file
+/// command's fields (bounce_analyze_fields) in their order, `file` as the list `files`, and
+/// floor_y and contact_duration as one value for every file or one per file.
+const Fields<BounceAnalyzeSeriesOptions>& bounce_analyze_series_fields();
+
 /// One file of a `bounce analyze` series.
 struct BounceAnalyzeRun {
   std::string file;

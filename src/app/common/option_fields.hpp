@@ -92,12 +92,20 @@ class Fields {
   Fields& group(G O::*member, const Fields<G>& inner, const std::vector<std::string>& except = {}) {
     for (const Field<G>& g : inner) {
       if (std::find(except.begin(), except.end(), g.name) != except.end()) continue;
-      Field<O> f;
-      static_cast<FieldDecl&>(f) = g;
-      f.ref = [member, r = g.ref](O& o) -> FieldRef { return r(o.*member); };
-      fields_.push_back(std::move(f));
+      add_from(member, g);
     }
     return *this;
+  }
+
+  /// One field of another struct's declaration, reached through `member` (a command over
+  /// several files declares its shared options as the one-file command's, one by one).
+  template <class G>
+  FieldDecl& add_from(G O::*member, const Field<G>& g) {
+    Field<O> f;
+    static_cast<FieldDecl&>(f) = g;
+    f.ref = [member, r = g.ref](O& o) -> FieldRef { return r(o.*member); };
+    fields_.push_back(std::move(f));
+    return fields_.back();
   }
 
   /// `--report FILE.html` and `--plotly MODE` (cli/report_option.hpp), every command's pair.
