@@ -4,6 +4,7 @@
 #include "analysis/series_plausibility.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/message_number.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,12 +21,6 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
 }  // namespace
 
 BounceSeriesPoint point_of(const BounceAnalysis& r) {
@@ -171,9 +166,9 @@ BounceSeriesSummary summarize_bounce_series(const std::vector<BounceSeriesPoint>
         for (std::size_t j = 0; j < x.size(); ++j) {
           const double z = 0.6745 * std::abs(x[j] - med) / mad;
           if (z > o.outlier_z) {
-            s.outliers.push_back({members[k][j], "e_velocity " + fmt(x[j]) + " far from the median " + fmt(med) +
-                                                     " of its collision-angle bin " + fmt(b.low_deg) + "–" +
-                                                     fmt(b.high_deg) + " deg (modified z " + fmt(z) + ")"});
+            s.outliers.push_back({members[k][j], "e_velocity " + message_number(x[j], 3) + " far from the median " + message_number(med, 3) +
+                                                     " of its collision-angle bin " + message_number(b.low_deg, 3) + "–" +
+                                                     message_number(b.high_deg, 3) + " deg (modified z " + message_number(z, 3) + ")"});
           }
         }
       }

@@ -1,5 +1,6 @@
 #include "analysis/incline_fit.hpp"
 
+#include "numerics/message_number.hpp"
 #include "track/outliers.hpp"
 
 #include "analysis/frame_rotation.hpp"
@@ -18,13 +19,6 @@
 
 namespace tribolab::analysis {
 namespace {
-
-std::string fmt(double v, int digits = 4) {
-  std::ostringstream o;
-  o.precision(digits);
-  o << v;
-  return o.str();
-}
 
 Estimate estimate(const numerics::FitResult& f, std::size_t i, double level) {
   const double h = f.ci_half_width(i, level);
@@ -212,8 +206,8 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
   double range = 0;
   for (const auto& q : pts) range = std::max(range, std::hypot(q.x - pts[0].x, q.y - pts[0].y));
   if (!(range > 10 * noise))
-    throw InputError(where(track), "shows no motion (largest displacement " + fmt(range) +
-                                       " m, position noise " + fmt(noise) + " m)");
+    throw InputError(where(track), "shows no motion (largest displacement " + message_number(range, 4) +
+                                       " m, position noise " + message_number(noise, 4) + " m)");
   if (!(pts.back().x > pts.front().x + 5 * noise))
     throw InputError(where(track), "does not move toward +x; the analysis assumes the launch along +x "
                                    "(mirror the x axis)");
@@ -468,33 +462,33 @@ std::string gravity_warning(const GravityCheck& c, const InclineFitOptions& o, b
   // better than its reading as degrees.
   if (angle_contradicted && given_deg <= M_PI / 2 &&
       std::abs(c.phi.value - given_deg) < std::abs(c.phi.value - o.phi)) {
-    return "the incline angle " + field("phi_deg") + " = " + fmt(given_deg) + " deg contradicts the data, which show phi = " + angle_fit +
-           " (with g = " + fmt(o.g) + " m/s^2, from the pull down the slope): " + fmt(given_deg) +
-           " looks like the angle in radians (" + fmt(given_deg) + " rad = " + fmt(to_deg(given_deg)) +
-           " deg). Give " + field("phi_deg") + " in degrees; mu, v0 and the normal friction verdict are fitted with " + fmt(given_deg) +
+    return "the incline angle " + field("phi_deg") + " = " + message_number(given_deg, 4) + " deg contradicts the data, which show phi = " + angle_fit +
+           " (with g = " + message_number(o.g, 4) + " m/s^2, from the pull down the slope): " + message_number(given_deg, 4) +
+           " looks like the angle in radians (" + message_number(given_deg, 4) + " rad = " + message_number(to_deg(given_deg), 4) +
+           " deg). Give " + field("phi_deg") + " in degrees; mu, v0 and the normal friction verdict are fitted with " + message_number(given_deg, 4) +
            " deg and are wrong until then";
   }
   if (c.implausible)
-    return "the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " + fmt(o.g) +
+    return "the data show gravity g = " + message_number(c.g.value, 4) + " +- " + message_number(c.g.sigma, 4) + " m/s^2, not " + message_number(o.g, 4) +
            ": the times, the lengths or the incline angle are wrong. If lengths and angle are right, the file's times "
-           "must be multiplied by " + fmt(c.time_factor, 3) + " (e.g. " + field("time_scale") + " " + fmt(c.time_factor, 3) +
+           "must be multiplied by " + message_number(c.time_factor, 3) + " (e.g. " + field("time_scale") + " " + message_number(c.time_factor, 3) +
            " times the one used; slow motion analysed as real time gives 1/8 at 240 fps played at 30); if times and "
            "lengths are right, " +
-           (angle_known ? "the incline is at " + angle_fit + ", not " + fmt(given_deg) + " deg"
+           (angle_known ? "the incline is at " + angle_fit + ", not " + message_number(given_deg, 4) + " deg"
                         : std::string("no incline angle explains them (the pull down the slope exceeds g)"));
   if (c.g_identifiable && std::abs(c.g.value - o.g) > 3 * c.g.sigma + 0.03)
     // Not gross but significant (3 sd, and beyond the 9.78-9.83 m/s^2 of the Earth's
     // surface): a frame rate off by k % moves g by 2k % and mu with it, by more than its
     // stated uncertainty (docs/theory.md#plausibility-checks).
-    return "the data show gravity g = " + fmt(c.g.value) + " +- " + fmt(c.g.sigma) + " m/s^2, not " + fmt(o.g) +
+    return "the data show gravity g = " + message_number(c.g.value, 4) + " +- " + message_number(c.g.sigma, 4) + " m/s^2, not " + message_number(o.g, 4) +
            ": check the frame rate (" + field("time_scale") + "; an error of k % in it changes g by 2k %), the length calibration "
-           "and the incline angle (with g = " + fmt(o.g) + " m/s^2 the data show phi = " + angle_fit + ", not " +
-           fmt(given_deg) + " deg); mu and v0 are fitted with g = " + fmt(o.g) +
+           "and the incline angle (with g = " + message_number(o.g, 4) + " m/s^2 the data show phi = " + angle_fit + ", not " +
+           message_number(given_deg, 4) + " deg); mu and v0 are fitted with g = " + message_number(o.g, 4) +
            " and are off by more than their uncertainties until this is fixed" +
            (frame_turned ? std::string(" (or the turned camera frame warned about above)") : std::string());
   if (angle_contradicted)  // below 3 deg: g is not told apart from mu, but the angle is
-    return "the incline angle " + field("phi_deg") + " = " + fmt(given_deg) + " deg contradicts the data, which show phi = " + angle_fit +
-           " (with g = " + fmt(o.g) + " m/s^2, from the pull down the slope): check the angle (or the time scale "
+    return "the incline angle " + field("phi_deg") + " = " + message_number(given_deg, 4) + " deg contradicts the data, which show phi = " + angle_fit +
+           " (with g = " + message_number(o.g, 4) + " m/s^2, from the pull down the slope): check the angle (or the time scale "
            "and the length calibration); mu, v0 and the normal friction verdict are off until this is fixed";
   return {};
 }
@@ -543,7 +537,7 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
     if (w.empty()) throw;
     // The solver's own words ("Residual and Jacobian evaluation failed") would only distract
     // from the factor the message names (issue 27).
-    throw InputError(where(track), w + " (model B with g = " + fmt(o.g) + " m/s^2 and phi = " + fmt(to_deg(o.phi)) +
+    throw InputError(where(track), w + " (model B with g = " + message_number(o.g, 4) + " m/s^2 and phi = " + message_number(to_deg(o.phi), 4) +
                                        " deg does not fit these data)");
   }
   a.data = track.points;
@@ -641,7 +635,7 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
   if (frame_turned) {
     const Estimate& p = *a.frame_rotation_check;
     a.warnings.push_back("the camera frame is held aligned with the incline (" + field("frame_rotation") +
-                         " none), but the data show it turned by " + fmt(to_deg(p.value), 3) + " +- " + fmt(to_deg(p.sigma), 2) + " deg (fitted with model " +
+                         " none), but the data show it turned by " + message_number(to_deg(p.value), 3) + " +- " + message_number(to_deg(p.sigma), 2) + " deg (fitted with model " +
                          (o.fit_model_a ? "A" : "B, which also turns by any normal friction") +
                          "): a turned frame biases mu, v0 and g and is mistaken for normal friction; check the axes "
                          "against a plumb line or analyse with " + field("frame_rotation") + " fit");
@@ -672,13 +666,13 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
     // A few frames only (a fifth at most): when the fit misses most of them the model or the
     // time scale is wrong, which the gravity check says, not wild frames.
     if (n_wild > 0 && 5 * n_wild <= rx.size())
-      a.warnings.push_back(std::to_string(n_wild) + " frame(s) from t = " + fmt(t_first) + " s lie far from the fitted slide (up to " +
-                           fmt(1e3 * worst, 3) + " mm; the noise is " + fmt(1e3 * noise, 2) +
+      a.warnings.push_back(std::to_string(n_wild) + " frame(s) from t = " + message_number(t_first, 4) + " s lie far from the fitted slide (up to " +
+                           message_number(1e3 * worst, 3) + " mm; the noise is " + message_number(1e3 * noise, 2) +
                            " mm): something else was tracked there (a hand, a shadow) or the tracker jumped; mu, the "
                            "verdict and its tests are pulled by them. Correct or delete those points and analyse again");
   }
   if (b.mu.value > 2) {
-    a.warnings.push_back("the fitted friction coefficient mu = " + fmt(b.mu.value) +
+    a.warnings.push_back("the fitted friction coefficient mu = " + message_number(b.mu.value, 4) +
                          " is far above any sliding contact (mu < 2): check the time scale, the length unit and the incline angle");
   }
 
@@ -687,8 +681,8 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
   // the data contradict the physics, this one only that theta_c's sigma is optimistic.
   if (a.theta_c && a.theta_c->points < kThetaCMinPoints)
     a.warnings.push_back("theta_c rests on only " + std::to_string(a.theta_c->points) +
-                         " points around the v_y extremum (t = " + fmt(a.theta_c->window_low) + " to " +
-                         fmt(a.theta_c->window_high) + " s; fewer than " + std::to_string(kThetaCMinPoints) +
+                         " points around the v_y extremum (t = " + message_number(a.theta_c->window_low, 4) + " to " +
+                         message_number(a.theta_c->window_high, 4) + " s; fewer than " + std::to_string(kThetaCMinPoints) +
                          "): its stated uncertainty is too small, in simulated runs with so few points the error "
                          "was 1.4 times the stated sigma on average and up to 5 times; film at a higher frame rate "
                          "or a longer stretch around the extremum");

@@ -1,6 +1,7 @@
 #include "analysis/incline_slide.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/message_number.hpp"
 #include "track/outliers.hpp"
 #include "numerics/units.hpp"
 
@@ -10,13 +11,6 @@
 
 namespace tribolab::analysis {
 namespace {
-
-std::string fmt(double v) {
-  std::ostringstream o;
-  o.precision(4);
-  o << v;
-  return o.str();
-}
 
 }  // namespace
 
@@ -71,11 +65,11 @@ SlideResult mu_from_slide(const track::Track& tracked, const SlideOptions& o) {
   const double range = *std::max_element(s.begin(), s.end()) - *std::min_element(s.begin(), s.end());
   const double threshold = std::max(5 * noise, 0.02 * range);
   const std::string stuck =
-      o.phi ? "; the disc is stuck, so the static coefficient is >= tan(phi) = " + fmt(std::tan(*o.phi))
+      o.phi ? "; the disc is stuck, so the static coefficient is >= tan(phi) = " + message_number(std::tan(*o.phi), 4)
             : "; the disc is stuck";
   if (!(range > 10 * noise) || range < 1e-4)
-    throw InputError(where, "shows no motion along a path (range " + fmt(range) + " m, noise " +
-                                fmt(noise) + " m)" + stuck);
+    throw InputError(where, "shows no motion along a path (range " + message_number(range, 4) + " m, noise " +
+                                message_number(noise, 4) + " m)" + stuck);
 
   // Rest before the release: points still within `threshold` of the first are excluded (the
   // parabola holds only while the disc slides; one moving point lost is a small price).
@@ -101,9 +95,9 @@ SlideResult mu_from_slide(const track::Track& tracked, const SlideOptions& o) {
   r.straightness_rms = std::sqrt(dsum / n);
 
   if (!(r.a - 2 * r.sigma_a > 0)) {
-    std::string msg = "is not accelerating along its path (a = " + fmt(r.a) + " +- " + fmt(r.sigma_a) +
+    std::string msg = "is not accelerating along its path (a = " + message_number(r.a, 4) + " +- " + message_number(r.sigma_a, 4) +
                       " m/s^2): the disc decelerates or is stuck";
-    if (o.phi) msg += ", so mu >= tan(phi) = " + fmt(std::tan(*o.phi));
+    if (o.phi) msg += ", so mu >= tan(phi) = " + message_number(std::tan(*o.phi), 4);
     throw InputError(where, msg + "; eq (a) needs a slide released from rest that speeds up");
   }
 
@@ -131,19 +125,19 @@ SlideResult mu_from_slide(const track::Track& tracked, const SlideOptions& o) {
   // g sin(phi) an angle too small: the incline is at least asin(a / g). 3 sd of a.
   const double a_low = r.a - 3 * r.sigma_a;
   if (a_low > o.g) {
-    r.warnings.push_back("the disc slides at a = " + fmt(r.a) + " +- " + fmt(r.sigma_a) + " m/s^2, more than g = " +
-                         fmt(o.g) + " m/s^2, which no incline gives: the times or the lengths are wrong. If the lengths "
-                         "are right, the file's times must be multiplied by at least " + fmt(std::sqrt(r.a / o.g)) +
+    r.warnings.push_back("the disc slides at a = " + message_number(r.a, 4) + " +- " + message_number(r.sigma_a, 4) + " m/s^2, more than g = " +
+                         message_number(o.g, 4) + " m/s^2, which no incline gives: the times or the lengths are wrong. If the lengths "
+                         "are right, the file's times must be multiplied by at least " + message_number(std::sqrt(r.a / o.g), 4) +
                          " (slow motion analysed as real time gives 1/8 at 240 fps played at 30)");
   } else if (o.phi && a_low > o.g * std::sin(*o.phi)) {
     const double given_deg = to_deg(*o.phi), least_deg = to_deg(std::asin(std::min(1.0, r.a / o.g)));
-    std::string w = "the disc slides at a = " + fmt(r.a) + " +- " + fmt(r.sigma_a) + " m/s^2, more than g sin(phi) = " +
-                    fmt(o.g * std::sin(*o.phi)) + " m/s^2 that an incline at phi_deg = " + fmt(given_deg) +
-                    " deg gives without friction (mu = " + fmt(*r.mu) + " < 0): the incline is at least " +
-                    fmt(least_deg) + " deg";
+    std::string w = "the disc slides at a = " + message_number(r.a, 4) + " +- " + message_number(r.sigma_a, 4) + " m/s^2, more than g sin(phi) = " +
+                    message_number(o.g * std::sin(*o.phi), 4) + " m/s^2 that an incline at phi_deg = " + message_number(given_deg, 4) +
+                    " deg gives without friction (mu = " + message_number(*r.mu, 4) + " < 0): the incline is at least " +
+                    message_number(least_deg, 4) + " deg";
     if (given_deg <= M_PI / 2 && to_deg(given_deg) >= least_deg)
-      w += "; " + fmt(given_deg) + " looks like the angle in radians (" + fmt(given_deg) + " rad = " +
-           fmt(to_deg(given_deg)) + " deg): give phi_deg in degrees";
+      w += "; " + message_number(given_deg, 4) + " looks like the angle in radians (" + message_number(given_deg, 4) + " rad = " +
+           message_number(to_deg(given_deg), 4) + " deg): give phi_deg in degrees";
     else
       w += "; check the angle (and the time scale)";
     r.warnings.push_back(w);

@@ -139,4 +139,11 @@ std::string csv_quote(const std::string& s) {
   return o + "\"";
 }
 
+std::string csv_number(double v) {
+  if (!std::isfinite(v)) return {};
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
 }  // namespace tribolab::io

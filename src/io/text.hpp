@@ -41,6 +41,10 @@ std::string format_number(double v);
 /// beyond them is a typo, a lost decimal point or a glitch that the fits cannot carry (one
 /// 1e308 among metres gave mu 0.3996 for 0.3001 and no uncertainty): refused with file:line.
 inline constexpr double kMaxTrackCoordinate = 1e6;
+
+/// Frame numbers beyond this are refused by every reader: no video has them (a million
+/// seconds at 100 fps), and they would overflow int arithmetic.
+inline constexpr long long kMaxFrameNumber = 100'000'000;
 inline constexpr double kMaxTrackTime = 1e8;
 
 /// `v`, or InputError(where, "<what> = V is beyond +-MAX, ...") when |v| > max.
@@ -55,5 +59,9 @@ std::string name_text_problem(std::string_view s);
 /// A CSV cell for `s`: as it is, or in double quotes (inner quotes doubled) when it holds a
 /// comma, a quote or a line break (RFC 4180).
 std::string csv_quote(const std::string& s);
+
+/// A CSV cell for the number `v`: its shortest round-trip form ("0.1", "1e-300"), or an empty
+/// cell when it is NaN or infinite (undefined: a spreadsheet reads it as missing).
+std::string csv_number(double v);
 
 }  // namespace tribolab::io

@@ -15,8 +15,6 @@ using namespace tracktext;
 
 namespace {
 
-constexpr double kMaxFrame = 1e8;
-
 struct Group {
   std::string name;
   std::size_t x = 0, y = 0;
@@ -177,12 +175,12 @@ track::TrackSet parse_export_text(std::string_view text, const std::string& sour
       if (gr.frame) {
         const auto f = parse_optional_double(cell(*gr.frame), where, decimal_comma);
         if (!f) throw InputError(where, "track '" + gr.name + "' has a point without a frame number");
-        if (*f != std::floor(*f) || *f < 0 || *f > kMaxFrame) {
+        if (*f != std::floor(*f) || *f < 0 || *f > static_cast<double>(kMaxFrameNumber)) {
           throw InputError(where, "frame must be a whole number from 0 to 1e8, got " + format_number(*f));
         }
         frame = static_cast<long long>(*f);
       }
-      if (frame > static_cast<long long>(kMaxFrame)) throw InputError(where, "too many rows (over 1e8)");
+      if (frame > kMaxFrameNumber) throw InputError(where, "too many rows (over 1e8)");
       const double ts = *t * *tunit;
       if (gr.any && frame <= gr.last_frame) {
         throw InputError(where, "track '" + gr.name + "': frame " + std::to_string(frame) +

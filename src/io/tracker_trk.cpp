@@ -1,6 +1,7 @@
 #include "io/tracker_trk.hpp"
 
 #include "io/text.hpp"
+#include "io/zip_message.hpp"
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
 
@@ -21,8 +22,6 @@ namespace tribolab::io {
 
 namespace {
 
-/// Frames beyond this are refused: no video has them, and they would overflow int arithmetic.
-constexpr long long kMaxFrame = 100'000'000;
 /// Largest .trk accepted from inside a zip (a zip bomb guard), bytes: the bound of a plain
 /// .trk file (io::read_file).
 constexpr std::uint64_t kMaxTrkBytes = kMaxTextInputBytes;
@@ -77,7 +76,7 @@ class Reader {
   std::optional<long long> opt_int(pugi::xml_node obj, const char* name, const std::string& path) {
     const auto v = opt_double(obj, name, path);
     if (!v) return std::nullopt;
-    if (*v != std::floor(*v) || std::abs(*v) > kMaxFrame) {
+    if (*v != std::floor(*v) || std::abs(*v) > kMaxFrameNumber) {
       fail(path + "/" + name, "expected a whole number of frames up to 1e8, got " + format_number(*v));
     }
     return static_cast<long long>(*v);
@@ -91,7 +90,7 @@ class Reader {
       const auto [ptr, ec] = std::from_chars(name.data() + 1, name.data() + name.size() - 1, n);
       if (ec != std::errc() || ptr != name.data() + name.size() - 1) n = -1;
     }
-    if (n < 0 || n > kMaxFrame) {
+    if (n < 0 || n > kMaxFrameNumber) {
       fail(path + "/" + std::string(name.substr(0, 30)),
            "expected an array entry \"[n]\" with 0 <= n <= 1e8");
     }
@@ -364,11 +363,6 @@ struct ZipFileCloser {
   void operator()(zip_file_t* f) const { zip_fclose(f); }
 };
 
-std::string zip_message(zip_error_t* e) {
-  std::string m = zip_error_strerror(e);
-  zip_error_fini(e);
-  return m;
-}
 
 /// The .trk chosen in an open archive: its XML, its entry name and every entry's name.
 struct TrkInZip {

@@ -2,6 +2,7 @@
 #include "io/tracker_trk.hpp"
 
 #include "io/text.hpp"
+#include "io/zip_message.hpp"
 #include "numerics/error.hpp"
 
 #include <zip.h>
@@ -37,11 +38,6 @@ std::string xml_escape(const std::string& s) {
   return o;
 }
 
-std::string zip_message(zip_error_t* e) {
-  std::string m = zip_error_strerror(e);
-  zip_error_fini(e);
-  return m;
-}
 
 }  // namespace
 

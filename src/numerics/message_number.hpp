@@ -8,10 +8,11 @@
 
 namespace tribolab {
 
-/// `v` with %.6g: the form every message that echoes a number uses.
-inline std::string message_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
+/// `v` with %.6g: the form every message that echoes a number uses; `digits` significant
+/// digits where a message rounds a result for people ("mu 0.398", three or four digits).
+inline std::string message_number(double v, int digits = 6) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
 }
 

@@ -2,6 +2,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/polyfit.hpp"
+#include "numerics/units.hpp"
 #include "track/check.hpp"
 
 #include <algorithm>
@@ -12,7 +13,6 @@
 namespace tribolab::track {
 
 namespace {
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kSd = 3;  // "beyond 3 standard errors": 0.3 % two-sided for a Gaussian estimate
 }  // namespace
 
@@ -50,8 +50,8 @@ SegmentAcceleration blank(const Track& track, const Segment& seg) {
   a.frame_last = p[seg.end - 1].frame;
   a.t_first = p[seg.begin].t;
   a.t_last = p[seg.end - 1].t;
-  a.ax = a.ay = a.sigma_ax = a.sigma_ay = a.magnitude = a.sigma_magnitude = nan;
-  a.tilt_deg = a.sigma_tilt_deg = a.rms_x = a.rms_y = nan;
+  a.ax = a.ay = a.sigma_ax = a.sigma_ay = a.magnitude = a.sigma_magnitude = kNaN;
+  a.tilt_deg = a.sigma_tilt_deg = a.rms_x = a.rms_y = kNaN;
   return a;
 }
 

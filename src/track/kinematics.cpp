@@ -1,6 +1,7 @@
 #include "track/kinematics.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 #include "track/check.hpp"
 #include "track/local_fit.hpp"
 
@@ -9,10 +10,6 @@
 #include <limits>
 
 namespace tribolab::track {
-
-namespace {
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-}
 
 const char* to_string(DerivativeMethod m) {
   return m == DerivativeMethod::tracker ? "tracker" : "savgol";
@@ -116,8 +113,8 @@ Kinematics differentiate(const Track& track, const KinematicsOptions& options) {
     r.t = p.t;
     r.x = p.x;
     r.y = p.y;
-    r.vx = r.vy = r.ax = r.ay = nan;
-    r.sigma_vx = r.sigma_vy = r.sigma_ax = r.sigma_ay = nan;
+    r.vx = r.vy = r.ax = r.ay = kNaN;
+    r.sigma_vx = r.sigma_vy = r.sigma_ax = r.sigma_ay = kNaN;
   }
   if (options.split_at_impacts) {
     ImpactResult im = detect_impacts(track, options.impacts);
@@ -135,7 +132,7 @@ Kinematics differentiate(const Track& track, const KinematicsOptions& options) {
       out.rows[i].segment = static_cast<int>(s);
     }
   }
-  out.residual_sigma_x = out.residual_sigma_y = nan;
+  out.residual_sigma_x = out.residual_sigma_y = kNaN;
   if (options.method == DerivativeMethod::tracker) {
     const int step = frame_step(track);
     for (const Segment& s : segments) tracker_stencils(track, s, step, out.rows);
@@ -143,8 +140,8 @@ Kinematics differentiate(const Track& track, const KinematicsOptions& options) {
   }
   SavgolPass pass;
   for (const Segment& s : segments) savgol(t, x, y, s, options.window, options.order, out.rows, pass);
-  const double sx = pass.dof > 0 ? std::sqrt(pass.rss_x / static_cast<double>(pass.dof)) : nan;
-  const double sy = pass.dof > 0 ? std::sqrt(pass.rss_y / static_cast<double>(pass.dof)) : nan;
+  const double sx = pass.dof > 0 ? std::sqrt(pass.rss_x / static_cast<double>(pass.dof)) : kNaN;
+  const double sy = pass.dof > 0 ? std::sqrt(pass.rss_y / static_cast<double>(pass.dof)) : kNaN;
   out.residual_sigma_x = sx;
   out.residual_sigma_y = sy;
   for (KinematicsRow& r : out.rows) {

@@ -2,8 +2,9 @@
 
 #include "numerics/error.hpp"
 #include "numerics/least_squares.hpp"
-#include "track/local_spin.hpp"
+#include "numerics/message_number.hpp"
 #include "numerics/units.hpp"
+#include "track/local_spin.hpp"
 
 #include <Eigen/Dense>
 
@@ -15,16 +16,6 @@
 namespace tribolab::track {
 
 namespace {
-
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-/// `v` with `digits` significant digits (%g).
-std::string num(double v, int digits = 3) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
 
 /// Residuals of the joint model (pivot.hpp) for p = [x_p, y_p, v_x, v_y, r, theta_0, omega, alpha].
 struct PivotModel {
@@ -89,7 +80,7 @@ std::string PivotOptions::validate() const {
   if (window < 3) return field("window") + " must be at least 3 points, got " + std::to_string(window);
   if (!(max_pivot_sigma > 0 && max_pivot_sigma <= 1)) {
     return field("max_pivot_sigma") + " must lie in (0, 1] (a fraction of the radius), got " +
-           num(max_pivot_sigma, 17);
+           message_number(max_pivot_sigma, 17);
   }
   return "";
 }
@@ -114,14 +105,14 @@ Circle kasa_circle(const std::vector<double>& x, const std::vector<double>& y) {
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
   Circle c;
   if (qr.rank() < 3) {
-    c.x = c.y = c.r = nan;
+    c.x = c.y = c.r = kNaN;
     return c;
   }
   const Eigen::Vector3d s = qr.solve(b);
   c.x = mx - s(0) / 2;
   c.y = my - s(1) / 2;
   const double r2 = s(0) * s(0) / 4 + s(1) * s(1) / 4 - s(2);
-  c.r = r2 > 0 ? std::sqrt(r2) : nan;
+  c.r = r2 > 0 ? std::sqrt(r2) : kNaN;
   return c;
 }
 
@@ -193,7 +184,7 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
     circle = numerics::fit_least_squares_autodiff(
         CircleModel{&x, &y}, static_cast<int>(n),
         {{"pivot_x", px, {}, {}, false}, {"pivot_y", py, {}, {}, false}, {"radius", r0, 0.0, {}, false}});
-    const auto rms = [](const numerics::FitResult& f) { return f.dof > 0 ? std::sqrt(2 * f.cost / f.dof) : nan; };
+    const auto rms = [](const numerics::FitResult& f) { return f.dof > 0 ? std::sqrt(2 * f.cost / f.dof) : kNaN; };
     // per coordinate and radially both estimate the noise sigma; twice it is a clear misfit
     if (circle.ok() && (!fit.ok() || rms(fit) > 2 * rms(circle))) {
       out.pivot_from_circle = true;
@@ -209,7 +200,7 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
   if (!fit.ok()) {
     throw InputError(where, std::string("the rotation about ") + (fit_pivot ? "a fitted pivot" : "the given pivot") +
                                 " could not be fitted (" + fit.message + "); the arc covers " +
-                                num(std::round(to_deg(std::abs(arc_start))), 6) + " deg" +
+                                message_number(std::round(to_deg(std::abs(arc_start))), 6) + " deg" +
                                 (fit_pivot ? ": give the pivot with " + field("pivot_x") + "/" + field("pivot_y")
                                            : std::string()));
   }
@@ -230,7 +221,7 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
   out.alpha = fit.value("alpha");
   out.sigma_alpha = fit.sigma_of("alpha");
   out.dof = fit.dof;
-  out.rms_residual = fit.dof > 0 ? std::sqrt(2 * fit.cost / fit.dof) : nan;
+  out.rms_residual = fit.dof > 0 ? std::sqrt(2 * fit.cost / fit.dof) : kNaN;
 
   // rows: angle about the fitted pivot, on the branch of the fitted theta(t)
   std::vector<RigidBodyRow> spin(n);
@@ -239,10 +230,10 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
     const double ex = x[i] - (out.pivot_x + out.pivot_vx * u[i]), ey = y[i] - (out.pivot_y + out.pivot_vy * u[i]);
     const double model = out.theta_ref + out.omega * u[i] + 0.5 * out.alpha * u[i] * u[i];
     const double theta = model + std::remainder(std::atan2(ey, ex) - model, 2 * std::numbers::pi);
-    out.rows.push_back({p.frame, p.t, p.x, p.y, theta, std::hypot(ex, ey), nan, nan});
+    out.rows.push_back({p.frame, p.t, p.x, p.y, theta, std::hypot(ex, ey), kNaN, kNaN});
     spin[i].t = p.t;
     spin[i].theta = theta;
-    spin[i].omega = spin[i].sigma_omega = nan;
+    spin[i].omega = spin[i].sigma_omega = kNaN;
   }
   local_spins(spin, options.window);
   for (std::size_t i = 0; i < n; ++i) {
@@ -257,18 +248,18 @@ PivotRotation rotation_about_pivot(const Track& track, const PivotOptions& optio
     const double worst = std::max({out.sigma_pivot_x, out.sigma_pivot_y, out.sigma_radius});
     if (!(worst <= options.max_pivot_sigma * out.radius) && out.rms_residual > 0.3 * out.radius) {
       throw InputError(where, "its points do not lie on a circle about one pivot: they stray from the best one by " +
-                                  num(out.rms_residual, 2) + " m rms, " + num(100 * out.rms_residual / out.radius, 2) +
-                                  " % of its radius " + num(out.radius) + " m (a point that does not turn, or " +
+                                  message_number(out.rms_residual, 2) + " m rms, " + message_number(100 * out.rms_residual / out.radius, 2) +
+                                  " % of its radius " + message_number(out.radius, 3) + " m (a point that does not turn, or " +
                                   "moves otherwise); with a pivot known, give it with " + field("pivot_x") + "/" +
                                   field("pivot_y"));
     }
     if (!(worst <= options.max_pivot_sigma * out.radius)) {
-      throw InputError(where, "the arc of " + num(std::round(to_deg(std::abs(out.arc))), 6) +
-                                  " deg it covers does not determine its pivot: the fitted radius " + num(out.radius) +
-                                  " +- " + num(out.sigma_radius, 2) + " m, pivot (" + num(out.pivot_x) + " +- " +
-                                  num(out.sigma_pivot_x, 2) + ", " + num(out.pivot_y) + " +- " +
-                                  num(out.sigma_pivot_y, 2) + ") m (standard errors above " +
-                                  num(100 * options.max_pivot_sigma) + " % of the radius); give the pivot with " + field("pivot_x") + "/" + field("pivot_y") +
+      throw InputError(where, "the arc of " + message_number(std::round(to_deg(std::abs(out.arc))), 6) +
+                                  " deg it covers does not determine its pivot: the fitted radius " + message_number(out.radius, 3) +
+                                  " +- " + message_number(out.sigma_radius, 2) + " m, pivot (" + message_number(out.pivot_x, 3) + " +- " +
+                                  message_number(out.sigma_pivot_x, 2) + ", " + message_number(out.pivot_y, 3) + " +- " +
+                                  message_number(out.sigma_pivot_y, 2) + ") m (standard errors above " +
+                                  message_number(100 * options.max_pivot_sigma, 3) + " % of the radius); give the pivot with " + field("pivot_x") + "/" + field("pivot_y") +
                                   ", or track more of the turn");
     }
   }

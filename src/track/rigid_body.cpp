@@ -1,6 +1,7 @@
 #include "track/rigid_body.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/units.hpp"
 #include "track/check.hpp"
 #include "track/local_spin.hpp"
 
@@ -12,7 +13,6 @@
 namespace tribolab::track {
 
 namespace {
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 }
 
 std::string RigidBodyOptions::validate() const {
@@ -24,7 +24,7 @@ SpinFit fit_spin(const std::vector<RigidBodyRow>& rows, std::size_t begin, std::
   TRACK_CHECK(begin <= end && end <= rows.size(), "fit_spin range out of bounds");
   SpinFit f;
   f.points = static_cast<int>(end - begin);
-  f.omega = f.sigma_omega = f.t_ref = f.theta_ref = f.rms_residual = nan;
+  f.omega = f.sigma_omega = f.t_ref = f.theta_ref = f.rms_residual = kNaN;
   if (f.points < 2) return f;
   double tm = 0, thm = 0;
   for (std::size_t i = begin; i < end; ++i) {
@@ -59,7 +59,7 @@ void local_spins(std::vector<RigidBodyRow>& rows, int window) {
   if (w >= 3) {
     double rss = 0;
     long long dof = 0;
-    std::vector<double> unit(n, nan);
+    std::vector<double> unit(n, kNaN);
     for (std::size_t i = 0; i < n; ++i) {
       const std::size_t lo = static_cast<std::size_t>(
           std::clamp<long long>(static_cast<long long>(i) - w / 2, 0, static_cast<long long>(n) - w));
@@ -98,7 +98,7 @@ RigidBody rigid_body_from_points(const Track& a, const Track& b, const RigidBody
     r.yc = 0.5 * (p.y + q.y);
     r.theta = std::atan2(q.y - p.y, q.x - p.x);
     r.length = std::hypot(q.x - p.x, q.y - p.y);
-    r.omega = r.sigma_omega = nan;
+    r.omega = r.sigma_omega = kNaN;
     if (!body.rows.empty()) {  // unwrap: nearest branch to the previous angle
       const double prev = body.rows.back().theta;
       r.theta += 2 * std::numbers::pi * std::round((prev - r.theta) / (2 * std::numbers::pi));

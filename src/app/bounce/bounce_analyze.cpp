@@ -1,4 +1,5 @@
 #include "app/common/study_citation.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 #include "app/bounce/bounce_analyze.hpp"
 
@@ -25,15 +26,13 @@ using nlohmann::json;
 using analysis::BounceAnalysis;
 using analysis::SegmentFit;
 
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
 json segment_json(const SegmentFit& s) {
-  return {{"vx", s.vx}, {"sigma_vx", num(s.sigma_vx)}, {"vy", s.vy}, {"sigma_vy", s.sigma_vy},
-          {"omega", num(s.omega)}, {"sigma_omega", num(s.sigma_omega)},
+  return {{"vx", s.vx}, {"sigma_vx", json_number(s.sigma_vx)}, {"vy", s.vy}, {"sigma_vy", s.sigma_vy},
+          {"omega", json_number(s.omega)}, {"sigma_omega", json_number(s.sigma_omega)},
           {"ay", s.acceleration_y}, {"sigma_ay", s.sigma_acceleration_y},
           {"r_squared", {{"x", s.x_line.r_squared}, {"y", s.y_parabola.r_squared}}},
           {"n_points", s.n_points}, {"apex_time", s.apex_time},
-          {"apex_height", num(s.apex_height)}, {"sigma_apex_height", num(s.sigma_apex_height)},
+          {"apex_height", json_number(s.apex_height)}, {"sigma_apex_height", json_number(s.sigma_apex_height)},
           {"energy", {{"translational_x", s.energy.translational_x}, {"translational_y", s.energy.translational_y},
                       {"rotational", s.energy.rotational}, {"total", s.energy.total()}}}};
 }
@@ -44,38 +43,38 @@ json bounce_analysis_json(const BounceAnalysis& r) {
   json j = {{"impact_time", r.impact_time},
             {"pre", segment_json(r.pre)},
             {"post", segment_json(r.post)},
-            {"e_velocity", num(r.e_velocity)},
-            {"sigma_e_velocity", num(r.sigma_e_velocity)},
-            {"e_height", num(r.e_height)},
-            {"sigma_e_height", num(r.sigma_e_height)},
+            {"e_velocity", json_number(r.e_velocity)},
+            {"sigma_e_velocity", json_number(r.sigma_e_velocity)},
+            {"e_height", json_number(r.e_height)},
+            {"sigma_e_height", json_number(r.sigma_e_height)},
             {"floor_y", r.floor_y},
             {"floor_given", r.floor_given},
             {"floor_half_width", r.floor_half_width},
             {"floor_method", to_string(r.floor_method)},
             {"theta_impact_deg", r.theta_impact_deg},
-            {"collision_angle_deg", num(r.collision_angle_deg)},
-            {"sigma_collision_angle_deg", num(r.sigma_collision_angle_deg)},
-            {"collision_angle_impact_deg", num(r.collision_angle_impact_deg)},
+            {"collision_angle_deg", json_number(r.collision_angle_deg)},
+            {"sigma_collision_angle_deg", json_number(r.sigma_collision_angle_deg)},
+            {"collision_angle_impact_deg", json_number(r.collision_angle_impact_deg)},
             {"t_touch", r.t_touch},
-            {"sigma_t_touch", num(r.sigma_t_touch)},
+            {"sigma_t_touch", json_number(r.sigma_t_touch)},
             {"t_separation", r.t_separation},
-            {"sigma_t_separation", num(r.sigma_t_separation)},
+            {"sigma_t_separation", json_number(r.sigma_t_separation)},
             {"contact_duration", r.contact_duration},
-            {"sigma_contact_duration", num(r.sigma_contact_duration)},
+            {"sigma_contact_duration", json_number(r.sigma_contact_duration)},
             {"theta_touch_deg", r.theta_touch_deg},
-            {"sigma_theta_touch_deg", num(r.sigma_theta_touch_deg)},
+            {"sigma_theta_touch_deg", json_number(r.sigma_theta_touch_deg)},
             {"vy_touch", r.vy_touch},
-            {"sigma_vy_touch", num(r.sigma_vy_touch)},
+            {"sigma_vy_touch", json_number(r.sigma_vy_touch)},
             {"vy_separation", r.vy_separation},
-            {"sigma_vy_separation", num(r.sigma_vy_separation)},
-            {"e_velocity_common", num(r.e_velocity_common)},
-            {"sigma_e_velocity_common", num(r.sigma_e_velocity_common)},
-            {"contact_point_vx", num(r.contact_point_vx)},
-            {"contact_point_vy", num(r.contact_point_vy)},
-            {"contact_point_speed", num(r.contact_point_speed)},
-            {"sigma_contact_point_vx", num(r.sigma_contact_point_vx)},
-            {"sigma_contact_point_vy", num(r.sigma_contact_point_vy)},
-            {"sigma_contact_point_speed", num(r.sigma_contact_point_speed)},
+            {"sigma_vy_separation", json_number(r.sigma_vy_separation)},
+            {"e_velocity_common", json_number(r.e_velocity_common)},
+            {"sigma_e_velocity_common", json_number(r.sigma_e_velocity_common)},
+            {"contact_point_vx", json_number(r.contact_point_vx)},
+            {"contact_point_vy", json_number(r.contact_point_vy)},
+            {"contact_point_speed", json_number(r.contact_point_speed)},
+            {"sigma_contact_point_vx", json_number(r.sigma_contact_point_vx)},
+            {"sigma_contact_point_vy", json_number(r.sigma_contact_point_vy)},
+            {"sigma_contact_point_speed", json_number(r.sigma_contact_point_speed)},
             {"energy_pre", r.pre.energy.total()},
             {"energy_post", r.post.energy.total()},
             {"n_impacts", r.impacts.impacts.size()},
@@ -83,13 +82,13 @@ json bounce_analysis_json(const BounceAnalysis& r) {
             {"tip_distance_mean", r.body.length_mean},
             {"tip_distance_sd", r.body.length_sd},
             {"gravity", r.gravity},
-            {"sigma_gravity", num(r.sigma_gravity)},
+            {"sigma_gravity", json_number(r.sigma_gravity)},
             {"gravity_tilt_deg", r.gravity_tilt_deg},
-            {"sigma_gravity_tilt_deg", num(r.sigma_gravity_tilt_deg)},
+            {"sigma_gravity_tilt_deg", json_number(r.sigma_gravity_tilt_deg)},
             {"warnings", r.warnings}};
   if (r.mean_normal_force) {
-    j["mean_normal_force"] = num(*r.mean_normal_force);
-    j["sigma_mean_normal_force"] = num(*r.sigma_mean_normal_force);
+    j["mean_normal_force"] = json_number(*r.mean_normal_force);
+    j["sigma_mean_normal_force"] = json_number(*r.sigma_mean_normal_force);
     j["force_duration_method"] = to_string(r.force_duration_method);
   }
   return j;
@@ -220,12 +219,12 @@ BounceFitResult bounce_fit(const BounceFitOptions& opts) {
   json residuals = json::array();
   for (std::size_t i = 0; i < res.rows.size(); ++i) {
     const auto& p = r.rows[i];
-    residuals.push_back({{"row", i + 1}, {"vx_pred", num(p.vx_pred)}, {"vy_pred", num(p.vy_pred)},
-                         {"omega_pred", num(p.omega_pred)}, {"r_vx", num(p.r_vx)}, {"r_vy", num(p.r_vy)},
-                         {"r_b_omega", num(p.r_b_omega)}});
+    residuals.push_back({{"row", i + 1}, {"vx_pred", json_number(p.vx_pred)}, {"vy_pred", json_number(p.vy_pred)},
+                         {"omega_pred", json_number(p.omega_pred)}, {"r_vx", json_number(p.r_vx)}, {"r_vy", json_number(p.r_vy)},
+                         {"r_b_omega", json_number(p.r_b_omega)}});
   }
   json j = {{"K", r.K}, {"sigma_K", r.sigma_K}, {"n", r.n}, {"sigma_n", r.sigma_n},
-            {"D", num(r.D)}, {"sigma_D", num(r.sigma_D)}, {"mu", r.mu}, {"sigma_mu", r.sigma_mu},
+            {"D", json_number(r.D)}, {"sigma_D", json_number(r.sigma_D)}, {"mu", r.mu}, {"sigma_mu", r.sigma_mu},
             {"rms", r.rms}, {"n_rows", res.rows.size()}, {"dof", r.fit.dof},
             {"iterations", r.fit.iterations}, {"free_parameters", r.free_parameters}};
   if (o.restitution_model) {

@@ -1,6 +1,7 @@
 #include "app/common/study_citation.hpp"
 #include "app/bounce/bounce_simulate.hpp"
 
+#include "app/common/json_number.hpp"
 #include "app/common/output_paths.hpp"
 
 #include "app/bounce/report_bounce.hpp"
@@ -22,10 +23,7 @@ namespace {
 using namespace tribolab::bounce;
 using nlohmann::json;
 
-/// NaN/inf become JSON null (e.g. e when vy_in = 0).
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-json energy_json(const KineticEnergy& e) {
+json energy_parts_json(const KineticEnergy& e) {
   return {{"translational_x", e.translational_x}, {"translational_y", e.translational_y},
           {"rotational", e.rotational}, {"total", e.total()}};
 }
@@ -42,7 +40,7 @@ json contact_json(const Ball& ball, const ContactResult& r, NormalModel model) {
       {"vy", r.out.vy},
       {"omega", r.out.omega},
       {"theta_out_deg", to_deg(wrap_angle(r.out.theta))},
-      {"e", num(r.restitution)},
+      {"e", json_number(r.restitution)},
       {"contact_duration", r.contact_duration},
       {"peak_force", r.peak_force},
       {"t_peak", r.t_peak},
@@ -55,8 +53,8 @@ json contact_json(const Ball& ball, const ContactResult& r, NormalModel model) {
       {"collision_angle_deg", collision_angle_deg(ball, r.in.theta, r.in.vx < 0 ? -1 : 1)},
       {"energy_in", r.energy_in.total()},
       {"energy_out", r.energy_out.total()},
-      {"energy_in_parts", energy_json(r.energy_in)},
-      {"energy_out_parts", energy_json(r.energy_out)},
+      {"energy_in_parts", energy_parts_json(r.energy_in)},
+      {"energy_out_parts", energy_parts_json(r.energy_out)},
       {"work_gravity", r.work_gravity},
       {"dissipated_normal", r.dissipated_normal},
       {"dissipated_friction", r.dissipated_friction},
@@ -103,7 +101,7 @@ json drop_bounce_json(const Bounce& b) {
           {"vx_out", b.contact.out.vx},
           {"vy_out", b.contact.out.vy},
           {"omega_out", b.contact.out.omega},
-          {"e", num(b.contact.restitution)},
+          {"e", json_number(b.contact.restitution)},
           {"contact_duration", b.contact.contact_duration},
           {"peak_force", b.contact.peak_force},
           {"t_apex", b.t_apex},
@@ -122,7 +120,7 @@ json bounce_impact_json(const Ball& ball, const ImpactResult& r, NormalModel mod
   j["first_phase"] = {{"vx", f.out.vx},
                       {"vy", f.out.vy},
                       {"omega", f.out.omega},
-                      {"e", num(f.restitution)},
+                      {"e", json_number(f.restitution)},
                       {"contact_duration", f.contact_duration},
                       {"peak_force", f.peak_force},
                       {"energy_out", f.energy_out.total()}};

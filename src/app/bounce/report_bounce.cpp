@@ -17,7 +17,6 @@ using report::Figure;
 using report::Series;
 using report::Table;
 
-constexpr double kDeg = kDegPerRad;
 
 
 Series history_series(const ContactCurve& c, const std::string& name,
@@ -153,7 +152,7 @@ report::Report bounce_simulate_report(const bounce::Ball& ball, const bounce::Fr
   Table io;
   io.caption = "In and out";
   io.header = {"quantity", "at first touch", "at separation"};
-  io.rows = {{"θ (deg)", report::format_value(r.in.theta * kDeg), report::format_value(r.out.theta * kDeg)},
+  io.rows = {{"θ (deg)", report::format_value(r.in.theta * kDegPerRad), report::format_value(r.out.theta * kDegPerRad)},
              {"v_x (m/s)", report::format_value(r.in.vx), report::format_value(r.out.vx)},
              {"v_y (m/s)", report::format_value(r.in.vy), report::format_value(r.out.vy)},
              {"ω (rad/s)", report::format_value(r.in.omega), report::format_value(r.out.omega)},
@@ -192,7 +191,7 @@ report::Report bounce_drop_report(const bounce::Ball& ball, const bounce::Fricti
   auto& s = rep.add_section("Drop");
   s.add_table(ball_table(ball));
   if (!r.bounces.empty()) add_contact_equations(s, r.bounces.front().contact.law);
-  s.add_paragraph("Release: centre height " + report::format_value(release.height) + " m, θ = " + report::format_value(release.theta * kDeg) +
+  s.add_paragraph("Release: centre height " + report::format_value(release.height) + " m, θ = " + report::format_value(release.theta * kDegPerRad) +
                   " deg, ω = " + report::format_value(release.omega) + " rad/s, v_x = " + report::format_value(release.vx) + " m/s, v_y = " +
                   report::format_value(release.vy) + " m/s. Friction: " + std::string(bounce::to_string(friction.kind)) +
                   ", μ = " + report::format_value(friction.mu) + ". Status: " + std::string(bounce::to_string(r.status)) + ".");
@@ -243,7 +242,7 @@ report::Report bounce_drop_report(const bounce::Ball& ball, const bounce::Fricti
   ths.mode = report::Mode::Lines;
   for (const auto& p : r.trajectory) {
     ths.x.push_back(p.t);
-    ths.y.push_back(p.state.theta * kDeg);
+    ths.y.push_back(p.state.theta * kDegPerRad);
   }
   th.series = {ths};
   th.height_px = 300;
@@ -268,10 +267,10 @@ report::Report bounce_contact_time_report(const bounce::Ball& ball, const bounce
   t.header = {"quantity", "value"};
   t.rows = {{"H (m)", report::format_value(apex.y)},
             {"ω (rad/s)", report::format_value(apex.omega)},
-            {"θ_0 (deg)", report::format_value(apex.theta * kDeg)},
+            {"θ_0 (deg)", report::format_value(apex.theta * kDegPerRad)},
             {"t_contact (s)", report::format_value(r.t_contact, 5)},
             {"earliest / latest possible (s)", report::format_value(r.t_min) + " / " + report::format_value(r.t_max)},
-            {"θ at contact (deg)", report::format_value(bounce::wrap_angle(r.state.theta) * kDeg)},
+            {"θ at contact (deg)", report::format_value(bounce::wrap_angle(r.state.theta) * kDegPerRad)},
             {"collision angle (deg)", report::format_value(bounce::collision_angle_deg(ball, r.state.theta, direction))},
             {"grazing", r.grazing ? "yes" : "no"}};
   s.add_table(std::move(t));

@@ -25,10 +25,9 @@ using report::format_value;
 using report::Series;
 using report::Table;
 
-constexpr double kDeg = kDegPerRad;
 
 
-Figure figure(std::string title, std::string x, std::string y, int height = 380) {
+Figure analysis_figure(std::string title, std::string x, std::string y, int height = 380) {
   return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
 
@@ -114,7 +113,7 @@ std::string r2(double v) { return format_value(v, 6); }
 int add_bounce_analysis_figures(report::Section& s, const std::string& title, const BounceAnalysis& r) {
   const double ti = r.impact_time;
   {
-    Figure f = figure(title + ": x–t", "t (s)", "x (m)");
+    Figure f = analysis_figure(title + ": x–t", "t (s)", "x (m)");
     add_tips(f, r, false);
     add_data(f, r, "centre", [](const auto& row) { return row.xc; });
     f.series.push_back(fit_curve(r.pre, "x–t line before", r.pre.grid_x));
@@ -125,7 +124,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     s.add_figure(std::move(f));
   }
   {
-    Figure f = figure(title + ": y–t", "t (s)", "y (m)");
+    Figure f = analysis_figure(title + ": y–t", "t (s)", "y (m)");
     add_tips(f, r, true);
     add_data(f, r, "centre", [](const auto& row) { return row.yc; });
     f.series.push_back(fit_curve(r.pre, "y–t parabola before", r.pre.grid_y));
@@ -138,7 +137,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     s.add_figure(std::move(f));
   }
   {
-    Figure f = figure(title + ": trajectory", "x (m)", "y (m)");
+    Figure f = analysis_figure(title + ": trajectory", "x (m)", "y (m)");
     f.equal_aspect = true;
     for (int sign : {-1, 1}) {
       Series t = named("tip " + (sign < 0 ? r.body.point_a : r.body.point_b));
@@ -170,7 +169,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     s.add_figure(std::move(f));
   }
   {
-    Figure f = figure(title + ": residuals of the flight fits", "t (s)", "data − fit (mm)");
+    Figure f = analysis_figure(title + ": residuals of the flight fits", "t (s)", "data − fit (mm)");
     for (const SegmentFit* seg : {&r.pre, &r.post}) {
       const std::string when = seg == &r.pre ? " before" : " after";
       Series rx = named("x" + when), ry = named("y" + when);
@@ -192,10 +191,10 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     s.add_figure(std::move(f));
   }
   {
-    Figure f = figure(title + ": orientation θ–t", "t (s)", "θ of A→B (deg, unwrapped)");
-    add_data(f, r, "θ", [](const auto& row) { return kDeg * row.theta; });
-    f.series.push_back(fit_curve(r.pre, "θ = θ_ref + ω t before", r.pre.grid_theta, kDeg));
-    f.series.push_back(fit_curve(r.post, "θ = θ_ref + ω t after", r.post.grid_theta, kDeg));
+    Figure f = analysis_figure(title + ": orientation θ–t", "t (s)", "θ of A→B (deg, unwrapped)");
+    add_data(f, r, "θ", [](const auto& row) { return kDegPerRad * row.theta; });
+    f.series.push_back(fit_curve(r.pre, "θ = θ_ref + ω t before", r.pre.grid_theta, kDegPerRad));
+    f.series.push_back(fit_curve(r.post, "θ = θ_ref + ω t after", r.post.grid_theta, kDegPerRad));
     mark_impact(f, r);
     f.caption = "Orientation of the line from tip A to tip B, unwrapped, with the fitted spin lines; θ at the "
                 "first touch = " + format_uncertain(r.theta_touch_deg, r.sigma_theta_touch_deg) + " deg, at the impact time " +
@@ -203,7 +202,7 @@ int add_bounce_analysis_figures(report::Section& s, const std::string& title, co
     s.add_figure(std::move(f));
   }
   {
-    Figure f = figure(title + ": spin ω–t", "t (s)", "ω (rad/s), CCW positive");
+    Figure f = analysis_figure(title + ": spin ω–t", "t (s)", "ω (rad/s), CCW positive");
     add_data(f, r, "local ω (±1 s.e.)", [](const auto& row) { return row.omega; },
              [](const auto& row) { return row.sigma_omega; });
     for (const SegmentFit* seg : {&r.pre, &r.post}) {
@@ -362,7 +361,7 @@ int add_bounce_fit_figures(report::Section& s, const std::string& title,
                          {"v_y,out", "v_{y,out}", "m/s", &analysis::BounceRow::vy_out, &analysis::BounceFitRow::vy_pred},
                          {"ω_out", "ω_{out}", "rad/s", &analysis::BounceRow::omega_out, &analysis::BounceFitRow::omega_pred}};
   for (const Quantity& q : qs) {
-    Figure f = figure(title + ": " + q.name + " measured vs fitted", std::string("measured ") + q.axis_name + " (" + q.unit + ")",
+    Figure f = analysis_figure(title + ": " + q.name + " measured vs fitted", std::string("measured ") + q.axis_name + " (" + q.unit + ")",
                       std::string("fitted model ") + q.axis_name + " (" + q.unit + ")");
     Series pts = named("bounces");
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -392,7 +391,7 @@ int add_bounce_fit_figures(report::Section& s, const std::string& title,
   }
   auto residual_figure = [&](const std::string& suffix, const std::string& x_title,
                              const std::function<double(std::size_t)>& x) {
-    Figure f = figure(title + ": residuals " + suffix, x_title, "fitted − measured (m/s)");
+    Figure f = analysis_figure(title + ": residuals " + suffix, x_title, "fitted − measured (m/s)");
     Series a = named("v_x"), b = named("v_y"), c = named("b ω");
     for (std::size_t i = 0; i < rows.size(); ++i) {
       for (Series* se : {&a, &b, &c}) se->x.push_back(x(i));

@@ -28,7 +28,7 @@ using report::Series;
 using report::Table;
 
 
-Figure figure(std::string title, std::string x, std::string y, int height = 420) {
+Figure series_figure(std::string title, std::string x, std::string y, int height = 420) {
   return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
 
@@ -120,7 +120,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
 
   auto& e = rep.add_section(prefix + "Restitution against the collision angle (rugby-ball study, figure 32)");
   {
-    Figure f = figure("e against the collision angle", "collision angle θ (deg)", "restitution e");
+    Figure f = series_figure("e against the collision angle", "collision angle θ (deg)", "restitution e");
     Series ev = named("e from velocities (± 1 s.e.)"), eh = named("e from apex heights (± 1 s.e.)");
     for (const auto& p : points) {
       ev.x.push_back(p.collision_angle_deg);
@@ -169,7 +169,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
 
   auto& en = rep.add_section(prefix + "Energies and mean normal force per run (rugby-ball study, figures 49, 50)");
   {
-    Figure f = figure("kinetic energy before and after each bounce", "run", "kinetic energy (J)");
+    Figure f = series_figure("kinetic energy before and after each bounce", "run", "kinetic energy (J)");
     struct Kind {
       const char* name;
       double (*value)(const bounce::KineticEnergy&);
@@ -192,7 +192,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
     ++figures;
   }
   if (s.n_force > 0) {
-    Figure f = figure("mean normal force per run", "run", "mean normal force (N)");
+    Figure f = series_figure("mean normal force per run", "run", "mean normal force (N)");
     Series sr = named("N_mean = normal impulse / T (± 1 s.e.)");
     for (std::size_t j = 0; j < points.size(); ++j) {
       if (!std::isfinite(points[j].mean_normal_force)) continue;
@@ -210,7 +210,7 @@ int add_bounce_series(report::Report& rep, const std::string& prefix, const std:
 
   auto& cp = rep.add_section(prefix + "Contact-point speed against the collision angle (rugby-ball study, figure 52)");
   {
-    Figure f = figure("speed of the contact point at first touch", "collision angle θ (deg)", "velocity (m/s)");
+    Figure f = series_figure("speed of the contact point at first touch", "collision angle θ (deg)", "velocity (m/s)");
     Series sp = named("|v_p| (± 1 s.e.)"), vx = named("v_p,x (slip)"), vy = named("v_p,y");
     for (const auto& p : points) {
       sp.x.push_back(p.collision_angle_deg);

@@ -1,6 +1,7 @@
 // Small helpers shared by the report pages of the commands and the demo.
 #pragma once
 
+#include "report/format.hpp"
 #include "report/report.hpp"
 
 #include <string>
@@ -37,5 +38,13 @@ inline report::Series make_line(std::string name, std::vector<double> x, std::ve
   s.color = std::move(color);
   return s;
 }
+
+/// "[lo, hi]" with five significant digits: an interval in a report's table.
+inline std::string interval_cell(double lo, double hi) {
+  return "[" + report::format_value(lo, 5) + ", " + report::format_value(hi, 5) + "]";
+}
+
+/// "yes" or "no" in a report's table.
+inline std::string yes_no(bool b) { return b ? "yes" : "no"; }
 
 }  // namespace tribolab::app

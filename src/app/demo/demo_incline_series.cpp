@@ -5,6 +5,7 @@
 // every result: first the seven discs at one angle (figure 八's stop-point scaling), then all
 // ten discs at four angles (the cos(theta_c)-tan(phi) test).
 #include "numerics/units.hpp"
+#include "app/common/report_util.hpp"
 #include "app/demo/demo.hpp"
 #include "app/demo/demo_data.hpp"
 #include "app/incline/report_incline_series.hpp"
@@ -49,8 +50,6 @@ const SeriesDisc kDiscs[] = {
 constexpr std::size_t kOneAngle = 7;  // the first seven share 10.37 deg
 
 std::string data_path(const SeriesDisc& d) { return std::string("data/incline_series/") + d.file; }
-std::string yes_no(bool b) { return b ? "yes" : "no"; }
-
 /// The series of discs [0, n) analysed as `incline analyze` over several files does.
 struct Analysed {
   std::vector<analysis::RunOutcome<analysis::InclineAnalysis>> runs;

@@ -1,4 +1,5 @@
 #include "app/incline/incline_analysis.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 
 #include "app/common/output_paths.hpp"
@@ -90,7 +91,7 @@ InclineSynthResult incline_synth(const InclineSynthOptions& s) {
   json& j = res.json;
   j["points"] = run.track.points.size();
   j["t_launch"] = o.t_launch;
-  j["t_stop"] = json_or_null(run.t_stop);
+  j["t_stop"] = json_number(run.t_stop);
   j["x_stop"] = run.t_stop ? json(run.truth.back().x) : json(nullptr);
   j["y_stop"] = run.t_stop ? json(run.truth.back().y) : json(nullptr);
   j["model"] = o.params.normal_accel != 0 ? "A" : "B";

@@ -1,4 +1,5 @@
 #include "app/common/study_citation.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 #include "app/incline/incline_analyze.hpp"
 
@@ -35,8 +36,8 @@ json slide_json(const analysis::SlideResult& r, const track::Track& t) {
   json j;
   j["a"] = r.a;
   j["sigma_a"] = r.sigma_a;
-  j["mu"] = json_or_null(r.mu);
-  j["sigma_mu"] = json_or_null(r.sigma_mu);
+  j["mu"] = json_number(r.mu);
+  j["sigma_mu"] = json_number(r.sigma_mu);
   j["r_squared"] = r.r_squared;
   j["n_points"] = r.n_points;
   j["a_velocity_line"] = r.a_velocity_line;
@@ -76,9 +77,9 @@ json incline_analysis_json(const analysis::InclineAnalysis& a) {
   j["rms_residual"] = b.rms_residual;
   j["n_points"] = a.data.size();
   j["k"] = std::tan(a.phi) / b.mu.value;
-  j["t_stop"] = json_or_null(b.t_stop);
-  j["x_stop"] = json_or_null(b.x_stop);
-  j["y_stop"] = json_or_null(b.y_stop);
+  j["t_stop"] = json_number(b.t_stop);
+  j["x_stop"] = json_number(b.x_stop);
+  j["y_stop"] = json_number(b.y_stop);
   json nf;
   if (a.a_n) {
     nf["slope"] = a.a_n->slope;
@@ -272,7 +273,7 @@ InclineMuFromSlideResult incline_mu_from_slide(const InclineMuFromSlideOptions& 
     const track::Track t = read_incline_track(file, s.input);
     Run run{analysis::mu_from_slide(t, per[i]), {}};
     run.j = slide_json(run.r, t);
-    run.j["phi_deg"] = json_or_null(phi[i]);  // as given
+    run.j["phi_deg"] = json_number(phi[i]);  // as given
     return run;
   }, series_options(s.series));
   std::vector<std::optional<double>> mu, sigma_mu;

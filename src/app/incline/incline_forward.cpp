@@ -1,4 +1,5 @@
 #include "app/common/study_citation.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 #include "app/incline/incline_forward.hpp"
 
@@ -21,16 +22,14 @@ namespace {
 
 using nlohmann::json;
 
-json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
 /// The keys predict and each member of families share: k, regime, the stop point and x_limit.
 void add_prediction_keys(json& j, const incline::Prediction& pr) {
-  j["k"] = finite_or_null(pr.k);
+  j["k"] = json_number(pr.k);
   j["regime"] = incline::to_string(pr.regime);
-  j["t_stop"] = json_or_null(pr.t_stop);
-  j["x_stop"] = json_or_null(pr.x_stop);
-  j["y_stop"] = json_or_null(pr.y_stop);
-  j["x_limit"] = json_or_null(pr.x_limit);
+  j["t_stop"] = json_number(pr.t_stop);
+  j["x_stop"] = json_number(pr.x_stop);
+  j["y_stop"] = json_number(pr.y_stop);
+  j["x_limit"] = json_number(pr.x_limit);
 }
 
 void write_state(std::ostream& out, const incline::State& st) {
@@ -72,7 +71,7 @@ InclinePredictResult incline_predict(const InclinePredictOptions& o) {
   if (!o.report.empty()) report::write_html(with_study_source(incline_predict_report(p, pr, res.trajectory), Study::incline), o.report, o.plotly);
   json& j = res.json;
   add_prediction_keys(j, pr);
-  j["v_terminal"] = json_or_null(pr.v_terminal);
+  j["v_terminal"] = json_number(pr.v_terminal);
   j["a_x0"] = pr.a_x0;
   j["a_y0"] = pr.a_y0;
   j["a_x_final"] = pr.a_x_final;

@@ -35,11 +35,6 @@ const Fields<InclineLaunchOptions>& incline_launch_fields(bool required);
 /// or "--mu") that may be unset because a family varies it. Throws InputError naming the option.
 incline::Parameters incline_launch_parameters(const InclineLaunchOptions& o, const std::string& skip = "");
 
-/// An optional number as JSON: the value, or null.
-inline nlohmann::json json_or_null(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-
 /// An angle option in degrees checked to lie in [0, 90) (`allow_zero`) or (0, 90); returns it.
 double check_incline_angle_deg(double deg, const std::string& option, bool allow_zero);
 

@@ -1,4 +1,5 @@
 #include "app/incline/incline_series.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 
 #include "analysis/series_plausibility.hpp"
@@ -13,16 +14,13 @@ namespace {
 
 using nlohmann::json;
 
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-json opt(const std::optional<double>& v) { return v && std::isfinite(*v) ? json(*v) : json(nullptr); }
-
 json pulls_by_run(const std::optional<analysis::WeightedMean>& m, const std::vector<int>& index, std::size_t n_runs,
                   const std::vector<std::size_t>& run_of_point) {
   json out = json::array();
   for (std::size_t i = 0; i < n_runs; ++i) out.push_back(nullptr);
   if (!m) return out;
   for (std::size_t j = 0; j < index.size(); ++j)
-    out[run_of_point[static_cast<std::size_t>(index[j])]] = num(m->pulls[j]);
+    out[run_of_point[static_cast<std::size_t>(index[j])]] = json_number(m->pulls[j]);
   return out;
 }
 
@@ -45,8 +43,8 @@ void add_weighted_mean(json& j, const std::optional<analysis::WeightedMean>& m, 
   j["sigma_" + name + "_scaled"] = m ? json(m->sigma_scaled) : json(nullptr);
   j["chi2"] = m ? json(m->chi2) : json(nullptr);
   j["dof"] = m ? json(m->dof) : json(nullptr);
-  j["p_value"] = m ? num(m->p_value) : json(nullptr);
-  j["birge_ratio"] = m ? num(m->birge_ratio) : json(nullptr);
+  j["p_value"] = m ? json_number(m->p_value) : json(nullptr);
+  j["birge_ratio"] = m ? json_number(m->birge_ratio) : json(nullptr);
   j["n_" + name] = m ? m->n : 0;
 }
 
@@ -66,8 +64,8 @@ json incline_series_json(const analysis::InclineSeriesSummary& s, std::size_t n_
           {"slope", r.fit.slope},          {"sigma_slope", r.fit.sigma},
           {"slope_ci95", json::array({r.fit.ci_low, r.fit.ci_high})},
           {"n", r.fit.n},                  {"rms", r.fit.rms},
-          {"mu", opt(r.mu)},               {"mu_ci95", json::array({opt(r.mu_ci_low), opt(r.mu_ci_high)})},
-          {"slope_model", opt(r.slope_model)}};
+          {"mu", json_number(r.mu)},               {"mu_ci95", json::array({json_number(r.mu_ci_low), json_number(r.mu_ci_high)})},
+          {"slope_model", json_number(r.slope_model)}};
     }
     j["stop_scaling"] = sc;
   }
@@ -94,7 +92,7 @@ json incline_series_json(const analysis::InclineSeriesSummary& s, std::size_t n_
                             {"normal_accel_ci95", json::array({n.ci_low, n.ci_high})},
                             {"chi2", n.mean.chi2},
                             {"dof", n.mean.dof},
-                            {"p_value", num(n.mean.p_value)},
+                            {"p_value", json_number(n.mean.p_value)},
                             {"verdict", to_string(n.verdict)},
                             {"n_runs", n.mean.n},
                             {"n_runs_present", n.n_present}};

@@ -19,12 +19,6 @@ using report::Table;
 using report::format_uncertain;
 using report::format_value;
 
-std::string interval(double lo, double hi) {
-  return "[" + format_value(lo, 5) + ", " + format_value(hi, 5) + "]";
-}
-
-std::string yes_no(bool b) { return b ? "yes" : "no"; }
-
 Figure figure(std::string title, std::string x, std::string y, int height = 340) {
   return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
@@ -40,7 +34,7 @@ std::vector<incline::State> data_states(const analysis::InclineAnalysis& a) {
 /// One row of a parameter table: value ± sigma, the interval, and (with truth) whether it holds it.
 std::vector<std::string> estimate_row(const std::string& name, const analysis::Estimate& e,
                                       const std::optional<double>& truth) {
-  std::vector<std::string> row{name, format_uncertain(e.value, e.sigma), interval(e.ci_low, e.ci_high)};
+  std::vector<std::string> row{name, format_uncertain(e.value, e.sigma), interval_cell(e.ci_low, e.ci_high)};
   if (truth) {
     row.push_back(format_value(*truth, 5));
     row.push_back(yes_no(*truth >= e.ci_low && *truth <= e.ci_high));
@@ -196,7 +190,7 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
     const auto& m = *a.model_a;
     const std::optional<double> fn = tv(&InclineTruth::normal_accel);
     cmp.rows = {{"f_N/m, model A (m/s^2)", format_uncertain(m.normal_accel.value, m.normal_accel.sigma)},
-                {"95 % interval of f_N/m", interval(m.normal_accel.ci_low, m.normal_accel.ci_high)},
+                {"95 % interval of f_N/m", interval_cell(m.normal_accel.ci_low, m.normal_accel.ci_high)},
                 {"μ, model A", format_uncertain(m.mu.value, m.mu.sigma)},
                 {"correlation of f_N/m with the frame rotation", format_value(m.rotation_correlation, 3)},
                 {"rms residual A / B (m)", format_value(m.rms_residual, 4) + " / " + format_value(b.rms_residual, 4)},
@@ -223,7 +217,7 @@ int add_incline_run_analysis(report::Section& s, const std::string& title, const
     diag.rows.push_back({"a_N slope (m/s^2)", format_uncertain(d.slope, d.sigma_slope)});
     diag.rows.push_back({"g sin φ (m/s^2)", format_value(d.slope_expected, 4)});
     diag.rows.push_back({"a_N intercept = −f_N/m (m/s^2)", format_uncertain(d.intercept, d.sigma_intercept)});
-    diag.rows.push_back({"95 % interval of the intercept", interval(d.intercept_ci_low, d.intercept_ci_high)});
+    diag.rows.push_back({"95 % interval of the intercept", interval_cell(d.intercept_ci_low, d.intercept_ci_high)});
   }
   if (a.theta_c) {
     const auto& c = *a.theta_c;
@@ -280,7 +274,7 @@ int add_normal_friction_fit(report::Section& s, const std::string& title, const 
   fit.rows = {{"slope c_1 = 1/μ", format_uncertain(r.slope, r.sigma_slope)},
               {"μ = 1/c_1", format_uncertain(r.mu, r.sigma_mu)},
               {"intercept c_0", format_uncertain(r.intercept, r.sigma_intercept)},
-              {"95 % interval of the intercept", interval(r.intercept_ci_low, r.intercept_ci_high)},
+              {"95 % interval of the intercept", interval_cell(r.intercept_ci_low, r.intercept_ci_high)},
               {"R^2", format_value(r.line.r_squared, 5)},
               {"verdict: normal friction", to_string(r.verdict)}};
   if (mu_truth) fit.rows.push_back({"truth μ (make.sh)", format_value(*mu_truth, 4)});

@@ -25,7 +25,6 @@ using report::Table;
 using report::format_uncertain;
 using report::format_value;
 
-std::string interval(double lo, double hi) { return "[" + format_value(lo, 5) + ", " + format_value(hi, 5) + "]"; }
 std::string opt_value(const std::optional<double>& v, int digits = 5) { return v ? format_value(*v, digits) : "—"; }
 
 Figure figure(std::string title, std::string x, std::string y, int height = 360) {
@@ -128,7 +127,7 @@ int add_scaling(report::Section& s, const std::string& title, const analysis::In
   t.header = {"relation", "slope", "95 % interval", "μ implied", "95 % interval of μ", "model B slope at the weighted μ"};
   for (const auto& sc : sum.scaling)
     t.rows.push_back({relation_title(sc.relation), format_uncertain(sc.fit.slope, sc.fit.sigma),
-                      interval(sc.fit.ci_low, sc.fit.ci_high), opt_value(sc.mu),
+                      interval_cell(sc.fit.ci_low, sc.fit.ci_high), opt_value(sc.mu),
                       "[" + opt_value(sc.mu_ci_low) + ", " + opt_value(sc.mu_ci_high) + "]", opt_value(sc.slope_model)});
   s.add_table(std::move(t));
   s.add_equation("t_{stop}/v_0 = μ cos φ / (g(μ^2 cos^2 φ − sin^2 φ)),  x_{stop}/v_0^2 = 2μ cos φ / (g(4μ^2 cos^2 φ − sin^2 φ))",
@@ -250,7 +249,7 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
     pt.caption = title + ": pooled f_N/m";
     pt.header = {"quantity", "value"};
     add_mean_rows(pt, "f_N/m (m/s^2)", p.mean);
-    pt.rows.push_back({"95 % interval (m/s^2)", interval(p.ci_low, p.ci_high)});
+    pt.rows.push_back({"95 % interval (m/s^2)", interval_cell(p.ci_low, p.ci_high)});
     pt.rows.push_back({"pooled verdict: normal friction", to_string(p.verdict)});
     pt.rows.push_back({"runs whose own verdict is present", std::to_string(p.n_present) + " of " + std::to_string(p.mean.n)});
     nf.add_table(std::move(pt));

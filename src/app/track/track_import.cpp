@@ -1,4 +1,5 @@
 #include "app/track/track_import.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 
 #include "app/common/output_paths.hpp"
@@ -59,8 +60,6 @@ const track::Track& choose_track(const track::TrackSet& set, const std::string& 
   throw InputError(set.source, "the file holds " + std::to_string(with_points.size()) +
                                    " tracks (" + names + "); choose one with " + field("track"));
 }
-
-nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 TrackImportResult track_import(const TrackImportOptions& options) {
   check_output_paths({options.input.file}, {{"out", options.out}});  // before any work (app/common/output_paths.hpp)

@@ -5,6 +5,7 @@
 
 #include "app/track/report_track_rigid_body.hpp"
 #include "io/atomic_file.hpp"
+#include "io/text.hpp"
 #include "numerics/error.hpp"
 #include "numerics/polyfit.hpp"
 #include "report/html.hpp"
@@ -22,13 +23,12 @@ namespace tribolab::app {
 namespace {
 
 /// A CSV cell: shortest round-trip number, empty for NaN.
-std::string cell(double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string(); }
 
 void write_csv(std::ostream& out, const track::RigidBody& body) {
   out << "frame,t,x,y,theta,omega,sigma_omega,length\n";
   for (const auto& r : body.rows) {
-    out << r.frame << ',' << cell(r.t) << ',' << cell(r.xc) << ',' << cell(r.yc) << ',' << cell(r.theta) << ','
-        << cell(r.omega) << ',' << cell(r.sigma_omega) << ',' << cell(r.length) << '\n';
+    out << r.frame << ',' << io::csv_number(r.t) << ',' << io::csv_number(r.xc) << ',' << io::csv_number(r.yc) << ',' << io::csv_number(r.theta) << ','
+        << io::csv_number(r.omega) << ',' << io::csv_number(r.sigma_omega) << ',' << io::csv_number(r.length) << '\n';
   }
 }
 

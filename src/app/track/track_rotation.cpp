@@ -3,6 +3,7 @@
 
 #include "app/common/output_paths.hpp"
 #include "io/atomic_file.hpp"
+#include "io/text.hpp"
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
 
@@ -17,13 +18,12 @@ namespace tribolab::app {
 namespace {
 
 /// A CSV cell: shortest round-trip number, empty for NaN.
-std::string cell(double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string(); }
 
 void write_csv(std::ostream& out, const track::PivotRotation& r) {
   out << "frame,t,x,y,theta,radius,omega,sigma_omega\n";
   for (const auto& p : r.rows) {
-    out << p.frame << ',' << cell(p.t) << ',' << cell(p.x) << ',' << cell(p.y) << ',' << cell(p.theta) << ','
-        << cell(p.radius) << ',' << cell(p.omega) << ',' << cell(p.sigma_omega) << '\n';
+    out << p.frame << ',' << io::csv_number(p.t) << ',' << io::csv_number(p.x) << ',' << io::csv_number(p.y) << ',' << io::csv_number(p.theta) << ','
+        << io::csv_number(p.radius) << ',' << io::csv_number(p.omega) << ',' << io::csv_number(p.sigma_omega) << '\n';
   }
 }
 
