@@ -73,16 +73,38 @@ TEST(RealFilm, JmoljanaIsFollowed) {
   check({"jmoljana.trz", "mass A", 1});
 }
 
-// Not yet met (issue 24 open), so disabled rather than loosened: the image sequence is read
-// (53 frames, 1280x720) and the plain car's start is taken, but the car moves ~70 px per
-// frame, blurred, and turns into the loop; the unrotated 51 px template slides along it.
-// Measured: frames 1-3 reported 20-56 px from the human's marks (confidently wrong), 4-52
-// lost. Run with --gtest_also_run_disabled_tests.
-TEST(RealFilm, DISABLED_PlainCarInAnImageSequenceIsFollowed) {
-  // masa A: a toy car with little texture (refused by the frame tracker) in a loop, filmed as
-  // numbered JPEG images inside the .trz.
-  check({"CarInLoop.trz", "masa A"});
+// masa A: a toy car with little texture (refused by the frame tracker) in a loop, filmed as
+// numbered JPEG images inside the .trz (53 frames, 1280x720). The car moves ~70 px per frame,
+// blurred into a streak longer than its 51 px template, and turns into the loop.
+TEST(RealFilm, PlainBlurredCarInAnImageSequenceIsNeverConfidentlyWrong) {
+  // Frames 1-3 were reported 20-56 px from the human's marks with scores 0.86-0.94 (the
+  // template slid along the streak); now every frame the tracker cannot place is lost. The
+  // share to correct (100 %: no frame placed) is not checked here; the next test is the goal.
+  const std::string path = testing::tracker_project_path("CarInLoop.trz");
+  if (path.empty()) GTEST_SKIP() << "../shared/data/tracker/CarInLoop.trz not found";
+  TrackVideoOptions o;
+  Target t;
+  t.name = t.from_track = "masa A";
+  o.targets.push_back(t);
+  o.thumbnails = 0;
+  const TrackVideoResult res = track_video(path, o);
+  ASSERT_EQ(res.series.size(), 1u);
+  ASSERT_TRUE(res.series[0].vs_human.has_value());
+  const HumanComparison& h = *res.series[0].vs_human;
+  std::printf("CarInLoop.trz masa A: %d marks, %d tracked, max %.2f px, confidently wrong %d\n", h.marks, h.frames,
+              h.max_px, h.confidently_wrong);
+  EXPECT_EQ(h.marks, 52);
+  EXPECT_EQ(h.confidently_wrong, 0);
+  // The warning names the streak and the remedy.
+  bool streak = false;
+  for (const std::string& w : res.warnings) streak = streak || w.find("streak") != std::string::npos;
+  EXPECT_TRUE(streak);
 }
+
+// Not yet met (issue 24 open), so disabled rather than loosened: the car is not followed (no
+// frame placed; the template does not turn with the car into the loop nor match its blur).
+// Run with --gtest_also_run_disabled_tests.
+TEST(RealFilm, DISABLED_PlainCarInAnImageSequenceIsFollowed) { check({"CarInLoop.trz", "masa A"}); }
 
 }  // namespace
 }  // namespace tribolab::video
