@@ -167,6 +167,8 @@ struct PathTracker::Impl {
   int lead_frames[2] = {-1, -1};  // their step indices (-1: none yet)
   // Loss causes counted by finish().
   int lost_none = 0, lost_rival = 0, lost_score = 0, lost_background = 0, lost_ridge = 0;
+  // Of lost_none, the frames after the path's last point (the track ended) and that point's frame.
+  int lost_end = 0, end_frame = -1;
   double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
 
   void sample(const cv::Mat& gray) {
@@ -238,6 +240,15 @@ std::string PathTracker::Impl::main_loss_hint() const {
     return "the object matched its first look poorly in " + std::to_string(m.lost_score) +
            " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch; "
            "for a mark that turns (on a wheel), --point-tracker frame";
+  }
+  if (m.lost_end > m.lost_none - m.lost_end) {
+    // The track ended: after its last point nothing within reach that resembles the object's
+    // first look continues its motion.
+    return "after frame " + std::to_string(m.end_frame) + " (the path's last point) nothing within reach that " +
+           "resembled the object's first look continued its motion in the " + std::to_string(m.lost_end) +
+           " frame(s) left "
+           "(the object left the view or was hidden, moved more than --search px per frame, or turned or changed "
+           "its look): a larger --search or --max-gap; for an object that turns, --point-tracker frame";
   }
   return "the object was not found in " + std::to_string(m.lost_none) +
          " frame(s) (hidden, out of view, or moving more than --search px per frame): a larger --search or --max-gap";
@@ -744,7 +755,8 @@ std::vector<Observation> PathTracker::Impl::finish() {
     t = e;
   }
   std::vector<Observation> obs;
-  lost_none = lost_rival = lost_score = lost_background = lost_ridge = 0;
+  lost_none = lost_rival = lost_score = lost_background = lost_ridge = lost_end = 0;
+  end_frame = steps[bt].index;
   // A path point whose correlation peak is a ridge longer than a user's correction distance
   // (4 px per 640 px of image width, at least 4 px) cannot be placed along it: lost.
   ridge_max_px = std::max(kRidgeMinPx, kRidgeMinPx * size.width / 640.0);
@@ -765,6 +777,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     if (k < 0) {
       ++lost_none;
+      if (t > bt) ++lost_end;
       obs.push_back(o);
       continue;
     }

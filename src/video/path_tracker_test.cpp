@@ -188,6 +188,31 @@ TEST(PathTracker, AMotionBlurredStreakIsReportedLostNotPlacedAlongItself) {
   EXPECT_LT(sharp.worst_px, 1.0);
 }
 
+TEST(PathTracker, AnObjectThatLeavesTheViewEndsThePathAndTheHintSaysWhere) {
+  // A disc rolling out of the 240 px frame at 8 px/frame (gone from frame ~27 of 36): the frames
+  // after the path's last point are lost, and the hint names that frame and the causes.
+  const RenderOptions o = textured_video();
+  auto at = [](int i) { return cv::Point2d(40 + 8.0 * i, 80); };
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 6)}; };
+  PathTracker tracker;
+  tracker.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
+  for (int i = 1; i < 36; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+  int last_found = 0;
+  double worst = 0;
+  for (const Observation& ob : tracker.finish()) {
+    if (ob.lost) continue;
+    last_found = ob.frame;
+    worst = std::max(worst, std::hypot(ob.x_px - at(ob.frame).x, ob.y_px - at(ob.frame).y));
+  }
+  const std::string hint = tracker.loss_hint();
+  std::printf("last found %d, worst %.2f px; %s\n", last_found, worst, hint.c_str());
+  EXPECT_GE(last_found, 22);  // in full view up to frame 23 (x = 224, radius 6)
+  EXPECT_LE(last_found, 26);  // gone by frame 26 (x = 248)
+  EXPECT_LT(worst, 3.0);  // on the disc (radius 6); 2 px in frame 24, its template over the border
+  EXPECT_NE(hint.find("after frame " + std::to_string(last_found) + " (the path's last point)"), std::string::npos);
+  EXPECT_NE(hint.find("left the view"), std::string::npos);
+}
+
 TEST(PathTracker, CoarseToFineSearchAt720pFollowsADiscAsTheFullSearchDid) {
   // 1280x720: the anchors' windows cover over 400 000 px² and the disc's template is 37 px,
   // so every step is searched at half resolution first and refined within 3 px. The disc
