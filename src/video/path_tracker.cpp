@@ -73,6 +73,8 @@ constexpr int kRidgeMaxSteps = 64;
 // The longest ridge a reported point may have, px per 640 px of image width (and at least
 // this): the correction distance, 4 px per 640 px.
 constexpr double kRidgeMinPx = 4;
+// A run of reported path points shorter than this between lost frames is unconfirmed (finish()).
+constexpr int kMinRun = 3;
 
 struct Candidate {
   double x = 0, y = 0;  // px
@@ -169,6 +171,7 @@ struct PathTracker::Impl {
   int lost_none = 0, lost_rival = 0, lost_score = 0, lost_background = 0, lost_ridge = 0;
   // Of lost_none, the frames after the path's last point (the track ended) and that point's frame.
   int lost_end = 0, end_frame = -1;
+  int lost_alone = 0;  // frames of a short run between lost frames, unconfirmed (finish())
   double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
 
   void sample(const cv::Mat& gray) {
@@ -755,7 +758,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     t = e;
   }
   std::vector<Observation> obs;
-  lost_none = lost_rival = lost_score = lost_background = lost_ridge = lost_end = 0;
+  lost_none = lost_rival = lost_score = lost_background = lost_ridge = lost_end = lost_alone = 0;
   end_frame = steps[bt].index;
   // A path point whose correlation peak is a ridge longer than a user's correction distance
   // (4 px per 640 px of image width, at least 4 px) cannot be placed along it: lost.
@@ -816,12 +819,40 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     obs.push_back(o);
   }
+  // Confirmation (the M-of-N rule of radar tracking): a run of fewer than kMinRun consecutive
+  // reported points, with lost frames on both sides (the start and a mark count as reported),
+  // is not confirmed by its neighbours' motion: lost. (CarInLoop with --patch 25: frame 2
+  // alone between lost frames 1 and 3, 47 px from the human's mark.)
+  for (std::size_t i = 0; i < obs.size();) {
+    if (obs[i].lost) {
+      ++i;
+      continue;
+    }
+    std::size_t e = i;
+    bool anchored = i == 0;  // frame t = 1 follows the start
+    for (; e < obs.size() && !obs[e].lost; ++e) anchored = anchored || obs[e].manual;
+    if (e < obs.size() && obs[e].manual) anchored = true;
+    const bool bounded = e < obs.size();  // a run at the clip's end has no later neighbour to confirm it
+    if (!anchored && bounded && static_cast<int>(e - i) < kMinRun) {
+      for (std::size_t q = i; q < e; ++q) {
+        obs[q].lost = true;
+        obs[q].score = std::min(obs[q].score, 0.1);
+        ++lost_alone;
+      }
+    }
+    i = e;
+  }
   return obs;
 }
 
 std::string PathTracker::loss_hint() const {
   const Impl& m = *impl_;
   std::string hint = m.main_loss_hint();
+  if (m.lost_alone > 0) {
+    hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_alone) +
+            " frame(s) found alone between lost frames were not confirmed by their neighbours' motion: "
+            "--mark one of them if it is right";
+  }
   if (m.lost_ridge == 0) return hint;
   char bar[32];
   std::snprintf(bar, sizeof bar, "%.0f", m.ridge_max_px);

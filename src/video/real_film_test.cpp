@@ -108,6 +108,38 @@ TEST(RealFilm, PlainBlurredCarInAnImageSequenceIsNeverConfidentlyWrong) {
   EXPECT_TRUE(streak);
 }
 
+TEST(RealFilm, PlainBlurredCarIsNeverConfidentlyWrongWithTheOptionsAUserTriesNext) {
+  // With --patch 25 frame 2 alone, between lost frames, sat on the car's green rear smear 47 px
+  // from the human's mark (a sharp peak the ridge check passes); the confirmation rule (a run
+  // of fewer than 3 reported points between lost frames is lost) removes it. --patch 75 is not
+  // here: it still follows a still edge 785 px away (docs/benchmarks.md#tracking-on-real-film).
+  const std::string path = testing::tracker_project_path("CarInLoop.trz");
+  if (path.empty()) GTEST_SKIP() << "../shared/data/tracker/CarInLoop.trz not found";
+  struct Variant {
+    const char* what;
+    int patch_px;
+    double min_score;
+    int search_px;
+  };
+  for (const Variant& v : {Variant{"--patch 25", 25, 0.6, 0}, Variant{"--patch 35", 35, 0.6, 0},
+                           Variant{"--min-score 0.4", 0, 0.4, 0}, Variant{"--search 300", 0, 0.6, 300}}) {
+    TrackVideoOptions o;
+    Target t;
+    t.name = t.from_track = "masa A";
+    o.targets.push_back(t);
+    o.thumbnails = 0;
+    o.path.patch_px = v.patch_px;
+    o.path.min_score = v.min_score;
+    o.path.search_px = v.search_px;
+    const TrackVideoResult res = track_video(path, o);
+    ASSERT_TRUE(res.series.at(0).vs_human.has_value());
+    const HumanComparison& h = *res.series[0].vs_human;
+    std::printf("CarInLoop.trz masa A %s: %d tracked, max %.2f px, confidently wrong %d\n", v.what, h.frames, h.max_px,
+                h.confidently_wrong);
+    EXPECT_EQ(h.confidently_wrong, 0) << v.what;
+  }
+}
+
 // Not yet met (issue 24 open), so disabled rather than loosened: the car is not followed (no
 // frame placed; the template does not turn with the car into the loop nor match its blur).
 // Run with --gtest_also_run_disabled_tests.
