@@ -171,7 +171,8 @@ struct PathTracker::Impl {
   int lost_none = 0, lost_rival = 0, lost_score = 0, lost_background = 0, lost_ridge = 0;
   // Of lost_none, the frames after the path's last point (the track ended) and that point's frame.
   int lost_end = 0, end_frame = -1;
-  int lost_alone = 0;  // frames of a short run between lost frames, unconfirmed (finish())
+  int lost_alone = 0;
+  int lost_unlinked = 0;  // frames of a run reached only through doubtful points (finish())  // frames of a short run between lost frames, unconfirmed (finish())
   double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
 
   void sample(const cv::Mat& gray) {
@@ -758,7 +759,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     t = e;
   }
   std::vector<Observation> obs;
-  lost_none = lost_rival = lost_score = lost_background = lost_ridge = lost_end = lost_alone = 0;
+  lost_none = lost_rival = lost_score = lost_background = lost_ridge = lost_end = lost_alone = lost_unlinked = 0;
   end_frame = steps[bt].index;
   // A path point whose correlation peak is a ridge longer than a user's correction distance
   // (4 px per 640 px of image width, at least 4 px) cannot be placed along it: lost.
@@ -842,6 +843,32 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     i = e;
   }
+  // Identity: a run of reported points whose last reported point before it (the start, or a
+  // point of an earlier run) lies more than max_gap + 1 frames back is reached only through
+  // doubtful path points: it may be anything that the template resembles. Lost, unless it holds
+  // a mark. (CarInLoop with --patch 75: the path hopped from the car, its points lost, to a
+  // still edge 390 px away and held it for 17 frames.)
+  int last_reported = 0;  // step index; the start
+  for (std::size_t i = 0; i < obs.size();) {
+    if (obs[i].lost) {
+      ++i;
+      continue;
+    }
+    std::size_t e = i;
+    bool marked = false;
+    for (; e < obs.size() && !obs[e].lost; ++e) marked = marked || obs[e].manual;
+    const int first = static_cast<int>(i) + 1;  // step index of the run's first point
+    if (!marked && first - last_reported > G) {
+      for (std::size_t q = i; q < e; ++q) {
+        obs[q].lost = true;
+        obs[q].score = std::min(obs[q].score, 0.1);
+        ++lost_unlinked;
+      }
+    } else {
+      last_reported = static_cast<int>(e);  // step index of the run's last point
+    }
+    i = e;
+  }
   return obs;
 }
 
@@ -852,6 +879,11 @@ std::string PathTracker::loss_hint() const {
     hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_alone) +
             " frame(s) found alone between lost frames were not confirmed by their neighbours' motion: "
             "--mark one of them if it is right";
+  }
+  if (m.lost_unlinked > 0) {
+    hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_unlinked) +
+            " frame(s) were reached only across more than --max-gap frames without a reported point, so what was "
+            "found there may be something else: --mark one of them if it is right";
   }
   if (m.lost_ridge == 0) return hint;
   char bar[32];
