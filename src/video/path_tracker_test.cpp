@@ -213,6 +213,46 @@ TEST(PathTracker, AnObjectThatLeavesTheViewEndsThePathAndTheHintSaysWhere) {
   EXPECT_NE(hint.find("left the view"), std::string::npos);
 }
 
+TEST(PathTracker, AfterAHidingLongerThanTheMaxGapNothingIsReportedUntilAMark) {
+  // The ball passes behind a wide hand for 13 frames (more than max_gap 8): the path cannot
+  // bridge it, ends before the hand and the hint names --max-gap; nothing after the hiding is
+  // reported. A mark after the hiding restores the rest: the path passes through it, and a
+  // run holding a mark counts as linked to the start (the identity rule, finish()).
+  const RenderOptions o = textured_video();
+  auto at = [](int i) { return cv::Point2d(20 + 5.0 * i, 80); };
+  const Scene scene = [&](double t) {
+    ShapePose hand;
+    hand.kind = ShapePose::Kind::rectangle;
+    hand.cx_px = 120;
+    hand.cy_px = 80;
+    hand.a_px = 36;
+    hand.b_px = 40;
+    hand.colour = cv::Scalar(150, 170, 190);
+    return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 5), hand};
+  };
+  auto run = [&](bool mark) {
+    PathTracker tracker;
+    tracker.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
+    for (int i = 1; i < 40; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+    if (mark) tracker.set_marks({ManualMark{28, at(28).x, at(28).y}});
+    int after = 0;  // frames reported after the hiding (x > 161: frames 29 on)
+    double worst = 0;
+    for (const Observation& ob : tracker.finish()) {
+      if (ob.lost) continue;
+      if (ob.frame >= 29) ++after;
+      worst = std::max(worst, std::hypot(ob.x_px - at(ob.frame).x, ob.y_px - at(ob.frame).y));
+    }
+    std::printf("mark %d: %d frames reported after the hiding, worst %.2f px; %s\n", mark, after, worst,
+                tracker.loss_hint().c_str());
+    return std::make_pair(after, tracker.loss_hint());
+  };
+  const auto plain = run(false);
+  EXPECT_EQ(plain.first, 0);
+  EXPECT_NE(plain.second.find("--max-gap"), std::string::npos);
+  const auto marked = run(true);
+  EXPECT_GE(marked.first, 10);  // frames 29-39
+}
+
 TEST(PathTracker, CoarseToFineSearchAt720pFollowsADiscAsTheFullSearchDid) {
   // 1280x720: the anchors' windows cover over 400 000 px² and the disc's template is 37 px,
   // so every step is searched at half resolution first and refined within 3 px. The disc
