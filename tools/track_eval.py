@@ -73,8 +73,10 @@ def main():
         m = max(1, h["marks"])
         share = h["to_correct"] / m
         worst = max(worst, share)
-        print(fmt.format(base, name, h["marks"], f"{100 * h['frames'] / m:.0f} %", f"{h['median_px']:.2f}",
-                         f"{h['p90_px']:.2f}", f"{100 * share:.1f} %", h["confidently_wrong"]))
+        # No frame with a position: no distance to show (vs_human's 0 would read as exact).
+        dist = (f"{h['median_px']:.2f}", f"{h['p90_px']:.2f}") if h["frames"] > 0 else ("-", "-")
+        print(fmt.format(base, name, h["marks"], f"{100 * h['frames'] / m:.0f} %", dist[0], dist[1],
+                         f"{100 * share:.1f} %", h["confidently_wrong"]))
     print(f"worst share to correct: {100 * worst:.1f} %", file=sys.stderr)
 
 

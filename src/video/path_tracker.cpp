@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -64,6 +65,16 @@ constexpr double kFgShare = 0.15;
 // sharply (the user marks a bounce, or a point the tracker had wrong): that acceleration is
 // not gated but costs at most this (the gate's cost), and a mark has no reach limit.
 constexpr double kMarkAccCap = 0.5 * kAccGate * kAccGate;
+// Ridge of a correlation peak (peak_ridge_px): the line through the peak along which the
+// correlation stays within kRidgeDrop of the peak, walked at most kRidgeMaxSteps map pixels
+// each way.
+constexpr double kRidgeDrop = 0.05;
+constexpr int kRidgeMaxSteps = 64;
+// The longest ridge a reported point may have, px per 640 px of image width (and at least
+// this): the correction distance, 4 px per 640 px.
+constexpr double kRidgeMinPx = 4;
+// A run of reported path points shorter than this between lost frames is unconfirmed (finish()).
+constexpr int kMinRun = 3;
 
 struct Candidate {
   double x = 0, y = 0;  // px
@@ -73,6 +84,7 @@ struct Candidate {
   cv::Mat patch;        // CV_8U, template-sized grey patch at the rounded position
   cv::Point at;         // the patch's centre, px
   bool manual = false;  // the user's mark: the step's only candidate
+  double spread = 0;    // half-length of the correlation ridge through the peak, px (peak_ridge_px)
 };
 
 struct StepCandidates {
@@ -99,6 +111,30 @@ double blob_radius(const cv::Mat& gray, cv::Point2d p) {
     }
   }
   return radius;
+}
+
+// Half-length, px, of the longest straight line through the peak `at` of the correlation map
+// `res` along which the correlation stays within kRidgeDrop of the peak's value `v` (over four
+// axes, each walked both ways, at most kRidgeMaxSteps steps), times `scale` (2 for a
+// half-resolution map). A sharp match drops within a pixel or two every way; a motion-blurred
+// streak or a plain edge matches all along itself: its position along the ridge is unknown.
+double peak_ridge_px(const cv::Mat& res, cv::Point at, double v, double scale) {
+  static const cv::Point kAxes[4] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+  const float floor = static_cast<float>(v - kRidgeDrop);
+  double longest = 0;
+  for (const cv::Point& d : kAxes) {
+    int total = 0;
+    for (int sign = -1; sign <= 1; sign += 2) {
+      int s = 1;
+      for (; s <= kRidgeMaxSteps; ++s) {
+        const cv::Point q = at + sign * s * d;
+        if (q.x < 0 || q.y < 0 || q.x >= res.cols || q.y >= res.rows || res.at<float>(q) < floor) break;
+      }
+      total += s - 1;
+    }
+    longest = std::max(longest, 0.5 * total * std::hypot(d.x, d.y));
+  }
+  return scale * longest;
 }
 
 }  // namespace
@@ -132,7 +168,12 @@ struct PathTracker::Impl {
   cv::Point2d lead[2];            // the last two confident sightings, px
   int lead_frames[2] = {-1, -1};  // their step indices (-1: none yet)
   // Loss causes counted by finish().
-  int lost_none = 0, lost_rival = 0, lost_score = 0, lost_background = 0;
+  int lost_none = 0, lost_rival = 0, lost_score = 0, lost_background = 0, lost_ridge = 0;
+  // Of lost_none, the frames after the path's last point (the track ended) and that point's frame.
+  int lost_end = 0, end_frame = -1;
+  int lost_alone = 0;
+  int lost_unlinked = 0;  // frames of a run reached only through doubtful points (finish())  // frames of a short run between lost frames, unconfirmed (finish())
+  double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
 
   void sample(const cv::Mat& gray) {
     // One frame per block of `stride`, at a scrambled place in the block: a regular stride
@@ -184,7 +225,38 @@ struct PathTracker::Impl {
 
   void update(const Frame& f);
   std::vector<Observation> finish();
+  std::string main_loss_hint() const;  // the likeliest cause but a streak (loss_hint)
 };
+
+std::string PathTracker::Impl::main_loss_hint() const {
+  const Impl& m = *this;
+  if (m.lost_none + m.lost_rival + m.lost_score + m.lost_background == 0) return "";
+  if (m.lost_background > std::max({m.lost_none, m.lost_rival, m.lost_score})) {
+    return "in " + std::to_string(m.lost_background) +
+           " frame(s) the best match did not stand out from the still background (the object hidden or at rest): "
+           "a larger --max-gap bridges a hidden object";
+  }
+  if (m.lost_rival >= std::max(m.lost_none, m.lost_score)) {
+    return "a look-alike within reach made " + std::to_string(m.lost_rival) +
+           " frame(s) doubtful: start on a more distinctive mark, or a smaller --search";
+  }
+  if (m.lost_score >= m.lost_none) {
+    return "the object matched its first look poorly in " + std::to_string(m.lost_score) +
+           " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch; "
+           "for a mark that turns (on a wheel), --point-tracker frame";
+  }
+  if (m.lost_end > m.lost_none - m.lost_end) {
+    // The track ended: after its last point nothing within reach that resembles the object's
+    // first look continues its motion.
+    return "after frame " + std::to_string(m.end_frame) + " (the path's last point) nothing within reach that " +
+           "resembled the object's first look continued its motion in the " + std::to_string(m.lost_end) +
+           " frame(s) left "
+           "(the object left the view or was hidden, moved more than --search px per frame, or turned or changed "
+           "its look): a larger --search or --max-gap; for an object that turns, --point-tracker frame";
+  }
+  return "the object was not found in " + std::to_string(m.lost_none) +
+         " frame(s) (hidden, out of view, or moving more than --search px per frame): a larger --search or --max-gap";
+}
 
 PathTracker::PathTracker(const PathTrackerOptions& options) : impl_(std::make_unique<Impl>()) {
   impl_->opt = options;
@@ -359,6 +431,7 @@ void PathTracker::Impl::update(const Frame& f) {
     double v;         // correlation there
     cv::Point2d off;  // sub-pixel offset
     double fitted;    // the peak fit's value
+    double ridge = 0; // peak_ridge_px
   };
   for (const cv::Rect& win : wins) {
     const cv::Rect rrect(win.x - uni.x, win.y - uni.y, win.width - p + 1, win.height - p + 1);  // in the union's result
@@ -373,6 +446,7 @@ void PathTracker::Impl::update(const Frame& f) {
         cv::circle(scratch, pk.at, suppress, cv::Scalar(-1), cv::FILLED);
         pk.fitted = pk.v;
         pk.off = subpixel_peak(res, pk.at, &pk.fitted);
+        pk.ridge = peak_ridge_px(res, pk.at, pk.v, 1);
         peaks.push_back(pk);
       }
     } else {
@@ -387,6 +461,7 @@ void PathTracker::Impl::update(const Frame& f) {
         cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
         if (v < kCoarseFloor) break;
         cv::circle(scratch, c, std::max(1, suppress / 2), cv::Scalar(-1), cv::FILLED);
+        const double ridge = peak_ridge_px(coarse_res, crect.tl() + c, v, 2);
         // Refine: the full-resolution correlation within kRefinePx of the coarse peak.
         const cv::Point tl(2 * (crect.x + c.x) - rrect.x, 2 * (crect.y + c.y) - rrect.y);  // in the window's result
         const cv::Rect near = cv::Rect(tl.x - kRefinePx, tl.y - kRefinePx, 2 * kRefinePx + 1, 2 * kRefinePx + 1) &
@@ -402,6 +477,7 @@ void PathTracker::Impl::update(const Frame& f) {
         pk.fitted = pk.v;
         pk.off = subpixel_peak(fine, in, &pk.fitted);
         pk.at = near.tl() + in;
+        pk.ridge = ridge;
         refined.push_back(pk);
       }
       std::sort(refined.begin(), refined.end(), [](const Peak& a, const Peak& b) { return a.v > b.v; });
@@ -417,6 +493,7 @@ void PathTracker::Impl::update(const Frame& f) {
       const cv::Point at = peaks[k].at;
       const cv::Point2d off = peaks[k].off;
       const double fitted = peaks[k].fitted;
+      const double ridge = peaks[k].ridge;
       const double x = win.x + at.x + off.x + h, y = win.y + at.y + off.y + h;
       // The same peak seen from two windows is kept once.
       const auto same = std::find_if(found.begin(), found.end(), [&](const Candidate& c) {
@@ -428,6 +505,7 @@ void PathTracker::Impl::update(const Frame& f) {
       }
       if (k == 0) window_best.push_back(found.size());
       found.push_back(make_candidate(gray, x, y, std::min(1.0, fitted)));
+      found.back().spread = ridge;
     }
   }
   // At most kCandidates: every window's best, then the best of the rest.
@@ -681,7 +759,11 @@ std::vector<Observation> PathTracker::Impl::finish() {
     t = e;
   }
   std::vector<Observation> obs;
-  lost_none = lost_rival = lost_score = lost_background = 0;
+  lost_none = lost_rival = lost_score = lost_background = lost_ridge = lost_end = lost_alone = lost_unlinked = 0;
+  end_frame = steps[bt].index;
+  // A path point whose correlation peak is a ridge longer than a user's correction distance
+  // (4 px per 640 px of image width, at least 4 px) cannot be placed along it: lost.
+  ridge_max_px = std::max(kRidgeMinPx, kRidgeMinPx * size.width / 640.0);
   for (int t = 1; t < T; ++t) {
     Observation o;
     o.frame = steps[t].index;
@@ -699,6 +781,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     if (k < 0) {
       ++lost_none;
+      if (t > bt) ++lost_end;
       obs.push_back(o);
       continue;
     }
@@ -727,6 +810,9 @@ std::vector<Observation> PathTracker::Impl::finish() {
     } else if (typical_fg > 2 * kFgHalf && run_fg[t] < kFgShare * typical_fg) {
       ++lost_background;
       o.score = std::min(o.score, 0.1);
+    } else if (c.spread > ridge_max_px) {
+      ++lost_ridge;
+      o.score = std::min(o.score, 0.1);
     } else if (c.ncc < opt.min_score) {
       ++lost_score;
     } else {
@@ -734,28 +820,79 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     obs.push_back(o);
   }
+  // Confirmation (the M-of-N rule of radar tracking): a run of fewer than kMinRun consecutive
+  // reported points, with lost frames on both sides (the start and a mark count as reported),
+  // is not confirmed by its neighbours' motion: lost. (CarInLoop with --patch 25: frame 2
+  // alone between lost frames 1 and 3, 47 px from the human's mark.)
+  for (std::size_t i = 0; i < obs.size();) {
+    if (obs[i].lost) {
+      ++i;
+      continue;
+    }
+    std::size_t e = i;
+    bool anchored = i == 0;  // frame t = 1 follows the start
+    for (; e < obs.size() && !obs[e].lost; ++e) anchored = anchored || obs[e].manual;
+    if (e < obs.size() && obs[e].manual) anchored = true;
+    const bool bounded = e < obs.size();  // a run at the clip's end has no later neighbour to confirm it
+    if (!anchored && bounded && static_cast<int>(e - i) < kMinRun) {
+      for (std::size_t q = i; q < e; ++q) {
+        obs[q].lost = true;
+        obs[q].score = std::min(obs[q].score, 0.1);
+        ++lost_alone;
+      }
+    }
+    i = e;
+  }
+  // Identity: a run of reported points whose last reported point before it (the start, or a
+  // point of an earlier run) lies more than max_gap + 1 frames back is reached only through
+  // doubtful path points: it may be anything that the template resembles. Lost, unless it holds
+  // a mark. (CarInLoop with --patch 75: the path hopped from the car, its points lost, to a
+  // still edge 390 px away and held it for 17 frames.)
+  int last_reported = 0;  // step index; the start
+  for (std::size_t i = 0; i < obs.size();) {
+    if (obs[i].lost) {
+      ++i;
+      continue;
+    }
+    std::size_t e = i;
+    bool marked = false;
+    for (; e < obs.size() && !obs[e].lost; ++e) marked = marked || obs[e].manual;
+    const int first = static_cast<int>(i) + 1;  // step index of the run's first point
+    if (!marked && first - last_reported > G) {
+      for (std::size_t q = i; q < e; ++q) {
+        obs[q].lost = true;
+        obs[q].score = std::min(obs[q].score, 0.1);
+        ++lost_unlinked;
+      }
+    } else {
+      last_reported = static_cast<int>(e);  // step index of the run's last point
+    }
+    i = e;
+  }
   return obs;
 }
 
 std::string PathTracker::loss_hint() const {
   const Impl& m = *impl_;
-  if (m.lost_none + m.lost_rival + m.lost_score + m.lost_background == 0) return "";
-  if (m.lost_background > std::max({m.lost_none, m.lost_rival, m.lost_score})) {
-    return "in " + std::to_string(m.lost_background) +
-           " frame(s) the best match did not stand out from the still background (the object hidden or at rest): "
-           "a larger --max-gap bridges a hidden object";
+  std::string hint = m.main_loss_hint();
+  if (m.lost_alone > 0) {
+    hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_alone) +
+            " frame(s) found alone between lost frames were not confirmed by their neighbours' motion: "
+            "--mark one of them if it is right";
   }
-  if (m.lost_rival >= std::max(m.lost_none, m.lost_score)) {
-    return "a look-alike within reach made " + std::to_string(m.lost_rival) +
-           " frame(s) doubtful: start on a more distinctive mark, or a smaller --search";
+  if (m.lost_unlinked > 0) {
+    hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_unlinked) +
+            " frame(s) were reached only across more than --max-gap frames without a reported point, so what was "
+            "found there may be something else: --mark one of them if it is right";
   }
-  if (m.lost_score >= m.lost_none) {
-    return "the object matched its first look poorly in " + std::to_string(m.lost_score) +
-           " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch; "
-           "for a mark that turns (on a wheel), --point-tracker frame";
-  }
-  return "the object was not found in " + std::to_string(m.lost_none) +
-         " frame(s) (hidden, out of view, or moving more than --search px per frame): a larger --search or --max-gap";
+  if (m.lost_ridge == 0) return hint;
+  char bar[32];
+  std::snprintf(bar, sizeof bar, "%.0f", m.ridge_max_px);
+  const std::string ridge = "in " + std::to_string(m.lost_ridge) +
+                            " frame(s) the template matched all along a streak (motion blur, or a plain edge): the position "
+                            "along it was uncertain by more than " + std::string(bar) +
+                            " px; a shorter exposure when filming helps, or mark those frames (--mark NAME@FRAME=X,Y)";
+  return hint.empty() ? ridge : hint + "; " + ridge;
 }
 
 }  // namespace tribolab::video

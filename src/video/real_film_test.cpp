@@ -53,6 +53,11 @@ void check(const RealTrack& r) {
   ASSERT_GT(h.marks, 0);
   EXPECT_LE(h.confidently_wrong, r.max_confidently_wrong);  // frames > 10 px from the human's mark with a score
   EXPECT_LE(share, kMaxCorrectShare);
+  // A track that a user need not correct is not told that it "has followed something else"
+  // (jmoljana, 3.7 px median from marks that lie on a 2.8 px grid, was, by a fixed 3 px bar).
+  if (share <= kMaxCorrectShare) {
+    for (const std::string& w : res.warnings) EXPECT_EQ(w.find("project's own marks"), std::string::npos) << w;
+  }
 }
 
 TEST(RealFilm, BallTossIsFollowedLikeTheHuman) { check({"BallToss.trz", "ball"}); }
@@ -67,22 +72,80 @@ TEST(RealFilm, JmoljanaIsFollowed) {
   // full HD, docs/benchmarks.md#tracking-on-real-film), minutes under ASan, too slow for
   // make test: run with TRIBOLAB_SLOW_TESTS=1.
   if (!std::getenv("TRIBOLAB_SLOW_TESTS")) GTEST_SKIP() << "slow (150 full-HD frames): set TRIBOLAB_SLOW_TESTS=1";
-  // One frame lies 11.7 px from the human's mark (the frame tracker: 11.6 px), inside the
+  // One frame (77) lies 11.7 px from the human's mark (the frame tracker: 11.6 px), inside the
   // 12 px a user corrects at this width but over the 10 px bar: allowed here so that a second
-  // such frame fails, and reported as not yet met.
+  // such frame fails. There the human's mark is off, not the track: it jumps 7 px from the
+  // mean of the human's neighbouring marks while the track (correlation 0.999) stays within
+  // 0.5 px of its own (docs/benchmarks.md#tracking-on-real-film).
   check({"jmoljana.trz", "mass A", 1});
 }
 
-// Not yet met (issue 24 open), so disabled rather than loosened: the image sequence is read
-// (53 frames, 1280x720) and the plain car's start is taken, but the car moves ~70 px per
-// frame, blurred, and turns into the loop; the unrotated 51 px template slides along it.
-// Measured: frames 1-3 reported 20-56 px from the human's marks (confidently wrong), 4-52
-// lost. Run with --gtest_also_run_disabled_tests.
-TEST(RealFilm, DISABLED_PlainCarInAnImageSequenceIsFollowed) {
-  // masa A: a toy car with little texture (refused by the frame tracker) in a loop, filmed as
-  // numbered JPEG images inside the .trz.
-  check({"CarInLoop.trz", "masa A"});
+// masa A: a toy car with little texture (refused by the frame tracker) in a loop, filmed as
+// numbered JPEG images inside the .trz (53 frames, 1280x720). The car moves ~70 px per frame,
+// blurred into a streak longer than its 51 px template, and turns into the loop.
+TEST(RealFilm, PlainBlurredCarInAnImageSequenceIsNeverConfidentlyWrong) {
+  // Frames 1-3 were reported 20-56 px from the human's marks with scores 0.86-0.94 (the
+  // template slid along the streak); now every frame the tracker cannot place is lost. The
+  // share to correct (100 %: no frame placed) is not checked here; the next test is the goal.
+  const std::string path = testing::tracker_project_path("CarInLoop.trz");
+  if (path.empty()) GTEST_SKIP() << "../shared/data/tracker/CarInLoop.trz not found";
+  TrackVideoOptions o;
+  Target t;
+  t.name = t.from_track = "masa A";
+  o.targets.push_back(t);
+  o.thumbnails = 0;
+  const TrackVideoResult res = track_video(path, o);
+  ASSERT_EQ(res.series.size(), 1u);
+  ASSERT_TRUE(res.series[0].vs_human.has_value());
+  const HumanComparison& h = *res.series[0].vs_human;
+  std::printf("CarInLoop.trz masa A: %d marks, %d tracked, max %.2f px, confidently wrong %d\n", h.marks, h.frames,
+              h.max_px, h.confidently_wrong);
+  EXPECT_EQ(h.marks, 52);
+  EXPECT_EQ(h.confidently_wrong, 0);
+  // The warning names the streak and the remedy.
+  bool streak = false;
+  for (const std::string& w : res.warnings) streak = streak || w.find("streak") != std::string::npos;
+  EXPECT_TRUE(streak);
 }
+
+TEST(RealFilm, PlainBlurredCarIsNeverConfidentlyWrongWithTheOptionsAUserTriesNext) {
+  // With --patch 25 frame 2 alone, between lost frames, sat on the car's green rear smear 47 px
+  // from the human's mark (a sharp peak the ridge check passes); the confirmation rule (a run
+  // of fewer than 3 reported points between lost frames is lost) removes it. With --patch 75
+  // the path hopped from the car, across its lost points, to a still edge 785 px from the marks
+  // and held it for 17 frames; the identity rule (a run whose last reported point before it is
+  // more than max_gap + 1 frames back is lost) removes them (docs/benchmarks.md#tracking-on-real-film).
+  const std::string path = testing::tracker_project_path("CarInLoop.trz");
+  if (path.empty()) GTEST_SKIP() << "../shared/data/tracker/CarInLoop.trz not found";
+  struct Variant {
+    const char* what;
+    int patch_px;
+    double min_score;
+    int search_px;
+  };
+  for (const Variant& v : {Variant{"--patch 25", 25, 0.6, 0}, Variant{"--patch 35", 35, 0.6, 0},
+                           Variant{"--min-score 0.4", 0, 0.4, 0}, Variant{"--search 300", 0, 0.6, 300}, Variant{"--patch 75", 75, 0.6, 0}}) {
+    TrackVideoOptions o;
+    Target t;
+    t.name = t.from_track = "masa A";
+    o.targets.push_back(t);
+    o.thumbnails = 0;
+    o.path.patch_px = v.patch_px;
+    o.path.min_score = v.min_score;
+    o.path.search_px = v.search_px;
+    const TrackVideoResult res = track_video(path, o);
+    ASSERT_TRUE(res.series.at(0).vs_human.has_value());
+    const HumanComparison& h = *res.series[0].vs_human;
+    std::printf("CarInLoop.trz masa A %s: %d tracked, max %.2f px, confidently wrong %d\n", v.what, h.frames, h.max_px,
+                h.confidently_wrong);
+    EXPECT_EQ(h.confidently_wrong, 0) << v.what;
+  }
+}
+
+// Not yet met (issue 24 open), so disabled rather than loosened: the car is not followed (no
+// frame placed; the template does not turn with the car into the loop nor match its blur).
+// Run with --gtest_also_run_disabled_tests.
+TEST(RealFilm, DISABLED_PlainCarInAnImageSequenceIsFollowed) { check({"CarInLoop.trz", "masa A"}); }
 
 }  // namespace
 }  // namespace tribolab::video

@@ -556,9 +556,14 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
   }
   // The project's own marks are an independent check: a track far from them has followed
   // something else (an edge sliding along itself, a look-alike) even where its score held.
-  constexpr double kHumanDisagreementPx = 3;  // human marks scatter ~1 px; 3x that is not scatter
+  // Human marks scatter ~1 px at the zoom they are clicked at; 3x that is not scatter. A wide
+  // image is clicked zoomed out (jmoljana's marks, 1920 px wide, lie on a 2.8 px grid: one
+  // screen pixel per 2.8 image pixels), so the bar grows with the width past 640 px, as the
+  // correction distance does (compare_with_human).
+  constexpr double kHumanDisagreementPxPer640 = 3;
+  const double disagreement_px = kHumanDisagreementPxPer640 * std::max(1.0, result.input.info.width / 640.0);
   for (const TrackedSeries& s : result.series) {
-    if (!s.vs_human || s.vs_human->frames == 0 || !(s.vs_human->median_px > kHumanDisagreementPx)) continue;
+    if (!s.vs_human || s.vs_human->frames == 0 || !(s.vs_human->median_px > disagreement_px)) continue;
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.1f px (median over %d frames)", s.vs_human->median_px, s.vs_human->frames);
     result.warnings.push_back("track '" + s.name + "' lies " + buf +
