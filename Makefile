@@ -103,8 +103,12 @@ fuzz: deps
 # src/numerics/polyfit.cpp), but there ASan saw a free of memory Ceres' covariance had not
 # malloc-ed (bounce fit; likely Eigen template copies shared between our objects and
 # libceres, inlined at -O2), never seen at -O2 so far: to be understood before -O1 comes back.
+# The library and program sources in unity batches of 8 (TRIBOLAB_UNITY_SOURCES): each file
+# no longer parses and instantiates Eigen, Ceres, CLI11 and OpenCV again; the main tree, the
+# one shipped and the one a developer rebuilds file by file, keeps one object per source.
 asan: deps
-	cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_SANITIZE=ON -DTRIBOLAB_BENCH=OFF
+	cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_SANITIZE=ON -DTRIBOLAB_BENCH=OFF \
+	  -DTRIBOLAB_UNITY_SOURCES=ON
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)

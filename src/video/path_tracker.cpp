@@ -171,8 +171,8 @@ struct PathTracker::Impl {
   int lost_none = 0, lost_rival = 0, lost_score = 0, lost_background = 0, lost_ridge = 0;
   // Of lost_none, the frames after the path's last point (the track ended) and that point's frame.
   int lost_end = 0, end_frame = -1;
-  int lost_alone = 0;
-  int lost_unlinked = 0;  // frames of a run reached only through doubtful points (finish())  // frames of a short run between lost frames, unconfirmed (finish())
+  int lost_alone = 0;      // frames of a short run between lost frames, unconfirmed (finish())
+  int lost_unlinked = 0;  // frames of a run reached only through doubtful points (finish())
   double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
 
   void sample(const cv::Mat& gray) {
