@@ -80,7 +80,8 @@ void add_declared_options(CLI::App& cmd, O& o, const app::Fields<O>& fields, con
       add_report_option(cmd, **path, **mode);
       continue;
     }
-    const std::string name = f.role == FieldRole::input_files ? f.name : flag_of(f.name);
+    std::string name = f.role == FieldRole::input_files ? f.name : flag_of(f.name);
+    if (!f.cli_alias.empty()) name += "," + f.cli_alias;  // CLI11: the first long name is the option's name
     CLI::Option* opt = std::visit(
         [&](auto* p) -> CLI::Option* {
           using T = std::remove_cvref_t<decltype(*p)>;
