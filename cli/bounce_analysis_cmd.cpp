@@ -9,9 +9,6 @@
 
 #include "app.hpp"
 #include "help_explain.hpp"
-#include "bounce_options.hpp"
-#include "incline_options.hpp"
-#include "report_option.hpp"
 #include "series_cmd.hpp"
 
 #include "app/bounce/bounce_analyze.hpp"
@@ -80,23 +77,8 @@ void add_fit(CLI::App* area) {
   auto& o = opts->o;
   auto* cmd = area->add_subcommand("fit", "fit the contact law (K, n, D or e, mu) to a table of measured bounces");
   cmd->footer(help::kBounceFit);
-  cmd->add_option("FILE", o.file, "CSV with header theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out")->required();
-  cmd->add_option("--model", o.model, "normal law: hooke|hertz|hunt-crossley|flores|lankarani-nikravesh|gonthier");
-  cmd->add_flag("--restitution", o.restitution, "fit the target restitution e instead of D (restitution-based law)");
-  cmd->add_option("--friction", o.friction, "coulomb|regularized|spring");
-  cmd->add_option("--slip-scale", o.slip_scale, "v_s of the regularized law, m/s");
-  add_ball_options(cmd, o.ball);
-  cmd->add_option("--fix", o.fix, "hold a parameter: NAME=VALUE with NAME in K, n, D, e, mu (repeatable)");
-  cmd->add_option("--loss", o.loss, "robust loss: huber|cauchy|none");
-  cmd->add_option("--loss-scale", o.loss_scale, "residual where the robust loss bends, m/s");
-  cmd->add_option("--K0", o.K0, "starting K, N/m^n");
-  cmd->add_option("--n0", o.n0, "starting n");
-  cmd->add_option("--D0", o.D0, "starting D");
-  cmd->add_option("--e0", o.e0, "starting e");
-  cmd->add_option("--mu0", o.mu0, "starting mu");
-  add_report_option(*cmd, o.report, o.plotly);
+  add_declared_options(*cmd, o, bounce_fit_fields(), bounce_fit_result_keys());
   add_json_flag(*cmd, opts->json);
-  declare_results(*cmd, bounce_fit_result_keys());
   cmd->callback([opts] {
     json j = bounce_fit(opts->o).json;
     if (!opts->json) j.erase("residuals");  // the people's listing leaves the per-row table out

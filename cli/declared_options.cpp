@@ -34,7 +34,10 @@ std::string flags_for_field_names(std::string help, const std::vector<std::strin
     const std::string flag = flag_of(name);
     for (std::size_t at = help.find(name); at != std::string::npos; at = help.find(name, at)) {
       const std::size_t end = at + name.size();
-      if ((at > 0 && word_char(help[at - 1])) || (end < help.size() && word_char(help[end]))) {
+      // a column of a CSV header ("columns phi_deg,cos_theta_c") is no flag: a comma without a space
+      const bool in_header = (at > 0 && help[at - 1] == ',') ||
+                             (end + 1 < help.size() && help[end] == ',' && !std::isspace(static_cast<unsigned char>(help[end + 1])));
+      if (in_header || (at > 0 && word_char(help[at - 1])) || (end < help.size() && word_char(help[end]))) {
         at = end;
         continue;
       }

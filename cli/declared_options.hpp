@@ -52,7 +52,8 @@ std::string declared_help(const app::FieldDecl& f);
 
 /// `help` with every whole-word mention of one of `names` (the command's other fields, where a
 /// declaration's help says "unset: from the flights and contact_duration") spelled as its flag
-/// (--contact-duration). Only names with an underscore: a one-word name ("mass") is prose too.
+/// (--contact-duration). Only names with an underscore: a one-word name ("mass") is prose too;
+/// a name in a CSV header (touching a comma without a space: "phi_deg,cos_theta_c") stays.
 std::string flags_for_field_names(std::string help, const std::vector<std::string>& names);
 
 /// Prints a declared command's result as print_result does, the listing's units from the
@@ -79,7 +80,8 @@ void add_declared_options(CLI::App& cmd, O& o, const app::Fields<O>& fields, con
       add_report_option(cmd, **path, **mode);
       continue;
     }
-    const std::string name = f.role == FieldRole::input_files ? f.name : flag_of(f.name);
+    std::string name = f.role == FieldRole::input_files ? f.name : flag_of(f.name);
+    if (!f.cli_alias.empty()) name += "," + f.cli_alias;  // CLI11: the first long name is the option's name
     CLI::Option* opt = std::visit(
         [&](auto* p) -> CLI::Option* {
           using T = std::remove_cvref_t<decltype(*p)>;

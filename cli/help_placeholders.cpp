@@ -64,7 +64,7 @@ void tidy(CLI::Option& opt) {
       opt.type_name(c);
     } else if (names_a_file(opt)) {
       opt.type_name("FILE");
-    } else if (d.find("name") != std::string::npos || d.rfind("Track", 0) == 0 ||
+    } else if (d.find("name") != std::string::npos || d.rfind("Track", 0) == 0 || d.rfind("track ", 0) == 0 ||
                d.find("this track") != std::string::npos || d.find(".trk inside") != std::string::npos) {
       opt.type_name("NAME");
     } else if (d.find("comma separated") != std::string::npos) {

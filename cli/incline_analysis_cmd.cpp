@@ -28,7 +28,7 @@ void set_types(CLI::App* cmd) {
       continue;
     }
     const std::string n = o->get_lnames().front();
-    if (n == "help" || n == "json" || n == "no-model-a") continue;
+    if (n == "help" || n == "json" || n == "no-model-a" || n == "report" || n == "plotly") continue;
     if (n == "out" || n == "table") o->type_name("FILE");
     else if (n == "track" || n == "track-name") o->type_name("NAME");
     else if (n == "length-unit") o->type_name("UNIT");
@@ -85,19 +85,9 @@ void add_mu_from_slide(CLI::App* area) {
   cmd->footer(help::kInclineMuFromSlide);
   auto s = std::make_shared<InclineMuFromSlideOptions>();
   auto as_json = std::make_shared<bool>(false);
-  cmd->add_option("FILE", s->files,
-                  "Tracker .trk/.trz, Export Data text, or CSV; several files: a series with a summary")
-      ->required();
-  add_number(*cmd, "--phi-deg", s->phi_deg,
-             "Incline angle, degrees, in (0, 90): one, or one per file (comma separated); without it only a is reported");
-  add_number(*cmd, "--sigma-phi-deg", s->sigma_phi_deg,
-             "Uncertainty of the angle, degrees (unset: exact): one, or one per file");
-  add_number(*cmd, "--g", s->g, "Gravitational acceleration, m/s^2");
-  add_track_input(cmd, s->input);
+  add_declared_options(*cmd, *s, incline_mu_from_slide_fields(), incline_mu_from_slide_result_keys());
   add_json_flag(*cmd, *as_json);
   set_types(cmd);
-  add_report_option(*cmd, s->report, s->plotly);
-  declare_results(*cmd, incline_mu_from_slide_result_keys());
   declare_series_results(*cmd, incline_mu_from_slide_series_result_keys());
   cmd->callback([s, as_json] {
     s->series = series_control();
@@ -152,16 +142,10 @@ void add_normal_friction_test(CLI::App* area) {
   cmd->footer(std::string(help::kInclineModels) + help::kInclineNormalFrictionTest);
   auto s = std::make_shared<InclineNormalFrictionTestOptions>();
   auto as_json = std::make_shared<bool>(false);
-  cmd->add_option("FILES", s->files, "Tracked runs, one per angle (with --phi-deg)");
-  add_number(*cmd, "--phi-deg", s->phi_deg, "Comma-separated incline angles, degrees, one per file");
-  cmd->add_option("--table", s->table, "CSV with columns phi_deg,cos_theta_c[,sigma_cos_theta_c] instead of files");
-  add_number(*cmd, "--g", s->g, "Gravitational acceleration, m/s^2");
-  add_track_input(cmd, s->input);
+  add_declared_options(*cmd, *s, incline_normal_friction_test_fields(), incline_normal_friction_test_result_keys());
   add_json_flag(*cmd, *as_json);
   set_types(cmd);
-  add_report_option(*cmd, s->report, s->plotly);
   cmd->get_option("--phi-deg")->type_name("NUM[,NUM...]");
-  declare_results(*cmd, incline_normal_friction_test_result_keys());
   cmd->callback([s, as_json] {
     const InclineNormalFrictionTestResult r = incline_normal_friction_test(*s);
     print_result(r.json, *as_json, incline_normal_friction_test_result_keys());

@@ -32,23 +32,6 @@ void name_option_types(CLI::App* cmd) {
   }
 }
 
-/// Registers `name` whose options `bind` adds to an Options struct and whose callback prints
-/// `run(options).json`, its listing's units from `keys` (the declared result keys).
-template <class Options, class Bind, class Run>
-void add_command(CLI::App* area, const std::string& name, const std::string& help, Bind bind, Run run,
-                 const app::ResultKeys& keys, const std::string& footer = "") {
-  auto* cmd = area->add_subcommand(name, help);
-  cmd->footer(footer);
-  auto o = std::make_shared<Options>();
-  auto as_json = std::make_shared<bool>(false);
-  bind(*cmd, *o);
-  add_json_flag(*cmd, *as_json);
-  name_option_types(cmd);
-  add_report_option(*cmd, o->report, o->plotly);
-  declare_results(*cmd, keys);
-  cmd->callback([o, as_json, run, &keys] { print_result(run(*o).json, *as_json, keys); });
-}
-
 /// Registers `name` bound from its declaration (app/common/option_fields.hpp, cli/declared_options.hpp).
 template <class Options, class Run>
 void add_declared_command(CLI::App* area, const std::string& name, const std::string& help,
@@ -81,19 +64,8 @@ void add_mu_from_stop(CLI::App* area) {
 }
 
 void add_families(CLI::App* area) {
-  add_command<InclineFamiliesOptions>(
-      area, "families", "Closed-form curves for several values of v0, phi or mu (incline study, figures 5-7 (五-七))",
-      [](CLI::App& cmd, InclineFamiliesOptions& o) {
-        add_launch_options(cmd, o.launch, false);
-        cmd.add_option("--vary", o.vary, "Parameter to vary: v0, phi or mu")->required();
-        add_number(cmd, "--values", o.values, "Comma-separated values (m/s for v0, degrees for phi)")
-            ->required();
-        add_number(cmd, "--samples", o.samples, "Samples per curve");
-        add_number(cmd, "--t-end", o.t_end,
-                   "Duration of every curve, s (unset: each member its own, 1.25 t_stop or 2 v0/alpha)");
-        cmd.add_option("--out", o.out, "Output CSV file")->required();
-      },
-      incline_families, incline_families_result_keys());
+  add_declared_command(area, "families", "Closed-form curves for several values of v0, phi or mu (incline study, figures 5-7 (五-七))",
+                       incline_families_fields(), incline_families_result_keys(), incline_families);
 }
 
 }  // namespace

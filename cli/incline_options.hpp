@@ -4,7 +4,6 @@
 // io::parse_double first, so a bad one fails as before: one line naming the option.
 #pragma once
 
-#include "app/incline/incline_launch.hpp"
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 
@@ -52,21 +51,6 @@ CLI::Option* add_number(CLI::App& cmd, const std::string& name, T& field, const 
     if constexpr (std::is_same_v<T, std::vector<N>>) opt->delimiter(',')->allow_extra_args(false);
   }
   return opt;
-}
-
-/// `--mu`, `--phi-deg`, `--v0` (required when `required`), `--g`, `--mu-static`.
-inline void add_launch_options(CLI::App& cmd, app::InclineLaunchOptions& o, bool required) {
-  auto* mu = add_number(cmd, "--mu", o.mu, "Kinetic friction coefficient (>= 0)");
-  auto* phi = add_number(cmd, "--phi-deg", o.phi_deg, "Incline angle, degrees, in [0, 90)");
-  auto* v0 = add_number(cmd, "--v0", o.v0, "Launch speed along +x, m/s (>= 0)");
-  if (required) {
-    mu->required();
-    phi->required();
-    v0->required();
-  }
-  add_number(cmd, "--g", o.g, "Gravitational acceleration, m/s^2");
-  add_number(cmd, "--mu-static", o.mu_static,
-             "Static friction coefficient deciding whether a disc at rest stays (unset: --mu)");
 }
 
 }  // namespace tribolab::cli

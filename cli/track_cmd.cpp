@@ -73,21 +73,10 @@ void register_track(CLI::App& root) {
         "kinematics", "Velocities and accelerations of one track (Tracker's stencils or "
                       "Savitzky-Golay with standard errors), never across impacts");
     auto o = std::make_shared<TrackKinematicsOptions>();
-    add_input_options(*cmd, o->input);
-    cmd->add_option("--track", o->track, "Track to differentiate (required when the file has several)");
-    cmd->add_option("--method", o->method, "tracker (Tracker's finite differences) or savgol");
-    cmd->add_option("--window", o->window, "savgol: points per local fit");
-    cmd->add_option("--order", o->order, "savgol: polynomial degree 1..6");
-    cmd->add_option("--impacts", o->impacts,
-                    "auto: detect impacts and never difference across them; none: differentiate "
-                    "straight through, exactly as Tracker does");
-    cmd->add_option("--g", o->g,
-                    "Gravitational acceleration, m/s^2: segments that move like a free flight are checked "
-                    "against it (docs/theory.md#free-flight-check)");
-    add_time_range(*cmd, o->t_from, o->t_to, "e.g. only the free fall before a landing");
-    cmd->add_option("--out", o->out, "Output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)")->required();
-    add_report_option(*cmd, o->report, o->plotly);
-    bind(*cmd, o, std::make_shared<bool>(false), track_kinematics, track_kinematics_result_keys());
+    auto as_json = std::make_shared<bool>(false);
+    add_declared_options(*cmd, *o, track_kinematics_fields(), track_kinematics_result_keys());
+    add_json_flag(*cmd, *as_json);
+    cmd->callback([o, as_json, cmd] { print_declared(*cmd, track_kinematics(*o).json, *as_json); });
   }
 
   // track rigid-body
@@ -96,16 +85,10 @@ void register_track(CLI::App& root) {
         "rigid-body", "Centre, orientation and spin (with standard errors) of a body from two tracked "
                       "points on it (docs/theory.md#track-rigid-body)");
     auto o = std::make_shared<TrackRigidBodyOptions>();
-    add_input_options(*cmd, o->input);
-    cmd->add_option("--track-a", o->track_a, "Track of point A on the body")->required();
-    cmd->add_option("--track-b", o->track_b, "Track of point B on the same body")->required();
-    cmd->add_option("--window", o->window, "Points per local linear fit of the orientation (the spin at each frame), >= 3");
-    cmd->add_option("--max-drift", o->max_drift,
-                    "Warn when the A-B distance drifts or scatters by more than this fraction of its mean "
-                    "(a rigid body keeps it; more means a wrong calibration or a mislabelled track)");
-    cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,omega,sigma_omega,length (s, m, rad, rad/s)");
-    add_report_option(*cmd, o->report, o->plotly);
-    bind(*cmd, o, std::make_shared<bool>(false), track_rigid_body, track_rigid_body_result_keys());
+    auto as_json = std::make_shared<bool>(false);
+    add_declared_options(*cmd, *o, track_rigid_body_fields(), track_rigid_body_result_keys());
+    add_json_flag(*cmd, *as_json);
+    cmd->callback([o, as_json, cmd] { print_declared(*cmd, track_rigid_body(*o).json, *as_json); });
   }
 
   // track rotation

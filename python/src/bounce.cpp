@@ -82,15 +82,6 @@ struct type_caster<tribolab::app::ValueOrAxis> {
 namespace tribolab::python {
 namespace {
 
-/// --a --b --mass --inertia (the seed's rugby ball by default).
-template <class C>
-void ball_options(C& c) {
-  TRIBOLAB_OPT(c, ball.ball.a);
-  TRIBOLAB_OPT(c, ball.ball.b);
-  TRIBOLAB_OPT(c, ball.ball.mass);
-  TRIBOLAB_OPT(c, ball.ball.inertia);
-}
-
 /// Samples with a t and a bounce::BodyState `state` as arrays t, x, y, theta, vx, vy, omega.
 template <class S>
 py::dict body_states(const std::vector<S>& v) {
@@ -243,22 +234,7 @@ void bind_bounce(py::module_& m) {
   {
     Command<app::BounceFitOptions> c(m, "fit",
         "The contact law (K, n, D or e, mu) fitted to a table of measured bounces (`tribolab bounce fit`).");
-    TRIBOLAB_ARG(c, file);
-    TRIBOLAB_OPT(c, model);
-    TRIBOLAB_OPT(c, restitution);
-    TRIBOLAB_OPT(c, friction);
-    TRIBOLAB_OPT(c, slip_scale);
-    ball_options(c);
-    TRIBOLAB_OPT(c, fix);
-    TRIBOLAB_OPT(c, loss);
-    TRIBOLAB_OPT(c, loss_scale);
-    TRIBOLAB_OPT(c, K0);
-    TRIBOLAB_OPT(c, n0);
-    TRIBOLAB_OPT(c, D0);
-    TRIBOLAB_OPT(c, e0);
-    TRIBOLAB_OPT(c, mu0);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::bounce_fit_fields());
     c.def(&app::bounce_fit,
           [](const app::BounceFitResult& r, py::dict& d) {
             using analysis::BounceRow;

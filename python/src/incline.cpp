@@ -19,16 +19,6 @@ py::dict states(const std::vector<State>& v) {
                  field("ay", &State::ay));
 }
 
-/// --mu --phi-deg --v0 --g --mu-static.
-template <class C>
-void launch_options(C& c) {
-  TRIBOLAB_OPT(c, launch.mu);
-  TRIBOLAB_OPT(c, launch.phi_deg);
-  TRIBOLAB_OPT(c, launch.v0);
-  TRIBOLAB_OPT(c, launch.g);
-  TRIBOLAB_OPT(c, launch.mu_static);
-}
-
 constexpr const char* kStates =
     "t (s), x, y (m; x across the slope, y up it), vx, vy (m/s), ax, ay (m/s^2)";
 
@@ -55,14 +45,7 @@ void bind_incline(py::module_& m) {
   {
     Command<app::InclineFamiliesOptions> c(m, "families",
         "Curves for several values of one launch parameter (`tribolab incline families`).");
-    launch_options(c);
-    TRIBOLAB_OPT(c, vary);
-    TRIBOLAB_OPT(c, values);
-    TRIBOLAB_OPT(c, samples);
-    TRIBOLAB_OPT(c, t_end);
-    TRIBOLAB_OPT(c, out);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::incline_families_fields());
     c.def(&app::incline_families,
           [](const app::InclineFamiliesResult& r, py::dict& d) {
             const auto& members = r.family.members;
@@ -84,15 +67,7 @@ void bind_incline(py::module_& m) {
     Command<app::InclineNormalFrictionTestOptions> c(m, "normal_friction_test",
         "cos theta_c against tan phi over runs at several angles (`tribolab incline normal-friction-test`, the "
         "incline study's figure 3-2 (圖三-2), eq c): a line through the origin with slope 1/mu without normal friction.");
-    TRIBOLAB_ARG(c, files);
-    TRIBOLAB_OPT(c, phi_deg);
-    TRIBOLAB_OPT(c, table);
-    TRIBOLAB_OPT(c, g);
-    TRIBOLAB_OPT(c, input.track);
-    TRIBOLAB_OPT(c, input.time_scale);
-    TRIBOLAB_OPT(c, input.length_unit);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::incline_normal_friction_test_fields());
     c.def(&app::incline_normal_friction_test,
           [](const app::InclineNormalFrictionTestResult& r, py::dict& d) {
             py::dict p;
@@ -162,16 +137,8 @@ void bind_incline(py::module_& m) {
     Command<app::InclineMuFromSlideOptions> c(m, "mu_from_slide",
         "The friction coefficient from a straight slide down the incline (`tribolab incline "
         "mu-from-slide`, the incline study's eq a).");
-    TRIBOLAB_ARG(c, files);
-    TRIBOLAB_OPT(c, phi_deg);
-    TRIBOLAB_OPT(c, sigma_phi_deg);
-    TRIBOLAB_OPT(c, g);
-    TRIBOLAB_OPT(c, input.track);
-    TRIBOLAB_OPT(c, input.time_scale);
-    TRIBOLAB_OPT(c, input.length_unit);
-    TRIBOLAB_OPT(c, series.threads);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::incline_mu_from_slide_fields());
+    TRIBOLAB_OPT(c, series.threads);  // a notebook may limit the cores; the command line uses them all
     c.def(&app::incline_mu_from_slide,
           [](const app::InclineMuFromSlideResult& r, py::dict& d) {
             py::list slides;

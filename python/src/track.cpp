@@ -48,18 +48,7 @@ void bind_track(py::module_& m) {
     Command<app::TrackKinematicsOptions> c(m, "kinematics",
         "Velocities and accelerations of one track (`tribolab track kinematics`): Tracker's "
         "finite differences or Savitzky-Golay with standard errors, never across impacts.");
-    input_options(c);
-    TRIBOLAB_OPT(c, track);
-    TRIBOLAB_OPT(c, method);
-    TRIBOLAB_OPT(c, window);
-    TRIBOLAB_OPT(c, order);
-    TRIBOLAB_OPT(c, impacts);
-    TRIBOLAB_OPT(c, g);
-    TRIBOLAB_OPT(c, t_from);
-    TRIBOLAB_OPT(c, t_to);
-    TRIBOLAB_OPT(c, out);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::track_kinematics_fields());
     c.def(&app::track_kinematics,
           [](const app::TrackKinematicsResult& r, py::dict& d) {
             const auto& k = r.kinematics.rows;
@@ -81,14 +70,7 @@ void bind_track(py::module_& m) {
     Command<app::TrackRigidBodyOptions> c(m, "rigid_body",
         "The planar motion of a body from two tracked points on it (`tribolab track rigid-body`): "
         "centre, orientation and spin with standard errors, and the A-B distance check.");
-    input_options(c);
-    TRIBOLAB_OPT(c, track_a);
-    TRIBOLAB_OPT(c, track_b);
-    TRIBOLAB_OPT(c, window);
-    TRIBOLAB_OPT(c, max_drift);
-    TRIBOLAB_OPT(c, out);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::track_rigid_body_fields());
     c.def(&app::track_rigid_body,
           [](const app::TrackRigidBodyResult& r, py::dict& d) {
             d["rows"] = columns(r.body.rows, field("frame", &RigidBodyRow::frame), field("t", &RigidBodyRow::t),

@@ -176,6 +176,32 @@ BounceAnalyzeResult bounce_analyze(const BounceAnalyzeOptions& opts) {
   return res;
 }
 
+const Fields<BounceFitOptions>& bounce_fit_fields() {
+  using O = BounceFitOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("file", &O::file, "", "CSV with header theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out")
+        .as(FieldRole::input_files)
+        .needed();
+    d.add("model", &O::model, "", "normal law").one_of(bounce::normal_model_names());
+    d.add("restitution", &O::restitution, "", "fit the target restitution e instead of D (restitution-based law)");
+    d.add("friction", &O::friction, "", "friction model").one_of(bounce::friction_kind_names());
+    d.add("slip_scale", &O::slip_scale, "m/s", "v_s of the regularized law");
+    d.group(&O::ball, ball_fields());
+    d.add("fix", &O::fix, "", "hold a parameter: NAME=VALUE with NAME in K, n, D, e, mu (repeatable)");
+    d.add("loss", &O::loss, "", "robust loss").one_of({"huber", "cauchy", "none"});
+    d.add("loss_scale", &O::loss_scale, "m/s", "residual where the robust loss bends").in(PhysicalRange{0, 1e3, "m/s", true});
+    d.add("K0", &O::K0, "N/m^n", "starting K").in(ranges::stiffness);
+    d.add("n0", &O::n0, "", "starting n").in(PhysicalRange{1, 3, ""});
+    d.add("D0", &O::D0, "N s/m^(n+1)", "starting D").in(PhysicalRange{0, 1e12, "N s/m^(n+1)", true});
+    d.add("e0", &O::e0, "", "starting e").in(PhysicalRange{0.02, 1, "", true});
+    d.add("mu0", &O::mu0, "", "starting mu").in(PhysicalRange{0, 3, ""});
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
 BounceFitResult bounce_fit(const BounceFitOptions& opts) {
   check_output_paths({opts.file}, {{"report", opts.report}});  // before any work (app/common/output_paths.hpp)
   analysis::BounceFitOptions o;
@@ -194,12 +220,11 @@ BounceFitResult bounce_fit(const BounceFitOptions& opts) {
   o.loss_scale = opts.loss_scale;
   for (auto [v, name] : {std::pair{o.K0, field("K0")}, {o.n0, field("n0")}, {o.D0, field("D0")}, {o.e0, field("e0")}, {o.mu0, field("mu0")}, {o.loss_scale, field("loss_scale")}})
     check_finite(v, name);
-  check_range(o.K0, ranges::stiffness, field("K0"));  // docs/cli.md#physical-ranges
-  check_range(o.D0, PhysicalRange{0, 1e12, "N s/m^(n+1)", true}, field("D0"));
-  check_range(o.loss_scale, PhysicalRange{0, 1e3, "m/s", true}, field("loss_scale"));
+  // the starting values' bounds are the fit's own (the declared ranges say them for the schema)
   if (!(o.n0 >= 1 && o.n0 <= 3)) throw InputError(field("n0"), "must lie in [1, 3]");
   if (!(o.e0 > 0.02 && o.e0 <= 1)) throw InputError(field("e0"), "must lie in (0.02, 1]");
   if (!(o.mu0 >= 0 && o.mu0 <= 3)) throw InputError(field("mu0"), "must lie in [0, 3]");
+  check_ranges(opts, bounce_fit_fields());  // K0, D0, loss_scale (docs/cli.md#physical-ranges)
   if (opts.loss == "huber") o.loss = numerics::RobustLoss::huber;
   else if (opts.loss == "cauchy") o.loss = numerics::RobustLoss::cauchy;
   else if (opts.loss == "none") o.loss = numerics::RobustLoss::none;

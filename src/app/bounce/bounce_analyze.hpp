@@ -43,8 +43,8 @@ struct BounceAnalyzeOptions {
 };
 
 /// The declaration of every option of `bounce analyze` for one file (app/common/option_fields.hpp):
-/// the studio's form is made from it (src/studio/); the command line binds by hand still (its
-/// --floor-y and --contact-duration take one value per file of a series).
+/// the studio's form is made from it (src/studio/); the command line and Python bind from the
+/// series' declaration built on it (bounce_analyze_series_fields, app/bounce/bounce_series.hpp).
 inline const Fields<BounceAnalyzeOptions>& bounce_analyze_fields() {
   using O = BounceAnalyzeOptions;
   static const Fields<O> f = [] {
@@ -124,6 +124,10 @@ struct BounceFitResult {
   std::vector<analysis::BounceRow> rows;      ///< the table as read
   analysis::BounceFitResult fit;              ///< parameters, covariance and per-row predictions/residuals (fit.rows)
 };
+
+/// The declaration of every option of `bounce fit` (app/common/option_fields.hpp): the command
+/// line and Python bind from it.
+const Fields<BounceFitOptions>& bounce_fit_fields();
 
 BounceFitResult bounce_fit(const BounceFitOptions& o);
 

@@ -56,11 +56,13 @@ struct FieldDecl {
   FieldRole role = FieldRole::value;
   std::vector<std::string> choices;    ///< the words a text field accepts; empty = any text
   std::string group;                   ///< shared group ("ball", "law", "truth law") or "" for the command's own
+  std::string cli_alias;               ///< a second command-line spelling kept for old scripts ("--from" of t_from); "" = none
 
   FieldDecl& in(const PhysicalRange& r) { range = r; return *this; }
   FieldDecl& needed() { required = true; return *this; }
   FieldDecl& as(FieldRole r) { role = r; return *this; }
   FieldDecl& one_of(std::vector<std::string> words) { choices = std::move(words); return *this; }
+  FieldDecl& also_spelled(std::string flag) { cli_alias = std::move(flag); return *this; }
 };
 
 /// One declared field of options struct O: the declaration and how to reach the member.

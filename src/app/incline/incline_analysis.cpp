@@ -23,6 +23,36 @@ namespace tribolab::app {
 
 using nlohmann::json;
 
+const Fields<InclineTrackInput>& incline_track_input_fields() {
+  using O = InclineTrackInput;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("track", &O::track, "", "track to analyse (required when the file holds several)");
+    d.add("time_scale", &O::time_scale, "", "real seconds per file second (slow motion 240 fps shown at 30 fps: 0.125)")
+        .in(ranges::time_scale);
+    d.add("length_unit", &O::length_unit, "",
+          "unit of the file's lengths, overriding what the file says: m, cm, mm, km, um, in, ft (when not given: the "
+          "file's unit, else m)");
+    return d;
+  }();
+  return f;
+}
+
+const Fields<InclineNormalFrictionTestOptions>& incline_normal_friction_test_fields() {
+  using O = InclineNormalFrictionTestOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("files", &O::files, "", "tracked runs, one per angle (with phi_deg)").as(FieldRole::input_files);
+    d.add("phi_deg", &O::phi_deg, "deg", "comma-separated incline angles, in (0, 90), one per file");
+    d.add("table", &O::table, "", "CSV with columns phi_deg,cos_theta_c[,sigma_cos_theta_c] instead of files");
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity);
+    d.group(&O::input, incline_track_input_fields());
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
 track::Track read_incline_track(const std::string& file, const InclineTrackInput& in) {
   io::ImportOptions o;
   o.time_scale = check_range(in.time_scale, ranges::time_scale, field("time_scale"));

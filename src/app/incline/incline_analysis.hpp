@@ -29,6 +29,10 @@ struct InclineTrackInput {
   std::string length_unit;
 };
 
+/// The declarations of --track --time-scale --length-unit (app/common/option_fields.hpp), the
+/// shared input options of the incline commands that read tracked runs. In incline_analysis.cpp.
+const Fields<InclineTrackInput>& incline_track_input_fields();
+
 /// Reads the one track `in` selects from `file` (Tracker .trk/.trz, Export Data text, CSV);
 /// InputError naming the file when it holds several and none is chosen.
 track::Track read_incline_track(const std::string& file, const InclineTrackInput& in);
@@ -120,6 +124,10 @@ struct InclineNormalFrictionTestResult {
   /// json["runs"] hold "error", the fit used the other runs.
   std::vector<std::string> errors;
 };
+
+/// The declaration of every option of `incline normal-friction-test` (the command line and
+/// Python bind from it). In incline_analysis.cpp.
+const Fields<InclineNormalFrictionTestOptions>& incline_normal_friction_test_fields();
 
 InclineNormalFrictionTestResult incline_normal_friction_test(const InclineNormalFrictionTestOptions& o);
 

@@ -240,6 +240,25 @@ InclineAnalyzeResult incline_analyze(const InclineAnalyzeOptions& s) {
 
 // ---- mu-from-slide --------------------------------------------------------------------
 
+const Fields<InclineMuFromSlideOptions>& incline_mu_from_slide_fields() {
+  using O = InclineMuFromSlideOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("files", &O::files, "", "Tracker .trk/.trz, Export Data text, or CSV; several files: a series with a summary")
+        .as(FieldRole::input_files)
+        .needed();
+    d.add("phi_deg", &O::phi_deg, "deg",
+          "incline angle, in (0, 90): one, or one per file (comma separated); without it only a is reported");
+    d.add("sigma_phi_deg", &O::sigma_phi_deg, "deg", "uncertainty of the angle (unset: exact): one, or one per file")
+        .in(ranges::angle_sigma_deg);
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity);
+    d.group(&O::input, incline_track_input_fields());
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
 InclineMuFromSlideResult incline_mu_from_slide(const InclineMuFromSlideOptions& s) {
   check_output_paths(s.files, {{"report", s.report}});  // before any work (app/common/output_paths.hpp)
   if (s.files.empty()) throw MissingOptionError("FILE", "is required");

@@ -92,6 +92,10 @@ struct InclineMuFromSlideResult {
   std::vector<std::string> errors;         ///< the failed runs' located errors (series)
 };
 
+/// The declaration of every option of `incline mu-from-slide` (the command line and Python bind
+/// from it; series.threads stays a Python keyword of its own). In incline_analyze.cpp.
+const Fields<InclineMuFromSlideOptions>& incline_mu_from_slide_fields();
+
 InclineMuFromSlideResult incline_mu_from_slide(const InclineMuFromSlideOptions& o);
 
 /// The single-run JSON of `incline analyze` (without "track").

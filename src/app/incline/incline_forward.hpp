@@ -124,6 +124,26 @@ struct InclineFamiliesResult {
   incline::Family family;
 };
 
+/// The declaration of every option of `incline families` (app/common/option_fields.hpp): the
+/// launch without required fields (the varied one may be unset), the family's own fields.
+inline const Fields<InclineFamiliesOptions>& incline_families_fields() {
+  using O = InclineFamiliesOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.group(&O::launch, incline_launch_fields(false));
+    d.add("vary", &O::vary, "", "parameter to vary").one_of({"v0", "phi", "mu"}).needed();
+    d.add("values", &O::values, "", "comma-separated values of the varied parameter (m/s for v0, degrees for phi)")
+        .needed();
+    d.add("samples", &O::samples, "", "samples per curve, in [2, 1000000]");
+    d.add("t_end", &O::t_end, "s", "duration of every curve (unset: each member its own, 1.25 t_stop or 2 v0/alpha)")
+        .in(ranges::step);
+    d.add("out", &O::out, "", "output CSV file").as(FieldRole::output_path).needed();
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
 InclineFamiliesResult incline_families(const InclineFamiliesOptions& o);
 
 }  // namespace tribolab::app

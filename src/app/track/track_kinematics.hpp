@@ -51,8 +51,9 @@ inline const Fields<TrackKinematicsOptions>& track_kinematics_fields() {
     d.add("impacts", &O::impacts, "", "auto: never difference across detected impacts; none: straight through")
         .one_of({"auto", "none"});
     d.add("g", &O::g, "m/s^2", "gravitational acceleration free-flight segments are checked against").in(ranges::gravity);
-    d.add("t_from", &O::t_from, "s", "first time used (when not given: the first point)");
-    d.add("t_to", &O::t_to, "s", "last time used (when not given: the last point)");
+    d.add("t_from", &O::t_from, "s", "first time used (when not given: the first point): e.g. only the free fall before a landing")
+        .also_spelled("--from");
+    d.add("t_to", &O::t_to, "s", "last time used (when not given: the last point)").also_spelled("--to");
     d.add("out", &O::out, "", "output CSV: t,x,y,vx,vy,ax,ay (+ sigma columns for savgol)").as(FieldRole::output_path).needed();
     d.add_report(&O::report, &O::plotly);
     return d;

@@ -28,6 +28,27 @@ struct TrackRigidBodyOptions {
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
 };
 
+/// The declaration of every option of `track rigid-body` (app/common/option_fields.hpp): the
+/// command line and Python bind from it.
+inline const Fields<TrackRigidBodyOptions>& track_rigid_body_fields() {
+  using O = TrackRigidBodyOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.group(&O::input, track_input_fields());
+    d.add("track_a", &O::track_a, "", "track of point A on the body").needed();
+    d.add("track_b", &O::track_b, "", "track of point B on the same body").needed();
+    d.add("window", &O::window, "", "points per local linear fit of the orientation (the spin at each frame), >= 3");
+    d.add("max_drift", &O::max_drift, "",
+          "warn when the A-B distance drifts or scatters by more than this fraction of its mean, in (0, 1] (a rigid "
+          "body keeps it; more means a wrong calibration or a mislabelled track)");
+    d.add("out", &O::out, "", "output CSV: frame,t,x,y,theta,omega,sigma_omega,length (s, m, rad, rad/s)")
+        .as(FieldRole::output_path);
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
 /// The A-B distance over the record: a straight-line fit length = l0 + l1 t.
 struct LengthCheck {
   double mean = 0;               ///< m
