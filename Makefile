@@ -80,24 +80,27 @@ test: build
 # libFuzzer (clang) on every tracked-data parser, FUZZ_SECONDS each, starting from the seed
 # inputs in fuzz/corpus/<parser>/; new interesting inputs go to $(FUZZ_BUILD)/corpus/.
 # Any crash, sanitizer report, hang (>10 s per input) or memory blow-up (>2 GB) fails.
+# The targets run $(JOBS) at a time (each on a core of its own, each for its full FUZZ_SECONDS);
+# --output-sync prints each target's lines together.
 FUZZ_TARGETS := trk trz export csv trk_roundtrip studio
 fuzz: deps
 	cmake -S . -B $(FUZZ_BUILD) $(CMAKE_FLAGS) -DCMAKE_CXX_COMPILER=clang++ -DTRIBOLAB_FUZZ=ON \
 	  -DTRIBOLAB_TESTS=OFF -DTRIBOLAB_BENCH=OFF
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) $(addprefix --target fuzz_,$(FUZZ_TARGETS))
-	@set -e; for t in $(FUZZ_TARGETS); do \
-	  mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
-	  echo "== fuzz_$$t for $(FUZZ_SECONDS) s"; \
-	  if UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	     $(FUZZ_BUILD)/bin/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
-	       -max_len=8192 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/ \
-	       $(FUZZ_BUILD)/corpus/$$t fuzz/corpus/$$t > $(FUZZ_BUILD)/fuzz_$$t.log 2>&1; then \
-	    tail -n 4 $(FUZZ_BUILD)/fuzz_$$t.log; \
-	  else \
-	    tail -n 60 $(FUZZ_BUILD)/fuzz_$$t.log; \
-	    echo "fuzz_$$t FAILED (the input is saved in $(FUZZ_BUILD)/)"; exit 1; \
-	  fi; \
-	done
+	$(MAKE) --no-print-directory -j $(JOBS) --output-sync=target $(addprefix fuzz-run-,$(FUZZ_TARGETS))
+
+fuzz-run-%:
+	@mkdir -p $(FUZZ_BUILD)/corpus/$*
+	@echo "== fuzz_$* for $(FUZZ_SECONDS) s"
+	@if UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	   $(FUZZ_BUILD)/bin/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	     -max_len=8192 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/fuzz_$*- \
+	     $(FUZZ_BUILD)/corpus/$* fuzz/corpus/$* > $(FUZZ_BUILD)/fuzz_$*.log 2>&1; then \
+	  tail -n 4 $(FUZZ_BUILD)/fuzz_$*.log; \
+	else \
+	  tail -n 60 $(FUZZ_BUILD)/fuzz_$*.log; \
+	  echo "fuzz_$* FAILED (the input is saved in $(FUZZ_BUILD)/)"; exit 1; \
+	fi
 
 # At -O2 like the main tree. -O1 compiles 1.5x faster (37 s against 54 s for
 # src/numerics/polyfit.cpp), but there ASan saw a free of memory Ceres' covariance had not
