@@ -1,5 +1,6 @@
 """tribolab.bounce against `tribolab bounce ... --json`: the same dict to the last digit, arrays
 of the right shapes, the CLI's error messages."""
+import csv
 import inspect
 
 import numpy as np
@@ -95,6 +96,11 @@ def test_analyze_several_files_is_the_cli_series(cli, demo, tmp_path):
     r_json["summary"] = dict(r_json["summary"], bounces_out=str(out_cli))  # the file named differs
     assert r_json == c
     assert out.read_text() == out_cli.read_text()
+    # A table a naive CSV reader opens (issue 27): the column line first, each row's file named.
+    with open(out, newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [row["file"] for row in rows] == [str(f) for f in files]
+    assert all(float(row["vy_in"]) < 0 for row in rows)
     assert len(r["fits"]) == 3 and all(f is not None for f in r["fits"])
     assert r["summary"]["n_runs"] == 3
     with pytest.raises(ValueError, match="contact_duration: gives 2 values for 3 files"):
@@ -121,7 +127,6 @@ def test_sweep_map_is_shaped_by_its_axes(cli, tmp_path):
     e = r["map"]["e"]
     assert e.shape == (4, 3)
     # The map is the command's CSV, cell for cell (the last axis fastest).
-    import csv
     rows = list(csv.DictReader(line for line in open(tmp_path / "cli.csv") if not line.startswith("#")))
     assert [float(x["e"]) for x in rows] == e.ravel().tolist()
     with pytest.raises(ValueError) as err:
@@ -148,7 +153,6 @@ def test_sweep_without_out_returns_the_same_map_and_keeps_no_file(tmp_path, monk
 
 def test_sweep_plain_csv_reads_with_a_naive_csv_reader(tmp_path):
     """plain_csv= (--plain-csv): csv.DictReader reads it as it is, cell for cell the map."""
-    import csv
     r = tribolab.bounce.sweep(theta_deg=(100, 160, 4), omega=(30, 50, 3), threads=1,
                               plain_csv=str(tmp_path / "plain.csv"))
     rows = list(csv.DictReader(open(tmp_path / "plain.csv")))

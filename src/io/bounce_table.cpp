@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace tribolab::io {
 
@@ -29,6 +30,29 @@ constexpr std::array<double analysis::BounceRow::*, 7> kSigmaFields = {
     &analysis::BounceRow::sigma_theta_deg, &analysis::BounceRow::sigma_vx_in,  &analysis::BounceRow::sigma_vy_in,
     &analysis::BounceRow::sigma_omega_in,  &analysis::BounceRow::sigma_vx_out, &analysis::BounceRow::sigma_vy_out,
     &analysis::BounceRow::sigma_omega_out};
+
+/// The cells of one CSV line (RFC 4180): a cell in double quotes may hold commas and doubled
+/// quotes; other cells are split on commas as they are.
+std::vector<std::string> bounce_table_cells(std::string_view line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c != '"') cells.back() += c;
+      else if (i + 1 < line.size() && line[i + 1] == '"') cells.back() += '"', ++i;
+      else quoted = false;
+    } else if (c == '"' && trim(cells.back()).empty()) {
+      cells.back().clear();
+      quoted = true;
+    } else if (c == ',') {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
 }
 
 std::vector<analysis::BounceRow> parse_bounce_table(std::string_view text, const std::string& source) {
@@ -48,7 +72,7 @@ std::vector<analysis::BounceRow> parse_bounce_table(std::string_view text, const
     line = trim(line);
     if (line.empty() || line.front() == '#') continue;
     const std::string where = source + ":" + std::to_string(line_no);
-    const auto fields = split(line, ',');
+    const auto fields = bounce_table_cells(line);
     if (!have_header) {
       for (std::size_t i = 0; i < fields.size(); ++i) {
         const auto name = trim(fields[i]);
@@ -104,7 +128,10 @@ std::vector<analysis::BounceRow> read_bounce_table(const std::string& path) {
   return parse_bounce_table(read_file(path), path);
 }
 
-std::string write_bounce_table(const std::vector<analysis::BounceRow>& rows) {
+std::string write_bounce_table(const std::vector<analysis::BounceRow>& rows, const std::vector<std::string>& files) {
+  if (!files.empty() && files.size() != rows.size())
+    throw std::logic_error("write_bounce_table: " + std::to_string(files.size()) + " files for " +
+                           std::to_string(rows.size()) + " rows");
   std::ostringstream out;
   // The sigma columns when every row has its sigmas (tables without them read as before).
   bool sigmas = !rows.empty();
@@ -112,13 +139,16 @@ std::string write_bounce_table(const std::vector<analysis::BounceRow>& rows) {
   out << "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out";
   if (sigmas)
     for (const char* c : kSigmaColumns) out << ',' << c;
+  if (!files.empty()) out << ",file";
   out << '\n';
-  for (const auto& r : rows) {
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& r = rows[i];
     out << shortest(r.theta_deg) << ',' << shortest(r.vx_in) << ',' << shortest(r.vy_in) << ','
         << shortest(r.omega_in) << ',' << shortest(r.vx_out) << ',' << shortest(r.vy_out) << ','
         << shortest(r.omega_out);
     if (sigmas)
       for (auto f : kSigmaFields) out << ',' << shortest(r.*f);
+    if (!files.empty()) out << ',' << csv_quote(files[i]);
     out << '\n';
   }
   return out.str();

@@ -1,6 +1,7 @@
 // The bounce table of `bounce fit` and `bounce synth-table`: CSV with the header
 //   theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out
-// (columns in any order, extra columns ignored, '#' comment lines and blank lines skipped),
+// (columns in any order, extra columns ignored, '#' comment lines and blank lines skipped;
+// cells may be double-quoted as RFC 4180 writes them, so a quoted `file` cell may hold commas),
 // one measured bounce per row, SI units and degrees. docs/cli.md#bounce-fit.
 #pragma once
 
@@ -19,7 +20,10 @@ std::vector<analysis::BounceRow> parse_bounce_table(std::string_view text, const
 /// Reads and parses `path`.
 std::vector<analysis::BounceRow> read_bounce_table(const std::string& path);
 
-/// The table as CSV text (header and one line per row, shortest round-trip numbers).
-std::string write_bounce_table(const std::vector<analysis::BounceRow>& rows);
+/// The table as CSV text (header and one line per row, shortest round-trip numbers). With
+/// `files` (one per row) a last column `file` names each row's source (quoted where needed):
+/// a plain table a spreadsheet opens, with no comment line (docs/design.md#spreadsheets).
+std::string write_bounce_table(const std::vector<analysis::BounceRow>& rows,
+                               const std::vector<std::string>& files = {});
 
 }  // namespace tribolab::io

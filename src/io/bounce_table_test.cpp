@@ -38,6 +38,30 @@ TEST(BounceTable, ColumnsInAnyOrderWithCommentsAndExtras) {
   EXPECT_EQ(rows[0].omega_out, 1);
 }
 
+// Issue 27 (spreadsheets): `bounce analyze --bounces-out` names each row's file in a last
+// column instead of '#' lines, so Excel and csv.DictReader open it. A name holding a comma or a
+// quote is quoted (RFC 4180) and the table still reads: the row's numbers are not shifted.
+TEST(BounceTable, AFileColumnWithCommasAndQuotesReads) {
+  const std::vector<analysis::BounceRow> rows = {{12.5, 1.0 / 3, -4.2, 30, 0.1, 2.0 / 7, -5},
+                                                 {-80, 0, -2, 0, 1e-17, 3, 1e3}};
+  const std::string text = write_bounce_table(rows, {"run 1, take \"2\".txt", "b.txt"});
+  EXPECT_EQ(text.substr(0, text.find('\n')), "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out,file");
+  EXPECT_NE(text.find(",\"run 1, take \"\"2\"\".txt\"\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find('#'), std::string::npos);
+  const auto back = parse_bounce_table(text, "t.csv");
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[0].vx_in, 1.0 / 3);
+  EXPECT_EQ(back[0].omega_out, -5);
+  EXPECT_EQ(back[1].omega_out, 1e3);
+  // A quoted cell before the numbers does not move them either.
+  const auto moved = parse_bounce_table("file,theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n"
+                                        "\"a,b\",1,2,-3,4,5,6,7\n",
+                                        "t.csv");
+  ASSERT_EQ(moved.size(), 1u);
+  EXPECT_EQ(moved[0].theta_deg, 1);
+  EXPECT_EQ(moved[0].omega_out, 7);
+}
+
 TEST(BounceTable, ErrorsNameFileAndLine) {
   const std::string h = "theta_deg,vx_in,vy_in,omega_in,vx_out,vy_out,omega_out\n";
   EXPECT_THAT(error_of(h + "1,2,3,4,5,6,7\n1,2,3,x,5,6,7\n"), HasSubstr("t.csv:3"));

@@ -150,17 +150,20 @@ std::string bounce_analyze_command(const BounceAnalyzeOptions& o) {
 
 void write_bounces_out(const std::string& path, const std::vector<analysis::BounceSeriesPoint>& points,
                        const std::vector<std::string>& files) {
-  std::string head = "# bounces measured by tribolab bounce analyze (fit them with: tribolab bounce fit FILE)\n";
+  // A plain table (no comment line) that a spreadsheet and a naive CSV reader open: each row's
+  // file is its last column, quoted where it holds a comma or a quote (docs/design.md#spreadsheets).
+  // The reader is line-based, so a line break in a name is written as '?'.
   std::vector<analysis::BounceRow> rows;
+  std::vector<std::string> names;
   for (std::size_t i = 0; i < points.size(); ++i) {
     std::string name = files[i];
     for (char& c : name)
       if (c == '\n' || c == '\r') c = '?';
-    head += "# row " + std::to_string(i + 1) + ": " + name + "\n";
+    names.push_back(name);
     rows.push_back(analysis::bounce_row_of(points[i]));
   }
   io::AtomicFile file(path);
-  file.stream() << head << io::write_bounce_table(rows);
+  file.stream() << io::write_bounce_table(rows, names);
   file.commit();
 }
 

@@ -95,7 +95,7 @@ std::string bounce_analyze_command(const BounceAnalyzeOptions& o);
 /// Checks a --bounces-out path (not a folder, its folder exists): InputError otherwise.
 void check_bounces_out_path(const std::string& path);
 
-/// --bounces-out: the analysed runs as `bounce fit`'s table, one '#' line naming each row's file.
+/// --bounces-out: the analysed runs as `bounce fit`'s table, each row's file in its last column `file`.
 void write_bounces_out(const std::string& path, const std::vector<analysis::BounceSeriesPoint>& points,
                        const std::vector<std::string>& files);
 
