@@ -37,16 +37,6 @@ void set_types(CLI::App* cmd) {
   }
 }
 
-/// `--track`, `--time-scale` and `--length-unit` of the commands that read tracked data.
-void add_track_input(CLI::App* cmd, InclineTrackInput& in) {
-  cmd->add_option("--track", in.track, "Track to analyse (required when the file holds several)");
-  add_number(*cmd, "--time-scale", in.time_scale,
-             "Real seconds per file second (slow motion 240 fps shown at 30 fps: 0.125)");
-  cmd->add_option("--length-unit", in.length_unit,
-                  "Unit of the file's lengths, overriding what the file says: m, cm, mm, km, um, in, ft (when not "
-                  "given: the file's unit, else m)");
-}
-
 // ---- synth ---------------------------------------------------------------------------
 
 void add_synth(CLI::App* area) {
@@ -105,24 +95,11 @@ void add_analyze(CLI::App* area) {
   cmd->footer(std::string(help::kInclineModels) + help::kInclineAnalyze);
   auto s = std::make_shared<InclineAnalyzeOptions>();
   auto as_json = std::make_shared<bool>(false);
-  cmd->add_option("FILE", s->files,
-                  "Tracker .trk/.trz, Export Data text, or CSV; several files: a series with a summary")
-      ->required();
-  add_number(*cmd, "--phi-deg", s->phi_deg,
-             "Incline angle, degrees, in [0, 90): one, or one per file (comma separated)")
-      ->required();
-  add_number(*cmd, "--g", s->g, "Gravitational acceleration, m/s^2");
-  add_number(*cmd, "--block", s->block,
-             "Points per local fit of the a_N diagnostic (>= 5; unset or 0: about 8 blocks)");
-  cmd->add_flag("--no-model-a", s->no_model_a, "Skip model A (the verdict then comes from the a_N intercept)");
-  cmd->add_option("--frame-rotation", s->frame_rotation,
-                  "fit: fit the camera frame's rotation against the incline; none: frame known aligned");
-  add_track_input(cmd, s->input);
+  add_declared_options(*cmd, *s, incline_analyze_fields(), incline_analyze_result_keys());
   add_json_flag(*cmd, *as_json);
   set_types(cmd);
+  cmd->get_option("--phi-deg")->type_name("NUM[,NUM...]");
   cmd->get_option("--frame-rotation")->type_name("fit|none");
-  add_report_option(*cmd, s->report, s->plotly);
-  declare_results(*cmd, incline_analyze_result_keys());
   declare_series_results(*cmd, incline_analyze_series_result_keys());
   cmd->callback([s, as_json] {
     s->series = series_control();

@@ -97,18 +97,8 @@ void bind_incline(py::module_& m) {
         "Models B and A fitted to tracked runs of the disc (`tribolab incline analyze`, the incline study's "
         "eqs a-c): mu, v0, the normal-friction test with its p-value; several files: a series "
         "with a summary.");
-    TRIBOLAB_ARG(c, files);
-    TRIBOLAB_OPT(c, phi_deg);
-    TRIBOLAB_OPT(c, g);
-    TRIBOLAB_OPT(c, block);
-    TRIBOLAB_OPT(c, no_model_a);
-    TRIBOLAB_OPT(c, frame_rotation);
-    TRIBOLAB_OPT(c, input.track);
-    TRIBOLAB_OPT(c, input.time_scale);
-    TRIBOLAB_OPT(c, input.length_unit);
-    TRIBOLAB_OPT(c, series.threads);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::incline_analyze_fields());
+    TRIBOLAB_OPT(c, series.threads);  // a notebook may limit the cores; the command line uses them all
     c.def(&app::incline_analyze,
           [](const app::InclineAnalyzeResult& r, py::dict& d) {
             py::list fits;

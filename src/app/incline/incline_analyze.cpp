@@ -167,6 +167,29 @@ json incline_analysis_json(const analysis::InclineAnalysis& a) {
 
 // ---- analyze --------------------------------------------------------------------------
 
+const Fields<InclineAnalyzeOptions>& incline_analyze_fields() {
+  using O = InclineAnalyzeOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("files", &O::files, "", "Tracker .trk/.trz, Export Data text, or CSV; several files: a series with a summary")
+        .as(FieldRole::input_files)
+        .needed();
+    // Its range, [0, 90), is checked by check_incline_angle_deg (0 allowed: a level plane).
+    d.add("phi_deg", &O::phi_deg, "deg", "incline angle, in [0, 90): one, or one per file (comma separated)").needed();
+    d.add("g", &O::g, "m/s^2", "gravitational acceleration").in(ranges::gravity);
+    d.add("block", &O::block, "",
+          "points per local fit of the a_N diagnostic (>= 5; unset or 0: about 8 blocks)");
+    d.add("no_model_a", &O::no_model_a, "", "skip model A (the verdict then comes from the a_N intercept)");
+    d.add("frame_rotation", &O::frame_rotation, "",
+          "fit: fit the camera frame's rotation against the incline; none: frame known aligned")
+        .one_of({"fit", "none"});
+    d.group(&O::input, incline_track_input_fields());
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
 InclineAnalyzeResult incline_analyze(const InclineAnalyzeOptions& s) {
   check_output_paths(s.files, {{"report", s.report}});  // before any work (app/common/output_paths.hpp)
   if (s.files.empty()) throw MissingOptionError("FILE", "is required");

@@ -39,11 +39,16 @@ struct InclineAnalyzeOptions {
   bool no_model_a = false;         ///< skip model A (the verdict then comes from the a_N intercept)
   /// fit: fit the camera frame's rotation against the incline; none: the frame is known aligned.
   std::string frame_rotation = "fit";
-  InclineTrackInput input;         ///< --track, --time-scale
+  InclineTrackInput input;         ///< --track, --time-scale, --length-unit
   std::string report;              ///< HTML report to write; empty = none
   report::PlotlyMode plotly = report::PlotlyMode::embed;  ///< --plotly: how the report gets Plotly.js (embed, cdn, file)
   InclineSeriesControl series;     ///< several files only
 };
+
+/// The declaration of every option of `incline analyze` (the command line, Python and the
+/// studio's form bind from it; series.threads stays a Python keyword of its own). The track
+/// input is the shared incline_track_input_fields(). In incline_analyze.cpp.
+const Fields<InclineAnalyzeOptions>& incline_analyze_fields();
 
 /// One file of `incline analyze`.
 struct InclineAnalyzeRun {
