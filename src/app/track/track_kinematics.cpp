@@ -11,7 +11,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 
 namespace tribolab::app {
 
@@ -49,6 +52,80 @@ std::string gravity_warning(const track::SegmentAcceleration& a, std::size_t ind
   if (a.tilted) w += "The camera or the axes are turned by that angle: level them against a plumb line. ";
   w += "If the object was not in free flight (a puck on a tilted air table seen from above), this check does not apply";
   return w;
+}
+
+/// A track that keeps a constant distance from the one analysed over a flight segment: the
+/// other end of a body the two are marked on (a rugby ball's tips), and the fit of their
+/// midpoint's flight.
+struct RigidPartner {
+  std::string name;
+  double distance = 0, distance_sd = 0;  ///< mean and sd of the distance between the two, m
+  track::SegmentAcceleration midpoint;   ///< the midpoint's constant-acceleration fit
+};
+
+/// The first other track of `set` that has a point in at least 80 % of the frames of `seg`
+/// and keeps its distance from `tr` there to the noise (sd <= 2 sqrt(2) noise + 1 mm, the
+/// free-flight fit's own rule, with a mean at least 10 times that), or none. A point off the
+/// centre of a turning body accelerates by omega^2 r towards it besides g, so its own flight
+/// is no test of g; the midpoint of two tips is the body's centre (docs/theory.md#free-flight-check).
+std::optional<RigidPartner> rigid_partner(const track::TrackSet& set, const track::Track& tr, const track::Segment& seg,
+                                          double noise, const track::FreeFlightOptions& fo) {
+  const double bar = 2 * std::sqrt(2.0) * noise + 1e-3;
+  for (const track::Track& other : set.tracks) {
+    if (other.name == tr.name) continue;
+    std::map<int, const track::TrackPoint*> at;
+    for (const auto& q : other.points) at[q.frame] = &q;
+    track::Track mid;
+    mid.name = tr.name + "+" + other.name;
+    std::vector<double> d;
+    for (std::size_t i = seg.begin; i < seg.end; ++i) {
+      const auto& p = tr.points[i];
+      const auto it = at.find(p.frame);
+      if (it == at.end()) continue;
+      const auto& q = *it->second;
+      d.push_back(std::hypot(p.x - q.x, p.y - q.y));
+      mid.points.push_back({p.frame, p.t, 0.5 * (p.x + q.x), 0.5 * (p.y + q.y)});
+    }
+    if (d.size() < static_cast<std::size_t>(fo.min_points) || 10 * d.size() < 8 * seg.size()) continue;
+    double mean = 0, var = 0;
+    for (double v : d) mean += v / static_cast<double>(d.size());
+    for (double v : d) var += (v - mean) * (v - mean) / static_cast<double>(d.size() - 1);
+    const double sd = std::sqrt(var);
+    if (!(sd <= bar && mean >= 10 * bar)) continue;
+    // Each coordinate of the midpoint carries the noise of one point over sqrt(2).
+    const double n = noise / std::sqrt(2.0);
+    auto fits = track::check_free_flight(mid, {{0, mid.points.size()}}, n, n, fo);
+    return RigidPartner{other.name, mean, sd, fits.front()};
+  }
+  return std::nullopt;
+}
+
+/// The warning for segment `a` of `tr` that does not fall at g while `tr` keeps a constant
+/// distance from `partner`: the midpoint falling at g says so; otherwise the midpoint's figures
+/// are the ones to act on (its factor restores g; the point's own would not).
+std::string turning_body_warning(const track::SegmentAcceleration& a, const std::string& name,
+                                 const RigidPartner& partner, std::size_t index, std::size_t count, double g) {
+  const auto& m = partner.midpoint;
+  const auto sd = [](double v) { return fmt::format("{:.2g}", v); };
+  const std::string keeps = fmt::format("it keeps {:.3g} m (sd {:.2g} mm) from track {} there", partner.distance,
+                                        1e3 * partner.distance_sd, partner.name);
+  if (m.checked() && m.plausible()) {
+    return fmt::format("segment {} of {} (frames {}-{}): track {} itself accelerates at {} +- {} m/s^2 (tilted by {} "
+                       "+- {} deg from the -y axis), not at g = {}; but {}, and their midpoint falls at {} +- {} "
+                       "m/s^2: {} turns with the body (a point at r from the centre of a body spinning at omega "
+                       "accelerates by omega^2 r towards it besides g), and the times and lengths agree with g; the "
+                       "centre and the spin: track rigid-body",
+                       index + 1, count, a.frame_first, a.frame_last, name, g3(a.magnitude), sd(a.sigma_magnitude),
+                       g3(a.tilt_deg), sd(a.sigma_tilt_deg), g3(g), keeps, g3(m.magnitude), sd(m.sigma_magnitude),
+                       name);
+  }
+  if (m.checked()) {
+    return "track " + name + " is on one body with track " + partner.name + " (" + keeps +
+           "), so their midpoint (the body's centre when they mark its two ends) is held against g instead of " + name +
+           ", which turns with it: " + gravity_warning(m, index, count, g);
+  }
+  return gravity_warning(a, index, count, g) + "; but track " + name + " may be on a turning body: " + keeps +
+         ", and a point off a turning body's centre does not fall at g (check their centre: track rigid-body)";
 }
 
 nlohmann::json segment_json(const track::SegmentAcceleration& a, std::size_t index) {
@@ -119,11 +196,14 @@ TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options) {
   result.segment_fits = track::check_free_flight(tr, track::flight_segments(tr.points.size(), k.impacts), k.noise_x,
                                                  k.noise_y, fo);
   result.warnings = set.warnings;  // what the importer left out (lost frames, marks off the clip's steps)
+  std::optional<track::TrackSet> all;  // every track of the file, read only when a segment is warned
   for (std::size_t i = 0; i < result.segment_fits.size(); ++i) {
     const auto& a = result.segment_fits[i];
-    if (a.checked() && !a.plausible()) {
-      result.warnings.push_back(gravity_warning(a, i, result.segment_fits.size(), options.g));
-    }
+    if (!a.checked() || a.plausible()) continue;
+    if (!all) all = io::read_tracks(options.input.file, import_options(options.input));
+    const auto partner = rigid_partner(*all, tr, a.range, std::max(k.noise_x, k.noise_y), fo);
+    result.warnings.push_back(partner ? turning_body_warning(a, tr.name, *partner, i, result.segment_fits.size(), options.g)
+                                      : gravity_warning(a, i, result.segment_fits.size(), options.g));
   }
   if (!options.report.empty()) {
     report::write_html(track_kinematics_report(k, o, set.source, result.segment_fits, result.warnings), options.report,
