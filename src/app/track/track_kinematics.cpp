@@ -200,7 +200,13 @@ TrackKinematicsResult track_kinematics(const TrackKinematicsOptions& options) {
   for (std::size_t i = 0; i < result.segment_fits.size(); ++i) {
     const auto& a = result.segment_fits[i];
     if (!a.checked() || a.plausible()) continue;
-    if (!all) all = io::read_tracks(options.input.file, import_options(options.input));
+    if (!all) {
+      try {
+        all = io::read_tracks(options.input.file, import_options(options.input));
+      } catch (const InputError&) {  // another track the file holds does not read: no partner
+        all = track::TrackSet{};
+      }
+    }
     const auto partner = rigid_partner(*all, tr, a.range, std::max(k.noise_x, k.noise_y), fo);
     result.warnings.push_back(partner ? turning_body_warning(a, tr.name, *partner, i, result.segment_fits.size(), options.g)
                                       : gravity_warning(a, i, result.segment_fits.size(), options.g));
