@@ -306,30 +306,41 @@ SweepMapSummary summarize_sweep_map(const io::SweepHeader& header, const std::ve
   return m;
 }
 
-report::Report sweep_report(const SweepReportData& d) {
-  const sweep::GridSpec& grid = d.header.grid;
-  TRIBOLAB_ASSERT(d.map.has_value(), "sweep_report: no map summary");
-  const SweepMapSummary& map = *d.map;
-  const auto index_of = [&](const std::string& name) {
+namespace {
+
+/// What every section of the sweep report reads: the grid, its two map axes, the slices drawn.
+struct SweepReportView {
+  const SweepReportData& d;
+  const sweep::GridSpec& grid;
+  const SweepMapSummary& map;
+  const sweep::Axis& th;  ///< the impact angle axis (the maps' y)
+  const sweep::Axis& sp;  ///< the spin axis (the maps' x)
+  std::int64_t n_slices;
+  const std::vector<std::int64_t>& shown;
+  std::string x_title, y_title;
+
+  explicit SweepReportView(const SweepReportData& data)
+      : d(data),
+        grid(data.header.grid),
+        map(*data.map),
+        th(grid.axes[grid.axes.size() - 2]),
+        sp(grid.axes.back()),
+        n_slices(grid.cell_count() / (th.count * sp.count)),
+        shown(map.drawn_slices),
+        x_title(spin_title(sp.quantity)),
+        y_title(theta_title(data.header.model)) {}
+
+  /// The column of output `name` in the sweep file, or -1.
+  int index_of(const std::string& name) const {
     const auto it = std::find(d.header.outputs.begin(), d.header.outputs.end(), name);
     return it == d.header.outputs.end() ? -1 : static_cast<int>(it - d.header.outputs.begin());
-  };
-  const int e = index_of("e"), omega_out = index_of("omega_out");
-  TRIBOLAB_ASSERT(e >= 0, "sweep_report: no output e");
-  const sweep::Axis& th = grid.axes[grid.axes.size() - 2];
-  const sweep::Axis& sp = grid.axes.back();
-  const std::int64_t per_slice = th.count * sp.count;
-  const std::int64_t n_slices = grid.cell_count() / per_slice;
-  const std::vector<std::int64_t>& shown = map.drawn_slices;
-  const std::string x_title = spin_title(sp.quantity), y_title = theta_title(d.header.model);
+  }
+};
 
-  report::Report r;
-  r.title = "Phase diagram of the bounce: e over impact angle × spin";
-  r.subtitle = "tribolab " + d.command + ": " + std::to_string(grid.cell_count()) + " cells, " +
-               std::to_string(n_slices) + (n_slices == 1 ? " slice" : " slices");
-
+void add_parameters_section(report::Report& r, const SweepReportView& v) {
+  const SweepReportData& d = v.d;
   auto& p = r.add_section("Parameters");
-  p.add_paragraph(index_of("contacts") >= 0
+  p.add_paragraph(v.index_of("contacts") >= 0
                       ? "Each cell is one whole impact from first touch with incoming v_y = −speed and the cell's "
                         "spin: every contact until the ball flies free to its apex (docs/theory.md#bounce-contact); "
                         "e = −v_y,out/v_y,in with v_y,out after the last contact. Values as written in the sweep file "
@@ -344,7 +355,14 @@ report::Report sweep_report(const SweepReportData& d) {
                  "rotational over vertical translational kinetic energy at the spin threshold");
   p.add_table(parameters_table(d));
 
-  // Summary numbers.
+}
+
+// Summary numbers.
+void add_summary_section(report::Report& r, const SweepReportView& v) {
+  const SweepReportData& d = v.d;
+  const sweep::GridSpec& grid = v.grid;
+  const SweepMapSummary& map = v.map;
+  const std::int64_t n_slices = v.n_slices;
   auto& s = r.add_section("Summary");
   const SliceStats& all = map.all;
   std::int64_t points = 0, found = 0;
@@ -376,7 +394,7 @@ report::Report sweep_report(const SweepReportData& d) {
       {"smallest energy ratio E_rot/E_y at a threshold (the study: 2.56)",
        er_at ? format_value(er_min) + " at theta_deg = " + io::format_number_exact(er_at->theta_deg) : "—"},
   };
-  const int contacts = index_of("contacts"), e_first = index_of("e_first");
+  const int contacts = v.index_of("contacts"), e_first = v.index_of("e_first");
   if (contacts >= 0 && e_first >= 0) {
     // The whole impact against its first contact phase (docs/theory.md#sweeps).
     const std::int64_t several = map.several_contacts, differ = map.first_phase_differs;
@@ -399,7 +417,18 @@ report::Report sweep_report(const SweepReportData& d) {
     s.add_table(std::move(per));
   }
 
-  // Maps.
+}
+
+void add_e_maps_section(report::Report& r, const SweepReportView& v) {
+  const SweepReportData& d = v.d;
+  const sweep::GridSpec& grid = v.grid;
+  const SweepMapSummary& map = v.map;
+  const sweep::Axis& th = v.th;
+  const sweep::Axis& sp = v.sp;
+  const std::int64_t n_slices = v.n_slices;
+  const std::vector<std::int64_t>& shown = v.shown;
+  const std::string& x_title = v.x_title;
+  const std::string& y_title = v.y_title;
   auto& m = r.add_section("Maps of e with the e = 1 boundary");
   std::string bound = "Blue: e > 1 (the ball rises above its drop height), red: e < 1, blank: no result. The black "
                       "curve is the e = 1 boundary, traced by marching squares and refined by root finding on the "
@@ -428,27 +457,40 @@ report::Report sweep_report(const SweepReportData& d) {
                    " of the cells with a result.";
     m.add_figure(std::move(f));
   }
-  if (omega_out >= 0) {
-    auto& o = r.add_section("Maps of the outgoing spin");
-    o.add_paragraph("ω_out after the contact (rad/s, counter-clockwise positive), with the e = 1 boundary: where "
-                    "e > 1 the contact turned spin into vertical speed.");
-    for (std::int64_t slice : shown) {
-      const std::string label = slice_label(d.boundary, slice);
-      SweepMapStyle st;
-      st.title = "Outgoing spin ω_out" + (label.empty() ? std::string() : ", " + label);
-      st.x_title = x_title;
-      st.y_title = y_title;
-      st.colorbar_title = "ω_{out} (rad/s)";
-      st.quantity = "ω_out";
-      st.unit = "rad/s";
-      st.colorscale = report::ColorScale::PuOr;  // the sign is the spin's sense: white at no spin
-      st.z_mid = 0.0;
-      st.max_side = kReportMaxSide;
-      o.add_figure(heat_map_of(grid, map.rows, map.cols, map.omega_out_map.at(slice), slice, &d.boundary, st));
-    }
-  }
+}
 
-  // Thresholds.
+void add_spin_maps_section(report::Report& r, const SweepReportView& v) {
+  const SweepReportData& d = v.d;
+  const sweep::GridSpec& grid = v.grid;
+  const SweepMapSummary& map = v.map;
+  const std::vector<std::int64_t>& shown = v.shown;
+  const std::string& x_title = v.x_title;
+  const std::string& y_title = v.y_title;
+  auto& o = r.add_section("Maps of the outgoing spin");
+  o.add_paragraph("ω_out after the contact (rad/s, counter-clockwise positive), with the e = 1 boundary: where "
+                  "e > 1 the contact turned spin into vertical speed.");
+  for (std::int64_t slice : shown) {
+    const std::string label = slice_label(d.boundary, slice);
+    SweepMapStyle st;
+    st.title = "Outgoing spin ω_out" + (label.empty() ? std::string() : ", " + label);
+    st.x_title = x_title;
+    st.y_title = y_title;
+    st.colorbar_title = "ω_{out} (rad/s)";
+    st.quantity = "ω_out";
+    st.unit = "rad/s";
+    st.colorscale = report::ColorScale::PuOr;  // the sign is the spin's sense: white at no spin
+    st.z_mid = 0.0;
+    st.max_side = kReportMaxSide;
+    o.add_figure(heat_map_of(grid, map.rows, map.cols, map.omega_out_map.at(slice), slice, &d.boundary, st));
+  }
+}
+
+void add_thresholds_section(report::Report& r, const SweepReportView& v) {
+  const SweepReportData& d = v.d;
+  const sweep::Axis& th = v.th;
+  const sweep::Axis& sp = v.sp;
+  const std::vector<std::int64_t>& shown = v.shown;
+  const std::string& y_title = v.y_title;
   auto& t = r.add_section("Spin threshold per angle");
   t.add_paragraph("At each angle, the smallest spin at which e reaches 1, scanning the spin axis upwards (refined by "
                   "root finding between grid values; the rows of --threshold), and the energy ratio E_rot/E_y there. "
@@ -494,6 +536,23 @@ report::Report sweep_report(const SweepReportData& d) {
     er.caption = "Dashed: the ratio the study quotes as necessary.";
     t.add_figure(std::move(er));
   }
+}
+
+}  // namespace
+
+report::Report sweep_report(const SweepReportData& d) {
+  TRIBOLAB_ASSERT(d.map.has_value(), "sweep_report: no map summary");
+  const SweepReportView v(d);
+  TRIBOLAB_ASSERT(v.index_of("e") >= 0, "sweep_report: no output e");
+  report::Report r;
+  r.title = "Phase diagram of the bounce: e over impact angle × spin";
+  r.subtitle = "tribolab " + d.command + ": " + std::to_string(v.grid.cell_count()) + " cells, " +
+               std::to_string(v.n_slices) + (v.n_slices == 1 ? " slice" : " slices");
+  add_parameters_section(r, v);
+  add_summary_section(r, v);
+  add_e_maps_section(r, v);
+  if (v.index_of("omega_out") >= 0) add_spin_maps_section(r, v);
+  add_thresholds_section(r, v);
   return r;
 }
 
