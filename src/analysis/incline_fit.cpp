@@ -517,74 +517,47 @@ const char* to_string(VerdictSource s) {
   return "none";
 }
 
-InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFitOptions& o) {
-  // An isolated value far off its neighbours' motion (a lost decimal point) would pull every
-  // fit: left out first and named (docs/theory.md#plausibility-checks, "isolated outliers").
-  const std::vector<track::Outlier> outliers = track::isolated_outliers(tracked);
-  const track::Track track = track::without(tracked, outliers);
-  InclineAnalysis a;
-  for (const auto& x : outliers) a.warnings.push_back(track::outlier_warning(tracked, x));
-  a.phi = o.phi;
-  a.g = o.g;
+namespace {
+
+/// Model A fitted after B (`b`), its curves and residuals at the data's times `t` and on the
+/// plotting grid `fine`, and the nested F test of A against B; a failed fit is a note.
+void add_model_a(InclineAnalysis& a, const track::Track& track, const InclineFitOptions& o, const ModelBFit& b,
+                 const std::vector<double>& t, const std::vector<double>& fine) {
   try {
-    a.model_b = fit_model_b(track, o);
-  } catch (const Error&) {
-    // Data whose g is far from the one given (a wrong time scale) defeat the fit with g held:
-    // say what the data show instead of how the solver failed (docs/theory.md#incline-gravity).
-    const auto c = check_gravity(track, o);
-    if (!c) throw;
-    const std::string w = gravity_warning(*c, o);
-    if (w.empty()) throw;
-    // The solver's own words ("Residual and Jacobian evaluation failed") would only distract
-    // from the factor the message names (issue 27).
-    throw InputError(where(track), w + " (model B with g = " + message_number(o.g, 4) + " m/s^2 and phi = " + message_number(to_deg(o.phi), 4) +
-                                       " deg does not fit these data)");
-  }
-  a.data = track.points;
-  track::KinematicsOptions ko;
-  ko.method = track::DerivativeMethod::savgol;
-  a.kinematics = track::differentiate(track, ko);
-  const std::vector<double> t = times_of(track), fine = fine_grid(t);
-  const ModelBFit& b = a.model_b;
-  const incline::Parameters pb = launch(b.mu.value, o.phi, b.v0.value, o.g);
-  const double psi_b = b.frame_rotation.value;
-  a.model_b_at_data = model_b_states(pb, b.t0.value, b.x0.value, b.y0.value, t, psi_b);
-  a.model_b_fine = model_b_states(pb, b.t0.value, b.x0.value, b.y0.value, fine, psi_b);
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    a.residual_x_b.push_back(track.points[i].x - a.model_b_at_data[i].x);
-    a.residual_y_b.push_back(track.points[i].y - a.model_b_at_data[i].y);
-  }
-
-  if (o.fit_model_a) {
-    try {
-      ModelAFit fa = fit_model_a(track, o, b);
-      const incline::Parameters pa =
-          launch(fa.mu.value, o.phi, fa.v0.value, o.g, fa.normal_accel.value);
-      const double psi_a = fa.frame_rotation.value;
-      a.model_a_at_data =
-          model_a_states(pa, fa.t0.value, fa.x0.value, fa.y0.value, t, o.ode_tolerance, psi_a);
-      a.model_a_fine =
-          model_a_states(pa, fa.t0.value, fa.x0.value, fa.y0.value, fine, o.ode_tolerance, psi_a);
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        a.residual_x_a.push_back(track.points[i].x - a.model_a_at_data[i].x);
-        a.residual_y_a.push_back(track.points[i].y - a.model_a_at_data[i].y);
-      }
-      ModelTest test;
-      // Nested models, one extra parameter: F = (RSS_B - RSS_A) / (RSS_A / dof_A).
-      test.f_statistic = std::max(0.0, (b.rss - fa.rss) / (fa.rss / fa.dof));
-      const boost::math::fisher_f dist(1.0, static_cast<double>(fa.dof));
-      test.p_value = boost::math::cdf(boost::math::complement(dist, test.f_statistic));
-      test.ci_excludes_zero = fa.normal_accel.ci_low > 0 || fa.normal_accel.ci_high < 0;
-      test.significant = test.p_value < o.significance;
-      test.size = o.significance;
-      test.present = test.ci_excludes_zero && test.significant;
-      a.model_a = std::move(fa);
-      a.test = test;
-    } catch (const Error& e) {
-      a.notes.push_back(std::string("model A not fitted: ") + e.what());
+    ModelAFit fa = fit_model_a(track, o, b);
+    const incline::Parameters pa =
+        launch(fa.mu.value, o.phi, fa.v0.value, o.g, fa.normal_accel.value);
+    const double psi_a = fa.frame_rotation.value;
+    a.model_a_at_data =
+        model_a_states(pa, fa.t0.value, fa.x0.value, fa.y0.value, t, o.ode_tolerance, psi_a);
+    a.model_a_fine =
+        model_a_states(pa, fa.t0.value, fa.x0.value, fa.y0.value, fine, o.ode_tolerance, psi_a);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      a.residual_x_a.push_back(track.points[i].x - a.model_a_at_data[i].x);
+      a.residual_y_a.push_back(track.points[i].y - a.model_a_at_data[i].y);
     }
+    ModelTest test;
+    // Nested models, one extra parameter: F = (RSS_B - RSS_A) / (RSS_A / dof_A).
+    test.f_statistic = std::max(0.0, (b.rss - fa.rss) / (fa.rss / fa.dof));
+    const boost::math::fisher_f dist(1.0, static_cast<double>(fa.dof));
+    test.p_value = boost::math::cdf(boost::math::complement(dist, test.f_statistic));
+    test.ci_excludes_zero = fa.normal_accel.ci_low > 0 || fa.normal_accel.ci_high < 0;
+    test.significant = test.p_value < o.significance;
+    test.size = o.significance;
+    test.present = test.ci_excludes_zero && test.significant;
+    a.model_a = std::move(fa);
+    a.test = test;
+  } catch (const Error& e) {
+    a.notes.push_back(std::string("model A not fitted: ") + e.what());
   }
+}
 
+/// The diagnostics of eqs b (a_N over blocks of the moving part) and c (theta_c at the v_y
+/// extremum); `pb` is fitted model B's launch, `t` the data's times.
+void add_diagnostics(InclineAnalysis& a, const track::Track& track, const InclineFitOptions& o,
+                     const incline::Parameters& pb, const std::vector<double>& t) {
+  const ModelBFit& b = a.model_b;
+  const double psi_b = b.frame_rotation.value;
   // Diagnostics: eq b on the moving part short of the stop (theta undefined at v = 0), in the
   // incline's frame: the points turned back by the fitted rotation. Model A's rotation, launch
   // and stop when it is fitted: A nests B, so they are unbiased whether or not a normal friction
@@ -626,6 +599,12 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
     a.notes.push_back("theta_c diagnostic skipped: the fitted motion does not stop (k >= 1), so v_y has no extremum");
   }
 
+}
+
+/// The warnings of data that contradict the physics or the given parameters (a turned frame,
+/// g, wild frames, an impossible mu) and of theta_c's optimistic sigma.
+void add_plausibility_warnings(InclineAnalysis& a, const track::Track& track, const InclineFitOptions& o) {
+  const ModelBFit& b = a.model_b;
   // The frame held aligned (--frame-rotation none) against data that show it turned: a turned
   // frame biases mu and mimics normal friction (0.5 deg: mu +0.0045 = 13 sd, `present` in every
   // run), and the g check below then blames the frame rate. 3 sd, as the g check.
@@ -687,6 +666,10 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
                          "was 1.4 times the stated sigma on average and up to 5 times; film at a higher frame rate "
                          "or a longer stretch around the extremum");
 
+}
+
+/// The verdict on normal friction: model A's test, else the a_N intercept, else absent (noted).
+void decide_verdict(InclineAnalysis& a) {
   if (a.test) {
     a.verdict = verdict_from(a.test->present);
     a.verdict_source = VerdictSource::model_a_test;
@@ -698,6 +681,52 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
     a.verdict_source = VerdictSource::none;
     a.notes.push_back("no test could decide; verdict defaults to absent");
   }
+}
+
+}  // namespace
+
+InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFitOptions& o) {
+  // An isolated value far off its neighbours' motion (a lost decimal point) would pull every
+  // fit: left out first and named (docs/theory.md#plausibility-checks, "isolated outliers").
+  const std::vector<track::Outlier> outliers = track::isolated_outliers(tracked);
+  const track::Track track = track::without(tracked, outliers);
+  InclineAnalysis a;
+  for (const auto& x : outliers) a.warnings.push_back(track::outlier_warning(tracked, x));
+  a.phi = o.phi;
+  a.g = o.g;
+  try {
+    a.model_b = fit_model_b(track, o);
+  } catch (const Error&) {
+    // Data whose g is far from the one given (a wrong time scale) defeat the fit with g held:
+    // say what the data show instead of how the solver failed (docs/theory.md#incline-gravity).
+    const auto c = check_gravity(track, o);
+    if (!c) throw;
+    const std::string w = gravity_warning(*c, o);
+    if (w.empty()) throw;
+    // The solver's own words ("Residual and Jacobian evaluation failed") would only distract
+    // from the factor the message names (issue 27).
+    throw InputError(where(track), w + " (model B with g = " + message_number(o.g, 4) + " m/s^2 and phi = " + message_number(to_deg(o.phi), 4) +
+                                       " deg does not fit these data)");
+  }
+  a.data = track.points;
+  track::KinematicsOptions ko;
+  ko.method = track::DerivativeMethod::savgol;
+  a.kinematics = track::differentiate(track, ko);
+  const std::vector<double> t = times_of(track), fine = fine_grid(t);
+  const ModelBFit& b = a.model_b;
+  const incline::Parameters pb = launch(b.mu.value, o.phi, b.v0.value, o.g);
+  const double psi_b = b.frame_rotation.value;
+  a.model_b_at_data = model_b_states(pb, b.t0.value, b.x0.value, b.y0.value, t, psi_b);
+  a.model_b_fine = model_b_states(pb, b.t0.value, b.x0.value, b.y0.value, fine, psi_b);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    a.residual_x_b.push_back(track.points[i].x - a.model_b_at_data[i].x);
+    a.residual_y_b.push_back(track.points[i].y - a.model_b_at_data[i].y);
+  }
+
+  if (o.fit_model_a) add_model_a(a, track, o, b, t, fine);
+  add_diagnostics(a, track, o, pb, t);
+  add_plausibility_warnings(a, track, o);
+  decide_verdict(a);
   return a;
 }
 
