@@ -12,11 +12,12 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace tribolab::studio {
 
 /// Sets each field of `o` named in `values` (an object): a number for a number (null unsets an
-/// optional one), a whole number for an integer, text for text (one of the declared words when
+/// optional one), a whole number for an integer, a number or an array of numbers for a list, text for text (one of the declared words when
 /// the field has them), true/false for a flag. Only fields of role `value` may be set: the
 /// files a command reads and writes are the studio's. InputError naming the field otherwise;
 /// the declared ranges are checked afterwards (app::check_ranges).
@@ -56,6 +57,16 @@ void apply_form_values(O& o, const app::Fields<O>& fields, const nlohmann::json&
             if (!f->choices.empty() && std::find(f->choices.begin(), f->choices.end(), s) == f->choices.end())
               throw bad("one of the offered words");
             *p = s;
+          } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+            // A list of numbers (one incline angle per file): one number, or an array of them.
+            const nlohmann::json list = v.is_array() ? v : nlohmann::json::array({v});
+            if (list.empty() || list.size() > 10000) throw bad("a number or a list of numbers");
+            std::vector<double> numbers;
+            for (const nlohmann::json& e : list) {
+              if (!e.is_number() || !std::isfinite(e.get<double>())) throw bad("a number or a list of finite numbers");
+              numbers.push_back(e.get<double>());
+            }
+            *p = std::move(numbers);
           } else if constexpr (std::is_same_v<T, bool>) {
             if (!v.is_boolean()) throw bad("true or false");
             *p = v.get<bool>();

@@ -1,8 +1,10 @@
 #include "studio/workbench.hpp"
 
 #include "app/bounce/bounce_analyze.hpp"
+#include "app/incline/incline_analyze.hpp"
 #include "app/common/result_keys.hpp"
 #include "app/track/track_kinematics.hpp"
+#include "app/track/track_rigid_body.hpp"
 #include "app/track/track_video.hpp"
 #include "io/atomic_file.hpp"
 #include "numerics/error.hpp"
@@ -15,6 +17,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace tribolab::studio {
@@ -319,37 +322,87 @@ json form_of(const app::Fields<O>& declared, const app::ResultKeys& results) {
 
 }  // namespace
 
+namespace {
+
+/// One analysis the studio offers: its form, and how it runs on the studio's tracks (`csv`,
+/// in s and m) with a form's values, its outputs named by `beside` (FILE + suffix). `run`
+/// returns the result's JSON and the file it wrote ("" for none).
+struct OfferedAnalysis {
+  const char* command;
+  std::function<json()> form;
+  const app::ResultKeys& (*results)();  ///< its declared result keys
+  std::function<std::pair<json, std::string>(const json& values, const std::string& csv,
+                                              const std::function<std::string(const char*)>& beside)>
+      run;
+};
+
+/// Sets the form's `values` on `o` through `fields`, runs `analysis` and returns its JSON.
+template <class O, class Run>
+json run_form(O o, const app::Fields<O>& fields, const json& values, Run analysis) {
+  apply_form_values(o, fields, values);
+  return analysis(o).json;
+}
+
+/// The analyses of the studio's Analyse step (issue 25): every one from its declared fields.
+const std::vector<OfferedAnalysis>& offered_analyses() {
+  using Beside = std::function<std::string(const char*)>;
+  static const std::vector<OfferedAnalysis> list = {
+      {"track kinematics", [] { return form_of(app::track_kinematics_fields(), app::track_kinematics_result_keys()); }, app::track_kinematics_result_keys,
+       [](const json& values, const std::string& csv, const Beside& beside) {
+         app::TrackKinematicsOptions o;
+         o.input.file = csv;
+         o.out = beside(".kinematics.csv");
+         return std::pair{run_form(o, app::track_kinematics_fields(), values, app::track_kinematics), o.out};
+       }},
+      {"track rigid-body", [] { return form_of(app::track_rigid_body_fields(), app::track_rigid_body_result_keys()); }, app::track_rigid_body_result_keys,
+       [](const json& values, const std::string& csv, const Beside& beside) {
+         app::TrackRigidBodyOptions o;
+         o.input.file = csv;
+         o.out = beside(".rigid_body.csv");
+         return std::pair{run_form(o, app::track_rigid_body_fields(), values, app::track_rigid_body), o.out};
+       }},
+      {"bounce analyze", [] { return form_of(app::bounce_analyze_fields(), app::bounce_analyze_result_keys()); }, app::bounce_analyze_result_keys,
+       [](const json& values, const std::string& csv, const Beside& beside) {
+         app::BounceAnalyzeOptions o;
+         o.file = csv;
+         o.bounces_out = beside(".bounce.csv");
+         return std::pair{run_form(o, app::bounce_analyze_fields(), values, app::bounce_analyze), o.bounces_out};
+       }},
+      {"incline analyze", [] { return form_of(app::incline_analyze_fields(), app::incline_analyze_result_keys()); }, app::incline_analyze_result_keys,
+       [](const json& values, const std::string& csv, const Beside&) {
+         app::InclineAnalyzeOptions o;
+         o.files = {csv};
+         return std::pair{run_form(o, app::incline_analyze_fields(), values, app::incline_analyze), std::string()};
+       }},
+  };
+  return list;
+}
+
+}  // namespace
+
 json Workbench::forms() {
-  return {{"track kinematics", form_of(app::track_kinematics_fields(), app::track_kinematics_result_keys())},
-          {"bounce analyze", form_of(app::bounce_analyze_fields(), app::bounce_analyze_result_keys())}};
+  json forms = json::object();
+  for (const OfferedAnalysis& a : offered_analyses()) forms[a.command] = a.form();
+  return forms;
 }
 
 json Workbench::analyze(const std::string& command, const json& values) {
   require_open();
   Action action(*this, "analysing");
-  if (command != "track kinematics" && command != "bounce analyze")
-    throw InputError("the studio offers the analyses 'track kinematics' and 'bounce analyze', not '" + command + "'");
+  const auto& list = offered_analyses();
+  const auto offered = std::find_if(list.begin(), list.end(), [&](const OfferedAnalysis& a) { return a.command == command; });
+  if (offered == list.end()) {
+    std::string names;
+    for (const OfferedAnalysis& a : list) names += (names.empty() ? "'" : ", '") + std::string(a.command) + "'";
+    throw InputError("the studio offers the analyses " + names + ", not '" + command + "'");
+  }
   if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");
   for (auto it = values.begin(); it != values.end(); ++it)
     if (set_by_the_studio(it.key())) throw InputError(field(it.key()), "is set by the studio: its tracks are in s and m");
-  if (command == "bounce analyze") {
-    app::BounceAnalyzeOptions o;
-    apply_form_values(o, app::bounce_analyze_fields(), values);
-    o.file = (root_ / tracks_["csv"].get<std::string>()).string();
-    o.bounces_out = beside(".bounce.csv").string();
-    const app::BounceAnalyzeResult r = app::bounce_analyze(o);
-    analysis_ = {{"command", command}, {"values", values}, {"result", r.json}, {"out", relative(o.bounces_out)},
-                 {"results", app::result_keys_schema(app::bounce_analyze_result_keys())}};
-    autosave();
-    return state();
-  }
-  app::TrackKinematicsOptions o;
-  apply_form_values(o, app::track_kinematics_fields(), values);
-  o.input.file = (root_ / tracks_["csv"].get<std::string>()).string();
-  o.out = beside(".kinematics.csv").string();
-  const app::TrackKinematicsResult r = app::track_kinematics(o);
-  analysis_ = {{"command", command}, {"values", values}, {"result", r.json}, {"out", relative(o.out)},
-               {"results", app::result_keys_schema(app::track_kinematics_result_keys())}};
+  const auto [result, out] = offered->run(values, (root_ / tracks_["csv"].get<std::string>()).string(),
+                                          [this](const char* suffix) { return beside(suffix).string(); });
+  analysis_ = {{"command", command}, {"values", values}, {"result", result},
+               {"out", out.empty() ? json(nullptr) : json(relative(out))}, {"results", app::result_keys_schema(offered->results())}};
   autosave();
   return state();
 }

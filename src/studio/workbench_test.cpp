@@ -5,6 +5,7 @@
 #include "studio/workbench.hpp"
 
 #include "numerics/error.hpp"
+#include "incline/numeric.hpp"
 #include "video/render.hpp"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <thread>
 #include <filesystem>
+#include <numbers>
 #include <unistd.h>
 
 namespace tribolab::studio {
@@ -257,6 +259,109 @@ TEST_F(WorkbenchTest, ActionsBeforeOpeningAreInputErrors) {
   EXPECT_THROW(wb.frame_jpeg(0), InputError);
   EXPECT_THROW(wb.track({}), InputError);
   EXPECT_THROW(wb.analyze("track kinematics", json::object()), InputError);
+}
+
+// The Analyse step on films of the two studies' experiments, rendered at test time: a disc
+// launched across an incline seen face-on (model B, mu 0.45, phi 20 deg, v0 1.2 m/s, stopping
+// after 0.84 s) and a turning ellipse (a rugby ball seen side-on). Each is tracked by one click
+// as an ellipse, calibrated with a stick, and analysed with a form of its command's declared
+// fields: the fitted values must hold their truth within 3 of their sigmas.
+class WorkbenchFilmTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = fs::temp_directory_path() / ("studio_film_test_" + std::to_string(::getpid()));
+    fs::create_directories(root);
+    root = fs::canonical(root);
+  }
+  void TearDown() override { fs::remove_all(root); }
+  static video::RenderOptions film_options() {
+    video::RenderOptions o;
+    o.width = 320;
+    o.height = 240;
+    o.fps = kFps;
+    o.shutter_fraction = 0;  // no blur: the disc is where the model puts it at each frame's time
+    o.background = video::RenderOptions::Background::plain;
+    o.noise_sigma = 1;
+    return o;
+  }
+  /// Calibrates 1 px = kMetresPerPx (a stick of 80 px along the image x axis).
+  static CalibrationInput calibration() {
+    CalibrationInput c;
+    c.stick_px = std::array<double, 4>{20, 220, 100, 220};
+    c.stick_length_m = 80 * kMetresPerPx;
+    return c;
+  }
+  static constexpr double kFps = 60, kMetresPerPx = 1.25e-3;
+  fs::path root;
+};
+
+TEST_F(WorkbenchFilmTest, AnInclineRunIsAnalysedFromAClick) {
+  incline::Parameters p;
+  p.mu = 0.45;
+  p.phi = 20 * std::numbers::pi / 180;
+  p.v0 = 1.2;
+  p.g = 9.8;
+  constexpr int kFrames = 60;  // 1 s: the slide and 10 frames at rest
+  std::vector<double> times;
+  for (int i = 0; i < kFrames; ++i) times.push_back(i / kFps);
+  const incline::NumericResult run = incline::simulate(p, times);
+  ASSERT_EQ(run.samples.size(), times.size());
+  ASSERT_TRUE(run.t_stop.has_value());
+  const double x0_px = 30, y0_px = 30;  // the launch point in the image (x right, y down)
+  const auto scene = [&](double t) {
+    const auto& s = run.samples.at(static_cast<std::size_t>(std::lround(t * kFps)));
+    video::ShapePose disc;
+    disc.cx_px = x0_px + s.x / kMetresPerPx;
+    disc.cy_px = y0_px - s.y / kMetresPerPx;  // y up the slope in the world, down the image
+    disc.a_px = disc.b_px = 9;
+    disc.colour = cv::Scalar(40, 40, 200);
+    return std::vector<video::ShapePose>{disc};
+  };
+  video::write_video((root / "incline.avi").string(), scene, kFrames, film_options());
+  Workbench wb(root);
+  wb.open(root / "incline.avi");
+  wb.calibrate(calibration());
+  json s = wb.track({"disc", "ellipse", x0_px, y0_px, 0, {}});
+  ASSERT_TRUE(wb.forms().contains("incline analyze"));
+  EXPECT_THROW(wb.analyze("incline analyze", {{"track", "disc"}}), InputError);  // phi_deg is required
+  EXPECT_THROW(wb.analyze("incline analyze", {{"track", "disc"}, {"phi_deg", "20"}}), InputError);  // a number
+  s = wb.analyze("incline analyze", {{"track", "disc"}, {"phi_deg", json::array({20.0})}, {"no_model_a", true}});
+  const json& r = s["analysis"]["result"];
+  ASSERT_TRUE(r["mu"].is_number()) << r.dump();
+  EXPECT_NEAR(r["mu"].get<double>(), p.mu, 3 * r["sigma_mu"].get<double>()) << r.dump();
+  EXPECT_NEAR(r["v0"].get<double>(), p.v0, 3 * r["sigma_v0"].get<double>()) << r.dump();
+  EXPECT_TRUE(s["analysis"]["out"].is_null());  // incline analyze writes no file
+  // A single number is a list of one.
+  const json one = wb.analyze("incline analyze", {{"track", "disc"}, {"phi_deg", 20.0}, {"no_model_a", true}});
+  EXPECT_EQ(one["analysis"]["result"]["mu"], r["mu"]);
+}
+
+TEST_F(WorkbenchFilmTest, ATurningBallsSpinComesFromRigidBody) {
+  // A rugby ball seen side-on, 60 x 40 px, flying across at 0.3 m/s and turning at 4 rad/s,
+  // in view in all 40 frames.
+  constexpr int kFrames = 40;
+  constexpr double kOmega = 4, kVx = 0.3;
+  const auto scene = [&](double t) {
+    video::ShapePose ball;
+    ball.cx_px = 80 + kVx * t / kMetresPerPx;
+    ball.cy_px = 120;
+    ball.a_px = 30;
+    ball.b_px = 20;
+    ball.angle_rad = 0.3 + kOmega * t;  // counter-clockwise on screen: counter-clockwise with y up
+    ball.colour = cv::Scalar(40, 90, 180);
+    return std::vector<video::ShapePose>{ball};
+  };
+  video::write_video((root / "ball.avi").string(), scene, kFrames, film_options());
+  Workbench wb(root);
+  wb.open(root / "ball.avi");
+  wb.calibrate(calibration());
+  wb.track({"ball", "ellipse", 80, 120, 0, {}});
+  const json s = wb.analyze("track rigid-body", {{"track_a", "ball.A"}, {"track_b", "ball.B"}});
+  const json& r = s["analysis"]["result"];
+  ASSERT_TRUE(r["omega"].is_number()) << r.dump();
+  EXPECT_NEAR(r["omega"].get<double>(), kOmega, 3 * r["sigma_omega"].get<double>() + 1e-9) << r.dump();
+  EXPECT_TRUE(fs::exists(root / "ball.avi.rigid_body.csv"));
+  EXPECT_EQ(s["analysis"]["out"], "ball.avi.rigid_body.csv");
 }
 
 }  // namespace
