@@ -2,6 +2,10 @@
 
 #include "text_listing.hpp"
 
+#include "app/sweep/sweep_text.hpp"
+
+#include <fmt/format.h>
+
 #include <cctype>
 
 namespace tribolab::cli {
@@ -46,6 +50,56 @@ std::string flags_for_field_names(std::string help, const std::vector<std::strin
     }
   }
   return help;
+}
+
+namespace {
+
+/// The quantity a declared range field is (its name: theta_deg, omega, ratio, speed, mu).
+sweep::Quantity quantity_of_field(const std::string& field_name) {
+  const auto q = sweep::quantity_from_name(field_name);
+  if (!q) throw std::logic_error("declared range field is no sweep quantity: " + field_name);
+  return *q;
+}
+
+/// "--t-from" of "--t-from,--from": the flag a message names.
+std::string first_flag(const std::string& name) { return name.substr(0, name.find(',')); }
+
+}  // namespace
+
+CLI::Option* add_range_option(CLI::App& cmd, const std::string& name, const std::string& field_name,
+                              std::optional<sweep::Axis>& to, const std::string& help) {
+  const sweep::Quantity q = quantity_of_field(field_name);
+  const std::string flag = first_flag(name);
+  CLI::Option* opt = cmd.add_option_function<std::string>(
+      name, [&to, q, flag](const std::string& text) { to = app::parse_axis(text, q, flag); }, help);
+  opt->type_name("LO:HI:N");
+  return opt;
+}
+
+CLI::Option* add_range_option(CLI::App& cmd, const std::string& name, const std::string& field_name,
+                              sweep::ValueOrAxis& to, const std::string& help) {
+  const sweep::Quantity q = quantity_of_field(field_name);
+  const std::string flag = first_flag(name);
+  CLI::Option* opt = cmd.add_option_function<std::string>(
+      name,
+      [&to, q, flag](const std::string& text) {
+        // A range keeps the default value as the grid's fixed value (recorded in the file header).
+        const sweep::ValueOrAxis v = app::parse_value_or_axis(text, q, flag);
+        if (v.axis) to.axis = v.axis;
+        else to.value = v.value;
+      },
+      help);
+  opt->type_name("LO:HI:N");
+  opt->default_str(fmt::format("{}", to.value));  // the help shows the default
+  return opt;
+}
+
+CLI::Option* add_shard_option(CLI::App& cmd, const std::string& name, sweep::Shard& to, const std::string& help) {
+  const std::string flag = first_flag(name);
+  CLI::Option* opt = cmd.add_option_function<std::string>(
+      name, [&to, flag](const std::string& text) { to = app::parse_shard(text, flag); }, help);
+  opt->type_name("I/N");
+  return opt;
 }
 
 void print_declared(const CLI::App& cmd, const nlohmann::json& result, bool as_json) {

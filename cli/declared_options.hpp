@@ -7,7 +7,8 @@
 // with dashes (flag_of), the help is "<help>[: a|b|c], <unit>", the default the member
 // initializer (the help shows it), numbers read by add_number (cli/incline_options.hpp: one
 // line naming the option for a malformed or empty number), `report`/`plotly` by
-// add_report_option, fields for a notebook (FieldRole::notebook) left out. Each bound command
+// add_report_option, a sweep's ranges and shards by add_range_option / add_shard_option
+// (LO:HI:N, a number or LO:HI:N, I/N), fields for a notebook (FieldRole::notebook) left out. Each bound command
 // is recorded for `tribolab schema` (cli/schema_cmd.cpp) with its fields and result keys.
 #pragma once
 
@@ -60,6 +61,17 @@ std::string flags_for_field_names(std::string help, const std::vector<std::strin
 /// command's declared result keys.
 void print_declared(const CLI::App& cmd, const nlohmann::json& result, bool as_json);
 
+/// A sweep's range LO:HI:COUNT (`std::optional<sweep::Axis>`), or a number or a range
+/// (`sweep::ValueOrAxis`), of the quantity named `field_name` (theta_deg, omega, ratio, speed,
+/// mu), read by app::parse_axis / parse_value_or_axis as the option is parsed: a malformed
+/// range is one line naming the option. A number-or-range shows its default number.
+CLI::Option* add_range_option(CLI::App& cmd, const std::string& name, const std::string& field_name,
+                              std::optional<sweep::Axis>& to, const std::string& help);
+CLI::Option* add_range_option(CLI::App& cmd, const std::string& name, const std::string& field_name,
+                              sweep::ValueOrAxis& to, const std::string& help);
+/// A shard i/N (app::parse_shard).
+CLI::Option* add_shard_option(CLI::App& cmd, const std::string& name, sweep::Shard& to, const std::string& help);
+
 /// Adds one CLI11 option per declared field of `fields`, bound to `o` (which must outlive the
 /// parse: the command's shared options), and records the command for the schema.
 template <class O>
@@ -92,6 +104,10 @@ void add_declared_options(CLI::App& cmd, O& o, const app::Fields<O>& fields, con
             return cmd.add_option(name, *p, help);
           } else if constexpr (std::is_same_v<T, report::PlotlyMode>) {
             throw std::logic_error("plotly outside a report pair: " + f.name);
+          } else if constexpr (std::is_same_v<T, std::optional<sweep::Axis>> || std::is_same_v<T, sweep::ValueOrAxis>) {
+            return add_range_option(cmd, name, f.name, *p, help);
+          } else if constexpr (std::is_same_v<T, sweep::Shard>) {
+            return add_shard_option(cmd, name, *p, help);
           } else {
             return add_number(cmd, name, *p, help);
           }

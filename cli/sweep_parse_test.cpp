@@ -36,7 +36,7 @@ TEST(SweepOptionsParsing, AxesRangesAndShards) {
   EXPECT_EQ(message_of([&] { parse_axis("0:8:3", sweep::Quantity::speed, "--speed"); }),
             "--speed: the incoming speed must be > 0 m/s");
 
-  const app::ValueOrAxis fixed = parse_value_or_axis("8", sweep::Quantity::speed, "--speed");
+  const sweep::ValueOrAxis fixed = parse_value_or_axis("8", sweep::Quantity::speed, "--speed");
   EXPECT_FALSE(fixed.axis.has_value());
   EXPECT_EQ(fixed.value, 8);
   EXPECT_TRUE(parse_value_or_axis("0.2:0.8:4", sweep::Quantity::mu, "--mu").axis.has_value());

@@ -18,30 +18,14 @@ namespace tribolab::cli {
 
 namespace {
 
-void add_input_options(CLI::App& cmd, TrackInputOptions& in) {
-  cmd.add_option("FILE", in.file, "Tracker .trk/.trz, Tracker Export Data text, or CSV")->required();
-  cmd.add_option("--time-scale", in.time_scale,
-                 "Real seconds per file second: slow motion recorded at 240 fps and played at "
-                 "30 fps is 0.125");
-  cmd.add_option("--length-unit", in.length_unit,
-                 "Unit of the file's lengths, overriding what the file says: m, cm, mm, km, um, "
-                 "in, ft (when not given: the file's unit, else m)");
-  cmd.add_option("--entry", in.entry, "For a .trz: the .trk inside to read (when not given: the first)");
-}
-
-/// --from/--to (also spelled --t-from/--t-to, the fields' names in messages and Python).
-void add_time_range(CLI::App& cmd, double& t_from, double& t_to, const std::string& what) {
-  cmd.add_option("--t-from,--from", t_from, "First time used, s (when not given: the first point): " + what);
-  cmd.add_option("--t-to,--to", t_to, "Last time used, s (when not given: the last point)");
-}
-
-/// `keys`: the command's declared result keys (the listing's units).
+/// A command bound from its declaration: its options, --json, and the listing of `run`'s JSON.
 template <class Options, class Run>
-void bind(CLI::App& cmd, std::shared_ptr<Options> o, std::shared_ptr<bool> as_json, Run run,
-          const app::ResultKeys& keys) {
+void add_declared_track_command(CLI::App& cmd, const app::Fields<Options>& fields, const app::ResultKeys& keys, Run run) {
+  auto o = std::make_shared<Options>();
+  auto as_json = std::make_shared<bool>(false);
+  add_declared_options(cmd, *o, fields, keys);
   add_json_flag(cmd, *as_json);
-  declare_results(cmd, keys);
-  cmd.callback([o, as_json, run, &keys] { print_result(run(*o).json, *as_json, keys); });
+  cmd.callback([o, as_json, run, &cmd] { print_declared(cmd, run(*o).json, *as_json); });
 }
 
 }  // namespace
@@ -60,11 +44,7 @@ void register_track(CLI::App& root) {
   {
     auto* cmd = area->add_subcommand(
         "import", "Read tracked points into a tidy table track,frame,t,x,y (s, m) and summarise them");
-    auto o = std::make_shared<TrackImportOptions>();
-    add_input_options(*cmd, o->input);
-    cmd->add_option("--track", o->track, "Keep only this track (repeatable; when not given: all)");
-    cmd->add_option("--out", o->out, "Write the tidy CSV here (columns track,frame,t,x,y)");
-    bind(*cmd, o, std::make_shared<bool>(false), track_import, track_import_result_keys());
+    add_declared_track_command(*cmd, track_import_fields(), track_import_result_keys(), track_import);
   }
 
   // track kinematics
@@ -72,11 +52,7 @@ void register_track(CLI::App& root) {
     auto* cmd = area->add_subcommand(
         "kinematics", "Velocities and accelerations of one track (Tracker's stencils or "
                       "Savitzky-Golay with standard errors), never across impacts");
-    auto o = std::make_shared<TrackKinematicsOptions>();
-    auto as_json = std::make_shared<bool>(false);
-    add_declared_options(*cmd, *o, track_kinematics_fields(), track_kinematics_result_keys());
-    add_json_flag(*cmd, *as_json);
-    cmd->callback([o, as_json, cmd] { print_declared(*cmd, track_kinematics(*o).json, *as_json); });
+    add_declared_track_command(*cmd, track_kinematics_fields(), track_kinematics_result_keys(), track_kinematics);
   }
 
   // track rigid-body
@@ -84,11 +60,7 @@ void register_track(CLI::App& root) {
     auto* cmd = area->add_subcommand(
         "rigid-body", "Centre, orientation and spin (with standard errors) of a body from two tracked "
                       "points on it (docs/theory.md#track-rigid-body)");
-    auto o = std::make_shared<TrackRigidBodyOptions>();
-    auto as_json = std::make_shared<bool>(false);
-    add_declared_options(*cmd, *o, track_rigid_body_fields(), track_rigid_body_result_keys());
-    add_json_flag(*cmd, *as_json);
-    cmd->callback([o, as_json, cmd] { print_declared(*cmd, track_rigid_body(*o).json, *as_json); });
+    add_declared_track_command(*cmd, track_rigid_body_fields(), track_rigid_body_result_keys(), track_rigid_body);
   }
 
   // track rotation
@@ -96,16 +68,7 @@ void register_track(CLI::App& root) {
     auto* cmd = area->add_subcommand(
         "rotation", "Spin (with standard errors) of ONE tracked point about a fixed, given or uniformly moving "
                     "pivot: a mark on a wheel, a pendulum bob (docs/theory.md#rotation-about-a-pivot)");
-    auto o = std::make_shared<TrackRotationOptions>();
-    add_input_options(*cmd, o->input);
-    cmd->add_option("--track", o->track, "Track of the turning point (required when the file has several)");
-    cmd->add_option("--pivot-x", o->pivot_x, "Pivot x, m, with --pivot-y (when not given: fitted to the track)");
-    cmd->add_option("--pivot-y", o->pivot_y, "Pivot y, m, with --pivot-x");
-    cmd->add_flag("--moving-pivot", o->moving_pivot, "Fit a pivot moving uniformly (a rolling wheel's axle)");
-    cmd->add_option("--window", o->window, "Points per local linear fit of the angle (the spin at each frame), >= 3");
-    add_time_range(*cmd, o->t_from, o->t_to, "only the part of the record that turns about the pivot");
-    cmd->add_option("--out", o->out, "Output CSV: frame,t,x,y,theta,radius,omega,sigma_omega (s, m, rad, rad/s)");
-    bind(*cmd, o, std::make_shared<bool>(false), track_rotation, track_rotation_result_keys());
+    add_declared_track_command(*cmd, track_rotation_fields(), track_rotation_result_keys(), track_rotation);
   }
 }
 

@@ -52,59 +52,12 @@ void register_track_video(CLI::App& track_area) {
   auto* cmd = track_area.add_subcommand(
       "video", "Track points and balls in a video (or a Tracker .trk/.trz project's video) and "
                "write track,frame,t,x,y,x_px,y_px,score");
-  auto o = std::make_shared<TrackVideoOptions>();
+  auto io = std::make_shared<TrackVideoInputsOptions>();
   auto as_json = std::make_shared<bool>(false);
-  auto inputs = std::make_shared<std::vector<std::string>>();
-  cmd->add_option("INPUT", *inputs,
-                  "Video file (mp4, mov, avi, ...) or Tracker project .trk/.trz; several: each tracked with "
-                  "the same options, its outputs named NN_<stem> in the --out (and --write-trk) folder")
-      ->required();
-  cmd->add_option("--out", o->out,
-                  "Output CSV: track,frame,t,x,y,x_px,y_px,score (with several inputs: a folder, created "
-                  "if missing, holding NN_<stem>.csv per video)")
-      ->required();
-  cmd->add_option("--start", o->start,
-                  "Follow a textured point: NAME=X,Y[@FRAME] in image pixels (x right, y down), "
-                  "from FRAME (when not given: the clip's first); repeatable");
-  cmd->add_option("--ellipse", o->ellipse,
-                  "Follow a ball or disc contrasting with its background as an ellipse: "
-                  "NAME=X,Y[@FRAME] inside it; gives tracks NAME (centre), NAME.A and NAME.B "
-                  "(ends of the major axis); repeatable");
-  cmd->add_option("--from-track", o->from_track,
-                  "Tracker project: follow this track from its first mark, and compare with its "
-                  "further marks; repeatable");
-  cmd->add_option("--mark", o->mark,
-                  "Correct a track: NAME@FRAME=X,Y in image pixels; the track passes there (reported "
-                  "manual, score 1) and is re-tracked from it forward and backward; repeatable");
-  cmd->add_option("--scale", o->scale, "Plain video: metres per pixel");
-  cmd->add_option("--calibrate", o->calibrate,
-                  "Plain video: a stick of known length, X1,Y1,X2,Y2,LENGTH (px, px, px, px, m)");
-  cmd->add_option("--origin", o->origin, "World origin in the image, X,Y px (when not given: the bottom-left pixel)");
-  cmd->add_option("--axes-deg", o->axes_deg, "World x-axis counter-clockwise from the image x-axis, degrees");
-  cmd->add_option("--fps", o->fps, "Frames per second of the video, overriding the container's (or the project's)");
-  cmd->add_option("--time-scale", o->time_scale,
-                  "Real seconds per video second: 240 fps slow motion played at 30 fps is 0.125");
-  cmd->add_option("--entry", o->entry, "For a .trz: the .trk inside to use (when not given: the first)");
-  cmd->add_option("--min-score", o->min_score, "Points: below this match score (0..1) a point is lost");
-  cmd->add_option("--patch", o->patch,
-                  "Points: template side, px, odd (when not given: the object's size with the path "
-                  "tracker, 21 with the frame tracker)");
-  cmd->add_option("--point-tracker", o->point_tracker,
-                  "Points: path (offline: best path through candidates in every frame, default) or "
-                  "frame (frame to frame, with rotation search)");
-  cmd->add_option("--search", o->search,
-                  "Points: search half-width around the prediction, px (when not given: automatic)");
-  cmd->add_option("--max-turn-deg", o->max_turn_deg,
-                  "Points: largest rotation of the pattern searched per frame, degrees");
-  cmd->add_option("--ellipse-min-score", o->ellipse_min_score,
-                  "Ellipses: below this edge-fit quality (0..1) the object is lost");
-  cmd->add_option("--max-gap", o->max_gap, "Frames the motion model may bridge; beyond, an ellipse is given up and a point is searched for afresh");
-  cmd->add_option("--write-trk", o->write_trk,
-                  "Also write the tracks as a Tracker project (opens in Tracker with its video; with several "
-                  "inputs: a folder holding NN_<stem>.trk per video)");
+  add_declared_options(*cmd, *io, track_video_inputs_fields(), track_video_result_keys());
   add_json_flag(*cmd, *as_json);
-  add_report_option(*cmd, o->report, o->plotly);
-  declare_results(*cmd, track_video_result_keys());
+  const std::shared_ptr<TrackVideoOptions> o(io, &io->each);
+  const std::shared_ptr<std::vector<std::string>> inputs(io, &io->input);
   declare_series_results(*cmd, track_video_series_result_keys());
   cmd->callback([o, as_json, inputs] {
     if (inputs->size() == 1) {  // exactly the single-video command

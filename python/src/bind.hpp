@@ -10,6 +10,8 @@
 #pragma once
 
 #include "app/common/option_fields.hpp"
+#include "app/sweep/sweep_text.hpp"
+#include "numerics/error.hpp"
 #include "report/plotly_script.hpp"
 
 #include <nlohmann/json.hpp>
@@ -41,6 +43,76 @@ struct type_caster<tribolab::report::PlotlyMode> {
   }
   static handle cast(tribolab::report::PlotlyMode m, return_value_policy, handle) {
     return str(std::string(tribolab::report::to_string(m))).release();
+  }
+};
+}  // namespace pybind11::detail
+
+// A sweep axis (a range field of a declaration, `bounce sweep` theta_deg): (lo, hi, count), as
+// the command line's LO:HI:N; a quantity that is one value or an axis (speed, mu): a number or
+// (lo, hi, count); a shard: (index, count) or the command line's "i/N" (read by
+// app::parse_shard, so a malformed one is the command line's message). Here, beside the
+// mechanism, because Command::declared instantiates every type a declaration may hold.
+namespace pybind11::detail {
+template <>
+struct type_caster<tribolab::sweep::Axis> {
+  PYBIND11_TYPE_CASTER(tribolab::sweep::Axis, const_name("tuple[float, float, int]"));
+  bool load(handle src, bool) {
+    if (!isinstance<sequence>(src) || isinstance<str>(src)) return false;
+    const auto seq = reinterpret_borrow<sequence>(src);
+    if (seq.size() != 3) return false;
+    try {
+      value.lo = seq[0].cast<double>();
+      value.hi = seq[1].cast<double>();
+      value.count = seq[2].cast<std::int64_t>();
+    } catch (const cast_error&) {
+      return false;
+    }
+    return true;
+  }
+  static handle cast(const tribolab::sweep::Axis& a, return_value_policy, handle) {
+    return make_tuple(a.lo, a.hi, a.count).release();
+  }
+};
+template <>
+struct type_caster<tribolab::sweep::Shard> {
+  PYBIND11_TYPE_CASTER(tribolab::sweep::Shard, const_name("tuple[int, int] or str"));
+  bool load(handle src, bool) {
+    if (isinstance<str>(src)) {
+      value = tribolab::app::parse_shard(src.cast<std::string>(), tribolab::field("shard"));  // InputError -> ValueError
+      return true;
+    }
+    if (!isinstance<sequence>(src)) return false;
+    const auto seq = reinterpret_borrow<sequence>(src);
+    if (seq.size() != 2) return false;
+    try {
+      value.index = seq[0].cast<std::int64_t>();
+      value.count = seq[1].cast<std::int64_t>();
+    } catch (const cast_error&) {
+      return false;
+    }
+    return true;
+  }
+  static handle cast(const tribolab::sweep::Shard& s, return_value_policy, handle) {
+    return make_tuple(s.index, s.count).release();
+  }
+};
+template <>
+struct type_caster<tribolab::sweep::ValueOrAxis> {
+  PYBIND11_TYPE_CASTER(tribolab::sweep::ValueOrAxis, const_name("float or tuple[float, float, int]"));
+  bool load(handle src, bool convert) {
+    if (isinstance<float_>(src) || isinstance<int_>(src)) {
+      value.value = src.cast<double>();
+      value.axis.reset();
+      return true;
+    }
+    make_caster<tribolab::sweep::Axis> axis;
+    if (!axis.load(src, convert)) return false;
+    value.axis = cast_op<tribolab::sweep::Axis>(axis);
+    return true;
+  }
+  static handle cast(const tribolab::sweep::ValueOrAxis& v, return_value_policy p, handle h) {
+    if (v.axis) return make_caster<tribolab::sweep::Axis>::cast(*v.axis, p, h);
+    return float_(v.value).release();
   }
 };
 }  // namespace pybind11::detail

@@ -15,69 +15,6 @@
 #include <string>
 #include <system_error>
 
-// A sweep axis from Python: (lo, hi, count), as the command line's LO:HI:N; a quantity that is
-// one value or an axis (speed, mu): a number or (lo, hi, count).
-namespace pybind11::detail {
-template <>
-struct type_caster<tribolab::sweep::Axis> {
-  PYBIND11_TYPE_CASTER(tribolab::sweep::Axis, const_name("tuple[float, float, int]"));
-  bool load(handle src, bool) {
-    if (!isinstance<sequence>(src) || isinstance<str>(src)) return false;
-    const auto seq = reinterpret_borrow<sequence>(src);
-    if (seq.size() != 3) return false;
-    try {
-      value.lo = seq[0].cast<double>();
-      value.hi = seq[1].cast<double>();
-      value.count = seq[2].cast<std::int64_t>();
-    } catch (const cast_error&) {
-      return false;
-    }
-    return true;
-  }
-  static handle cast(const tribolab::sweep::Axis& a, return_value_policy, handle) {
-    return make_tuple(a.lo, a.hi, a.count).release();
-  }
-};
-// A shard from Python: (index, count), as the command line's i/N.
-template <>
-struct type_caster<tribolab::sweep::Shard> {
-  PYBIND11_TYPE_CASTER(tribolab::sweep::Shard, const_name("tuple[int, int]"));
-  bool load(handle src, bool) {
-    if (!isinstance<sequence>(src) || isinstance<str>(src)) return false;
-    const auto seq = reinterpret_borrow<sequence>(src);
-    if (seq.size() != 2) return false;
-    try {
-      value.index = seq[0].cast<std::int64_t>();
-      value.count = seq[1].cast<std::int64_t>();
-    } catch (const cast_error&) {
-      return false;
-    }
-    return true;
-  }
-  static handle cast(const tribolab::sweep::Shard& s, return_value_policy, handle) {
-    return make_tuple(s.index, s.count).release();
-  }
-};
-template <>
-struct type_caster<tribolab::app::ValueOrAxis> {
-  PYBIND11_TYPE_CASTER(tribolab::app::ValueOrAxis, const_name("float or tuple[float, float, int]"));
-  bool load(handle src, bool convert) {
-    if (isinstance<float_>(src) || isinstance<int_>(src)) {
-      value.value = src.cast<double>();
-      value.axis.reset();
-      return true;
-    }
-    make_caster<tribolab::sweep::Axis> axis;
-    if (!axis.load(src, convert)) return false;
-    value.axis = cast_op<tribolab::sweep::Axis>(axis);
-    return true;
-  }
-  static handle cast(const tribolab::app::ValueOrAxis& v, return_value_policy p, handle h) {
-    if (v.axis) return make_caster<tribolab::sweep::Axis>::cast(*v.axis, p, h);
-    return float_(v.value).release();
-  }
-};
-}  // namespace pybind11::detail
 
 namespace tribolab::python {
 namespace {
@@ -263,38 +200,7 @@ void bind_bounce(py::module_& m) {
     Command<app::BounceSweepOptions> c(m, "sweep",
         "The rebound over a grid of impact angle x spin (and speed, mu) (`tribolab bounce sweep`, "
         "the rugby-ball study's figure 53): the map as arrays shaped by the axes, resumable, in parallel.");
-    TRIBOLAB_OPT(c, theta_deg);
-    TRIBOLAB_OPT(c, omega);
-    TRIBOLAB_OPT(c, ratio);
-    TRIBOLAB_OPT(c, speed);
-    TRIBOLAB_OPT(c, mu);
-    TRIBOLAB_OPT(c, out);
-    TRIBOLAB_OPT(c, shard);
-    TRIBOLAB_OPT(c, threads);
-    TRIBOLAB_OPT(c, restart);
-    TRIBOLAB_OPT(c, contour);
-    TRIBOLAB_OPT(c, threshold);
-    TRIBOLAB_OPT(c, contour_tol);
-    TRIBOLAB_OPT(c, plain_csv);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
-    TRIBOLAB_OPT(c, cell.ball.ball.a);
-    TRIBOLAB_OPT(c, cell.ball.ball.b);
-    TRIBOLAB_OPT(c, cell.ball.ball.mass);
-    TRIBOLAB_OPT(c, cell.ball.ball.inertia);
-    TRIBOLAB_OPT(c, cell.law.model);
-    TRIBOLAB_OPT(c, cell.law.K);
-    TRIBOLAB_OPT(c, cell.law.n);
-    TRIBOLAB_OPT(c, cell.law.D);
-    TRIBOLAB_OPT(c, cell.law.restitution);
-    TRIBOLAB_OPT(c, cell.law.friction);
-    TRIBOLAB_OPT(c, cell.law.slip_scale);
-    TRIBOLAB_OPT(c, cell.law.k_t);
-    TRIBOLAB_OPT(c, cell.law.c_t);
-    TRIBOLAB_OPT(c, cell.law.tol);
-    TRIBOLAB_OPT(c, cell.g);
-    TRIBOLAB_OPT(c, cell.vx);
-    TRIBOLAB_OPT(c, cell.angle);
+    c.declared(app::bounce_sweep_fields());
     c.def(+[](const app::BounceSweepOptions& o) {
             app::BounceSweepOptions with_map = o;
             with_map.return_map = o.shard.count == 1;  // a notebook wants the arrays; a shard is not the map

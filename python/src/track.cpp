@@ -9,18 +9,6 @@
 #include "app/track/track_video.hpp"
 
 namespace tribolab::python {
-namespace {
-
-/// FILE, --time-scale, --length-unit, --entry.
-template <class C>
-void input_options(C& c) {
-  TRIBOLAB_ARG(c, input.file);
-  TRIBOLAB_OPT(c, input.time_scale);
-  TRIBOLAB_OPT(c, input.length_unit);
-  TRIBOLAB_OPT(c, input.entry);
-}
-
-}  // namespace
 
 void bind_track(py::module_& m) {
   using track::TrackPoint;
@@ -28,9 +16,7 @@ void bind_track(py::module_& m) {
     Command<app::TrackImportOptions> c(m, "load",
         "Reads tracked points (`tribolab track import`): a Tracker .trk/.trz, Tracker's exported "
         "data text or a CSV table; lengths in m, times in s after the time scale.");
-    input_options(c);
-    TRIBOLAB_OPT(c, track);
-    TRIBOLAB_OPT(c, out);
+    c.declared(app::track_import_fields());
     c.def(&app::track_import,
           [](const app::TrackImportResult& r, py::dict& d) {
             py::dict tracks;
@@ -87,15 +73,7 @@ void bind_track(py::module_& m) {
     Command<app::TrackRotationOptions> c(m, "rotation",
         "The spin of one tracked point about a fixed, given or uniformly moving pivot (`tribolab "
         "track rotation`): pivot, radius, omega and alpha with standard errors, local spins.");
-    input_options(c);
-    TRIBOLAB_OPT(c, track);
-    TRIBOLAB_OPT(c, pivot_x);
-    TRIBOLAB_OPT(c, pivot_y);
-    TRIBOLAB_OPT(c, moving_pivot);
-    TRIBOLAB_OPT(c, window);
-    TRIBOLAB_OPT(c, t_from);
-    TRIBOLAB_OPT(c, t_to);
-    TRIBOLAB_OPT(c, out);
+    c.declared(app::track_rotation_fields());
     c.def(&app::track_rotation,
           [](const app::TrackRotationResult& r, py::dict& d) {
             d["rows"] = columns(r.rotation.rows, field("frame", &PivotRow::frame), field("t", &PivotRow::t),
@@ -111,29 +89,7 @@ void bind_track(py::module_& m) {
     Command<app::TrackVideoOptions> c(m, "video",
         "Follows points and balls through a video or a Tracker project's video (`tribolab track "
         "video`); writes the table to `out` (required).");
-    TRIBOLAB_ARG(c, input);
-    TRIBOLAB_OPT(c, out);
-    TRIBOLAB_OPT(c, start);
-    TRIBOLAB_OPT(c, ellipse);
-    TRIBOLAB_OPT(c, from_track);
-    TRIBOLAB_OPT(c, mark);
-    TRIBOLAB_OPT(c, scale);
-    TRIBOLAB_OPT(c, calibrate);
-    TRIBOLAB_OPT(c, origin);
-    TRIBOLAB_OPT(c, axes_deg);
-    TRIBOLAB_OPT(c, fps);
-    TRIBOLAB_OPT(c, time_scale);
-    TRIBOLAB_OPT(c, entry);
-    TRIBOLAB_OPT(c, min_score);
-    TRIBOLAB_OPT(c, patch);
-    TRIBOLAB_OPT(c, point_tracker);
-    TRIBOLAB_OPT(c, search);
-    TRIBOLAB_OPT(c, max_turn_deg);
-    TRIBOLAB_OPT(c, ellipse_min_score);
-    TRIBOLAB_OPT(c, max_gap);
-    TRIBOLAB_OPT(c, write_trk);
-    TRIBOLAB_OPT(c, report);
-    TRIBOLAB_OPT(c, plotly);
+    c.declared(app::track_video_fields());
     c.def(&app::track_video,
           [](const app::TrackVideoResult& r, py::dict& d) {
             py::dict tracks;

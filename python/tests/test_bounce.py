@@ -202,6 +202,13 @@ def test_sweep_shards_and_merge_are_the_whole_map(tmp_path):
     assert merged.read_bytes() == whole.read_bytes()
     with pytest.raises(ValueError, match="shard"):
         tribolab.bounce.sweep(out=str(tmp_path / "bad.csv"), shard=(2, 2), **kw)
+    # The command line's spelling "i/N" too (app/sweep/sweep_text.hpp), with its message.
+    text = tmp_path / "s1_text.csv"
+    tribolab.bounce.sweep(out=str(text), shard="1/2", **kw)
+    assert text.read_bytes() == parts[1].read_bytes()
+    with pytest.raises(ValueError) as err:
+        tribolab.bounce.sweep(out=str(tmp_path / "bad.csv"), shard="1", **kw)
+    assert str(err.value) == "shard: expected i/N with whole numbers 0 <= i < N (e.g. 0/4), got '1'"
 
 
 def test_render_equals_cli(cli, tmp_path):

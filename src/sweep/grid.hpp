@@ -45,6 +45,12 @@ struct Axis {
   bool operator==(const Axis&) const = default;
 };
 
+/// A quantity that is either one value or an axis lo:hi:count (`bounce sweep --speed`, `--mu`).
+struct ValueOrAxis {
+  double value = 0;          ///< the value, or the grid's fixed value when swept (file header)
+  std::optional<Axis> axis;  ///< its quantity is set by the workflow
+};
+
 /// A cell's inputs, handed to the cell function. Every field is always set: quantities
 /// that are not swept take the grid's fixed value.
 struct CellInput {

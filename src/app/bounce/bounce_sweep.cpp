@@ -234,6 +234,51 @@ const ResultKeys& bounce_merge_result_keys() {
 }
 
 
+const Fields<BounceSweepOptions>& bounce_sweep_fields() {
+  using O = BounceSweepOptions;
+  using C = BounceCellOptions;
+  static const Fields<C> cell = [] {
+    Fields<C> d;
+    d.add("angle", &C::angle, "",
+          "meaning of theta_deg: the rugby-ball study's collision angle (0..180 deg), or the orientation (major "
+          "axis from the horizontal at first touch)")
+        .one_of({"collision", "orientation"});
+    d.add("vx", &C::vx, "m/s", "horizontal centre velocity at first touch");
+    d.group(&C::ball, ball_fields());
+    d.group(&C::law, law_fields(), {"mu"});  // mu is the sweep's (a value or an axis)
+    d.add("g", &C::g, "m/s^2", "gravitational acceleration (0 allowed: cells start at touch)");
+    return d;
+  }();
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("theta_deg", &O::theta_deg, "deg", "impact angle range lo:hi:count (e.g. 100:170:71)").needed();
+    d.add("omega", &O::omega, "rad/s",
+          "spin range lo:hi:count, counter-clockwise positive (e.g. 30:50:21; the rugby-ball study's figure 53 "
+          "spins clockwise for a ball moving to +x: -50:-30:21)");
+    d.add("ratio", &O::ratio, "rad/m", "instead of the spin range: spin/speed range omega/|vy| lo:hi:count");
+    d.add("speed", &O::speed, "m/s", "incoming vertical speed |vy|: a value or a range lo:hi:count");
+    d.add("mu", &O::mu, "", "friction coefficient: a value or a range lo:hi:count");
+    d.add("out", &O::out, "",
+          "output CSV (checkpoint while running: FILE.partial)")
+        .as(FieldRole::output_path)
+        .needed();
+    d.add("shard", &O::shard, "", "compute only shard i of N (cells with index % N == i), e.g. 0/4");
+    d.add("threads", &O::threads, "", "worker threads, 0 = all cores");
+    d.add("restart", &O::restart, "", "discard an existing checkpoint or output and start afresh");
+    d.add("contour", &O::contour, "", "write the e = 1 boundary polylines to this CSV").as(FieldRole::output_path);
+    d.add("threshold", &O::threshold, "", "write the spin threshold and energy ratio per angle to this CSV")
+        .as(FieldRole::output_path);
+    d.add("contour_tol", &O::contour_tol, "", "root tolerance of boundary points, fraction of the grid spacing");
+    d.add("plain_csv", &O::plain_csv, "",
+          "also write the map for spreadsheets: no comment lines, the metadata in FILE.meta.txt")
+        .as(FieldRole::output_path);
+    d.add_report(&O::report, &O::plotly);
+    d.group(&O::cell, cell);
+    return d;
+  }();
+  return f;
+}
+
 const ResultKeys& bounce_sweep_result_keys() {
   static const ResultKeys k = {
       {"status", "", ""}, {"out", "", ""}, {"cells_grid", "", ""}, {"cells_shard", "", ""}, {"cells_resumed", "", ""},

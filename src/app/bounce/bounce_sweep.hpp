@@ -19,11 +19,8 @@
 
 namespace tribolab::app {
 
-/// A quantity that is either one value or an axis lo:hi:count (--speed, --mu).
-struct ValueOrAxis {
-  double value = 0;                 ///< the value, or the grid's fixed value when swept (file header)
-  std::optional<sweep::Axis> axis;  ///< its quantity is set by the workflow
-};
+/// A quantity that is either one value or an axis lo:hi:count (--speed, --mu; sweep/grid.hpp).
+using ValueOrAxis = sweep::ValueOrAxis;
 
 struct BounceSweepOptions {
   /// --theta-deg: impact angle axis lo:hi:count, deg (required)
@@ -54,6 +51,13 @@ struct BounceSweepOptions {
   const std::atomic<bool>* cancel = nullptr;  ///< set to stop; the cells done stay saved
   bool mpi = false;  ///< run over MPI_COMM_WORLD (a -DTRIBOLAB_MPI=ON build under a launcher)
 };
+
+/// The declaration of every option of `bounce sweep` (app/common/option_fields.hpp): the
+/// command line and Python bind from it. The axes are ranges (sweep::Axis: LO:HI:COUNT on the
+/// command line, (lo, hi, count) in Python), speed and mu a number or a range, the shard i/N
+/// or (i, N); the cell's physics are `bounce simulate`'s options but mu (an axis here).
+/// In bounce_sweep.cpp.
+const Fields<BounceSweepOptions>& bounce_sweep_fields();
 
 /// The map of a finished sweep for a notebook: axis k has axis_values[k] (the grid order:
 /// the last axis varies fastest), output j is outputs[j] with one value per cell in that

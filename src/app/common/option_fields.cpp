@@ -50,6 +50,9 @@ FieldType field_type(const FieldRef& r) {
         else if constexpr (std::is_same_v<T, std::optional<std::string>>) return {"text", true};
         else if constexpr (std::is_same_v<T, std::vector<std::string>>) return {"texts"};
         else if constexpr (std::is_same_v<T, std::vector<double>>) return {"numbers"};
+        else if constexpr (std::is_same_v<T, std::optional<sweep::Axis>>) return {"range", true};
+        else if constexpr (std::is_same_v<T, sweep::ValueOrAxis>) return {"number or range"};
+        else if constexpr (std::is_same_v<T, sweep::Shard>) return {"shard"};
         else return {"choice"};  // report::PlotlyMode
       },
       r);
@@ -59,8 +62,15 @@ nlohmann::json field_value(const FieldRef& r) {
   return std::visit(
       [](auto* p) -> nlohmann::json {
         using T = std::remove_cvref_t<decltype(*p)>;
+        const auto range = [](const sweep::Axis& a) { return nlohmann::json::array({a.lo, a.hi, a.count}); };
         if constexpr (std::is_same_v<T, report::PlotlyMode>) {
           return std::string(report::to_string(*p));
+        } else if constexpr (std::is_same_v<T, std::optional<sweep::Axis>>) {
+          return *p ? range(**p) : nlohmann::json(nullptr);
+        } else if constexpr (std::is_same_v<T, sweep::ValueOrAxis>) {
+          return p->axis ? range(*p->axis) : nlohmann::json(p->value);
+        } else if constexpr (std::is_same_v<T, sweep::Shard>) {
+          return nlohmann::json::array({p->index, p->count});
         } else if constexpr (std::is_same_v<T, std::optional<double>> || std::is_same_v<T, std::optional<int>> ||
                              std::is_same_v<T, std::optional<std::string>>) {
           return *p ? nlohmann::json(**p) : nlohmann::json(nullptr);

@@ -21,6 +21,7 @@
 #include "numerics/error.hpp"
 #include "numerics/physical_range.hpp"
 #include "report/plotly_script.hpp"
+#include "sweep/grid.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -39,7 +40,8 @@ namespace tribolab::app {
 /// The field of one options object a declaration names, by its C++ type.
 using FieldRef = std::variant<double*, int*, unsigned*, std::int64_t*, std::uint64_t*, std::optional<double>*,
                               std::optional<int>*, std::string*, std::optional<std::string>*, bool*,
-                              std::vector<std::string>*, std::vector<double>*, report::PlotlyMode*>;
+                              std::vector<std::string>*, std::vector<double>*, report::PlotlyMode*,
+                              std::optional<sweep::Axis>*, sweep::ValueOrAxis*, sweep::Shard*>;
 
 /// What a field is to a form: a value, the input files (positional on the command line), a
 /// path written by the command, the report pair (`--report`, `--plotly`), or a value only a
@@ -160,14 +162,17 @@ void check_ranges(const O& o, const Fields<O>& fields) {
 }
 
 /// The type of a field as the schema names it: "number", "integer", "text", "flag", "numbers",
-/// "texts" (lists), "choice" for PlotlyMode; `nullable` when unset means automatic (std::optional).
+/// "texts" (lists), "choice" for PlotlyMode; a sweep's "range" (sweep::Axis: lo, hi, count; the
+/// command line's LO:HI:COUNT), "number or range" (sweep::ValueOrAxis) and "shard" (index,
+/// count; i/N); `nullable` when unset means automatic (std::optional).
 struct FieldType {
   std::string name;
   bool nullable = false;
 };
 FieldType field_type(const FieldRef& r);
 
-/// The field's current value as JSON (null: an unset optional).
+/// The field's current value as JSON (null: an unset optional; a range [lo, hi, count], a shard
+/// [index, count], a number or range its value or its range).
 nlohmann::json field_value(const FieldRef& r);
 
 /// The schema of one declared field, its default read from `defaults`: name, type, nullable,

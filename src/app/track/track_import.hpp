@@ -54,6 +54,20 @@ struct TrackImportOptions {
   std::string out;                 ///< tidy CSV track,frame,t,x,y (s, m); empty: not written
 };
 
+/// The declaration of every option of `track import` (app/common/option_fields.hpp): the
+/// command line and Python (`tribolab.track.load`) bind from it.
+inline const Fields<TrackImportOptions>& track_import_fields() {
+  using O = TrackImportOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.group(&O::input, track_input_fields());
+    d.add("track", &O::track, "", "keep only this track (repeatable; when not given: all)");
+    d.add("out", &O::out, "", "write the tidy CSV here (columns track,frame,t,x,y)").as(FieldRole::output_path);
+    return d;
+  }();
+  return f;
+}
+
 struct TrackImportResult {
   nlohmann::json json;              ///< what `track import --json` prints
   std::vector<track::Track> tracks; ///< per track its points: frame, t (s), x, y (m)

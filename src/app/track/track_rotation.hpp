@@ -31,6 +31,29 @@ struct TrackRotationOptions {
   std::string out;              ///< CSV frame,t,x,y,theta,radius,omega,sigma_omega; empty: not written
 };
 
+/// The declaration of every option of `track rotation` (app/common/option_fields.hpp): the
+/// command line and Python bind from it.
+inline const Fields<TrackRotationOptions>& track_rotation_fields() {
+  using O = TrackRotationOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.group(&O::input, track_input_fields());
+    d.add("track", &O::track, "", "track of the turning point (required when the file has several)");
+    d.add("pivot_x", &O::pivot_x, "m", "pivot x, with pivot_y (when not given: fitted to the track)");
+    d.add("pivot_y", &O::pivot_y, "m", "pivot y, with pivot_x");
+    d.add("moving_pivot", &O::moving_pivot, "", "fit a pivot moving uniformly (a rolling wheel's axle)");
+    d.add("window", &O::window, "", "points per local linear fit of the angle (the spin at each frame), >= 3");
+    d.add("t_from", &O::t_from, "s",
+          "first time used (when not given: the first point): only the part of the record that turns about the pivot")
+        .also_spelled("--from");
+    d.add("t_to", &O::t_to, "s", "last time used (when not given: the last point)").also_spelled("--to");
+    d.add("out", &O::out, "", "output CSV: frame,t,x,y,theta,radius,omega,sigma_omega (s, m, rad, rad/s)")
+        .as(FieldRole::output_path);
+    return d;
+  }();
+  return f;
+}
+
 struct TrackRotationResult {
   nlohmann::json json;          ///< what `track rotation --json` prints
   /// Per point: frame, t (s), x, y (m), theta about the pivot (rad, unwrapped), radius (m),

@@ -330,6 +330,30 @@ std::string series_output_name(std::size_t index, const std::string& input, std:
   return name.substr(0, name.size() - 5) + extension;
 }
 
+const Fields<TrackVideoInputsOptions>& track_video_inputs_fields() {
+  using S = TrackVideoInputsOptions;
+  static const Fields<S> f = [] {
+    Fields<S> d;
+    for (const Field<TrackVideoOptions>& g : track_video_fields()) {
+      if (g.name == "input") {
+        d.add("input", &S::input, "",
+              g.help + "; several: each tracked with the same options, its outputs named NN_<stem> in the output "
+                       "folder (and the write_trk folder)")
+            .as(FieldRole::input_files)
+            .needed();
+      } else if (g.name == "out") {
+        d.add_from(&S::each, g).help += " (with several inputs: a folder, created if missing, holding NN_<stem>.csv per video)";
+      } else if (g.name == "write_trk") {
+        d.add_from(&S::each, g).help += "; with several inputs: a folder holding NN_<stem>.trk per video";
+      } else {
+        d.add_from(&S::each, g);
+      }
+    }
+    return d;
+  }();
+  return f;
+}
+
 TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::vector<std::string>& inputs,
                                     const analysis::SeriesOptions& series) {
   namespace fs = std::filesystem;

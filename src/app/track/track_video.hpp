@@ -5,6 +5,7 @@
 #pragma once
 
 #include "analysis/series.hpp"
+#include "app/common/option_fields.hpp"
 #include "video/track_video.hpp"
 #include "report/plotly_script.hpp"
 
@@ -50,6 +51,55 @@ struct TrackVideoOptions {
   std::shared_ptr<video::TrackSession> session;
 };
 
+/// The declaration of every option of `track video` for one video (app/common/option_fields.hpp):
+/// Python and the several-video command line (track_video_inputs_fields) bind from it.
+inline const Fields<TrackVideoOptions>& track_video_fields() {
+  using O = TrackVideoOptions;
+  static const Fields<O> f = [] {
+    Fields<O> d;
+    d.add("input", &O::input, "", "video file (mp4, mov, avi, ...) or Tracker project .trk/.trz")
+        .as(FieldRole::input_files)
+        .needed();
+    d.add("out", &O::out, "", "output CSV: track,frame,t,x,y,x_px,y_px,score").as(FieldRole::output_path).needed();
+    d.add("start", &O::start, "",
+          "follow a textured point: NAME=X,Y[@FRAME] in image pixels (x right, y down), from FRAME (when not given: "
+          "the clip's first); repeatable");
+    d.add("ellipse", &O::ellipse, "",
+          "follow a ball or disc contrasting with its background as an ellipse: NAME=X,Y[@FRAME] inside it; gives "
+          "tracks NAME (centre), NAME.A and NAME.B (ends of the major axis); repeatable");
+    d.add("from_track", &O::from_track, "",
+          "Tracker project: follow this track from its first mark, and compare with its further marks; repeatable");
+    d.add("mark", &O::mark, "",
+          "correct a track: NAME@FRAME=X,Y in image pixels; the track passes there (reported manual, score 1) and "
+          "is re-tracked from it forward and backward; repeatable");
+    d.add("scale", &O::scale, "m/px", "plain video: metres per pixel");
+    d.add("calibrate", &O::calibrate, "", "plain video: a stick of known length, X1,Y1,X2,Y2,LENGTH (px, px, px, px, m)");
+    d.add("origin", &O::origin, "", "world origin in the image, X,Y px (when not given: the bottom-left pixel)");
+    d.add("axes_deg", &O::axes_deg, "deg", "world x-axis counter-clockwise from the image x-axis");
+    d.add("fps", &O::fps, "1/s", "frames per second of the video, overriding the container's (or the project's)");
+    d.add("time_scale", &O::time_scale, "", "real seconds per video second: 240 fps slow motion played at 30 fps is 0.125");
+    d.add("entry", &O::entry, "", "for a .trz: the .trk inside to use (when not given: the first)");
+    d.add("min_score", &O::min_score, "", "points: below this match score (0..1) a point is lost");
+    d.add("patch", &O::patch, "px",
+          "points: template side, odd (when not given: the object's size with the path tracker, 21 with the frame "
+          "tracker)");
+    d.add("point_tracker", &O::point_tracker, "",
+          "points: path (offline: best path through candidates in every frame, default) or frame (frame to frame, "
+          "with rotation search)")
+        .one_of({"path", "frame"});
+    d.add("search", &O::search, "px", "points: search half-width around the prediction (when not given: automatic)");
+    d.add("max_turn_deg", &O::max_turn_deg, "deg", "points: largest rotation of the pattern searched per frame");
+    d.add("ellipse_min_score", &O::ellipse_min_score, "", "ellipses: below this edge-fit quality (0..1) the object is lost");
+    d.add("max_gap", &O::max_gap, "",
+          "frames the motion model may bridge; beyond, an ellipse is given up and a point is searched for afresh");
+    d.add("write_trk", &O::write_trk, "",
+          "also write the tracks as a Tracker project, which opens in Tracker with its video").as(FieldRole::output_path);
+    d.add_report(&O::report, &O::plotly);
+    return d;
+  }();
+  return f;
+}
+
 struct TrackVideoResult {
   nlohmann::json json;                 ///< what `track video --json` prints
   /// Per output track: name, kind and rows (frame, t (s), x, y (m, px uncalibrated), x_px,
@@ -85,5 +135,16 @@ std::string series_output_name(std::size_t index, const std::string& input, std:
 /// `series`: threads and progress callback (analysis::SeriesOptions; default: all cores, none).
 TrackVideoSeries track_video_series(const TrackVideoOptions& base, const std::vector<std::string>& inputs,
                                     const analysis::SeriesOptions& series = {});
+
+/// `track video INPUT...` on the command line: one video, or several tracked with the same options.
+struct TrackVideoInputsOptions {
+  std::vector<std::string> input;  ///< videos or Tracker projects (required); several: a series
+  TrackVideoOptions each;          ///< every option shared by the inputs (its `input` is not used)
+};
+
+/// The declaration of `track video INPUT...` (the command line binds from it): the one-video
+/// fields (track_video_fields) in their order, `input` as a list, and `out`/`write_trk` saying
+/// what they name with several inputs (a folder).
+const Fields<TrackVideoInputsOptions>& track_video_inputs_fields();
 
 }  // namespace tribolab::app
