@@ -43,7 +43,40 @@ std::string BounceAnalyzeOptions::validate() const {
 namespace {
 
 
-/// Fits the line and parabola of rows [begin, end) with s = t - t0.
+/// y = c0 + c1 s + c2 s^2 with c2 given (value c2, variance var_c2: another flight's fit):
+/// the line through y - c2 s^2, whose coefficients move with c2 by a = -(X^T X)^-1 X^T s^2, so
+/// cov(c0, c1, c2) = [[C_line + var_c2 a a^T, var_c2 a], [var_c2 a^T, var_c2]]. C_line is
+/// scaled by the track's noise_y, not the residuals' of a few points (6 degrees of freedom
+/// put sigma 2x too low in 1 run of 60) (docs/theory.md#bounce-analysis, "short post-impact flight").
+numerics::PolyFit fit_parabola_with_curvature(const std::vector<double>& s, const std::vector<double>& y,
+                                              const SegmentFit::GivenCurvature& given, const std::string& what) {
+  const double c2 = given.c2, var_c2 = given.var_c2;
+  std::vector<double> rest(y.size());
+  for (std::size_t i = 0; i < y.size(); ++i) rest[i] = y[i] - c2 * s[i] * s[i];
+  auto line = numerics::fit_polynomial(s, rest, 1, what);
+  if (line.noise > 0 && given.noise_y > 0) line.covariance *= (given.noise_y / line.noise) * (given.noise_y / line.noise);
+  const auto n = static_cast<Eigen::Index>(s.size());
+  Eigen::MatrixXd X(n, 2);
+  Eigen::VectorXd s2(n);
+  for (Eigen::Index i = 0; i < n; ++i) X(i, 0) = 1, X(i, 1) = s[static_cast<std::size_t>(i)], s2(i) = X(i, 1) * X(i, 1);
+  const Eigen::Vector2d a = -(X.transpose() * X).ldlt().solve(X.transpose() * s2);
+  numerics::PolyFit f = line;
+  f.coef.push_back(c2);
+  f.covariance = Eigen::MatrixXd::Zero(3, 3);
+  f.covariance.topLeftCorner(2, 2) = line.covariance + var_c2 * a * a.transpose();
+  f.covariance.block(0, 2, 2, 1) = var_c2 * a;
+  f.covariance.block(2, 0, 1, 2) = var_c2 * a.transpose();
+  f.covariance(2, 2) = var_c2;
+  f.sigma = {std::sqrt(f.covariance(0, 0)), std::sqrt(f.covariance(1, 1)), std::sqrt(var_c2)};
+  double mean = 0, tot = 0, res = 0;
+  for (double v : y) mean += v / static_cast<double>(y.size());
+  for (std::size_t i = 0; i < y.size(); ++i) tot += (y[i] - mean) * (y[i] - mean), res += (y[i] - f(s[i])) * (y[i] - f(s[i]));
+  f.r_squared = tot > 0 ? 1 - res / tot : 1.0;
+  return f;
+}
+
+/// Fits the line and parabola of rows [begin, end) with s = t - t0; the parabola's curvature
+/// is seg.given_c2 when that is set (a flight too short to measure gravity).
 void fit_segment(const std::vector<track::RigidBodyRow>& rows, SegmentFit& seg, double t0,
                  const char* what) {
   std::vector<double> s, x, y;
@@ -53,7 +86,8 @@ void fit_segment(const std::vector<track::RigidBodyRow>& rows, SegmentFit& seg, 
     y.push_back(rows[i].yc);
   }
   seg.x_line = numerics::fit_polynomial(s, x, 1, std::string(what) + " x(t)");
-  seg.y_parabola = numerics::fit_polynomial(s, y, 2, std::string(what) + " y(t)");
+  seg.y_parabola = seg.given_c2 ? fit_parabola_with_curvature(s, y, *seg.given_c2, std::string(what) + " y(t)")
+                                : numerics::fit_polynomial(s, y, 2, std::string(what) + " y(t)");
 }
 
 /// Apex of y = c0 + c1 s + c2 s^2 (c2 < 0): s* = -c1 / (2 c2), y* = c0 - c1^2 / (4 c2).
@@ -100,6 +134,7 @@ void trim_contact_frames(const std::vector<track::RigidBodyRow>& rows, SegmentFi
 void check_gravity(const std::vector<track::RigidBodyRow>& rows, BounceAnalysis& r) {
   double wx = 0, sx = 0, wy = 0, sy = 0;
   for (const SegmentFit* seg : {&r.pre, &r.post}) {
+    if (seg->given_c2) continue;  // its curvature is the other flight's: no measurement of g
     std::vector<double> s, x;
     for (std::size_t i = seg->begin; i < seg->end; ++i) {
       s.push_back(rows[i].t - r.impact_time);
@@ -453,6 +488,28 @@ void estimate_floor_and_e_height(const FloorFromFlights& ff, BounceAnalysis& r) 
   if (r.floor_method == FloorMethod::bracket) r.e_height = r.sigma_e_height = NAN;
 }
 
+/// The pre-impact flight's fitted curvature for the post-impact flight, with the track's noise.
+SegmentFit::GivenCurvature pre_curvature(const SegmentFit& pre, double noise_y) {
+  return {pre.y_parabola.coef[2], pre.y_parabola.covariance(2, 2), noise_y};
+}
+
+/// A post-impact flight too short to measure gravity (a low hop ended by the next touch: the
+/// issue-27 throw at 60 deg, -10 rad/s, 0.7 m leaves at 0.23 m/s and lands again 8 frames
+/// later) leaves its free parabola's curvature, and with it the velocity at the separation,
+/// undetermined. The ball flies freely in both flights under the same gravity, seen by the same
+/// camera: when the free fit's acceleration is uncertain by more than a quarter of the
+/// pre-impact flight's, the post-impact parabola takes the pre-impact curvature (with its
+/// variance) and fits only its position and velocity. The free fit's sigma of 2 c2 grows as
+/// n^-1/2 T^-2: a post flight of 0.1 s or more at 5 mm of noise stays far below the limit.
+/// docs/theory.md#bounce-analysis ("short post-impact flight").
+void use_pre_gravity_if_post_too_short(const std::vector<track::RigidBodyRow>& rows, double t0, BounceAnalysis& r) {
+  fit_segment(rows, r.pre, t0, "pre-impact");
+  fit_segment(rows, r.post, t0, "post-impact");
+  const double a_pre = 2 * r.pre.y_parabola.coef[2], sigma_a_post = 2 * r.post.y_parabola.sigma[2];
+  constexpr double kMaxRelativeSigma = 0.25;
+  if (!(sigma_a_post <= kMaxRelativeSigma * std::abs(a_pre))) r.post.given_c2 = pre_curvature(r.pre, r.impacts.noise_y);
+}
+
 /// One pass of the flight fits (docs/theory.md#bounce-analysis): both flights fitted about
 /// the detector's time, then about the time their parabolas meet; the flights described
 /// there; the orientation and collision angle at that time; the floor and e_height; the
@@ -461,6 +518,7 @@ void fit_flights_once(const std::vector<track::RigidBodyRow>& rows, const track:
                       const BounceAnalyzeOptions& options, double frame_dt, BounceAnalysis& r) {
   r.warnings.clear();
   fit_segment(rows, r.pre, imp.t, "pre-impact");
+  if (r.post.given_c2) r.post.given_c2 = pre_curvature(r.pre, r.post.given_c2->noise_y);
   fit_segment(rows, r.post, imp.t, "post-impact");
   const double t_imp = parabolas_meeting_time(rows, r, imp.t);
   r.impact_time = t_imp;
@@ -586,6 +644,7 @@ BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip
   // Noise of the centre: the track's robust estimate, floored (exact synthetic data).
   const double nx = std::max(r.impacts.noise_x, 1e-6), ny = std::max(r.impacts.noise_y, 1e-6);
   trim_contact_frames(rows, r.pre, true, nx, ny, kMinPoints);
+  use_pre_gravity_if_post_too_short(rows, imp.t, r);
   trim_contact_frames(rows, r.post, false, nx, ny, kMinPoints);
   r.pre.n_points = static_cast<int>(r.pre.end - r.pre.begin);
   r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
@@ -600,6 +659,14 @@ BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip
     if (!drop_frames_inside_contact(rows, r) || pass == 5) break;
   }
   require_plausible_floor(rows, options.ball, pre_trimmed_end, post_trimmed_begin, r);
+  if (r.post.given_c2) {
+    char buf[300];
+    std::snprintf(buf, sizeof buf,
+                  "the post-impact flight (%d frames, %.1f ms) is too short to measure gravity: its y parabola takes the "
+                  "pre-impact flight's acceleration (%.3f m/s^2), so e_velocity rests on that flight's gravity",
+                  r.post.n_points, 1e3 * (rows[r.post.end - 1].t - rows[r.post.begin].t), r.post.acceleration_y);
+    r.warnings.push_back(buf);
+  }
   check_gravity(rows, r);
   check_bounce_plausibility(options.ball, r);  // docs/theory.md#plausibility-checks
   if (!glitches.times.empty()) {

@@ -46,6 +46,15 @@ struct SegmentFit {
   int n_points = 0;                ///< end - begin
   numerics::PolyFit x_line;        ///< x = c0 + c1 s (m, m/s)
   numerics::PolyFit y_parabola;    ///< y = c0 + c1 s + c2 s^2 (m, m/s, m/s^2)
+  /// The post-impact parabola's curvature taken from the pre-impact flight when the
+  /// post-impact flight is too short to measure gravity (docs/theory.md#bounce-analysis,
+  /// "short post-impact flight"); empty: c2 fitted.
+  struct GivenCurvature {
+    double c2 = 0;       ///< m/s^2, about -4.9 (the pre-impact fit's)
+    double var_c2 = 0;   ///< its variance, (m/s^2)^2
+    double noise_y = 0;  ///< m: the centre track's y noise (robust, every frame), ~1-4 mm
+  };
+  std::optional<GivenCurvature> given_c2;
   track::SpinFit spin;             ///< theta = theta_ref + omega (t - t_ref)
   double vx = 0, sigma_vx = 0;     ///< at the impact time, m/s
   double vy = 0, sigma_vy = 0;     ///< at the impact time, m/s

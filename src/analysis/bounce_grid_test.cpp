@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -147,17 +148,20 @@ TEST(BounceGrid, TheIssuesThrowsAreAnalysed) {
   }
 }
 
-// Issue 27: at 0.7 m with 5 mm of noise the 60 deg / -10 rad/s throw rebounds at 0.23 m/s (a
-// 2.7 mm rise of the centre against ~3.7 mm of noise): where no impact is found the message said
-// "no significant velocity jump", which is false (vy goes from -3.4 m/s to about 0). Now it says
-// that the ball lands and shows no rebound flight. Every seed is either analysed with e within
-// 4 sigmas, or refused. Measured 3 Dec 2026 over seeds 1-20: 12 analysed; of the 8 refused, 4 say
-// there is no visible rebound, 3 that the fitted post-impact flight misses the floor (a hop this
-// low is a few noisy frames), and 1 (seed 4) keeps "no significant velocity jump": after its
-// lowest point its 5-point means rise by more than 3 noise sds. Not yet analysable: issue 27.
-TEST(BounceGrid, ALandingWithoutAVisibleReboundIsSaidSo) {
-  int refused = 0, said = 0;
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+// Issue 27: at 0.7 m with 5 mm of noise the 60 deg / -10 rad/s throw leaves the floor at
+// 0.23 m/s (e 0.069) and lands again 7-9 frames later (the video ends there): its centre rises
+// ~3 mm against ~3.5 mm of noise. A free parabola through those frames cannot tell the
+// velocity from the curvature: before, seeds 4 and 6 of 1-6 (8 of 20) were refused ("no
+// impact found") and the others analysed with sigma_e up to 0.3. Now the impact search and the
+// post-impact fit take the pre-impact flight's gravity for so short a flight
+// (docs/theory.md#bounce-analysis, "short post-impact flight"): every seed is analysed, e
+// within 3.5 of its sigmas (p = 5e-4 per seed for a normal error) and within 1 and 2 sigmas as
+// often as a normal error would (binomial, 3 sds). 40 seeds, 1.5 s.
+TEST(BounceGrid, TheLowHopOfALowReboundIsAnalysed) {
+  int n = 0, analysed = 0, z1 = 0, z2 = 0;
+  double max_z = 0;
+  const std::uint64_t seeds = std::getenv("TRIBOLAB_SLOW_TESTS") ? 200 : 40;
+  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
     SynthVideoOptions o;
     o.theta_deg = 60;
     o.omega = -10;
@@ -168,18 +172,24 @@ TEST(BounceGrid, ALandingWithoutAVisibleReboundIsSaidSo) {
     BounceAnalyzeOptions ao;
     ao.floor_y = 0;
     SCOPED_TRACE("seed " + std::to_string(seed));
+    ++n;
     try {
       const auto r = analyze_bounce(real_time(v.tip_a, 8), real_time(v.tip_b, 8), ao);
-      EXPECT_NEAR(r.e_velocity, -v.truth.separation.vy / v.truth.touch.vy, 4 * r.sigma_e_velocity);
+      ++analysed;
+      const double z = std::abs(r.e_velocity - (-v.truth.separation.vy / v.truth.touch.vy)) / r.sigma_e_velocity;
+      z1 += z <= 1;
+      z2 += z <= 2;
+      max_z = std::max(max_z, std::isfinite(z) ? z : 1e9);
+      EXPECT_LE(z, 3.5) << "e " << r.e_velocity << " +- " << r.sigma_e_velocity;
     } catch (const Error& e) {
-      ++refused;
-      const std::string m = e.what();
-      std::printf("seed %llu: %s\n", static_cast<unsigned long long>(seed), m.c_str());
-      said += m.find("no rebound flight the track can show") != std::string::npos;
+      ADD_FAILURE() << e.what();
     }
   }
-  std::printf("60 deg / -10 rad/s at 5 mm: %d of 20 seeds refused, %d saying there is no visible rebound\n", refused, said);
-  EXPECT_GT(said, 0);
+  std::printf("60 deg / -10 rad/s at 5 mm: %d of %d seeds analysed; |z| <= 1: %d, <= 2: %d; max |z| %.2f\n", analysed,
+              n, z1, z2, max_z);
+  EXPECT_EQ(analysed, n);
+  expect_coverage(z1, analysed, 0.6827, "within 1 sigma");
+  expect_coverage(z2, analysed, 0.9545, "within 2 sigma");
 }
 
 }  // namespace

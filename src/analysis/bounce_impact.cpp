@@ -61,7 +61,41 @@ std::optional<GapImpact> find_impact_across_gap(const track::Track& centre, cons
     if (best) return best;
     if (w == 0) break;
   }
-  return std::nullopt;
+  // Last, a short outgoing flight (a low hop ended by the next touch, or the end of the
+  // video): its own parabola cannot tell its velocity from its curvature under noise, while
+  // gravity is the incoming flight's. All the points on each side; the outgoing side is fitted
+  // by lines through x and through y less the incoming parabola's curvature term, so its
+  // velocity is measured as in analyze_bounce's short post-impact flight
+  // (docs/theory.md#bounce-analysis, "short post-impact flight").
+  std::optional<GapImpact> best;
+  std::vector<double> y_rest(n);
+  for (std::size_t k = 3; k + 1 + 4 <= n; ++k) {
+    for (std::size_t gap = 0; gap <= max_gap && k + 1 + gap + 4 <= n; ++gap) {
+      const std::size_t b = k + 1 + gap;
+      const double tm = 0.5 * (t[k] + t[b]);
+      const auto left = track::fit_polynomial(&t[0], &x[0], &y[0], static_cast<int>(k + 1), tm, 2);
+      if (!left.ok) continue;
+      for (std::size_t i = b; i < n; ++i) y_rest[i] = y[i] - left.c[1][2] * (t[i] - tm) * (t[i] - tm);
+      const auto right = track::fit_polynomial(&t[b], &x[b], &y_rest[b], static_cast<int>(n - b), tm, 1);
+      if (!right.ok) continue;
+      const double dvx = right.c[0][1] - left.c[0][1], dvy = right.c[1][1] - left.c[1][1];
+      const double f = left.var_unit(1) + right.var_unit(1);
+      const double sig = std::sqrt(dvx * dvx / (sx * sx * f) + dvy * dvy / (sy * sy * f));
+      if (!(left.c[1][1] < 0 && right.c[1][1] > 0)) continue;
+      if (!(sig > options.threshold) || !(std::hypot(dvx, dvy) > options.min_jump)) continue;
+      if (best && sig <= best->impact.significance) continue;
+      GapImpact g;
+      g.impact.index = k;
+      g.impact.frame = centre.points[k].frame;
+      g.impact.t = tm;
+      g.impact.dvx = dvx;
+      g.impact.dvy = dvy;
+      g.impact.significance = sig;
+      g.first_post = b;
+      best = g;
+    }
+  }
+  return best;
 }
 
 }  // namespace tribolab::analysis::detail
