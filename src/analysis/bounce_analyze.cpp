@@ -355,7 +355,7 @@ void describe_flight(const std::vector<track::RigidBodyRow>& rows, double t_imp,
 /// frame t4 (sure flight). h_pre falls through the floor at the touch and h_post rises through it at the
 /// separation, so  max(h_pre(t_imp), h_post(t_imp)) <= floor <= min(h_pre(t1), h_post(t4)).
 /// The bracket is wide (its lower end is the extrapolated flights' depth at the impulse
-/// centroid, ~1-2 cm for a rugby ball) but never wrong; give --floor-y for a sharp e_height.
+/// centroid, ~1-2 cm for a rugby ball) but never wrong; give floor_y for a sharp e_height.
 /// The estimate is the bracket's middle, its half-width w entering the uncertainty as a
 /// uniform error (sd w / sqrt 3).
 ///

@@ -626,7 +626,7 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
     a.notes.push_back("theta_c diagnostic skipped: the fitted motion does not stop (k >= 1), so v_y has no extremum");
   }
 
-  // The frame held aligned (--frame-rotation none) against data that show it turned: a turned
+  // The frame held aligned (frame_rotation none) against data that show it turned: a turned
   // frame biases mu and mimics normal friction (0.5 deg: mu +0.0045 = 13 sd, `present` in every
   // run), and the g check below then blames the frame rate. 3 sd, as the g check.
   a.frame_rotation_check = check_frame_rotation(track, o);

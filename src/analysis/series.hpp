@@ -41,7 +41,7 @@ struct SeriesOptions {
 };
 
 /// Why one run failed: the exception's whole message and, for an InputError, where it
-/// points ("file.csv:12", "--phi-deg"; empty when it named no place).
+/// points ("file.csv:12", "phi_deg"; empty when it named no place).
 struct RunError {
   std::string message;
   std::string where;

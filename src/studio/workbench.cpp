@@ -2,6 +2,7 @@
 
 #include "app/bounce/bounce_analyze.hpp"
 #include "app/common/result_keys.hpp"
+#include "app/common/spelled_json.hpp"
 #include "app/track/track_kinematics.hpp"
 #include "app/track/track_video.hpp"
 #include "io/atomic_file.hpp"
@@ -302,7 +303,7 @@ void Workbench::run_tracks() {
   o.session = session_;
   o.progress = [this](int done, int expected) { step(done, expected); };
   const app::TrackVideoResult r = app::track_video(o);
-  tracks_ = {{"summary", r.json}, {"series", series_json(r.series)}, {"csv", relative(o.out)}, {"trk", relative(o.write_trk)}};
+  tracks_ = {{"summary", app::plain_fields_json(r.json)}, {"series", series_json(r.series)}, {"csv", relative(o.out)}, {"trk", relative(o.write_trk)}};
   analysis_ = nullptr;  // it was of the tracks before
 }
 
@@ -338,7 +339,7 @@ json Workbench::analyze(const std::string& command, const json& values) {
     o.file = (root_ / tracks_["csv"].get<std::string>()).string();
     o.bounces_out = beside(".bounce.csv").string();
     const app::BounceAnalyzeResult r = app::bounce_analyze(o);
-    analysis_ = {{"command", command}, {"values", values}, {"result", r.json}, {"out", relative(o.bounces_out)},
+    analysis_ = {{"command", command}, {"values", values}, {"result", app::plain_fields_json(r.json)}, {"out", relative(o.bounces_out)},
                  {"results", app::result_keys_schema(app::bounce_analyze_result_keys())}};
     autosave();
     return state();
@@ -348,7 +349,7 @@ json Workbench::analyze(const std::string& command, const json& values) {
   o.input.file = (root_ / tracks_["csv"].get<std::string>()).string();
   o.out = beside(".kinematics.csv").string();
   const app::TrackKinematicsResult r = app::track_kinematics(o);
-  analysis_ = {{"command", command}, {"values", values}, {"result", r.json}, {"out", relative(o.out)},
+  analysis_ = {{"command", command}, {"values", values}, {"result", app::plain_fields_json(r.json)}, {"out", relative(o.out)},
                {"results", app::result_keys_schema(app::track_kinematics_result_keys())}};
   autosave();
   return state();

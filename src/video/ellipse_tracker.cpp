@@ -471,15 +471,15 @@ std::string EllipseTracker::loss_hint() const {
   if (s.weak_frames >= s.empty_frames) {
     hint = "in " + std::to_string(s.weak_frames) +
            " frame(s) the ball's outline was found near its predicted place but fitted poorly (blur, a lossy "
-           "video's blocks and colour smearing, a partly hidden ball, a background of the ball's colour): a lower "
-           "--ellipse-min-score (e.g. 0.4) keeps such frames; check them in the report";
+           "video's blocks and colour smearing, a partly hidden ball, a background of the ball's colour): a lower " +
+           field("ellipse_min_score") + " (e.g. 0.4) keeps such frames; check them in the report";
   } else {
     hint = "in " + std::to_string(s.empty_frames) +
            " frame(s) nothing of the ball's outline was found near its predicted place (hidden, out of view, or "
-           "a bounce faster than the motion model): a larger --max-gap bridges a hidden ball";
+           "a bounce faster than the motion model): a larger " + field("max_gap") + " bridges a hidden ball";
   }
   if (s.given_up_frames > 0) {
-    hint += "; given up after more than --max-gap (" + std::to_string(s.options.max_gap_frames) +
+    hint += "; given up after more than " + field("max_gap") + " (" + std::to_string(s.options.max_gap_frames) +
             ") lost frames in a row, so the last " + std::to_string(s.given_up_frames) + " frame(s) were not searched";
   }
   return hint;
