@@ -49,7 +49,8 @@ video::Scene scene() {
   };
 }
 
-std::string film(const std::string& dir) {
+/// `the_scene` (the disc and ellipse of scene()) filmed to DIR/NAME.
+std::string film(const std::string& dir, const video::Scene& the_scene = scene(), const std::string& name = "film.avi") {
   video::RenderOptions o;
   o.width = 320;
   o.height = 240;
@@ -57,8 +58,8 @@ std::string film(const std::string& dir) {
   o.shutter_fraction = 0.3;
   o.background = video::RenderOptions::Background::plain;
   o.noise_sigma = 1;
-  const std::string path = dir + "/film.avi";
-  video::write_video(path, scene(), kFrames, o);
+  const std::string path = dir + "/" + name;
+  video::write_video(path, the_scene, kFrames, o);
   return path;
 }
 
@@ -224,20 +225,12 @@ TEST(TrackVideoCli, ALostTrackIsWarnedNamingTheFlagsThatHelp) {
   };
   {
     // The point tracker: the disc of film() gone after frame 11 (hidden or out of view).
-    video::RenderOptions o;
-    o.width = 320;
-    o.height = 240;
-    o.fps = kFps;
-    o.shutter_fraction = 0.3;
-    o.background = video::RenderOptions::Background::plain;
-    o.noise_sigma = 1;
     const video::Scene base = scene();
-    const std::string gone = dir + "/gone.avi";
-    video::write_video(gone, [&](double t) {
+    const std::string gone = film(dir, [&](double t) {
       auto shapes = base(t);
       if (t * kFps > 11.5) shapes.erase(shapes.begin());
       return shapes;
-    }, kFrames, o);
+    }, "gone.avi");
     const auto j = run_json("track video " + q(gone) + " --start 'mark=30,60' --scale 0.001 --out " + q(dir + "/p.csv"));
     ASSERT_EQ(j["warnings"].size(), 1u) << j.dump();
     EXPECT_EQ(j["tracks"]["mark"]["lost_ranges"], nlohmann::json::parse("[[12, 23]]"));

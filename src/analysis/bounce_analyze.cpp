@@ -10,6 +10,7 @@
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
 #include "numerics/units.hpp"
+#include "numerics/statistics.hpp"
 
 #include <Eigen/Dense>
 
@@ -281,8 +282,7 @@ track::Impact choose_impact(const track::Track& a, const track::Track& b, const 
 double median_frame_period(const std::vector<track::RigidBodyRow>& rows) {
   std::vector<double> dts;
   for (std::size_t i = 1; i < rows.size(); ++i) dts.push_back(rows[i].t - rows[i - 1].t);
-  std::nth_element(dts.begin(), dts.begin() + dts.size() / 2, dts.end());
-  return dts[dts.size() / 2];
+  return upper_median(std::move(dts));
 }
 
 /// Where the two fitted y parabolas (in s = t - t_detect) meet: the root nearest the

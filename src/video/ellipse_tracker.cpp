@@ -81,9 +81,7 @@ cv::Vec3d median_colour(const cv::Mat& img, const cv::Mat& mask) {
   }
   for (int k = 0; k < img.channels(); ++k) {
     auto& w = v[static_cast<std::size_t>(k)];
-    if (w.empty()) continue;
-    std::nth_element(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(w.size() / 2), w.end());
-    out[k] = w[w.size() / 2];
+    if (!w.empty()) out[k] = upper_median(std::move(w));
   }
   return out;
 }
@@ -98,8 +96,7 @@ double noise_sd(const cv::Mat& img) {
     for (int c = 0; c + 1 < img.cols; ++c) d.push_back(std::abs(p[(c + 1) * ch] - p[c * ch]));
   }
   if (d.empty()) return 0;
-  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-  return kMadToSd * d[d.size() / 2] / std::sqrt(2.0);
+  return kMadToSd * upper_median(std::move(d)) / std::sqrt(2.0);
 }
 
 std::string fmt_point(double x, double y) {
@@ -240,10 +237,8 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
     std::vector<cv::Mat> planes;
     cv::split(img(box).clone(), planes);
     for (int k = 0; k < img.channels(); ++k) {
-      std::vector<unsigned char> v(planes[static_cast<std::size_t>(k)].begin<unsigned char>(),
-                                   planes[static_cast<std::size_t>(k)].end<unsigned char>());
-      std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-      s.colour[k] = v[v.size() / 2];
+      s.colour[k] = upper_median(std::vector<unsigned char>(planes[static_cast<std::size_t>(k)].begin<unsigned char>(),
+                                                            planes[static_cast<std::size_t>(k)].end<unsigned char>()));
     }
   }
   const std::string no_object = "no contrasting object around the start point " + fmt_point(x_px, y_px) +

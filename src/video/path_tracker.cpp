@@ -4,6 +4,7 @@
 
 #include "numerics/error.hpp"
 #include "video/correlation_peak.hpp"
+#include "numerics/statistics.hpp"
 
 #include <opencv2/imgproc.hpp>
 
@@ -735,10 +736,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     if (chosen[t] >= 0 && !steps[t].c[chosen[t]].manual) path_fg.push_back(steps[t].c[chosen[t]].fg);
   }
   double typical_fg = 0;
-  if (!path_fg.empty()) {
-    std::nth_element(path_fg.begin(), path_fg.begin() + path_fg.size() / 2, path_fg.end());
-    typical_fg = path_fg[path_fg.size() / 2];
-  }
+  if (!path_fg.empty()) typical_fg = upper_median(std::move(path_fg));
   // Per run of consecutive path frames, its median difference (an object slowing down at the
   // turning point of a swing sits in the background median for a frame or two; a run of
   // still texture after a gap does throughout).
@@ -754,10 +752,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
       if (!steps[e].c[chosen[e]].manual) v.push_back(steps[e].c[chosen[e]].fg);
     }
     double run = typical_fg;  // a run of marks alone is not background
-    if (!v.empty()) {
-      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-      run = v[v.size() / 2];
-    }
+    if (!v.empty()) run = upper_median(std::move(v));
     for (int i = t; i < e; ++i) run_fg[i] = run;
     t = e;
   }
