@@ -5,6 +5,7 @@
 #include "help_wrap.hpp"
 #include "text_listing.hpp"
 
+#include "app/common/spelled_json.hpp"
 #include "numerics/error.hpp"
 
 #include <fmt/format.h>
@@ -15,15 +16,7 @@
 
 namespace tribolab::cli {
 
-nlohmann::json spelled_for_cli(const nlohmann::json& j) {
-  if (j.is_string()) return spell_fields(j.get<std::string>(), flag_of);
-  if (j.is_array() || j.is_object()) {
-    nlohmann::json out = j;
-    for (auto& v : out) v = spelled_for_cli(v);
-    return out;
-  }
-  return j;
-}
+nlohmann::json spelled_for_cli(const nlohmann::json& j) { return app::spelled_json(j, flag_of); }
 
 void print_result(const nlohmann::json& raw, bool as_json, const app::ResultKeys& keys) {
   const nlohmann::json result = spelled_for_cli(raw);

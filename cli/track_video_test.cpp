@@ -5,6 +5,7 @@
 #include "io/tracker_trk.hpp"
 #include "video/render.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -48,7 +49,8 @@ video::Scene scene() {
   };
 }
 
-std::string film(const std::string& dir) {
+/// `the_scene` (the disc and ellipse of scene()) filmed to DIR/NAME.
+std::string film(const std::string& dir, const video::Scene& the_scene = scene(), const std::string& name = "film.avi") {
   video::RenderOptions o;
   o.width = 320;
   o.height = 240;
@@ -56,8 +58,8 @@ std::string film(const std::string& dir) {
   o.shutter_fraction = 0.3;
   o.background = video::RenderOptions::Background::plain;
   o.noise_sigma = 1;
-  const std::string path = dir + "/film.avi";
-  video::write_video(path, scene(), kFrames, o);
+  const std::string path = dir + "/" + name;
+  video::write_video(path, the_scene, kFrames, o);
   return path;
 }
 
@@ -195,6 +197,64 @@ TEST(TrackVideoCli, HelpListsEveryOption) {
                           "--origin", "--axes-deg", "--fps", "--time-scale", "--write-trk", "--report", "--json"}) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
   }
+}
+
+/// The flags `--name` a text names, in order.
+std::vector<std::string> flags_in(const std::string& text) {
+  std::vector<std::string> flags;
+  for (std::size_t p = text.find("--"); p != std::string::npos; p = text.find("--", p + 2)) {
+    std::size_t e = p + 2;
+    while (e < text.size() && (std::islower(static_cast<unsigned char>(text[e])) || text[e] == '-')) ++e;
+    flags.push_back(text.substr(p, e - p));
+  }
+  return flags;
+}
+
+TEST(TrackVideoCli, ALostTrackIsWarnedNamingTheFlagsThatHelp) {
+  // The core names the options that help as fields (field("max_gap"), numerics/error.hpp); the
+  // command line spells them as its flags, in the JSON, the listing and on stderr, each one a
+  // flag of `track video`, and no field mark (a control character) reaches the user.
+  const std::string dir = temp_dir("tv_lost");
+  const std::string help = run_tribolab("track video --help").out;
+  const auto check = [&](const std::string& warning, const std::vector<std::string>& must) {
+    for (const std::string& flag : must) EXPECT_NE(warning.find(flag), std::string::npos) << flag << " in " << warning;
+    for (const std::string& flag : flags_in(warning))
+      EXPECT_NE(help.find(" " + flag + " "), std::string::npos) << flag << " is no flag of track video: " << warning;
+    EXPECT_EQ(warning.find_first_of("\x1e\x1f"), std::string::npos) << warning;
+    EXPECT_EQ(warning.find("max_gap"), std::string::npos) << warning;
+  };
+  {
+    // The point tracker: the disc of film() gone after frame 11 (hidden or out of view).
+    const video::Scene base = scene();
+    const std::string gone = film(dir, [&](double t) {
+      auto shapes = base(t);
+      if (t * kFps > 11.5) shapes.erase(shapes.begin());
+      return shapes;
+    }, "gone.avi");
+    const auto j = run_json("track video " + q(gone) + " --start 'mark=30,60' --scale 0.001 --out " + q(dir + "/p.csv"));
+    ASSERT_EQ(j["warnings"].size(), 1u) << j.dump();
+    EXPECT_EQ(j["tracks"]["mark"]["lost_ranges"], nlohmann::json::parse("[[12, 23]]"));
+    check(j["warnings"][0].get<std::string>(), {"track 'mark': lost", "a larger --search or --max-gap", "--point-tracker frame"});
+  }
+  // The ellipse tracker: a ball filmed by `bounce render` leaving a 160 px view, given up
+  // after --max-gap 1 lost frames (python/tests/test_track.py: the same film, max_gap).
+  const std::string film_path = dir + "/ball.avi", truth = dir + "/truth.csv";
+  const auto film = run_json("bounce render --out " + q(film_path) + " --truth " + q(truth) +
+                             " --size 160x120 --fps 60 --height 0.5 --vx 3 --after 0.3 --scale 0.006 --background plain");
+  ASSERT_TRUE(film.is_object());
+  const track::Track ball = io::read_tracks(truth).find("ball");
+  const double ox = film["origin_px"][0].get<double>(), oy = film["origin_px"][1].get<double>();
+  const auto& p6 = ball.points.at(6);  // frame 6: the whole ball in view
+  const std::string args = "track video " + q(film_path) + " --scale 0.006 --origin " + std::to_string(ox) + "," +
+                           std::to_string(oy) + " --ellipse 'ball=" + std::to_string(ox + p6.x / 0.006) + "," +
+                           std::to_string(oy - p6.y / 0.006) + "@6' --max-gap 1 --out " + q(dir + "/e.csv");
+  const auto j = run_json(args);
+  ASSERT_EQ(j["warnings"].size(), 1u) << j.dump();
+  check(j["warnings"][0].get<std::string>(), {"track 'ball': lost", "--max-gap (1)", "--ellipse-min-score"});
+  const auto listing = run_tribolab(args);  // the text listing and stderr spell them too
+  EXPECT_EQ(listing.exit_code, 0) << listing.err;
+  check(listing.err, {"tribolab: warning: track 'ball': lost", "--max-gap (1)"});
+  check(listing.out, {"--max-gap (1)"});
 }
 
 TEST(TrackVideoCli, BadInputIsOneErrorLineAndNoOutputFile) {

@@ -105,7 +105,8 @@ def test_report_plotly_keyword(tmp_path):
     cdn = tmp_path / "c.html"
     tribolab.incline.predict(**LAUNCH, report=str(cdn), plotly="cdn")
     assert 'integrity="sha384-' in cdn.read_text(encoding="utf-8")
-    with pytest.raises(ValueError, match="--plotly"):
+    # The keyword, not the command line's --plotly (docs/design.md "Errors").
+    with pytest.raises(ValueError, match=r"^plotly: 'web' is not one of embed, cdn, file$"):
         tribolab.incline.predict(**LAUNCH, report=str(tmp_path / "x.html"), plotly="web")
     assert not (tmp_path / "x.html").exists()
 

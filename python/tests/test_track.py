@@ -100,3 +100,28 @@ def test_defaults_are_the_cli_defaults():
     assert (p["method"].default, p["window"].default, p["order"].default, p["impacts"].default) == \
         ("tracker", 7, 2, "auto")
     assert inspect.signature(tribolab.track.load).parameters["time_scale"].default == 1.0
+
+
+def test_a_lost_track_is_warned_naming_the_keywords_that_help(tmp_path, cli):
+    # The core names the options that help as fields (numerics/error.hpp); Python spells them as
+    # its keywords (max_gap, ellipse_min_score), never the command line's --max-gap, and no
+    # field mark (a control character) is left in the text. The same film as
+    # cli/track_video_test.cpp: a ball leaving a 160 px view, given up after max_gap=1 lost frames.
+    import csv
+
+    film, truth = str(tmp_path / "ball.avi"), str(tmp_path / "truth.csv")
+    r = tribolab.bounce.render(out=film, truth=truth, size="160x120", fps=60, height=0.5, vx=3, after=0.3,
+                               scale=0.006, background="plain")
+    ox, oy = r["origin_px"]
+    x, y = [(float(p["x"]), float(p["y"])) for p in csv.DictReader(open(truth)) if p["track"] == "ball"][6]
+    origin, ellipse = f"{ox},{oy}", f"ball={ox + x / 0.006},{oy - y / 0.006}@6"  # frame 6: the whole ball in view
+    out = str(tmp_path / "e.csv")
+    result = tribolab.track.video(film, scale=0.006, origin=origin, ellipse=[ellipse], max_gap=1, out=out)
+    [warning] = result["warnings"]
+    assert warning.startswith("track 'ball': lost"), warning
+    assert "given up after more than max_gap (1) lost frames" in warning, warning
+    assert "a lower ellipse_min_score" in warning, warning
+    assert "--" not in warning and "\x1e" not in warning and "\x1f" not in warning, warning
+    cli_json = cli("track", "video", film, "--scale", "0.006", "--origin", origin, "--ellipse", ellipse,
+                   "--max-gap", "1", "--out", out)
+    assert warning == as_keywords(cli_json["warnings"][0])

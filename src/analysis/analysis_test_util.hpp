@@ -11,7 +11,7 @@
 
 namespace tribolab::analysis::testing {
 
-/// Tracks in real time (undoes the synthetic slow-motion factor, as --time-scale does).
+/// Tracks in real time (undoes the synthetic slow-motion factor, as time_scale does).
 inline track::Track real_time(track::Track t, double factor) {
   for (auto& p : t.points) p.t /= factor;
   return t;

@@ -10,6 +10,7 @@
 #include "numerics/error.hpp"
 #include "numerics/roots.hpp"
 #include "numerics/units.hpp"
+#include "numerics/statistics.hpp"
 
 #include <Eigen/Dense>
 
@@ -316,8 +317,7 @@ track::Impact choose_impact(const track::Track& a, const track::Track& b, const 
 double median_frame_period(const std::vector<track::RigidBodyRow>& rows) {
   std::vector<double> dts;
   for (std::size_t i = 1; i < rows.size(); ++i) dts.push_back(rows[i].t - rows[i - 1].t);
-  std::nth_element(dts.begin(), dts.begin() + dts.size() / 2, dts.end());
-  return dts[dts.size() / 2];
+  return upper_median(std::move(dts));
 }
 
 /// Where the two fitted y parabolas (in s = t - t_detect) meet: the root nearest the
@@ -390,7 +390,7 @@ void describe_flight(const std::vector<track::RigidBodyRow>& rows, double t_imp,
 /// frame t4 (sure flight). h_pre falls through the floor at the touch and h_post rises through it at the
 /// separation, so  max(h_pre(t_imp), h_post(t_imp)) <= floor <= min(h_pre(t1), h_post(t4)).
 /// The bracket is wide (its lower end is the extrapolated flights' depth at the impulse
-/// centroid, ~1-2 cm for a rugby ball) but never wrong; give --floor-y for a sharp e_height.
+/// centroid, ~1-2 cm for a rugby ball) but never wrong; give floor_y for a sharp e_height.
 /// The estimate is the bracket's middle, its half-width w entering the uncertainty as a
 /// uniform error (sd w / sqrt 3).
 ///

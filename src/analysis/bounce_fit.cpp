@@ -5,6 +5,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
+#include "numerics/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -52,9 +53,7 @@ void weigh_by_uncertainties(const std::vector<BounceRow>& rows, const BounceFitO
     }
     for (int c = 0; c < 3; ++c) sd[3 * i + static_cast<std::size_t>(c)] = std::sqrt(var[c]);
   }
-  std::vector<double> sorted = sd;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-  const double ref = sorted[sorted.size() / 2];
+  const double ref = upper_median(sd);
   for (std::size_t k = 0; k < sd.size(); ++k) weight[k] = ref / sd[k];
 }
 
@@ -237,11 +236,7 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
       e_rows.push_back(-r.vy_out / r.vy_in);
       v_rows.push_back(std::abs(r.vy_in));
     }
-    auto median = [](std::vector<double> v) {
-      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-      return v[v.size() / 2];
-    };
-    const double e_med = std::clamp(median(e_rows), 0.05, 0.99);
+    const double e_med = std::clamp(upper_median(e_rows), 0.05, 0.99);
     auto second = params;
     if (o.restitution_model) {
       second[2].initial = e_med;
@@ -254,7 +249,7 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
       const double D = 2 * zeta * std::sqrt(std::exp(params[0].initial) * o.ball.mass);
       second[2].initial = std::clamp(std::log(D), std::log(1e-6), std::log(1e10));
     } else {
-      const double chi = bounce::hunt_crossley_chi_v(e_med) / median(v_rows);
+      const double chi = bounce::hunt_crossley_chi_v(e_med) / upper_median(v_rows);
       second[2].initial = std::clamp(std::log(chi * std::exp(params[0].initial)), std::log(1e-6), std::log(1e10));
     }
     auto alt = numerics::fit_least_squares(residuals, 3 * N, second, fo);

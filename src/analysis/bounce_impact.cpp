@@ -2,6 +2,7 @@
 #include "analysis/bounce_impact.hpp"
 
 #include "track/local_fit.hpp"
+#include "numerics/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,20 +13,17 @@ namespace tribolab::analysis::detail {
 std::optional<GapImpact> find_impact_across_gap(const track::Track& centre, const track::ImpactResult& found,
                                                 const track::ImpactOptions& options) {
   const std::size_t n = centre.points.size();
-  std::vector<double> t(n), x(n), y(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    t[i] = centre.points[i].t;
-    x[i] = centre.points[i].x;
-    y[i] = centre.points[i].y;
-  }
+  const track::TrackColumns columns = track::columns_of(centre);
+  const std::vector<double>& t = columns.t;
+  const std::vector<double>& x = columns.x;
+  const std::vector<double>& y = columns.y;
   if (n < 8) return std::nullopt;
   const double sx = std::max(found.noise_x, options.min_noise), sy = std::max(found.noise_y, options.min_noise);
   if (!(sx > 0 && sy > 0)) return std::nullopt;
   // The frame period (median): gaps of up to 0.1 s, longer than any bounce's contact.
   std::vector<double> dts;
   for (std::size_t i = 1; i < n; ++i) dts.push_back(t[i] - t[i - 1]);
-  std::nth_element(dts.begin(), dts.begin() + static_cast<std::ptrdiff_t>(dts.size() / 2), dts.end());
-  const double dt = dts[dts.size() / 2];
+  const double dt = upper_median(std::move(dts));
   const auto max_gap = static_cast<std::size_t>(std::clamp(0.1 / std::max(dt, 1e-12), 1.0, 200.0));
   // Windows of w points on each side, w doubling; then (w = 0) all the points on each side:
   // no other impact was detected, so each side is one flight.

@@ -2,7 +2,7 @@
 // restitution against the collision angle with error bars and a binned trend (its figure 32),
 // energies before/after and the mean normal force per run (figures 49, 50), the contact-point
 // speed at touch against the angle (figure 52), runs with e > 1 and whether significantly so,
-// outliers named, and the runs as rows of `bounce fit`'s table (--bounces-out).
+// outliers named, and the runs as rows of `bounce fit`'s table (`bounces_out`).
 // docs/theory.md#bounce-series.
 #pragma once
 

@@ -225,7 +225,7 @@ void locate_touch(const BounceAnalyzeOptions& options, double frame_dt, double t
   r.pre.energy.translational_y = 0.5 * ball.mass * r.vy_touch * r.vy_touch;
   r.post.energy.translational_y = 0.5 * ball.mass * r.vy_separation * r.vy_separation;
   if (method == FloorMethod::bracket) {
-    // Without --floor-y or --contact-duration the floor is only bracketed, and at high frame
+    // Without floor_y or contact_duration the floor is only bracketed, and at high frame
     // rates the bracket is wrong (late contact frames pass as flight): over 200 synthetic
     // runs at 240 fps the intervals from it held simulate's angle in 68 and e in 89 (e biased
     // +0.012). No honest uncertainty can be stated: the sigmas are null and no mean force.

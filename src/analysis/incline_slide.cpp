@@ -4,6 +4,7 @@
 #include "numerics/message_number.hpp"
 #include "track/outliers.hpp"
 #include "numerics/units.hpp"
+#include "numerics/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -60,8 +61,7 @@ SlideResult mu_from_slide(const track::Track& tracked, const SlideOptions& o) {
   // Noise from second differences of s (robust: median absolute value / 0.6745 / sqrt(6)).
   std::vector<double> dd;
   for (std::size_t i = 1; i + 1 < n; ++i) dd.push_back(std::abs(s[i + 1] - 2 * s[i] + s[i - 1]));
-  std::nth_element(dd.begin(), dd.begin() + dd.size() / 2, dd.end());
-  const double noise = dd.empty() ? 0.0 : dd[dd.size() / 2] / 0.6745 / std::sqrt(6.0);
+  const double noise = dd.empty() ? 0.0 : upper_median(dd) / 0.6745 / std::sqrt(6.0);
   const double range = *std::max_element(s.begin(), s.end()) - *std::min_element(s.begin(), s.end());
   const double threshold = std::max(5 * noise, 0.02 * range);
   const std::string stuck =

@@ -33,7 +33,7 @@ std::vector<std::optional<RunError>> run_each(std::size_t n, const std::function
     try {
       job(i);
     } catch (const Error& e) {  // InputError or SolverError
-      errors[i] = RunError{e.what(), e.where()};
+      errors[i] = RunError{e.message(field), e.where()};  // its fields kept marked: each front end spells them
     } catch (const std::exception& e) {
       errors[i] = RunError{e.what(), {}};
     } catch (...) {

@@ -40,8 +40,9 @@ struct SeriesOptions {
   std::string validate() const;
 };
 
-/// Why one run failed: the exception's whole message and, for an InputError, where it
-/// points ("file.csv:12", "--phi-deg"; empty when it named no place).
+/// Why one run failed: the exception's whole message, its fields still marked (field("max_gap"),
+/// numerics/error.hpp: each front end spells them), and, for an InputError, where it points
+/// ("file.csv:12", "phi_deg"; empty when it named no place).
 struct RunError {
   std::string message;
   std::string where;

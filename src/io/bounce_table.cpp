@@ -22,8 +22,8 @@ std::string shortest(double v) {
 
 constexpr std::array<const char*, 7> kColumns = {"theta_deg", "vx_in", "vy_in", "omega_in",
                                                  "vx_out", "vy_out", "omega_out"};
-/// Optional columns: the standard uncertainties of the seven above (bounce analyze
-/// --bounces-out writes them; tables without them stay unweighted in bounce fit).
+/// Optional columns: the standard uncertainties of the seven above (bounce analyze's
+/// bounces_out writes them; tables without them stay unweighted in bounce fit).
 constexpr std::array<const char*, 7> kSigmaColumns = {"sigma_theta_deg", "sigma_vx_in", "sigma_vy_in", "sigma_omega_in",
                                                       "sigma_vx_out", "sigma_vy_out", "sigma_omega_out"};
 constexpr std::array<double analysis::BounceRow::*, 7> kSigmaFields = {

@@ -65,7 +65,7 @@ double metres_per_unit(const std::string& unit, const std::string& where) {
 
 void finish_import(track::TrackSet& set, const ImportOptions& options) {
   if (const auto err = options.validate(); !err.empty()) throw InputError(err);
-  // Two tracks of one name: --track could pick only the first, a series would mix them up.
+  // Two tracks of one name: the option `track` could pick only the first, a series would mix them up.
   std::map<std::string, std::size_t> first_of;
   for (std::size_t i = 0; i < set.tracks.size(); ++i) {
     const auto [it, fresh] = first_of.emplace(set.tracks[i].name, i);

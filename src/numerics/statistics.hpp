@@ -1,10 +1,14 @@
-// Order statistics shared by every layer: one median and one MAD scale, so that a robust
-// noise estimate means the same thing in the tracker, the impact finder and the fits.
+// Order statistics shared by every layer: the median, the upper median and one MAD scale, so
+// that a robust noise estimate means the same thing in the tracker, the impact finder and the
+// fits.
 #pragma once
+
+#include "numerics/error.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace tribolab {
@@ -22,6 +26,18 @@ inline double median(std::vector<double> v) {
   double m = *mid;
   if (v.size() % 2 == 0) m = 0.5 * (m + *std::max_element(v.begin(), mid));
   return m;
+}
+
+/// The upper median: the element at index n/2 of the sorted sample, i.e. the middle value, or
+/// the upper of the middle pair for an even count; always a value of the sample (a pixel
+/// level, a score, a frame period), as the trackers and the robust scales of the fits take it.
+/// The sample must not be empty (callers say what an empty one means). O(n).
+template <class T>
+T upper_median(std::vector<T> v) {
+  TRIBOLAB_ASSERT(!v.empty(), std::string("upper_median of an empty sample"));
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
 }
 
 /// Robust standard deviation of a sample about its median: kMadToSd * MAD. NaN when empty.

@@ -19,7 +19,7 @@ std::string_view plotly_package();
 std::string_view plotly_package_file();
 
 /// SHA-384 of plotly_js() as 96 lower-case hex digits, computed by CMake from the vendored
-/// file (embed_plotly.cmake); the integrity attribute of `--plotly cdn` is made from it.
+/// file (embed_plotly.cmake); the integrity attribute of the `cdn` mode (PlotlyMode) is made from it.
 std::string_view plotly_sha384_hex();
 
 /// tribolab version (the CMake project version, e.g. "0.1.0").

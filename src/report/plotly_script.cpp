@@ -25,7 +25,7 @@ PlotlyMode parse_plotly_mode(std::string_view text) {
   for (PlotlyMode m : {PlotlyMode::embed, PlotlyMode::cdn, PlotlyMode::file}) {
     if (text == to_string(m)) return m;
   }
-  throw InputError("--plotly", "'" + std::string(text) + "' is not one of embed, cdn, file");
+  throw InputError(field("plotly"), "'" + std::string(text) + "' is not one of embed, cdn, file");
 }
 
 std::string plotly_file_name() { return "plotly-" + std::string(plotly_version()) + ".min.js"; }

@@ -1,4 +1,4 @@
-// How a report gets Plotly.js (`--plotly embed|cdn|file`, docs/cli.md#plotly-in-reports):
+// How a report gets Plotly.js (the field `plotly`: embed|cdn|file, docs/cli.md#plotly-in-reports):
 //
 //   embed  the library inside the page (about 4.8 MB): one file that works offline (default);
 //   cdn    a <script src> to the same pinned version on jsDelivr, with a sha384 integrity
@@ -17,13 +17,13 @@ enum class PlotlyMode { embed, cdn, file };
 /// "embed", "cdn" or "file".
 std::string_view to_string(PlotlyMode mode);
 
-/// The mode named `text` ("embed", "cdn", "file"); InputError naming --plotly otherwise.
+/// The mode named `text` ("embed", "cdn", "file"); InputError naming the field `plotly` otherwise.
 PlotlyMode parse_plotly_mode(std::string_view text);
 
-/// "plotly-<version>.min.js", the name of the shared script of `--plotly file`.
+/// "plotly-<version>.min.js", the name of the shared script of the `file` mode.
 std::string plotly_file_name();
 
-/// The pinned URL of `--plotly cdn`: jsDelivr's copy of the npm package the build embeds
+/// The pinned URL of the `cdn` mode: jsDelivr's copy of the npm package the build embeds
 /// (plotly.js-dist-min@<version>/plotly.min.js), byte for byte the vendored file.
 std::string plotly_cdn_url();
 

@@ -151,8 +151,10 @@ TEST(PlotlyMode, ParsesTheThreeNamesAndRejectsOthersNamingTheOption) {
     parse_plotly_mode("web");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("--plotly"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("embed, cdn, file"), std::string::npos) << e.what();
+    // The field, which each front end spells: the command line --plotly, Python plotly.
+    EXPECT_EQ(e.where(), "plotly");
+    EXPECT_EQ(e.message([](std::string_view f) { return "<" + std::string(f) + ">"; }),
+              "<plotly>: 'web' is not one of embed, cdn, file");
   }
 }
 

@@ -15,6 +15,8 @@
 #include <cmath>
 #include <thread>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <unistd.h>
 
@@ -24,12 +26,21 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+std::string slurp_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 class WorkbenchTest : public ::testing::Test {
  protected:
   void SetUp() override {
     root = fs::temp_directory_path() / ("studio_workbench_test_" + std::to_string(::getpid()));
     fs::create_directories(root);
     root = fs::canonical(root);
+    film(root / "patch.avi", kFrames);
+  }
+  /// The disc with its mark crossing at 6 px per frame, gone from frame `gone_from` on.
+  static void film(const fs::path& path, int gone_from) {
     video::RenderOptions o;
     o.width = 320;
     o.height = 240;
@@ -37,7 +48,8 @@ class WorkbenchTest : public ::testing::Test {
     o.shutter_fraction = 0.3;
     o.background = video::RenderOptions::Background::plain;
     o.noise_sigma = 1;
-    const auto scene = [](double t) {
+    const auto scene = [gone_from](double t) {
+      if (t * 50 > gone_from - 0.5) return std::vector<video::ShapePose>{};
       video::ShapePose disc;
       disc.cx_px = 30 + 6 * t * 50;  // 6 px per frame
       disc.cy_px = 60;
@@ -47,7 +59,7 @@ class WorkbenchTest : public ::testing::Test {
       disc.mark_size_px = 15;
       return std::vector<video::ShapePose>{disc};
     };
-    video::write_video((root / "patch.avi").string(), scene, kFrames, o);
+    video::write_video(path.string(), scene, kFrames, o);
   }
   void TearDown() override { fs::remove_all(root); }
   static constexpr int kFrames = 12;
@@ -94,6 +106,24 @@ TEST_F(WorkbenchTest, ClickTracksSavesAndReopens) {
   EXPECT_EQ(restored["starts"][0]["name"], "patch");
   EXPECT_EQ(restored["tracks"]["series"][0]["rows"].size(), static_cast<std::size_t>(kFrames));
   EXPECT_EQ(restored["analysis"]["result"]["points"], kFrames);
+}
+
+TEST_F(WorkbenchTest, ALostTrackIsWarnedNamingTheFieldsNotFlags) {
+  // The core names the options that help as fields (field("max_gap"), numerics/error.hpp): the
+  // page shows them by their field names, as its forms do, never as the marks' control
+  // characters or the command line's --max-gap; so does the autosave.
+  film(root / "gone.avi", 6);
+  Workbench wb(root);
+  wb.open(root / "gone.avi");
+  const json s = wb.track({"patch", "point", 30, 60, 0, {}});
+  std::string lost;
+  for (const json& w : s["tracks"]["summary"]["warnings"])
+    if (w.get<std::string>().rfind("track 'patch': lost", 0) == 0) lost = w.get<std::string>();
+  EXPECT_NE(lost.find("a larger search or max_gap"), std::string::npos) << s["tracks"]["summary"]["warnings"].dump();
+  const std::string saved = s.dump() + "\n" + slurp_file(root / "gone.avi.studio.json");
+  EXPECT_EQ(saved.find("--max-gap"), std::string::npos);
+  EXPECT_EQ(saved.find("\\u001e"), std::string::npos);  // a mark as JSON writes it
+  EXPECT_EQ(saved.find_first_of("\x1e\x1f"), std::string::npos);
 }
 
 TEST_F(WorkbenchTest, AMarkRetracksIsSavedAndBadMarksAreClearErrors) {

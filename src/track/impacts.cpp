@@ -41,9 +41,7 @@ double robust_noise(const std::vector<double>& t, const std::vector<double>& v) 
     }
     z.push_back(std::abs(d) / std::sqrt(norm2));
   }
-  auto mid = z.begin() + static_cast<std::ptrdiff_t>(z.size() / 2);
-  std::nth_element(z.begin(), mid, z.end());
-  return kMadToSd * *mid;
+  return kMadToSd * upper_median(std::move(z));
 }
 
 namespace {
@@ -186,12 +184,10 @@ SplitTest test_split(const std::vector<double>& t, const std::vector<double>& x,
 ImpactResult detect_impacts(const Track& track, const ImpactOptions& options) {
   if (const auto err = options.validate(); !err.empty()) throw InputError("impacts", err);
   const std::size_t n = track.points.size();
-  std::vector<double> t(n), x(n), y(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    t[i] = track.points[i].t;
-    x[i] = track.points[i].x;
-    y[i] = track.points[i].y;
-  }
+  const TrackColumns columns = columns_of(track);
+  const std::vector<double>& t = columns.t;
+  const std::vector<double>& x = columns.x;
+  const std::vector<double>& y = columns.y;
   ImpactResult result;
   result.noise_x = robust_noise(t, x);
   result.noise_y = robust_noise(t, y);

@@ -62,4 +62,17 @@ int frame_step(const Track& track) {
   return static_cast<int>(best);
 }
 
+TrackColumns columns_of(const Track& track) {
+  TrackColumns c;
+  c.t.reserve(track.points.size());
+  c.x.reserve(track.points.size());
+  c.y.reserve(track.points.size());
+  for (const TrackPoint& p : track.points) {
+    c.t.push_back(p.t);
+    c.x.push_back(p.x);
+    c.y.push_back(p.y);
+  }
+  return c;
+}
+
 }  // namespace tribolab::track

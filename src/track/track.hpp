@@ -51,4 +51,11 @@ void validate_track(const Track& track, const std::string& where);
 /// a gap (missing points).
 int frame_step(const Track& track);
 
+/// A track's times and positions as three columns, in point order (what the local fits and
+/// filters take).
+struct TrackColumns {
+  std::vector<double> t, x, y;  ///< s, m, m
+};
+TrackColumns columns_of(const Track& track);
+
 }  // namespace tribolab::track

@@ -42,12 +42,6 @@ bool sample(const cv::Mat& img, double x, double y, double& value) {
   return true;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 /// Algebraic fit (OpenCV's AMS, Taubin-like, low bias) on points centred first so that
 /// single precision loses nothing; false when the points do not make an ellipse.
@@ -81,7 +75,7 @@ bool robust_fit(std::vector<cv::Point2d> pts, EdgeFit& fit) {
     absd.reserve(pts.size());
     const Prepared q(e);
     for (const auto& p : pts) absd.push_back(std::abs(q.distance(p.x, p.y)));
-    const double sd = kMadToSd * median(absd);
+    const double sd = kMadToSd * upper_median(absd);
     const double cut = std::max(3 * sd, 0.25);
     std::vector<cv::Point2d> kept;
     for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -149,11 +143,11 @@ std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, 
   e.a = a0, e.b = b0;
   for (int it = 0; it < 12; ++it) {
     residuals();
-    if (!step(4.685 * std::max(kMadToSd * median(absd), 0.1), 1e-4)) break;
+    if (!step(4.685 * std::max(kMadToSd * upper_median(absd), 0.1), 1e-4)) break;
   }
   for (int it = 0; it < 8; ++it) {
     residuals();
-    if (!step(std::min(1.2, 4.685 * std::max(kMadToSd * median(absd), 0.1)), shape_sd_px)) break;
+    if (!step(std::min(1.2, 4.685 * std::max(kMadToSd * upper_median(absd), 0.1)), shape_sd_px)) break;
   }
   if (e.a < e.b) std::swap(e.a, e.b), e.psi += kPi / 2;
   e.psi = std::remainder(e.psi, kPi);
@@ -162,7 +156,7 @@ std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, 
   for (double a : absd) {
     if (a < 1.2) near.push_back(a);
   }
-  const double cut = std::max(3 * kMadToSd * median(near), 0.3);
+  const double cut = std::max(3 * kMadToSd * (near.empty() ? 0.0 : upper_median(near)), 0.3);
   std::vector<cv::Point2d> kept;
   for (std::size_t i = 0; i < n; ++i) {
     if (absd[i] <= cut) kept.push_back(pts[i]);

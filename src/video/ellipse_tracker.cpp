@@ -81,9 +81,7 @@ cv::Vec3d median_colour(const cv::Mat& img, const cv::Mat& mask) {
   }
   for (int k = 0; k < img.channels(); ++k) {
     auto& w = v[static_cast<std::size_t>(k)];
-    if (w.empty()) continue;
-    std::nth_element(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(w.size() / 2), w.end());
-    out[k] = w[w.size() / 2];
+    if (!w.empty()) out[k] = upper_median(std::move(w));
   }
   return out;
 }
@@ -98,8 +96,7 @@ double noise_sd(const cv::Mat& img) {
     for (int c = 0; c + 1 < img.cols; ++c) d.push_back(std::abs(p[(c + 1) * ch] - p[c * ch]));
   }
   if (d.empty()) return 0;
-  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-  return kMadToSd * d[d.size() / 2] / std::sqrt(2.0);
+  return kMadToSd * upper_median(std::move(d)) / std::sqrt(2.0);
 }
 
 std::string fmt_point(double x, double y) {
@@ -240,10 +237,8 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
     std::vector<cv::Mat> planes;
     cv::split(img(box).clone(), planes);
     for (int k = 0; k < img.channels(); ++k) {
-      std::vector<unsigned char> v(planes[static_cast<std::size_t>(k)].begin<unsigned char>(),
-                                   planes[static_cast<std::size_t>(k)].end<unsigned char>());
-      std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-      s.colour[k] = v[v.size() / 2];
+      s.colour[k] = upper_median(std::vector<unsigned char>(planes[static_cast<std::size_t>(k)].begin<unsigned char>(),
+                                                            planes[static_cast<std::size_t>(k)].end<unsigned char>()));
     }
   }
   const std::string no_object = "no contrasting object around the start point " + fmt_point(x_px, y_px) +
@@ -471,15 +466,15 @@ std::string EllipseTracker::loss_hint() const {
   if (s.weak_frames >= s.empty_frames) {
     hint = "in " + std::to_string(s.weak_frames) +
            " frame(s) the ball's outline was found near its predicted place but fitted poorly (blur, a lossy "
-           "video's blocks and colour smearing, a partly hidden ball, a background of the ball's colour): a lower "
-           "--ellipse-min-score (e.g. 0.4) keeps such frames; check them in the report";
+           "video's blocks and colour smearing, a partly hidden ball, a background of the ball's colour): a lower " +
+           field("ellipse_min_score") + " (e.g. 0.4) keeps such frames; check them in the report";
   } else {
     hint = "in " + std::to_string(s.empty_frames) +
            " frame(s) nothing of the ball's outline was found near its predicted place (hidden, out of view, or "
-           "a bounce faster than the motion model): a larger --max-gap bridges a hidden ball";
+           "a bounce faster than the motion model): a larger " + field("max_gap") + " bridges a hidden ball";
   }
   if (s.given_up_frames > 0) {
-    hint += "; given up after more than --max-gap (" + std::to_string(s.options.max_gap_frames) +
+    hint += "; given up after more than " + field("max_gap") + " (" + std::to_string(s.options.max_gap_frames) +
             ") lost frames in a row, so the last " + std::to_string(s.given_up_frames) + " frame(s) were not searched";
   }
   return hint;

@@ -45,8 +45,8 @@ class EllipseTracker {
   EllipseObservation start(const Frame& first, double x_px, double y_px, const std::string& name);
   EllipseObservation update(const Frame& frame);
   /// Why frames were lost, and the option that helps, for the warning listing them (empty
-  /// when none was lost): a weak edge fit (blur, lossy video: --ellipse-min-score) or nothing
-  /// found near the prediction (hidden: --max-gap); and whether the tracker gave up.
+  /// when none was lost): a weak edge fit (blur, lossy video: field("ellipse_min_score")) or nothing
+  /// found near the prediction (hidden: field("max_gap")); and whether the tracker gave up.
   std::string loss_hint() const;
   /// The user's mark of the centre for this frame (instead of update()): reported at the mark,
   /// manual, score 1, with the running axes and the predicted orientation; the motion model

@@ -4,6 +4,7 @@
 
 #include "numerics/error.hpp"
 #include "video/correlation_peak.hpp"
+#include "numerics/statistics.hpp"
 
 #include <opencv2/imgproc.hpp>
 
@@ -234,16 +235,17 @@ std::string PathTracker::Impl::main_loss_hint() const {
   if (m.lost_background > std::max({m.lost_none, m.lost_rival, m.lost_score})) {
     return "in " + std::to_string(m.lost_background) +
            " frame(s) the best match did not stand out from the still background (the object hidden or at rest): "
-           "a larger --max-gap bridges a hidden object";
+           "a larger " + field("max_gap") + " bridges a hidden object";
   }
   if (m.lost_rival >= std::max(m.lost_none, m.lost_score)) {
     return "a look-alike within reach made " + std::to_string(m.lost_rival) +
-           " frame(s) doubtful: start on a more distinctive mark, or a smaller --search";
+           " frame(s) doubtful: start on a more distinctive mark, or a smaller " + field("search");
   }
   if (m.lost_score >= m.lost_none) {
     return "the object matched its first look poorly in " + std::to_string(m.lost_score) +
-           " frame(s) (blur, a lossy video, a turning or growing object): a lower --min-score (e.g. 0.4) or another --patch; "
-           "for a mark that turns (on a wheel), --point-tracker frame";
+           " frame(s) (blur, a lossy video, a turning or growing object): a lower " + field("min_score") +
+           " (e.g. 0.4) or another " + field("patch") + "; for a mark that turns (on a wheel), " + field("point_tracker") +
+           " frame";
   }
   if (m.lost_end > m.lost_none - m.lost_end) {
     // The track ended: after its last point nothing within reach that resembles the object's
@@ -251,11 +253,13 @@ std::string PathTracker::Impl::main_loss_hint() const {
     return "after frame " + std::to_string(m.end_frame) + " (the path's last point) nothing within reach that " +
            "resembled the object's first look continued its motion in the " + std::to_string(m.lost_end) +
            " frame(s) left "
-           "(the object left the view or was hidden, moved more than --search px per frame, or turned or changed "
-           "its look): a larger --search or --max-gap; for an object that turns, --point-tracker frame";
+           "(the object left the view or was hidden, moved more than " + field("search") +
+           " px per frame, or turned or changed its look): a larger " + field("search") + " or " + field("max_gap") +
+           "; for an object that turns, " + field("point_tracker") + " frame";
   }
   return "the object was not found in " + std::to_string(m.lost_none) +
-         " frame(s) (hidden, out of view, or moving more than --search px per frame): a larger --search or --max-gap";
+         " frame(s) (hidden, out of view, or moving more than " + field("search") + " px per frame): a larger " +
+         field("search") + " or " + field("max_gap");
 }
 
 PathTracker::PathTracker(const PathTrackerOptions& options) : impl_(std::make_unique<Impl>()) {
@@ -732,10 +736,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     if (chosen[t] >= 0 && !steps[t].c[chosen[t]].manual) path_fg.push_back(steps[t].c[chosen[t]].fg);
   }
   double typical_fg = 0;
-  if (!path_fg.empty()) {
-    std::nth_element(path_fg.begin(), path_fg.begin() + path_fg.size() / 2, path_fg.end());
-    typical_fg = path_fg[path_fg.size() / 2];
-  }
+  if (!path_fg.empty()) typical_fg = upper_median(std::move(path_fg));
   // Per run of consecutive path frames, its median difference (an object slowing down at the
   // turning point of a swing sits in the background median for a frame or two; a run of
   // still texture after a gap does throughout).
@@ -751,10 +752,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
       if (!steps[e].c[chosen[e]].manual) v.push_back(steps[e].c[chosen[e]].fg);
     }
     double run = typical_fg;  // a run of marks alone is not background
-    if (!v.empty()) {
-      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-      run = v[v.size() / 2];
-    }
+    if (!v.empty()) run = upper_median(std::move(v));
     for (int i = t; i < e; ++i) run_fg[i] = run;
     t = e;
   }
@@ -822,7 +820,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
   }
   // Confirmation (the M-of-N rule of radar tracking): a run of fewer than kMinRun consecutive
   // reported points, with lost frames on both sides (the start and a mark count as reported),
-  // is not confirmed by its neighbours' motion: lost. (CarInLoop with --patch 25: frame 2
+  // is not confirmed by its neighbours' motion: lost. (CarInLoop with patch 25: frame 2
   // alone between lost frames 1 and 3, 47 px from the human's mark.)
   for (std::size_t i = 0; i < obs.size();) {
     if (obs[i].lost) {
@@ -846,7 +844,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
   // Identity: a run of reported points whose last reported point before it (the start, or a
   // point of an earlier run) lies more than max_gap + 1 frames back is reached only through
   // doubtful path points: it may be anything that the template resembles. Lost, unless it holds
-  // a mark. (CarInLoop with --patch 75: the path hopped from the car, its points lost, to a
+  // a mark. (CarInLoop with patch 75: the path hopped from the car, its points lost, to a
   // still edge 390 px away and held it for 17 frames.)
   int last_reported = 0;  // step index; the start
   for (std::size_t i = 0; i < obs.size();) {
@@ -877,13 +875,14 @@ std::string PathTracker::loss_hint() const {
   std::string hint = m.main_loss_hint();
   if (m.lost_alone > 0) {
     hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_alone) +
-            " frame(s) found alone between lost frames were not confirmed by their neighbours' motion: "
-            "--mark one of them if it is right";
+            " frame(s) found alone between lost frames were not confirmed by their neighbours' motion: " +
+            field("mark") + " one of them if it is right";
   }
   if (m.lost_unlinked > 0) {
     hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_unlinked) +
-            " frame(s) were reached only across more than --max-gap frames without a reported point, so what was "
-            "found there may be something else: --mark one of them if it is right";
+            " frame(s) were reached only across more than " + field("max_gap") +
+            " frames without a reported point, so what was found there may be something else: " + field("mark") +
+            " one of them if it is right";
   }
   if (m.lost_ridge == 0) return hint;
   char bar[32];
@@ -891,7 +890,8 @@ std::string PathTracker::loss_hint() const {
   const std::string ridge = "in " + std::to_string(m.lost_ridge) +
                             " frame(s) the template matched all along a streak (motion blur, or a plain edge): the position "
                             "along it was uncertain by more than " + std::string(bar) +
-                            " px; a shorter exposure when filming helps, or mark those frames (--mark NAME@FRAME=X,Y)";
+                            " px; a shorter exposure when filming helps, or mark those frames (" + field("mark") +
+                            " NAME@FRAME=X,Y)";
   return hint.empty() ? ridge : hint + "; " + ridge;
 }
 

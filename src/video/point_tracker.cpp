@@ -9,6 +9,7 @@
 #include "video/correlation_peak.hpp"
 #include "numerics/units.hpp"
 #include "video/motion_model.hpp"
+#include "numerics/statistics.hpp"
 
 #include <opencv2/imgproc.hpp>
 
@@ -670,9 +671,8 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   // A sudden drop of the score below what this object scored lately means the view changed
   // (a hand partly over it, another object in the gate): lost rather than a biased position.
   if (recent_scores.size() >= 3) {
-    std::vector<double> sorted(recent_scores.begin(), recent_scores.end());
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    if (score < sorted[sorted.size() / 2] - kMaxScoreDrop) return lost_observation(frame.index, pred, score);
+    const double typical = upper_median(std::vector<double>(recent_scores.begin(), recent_scores.end()));
+    if (score < typical - kMaxScoreDrop) return lost_observation(frame.index, pred, score);
   }
   recent_scores.push_back(score);
   if (recent_scores.size() > 5) recent_scores.pop_front();

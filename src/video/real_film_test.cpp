@@ -2,6 +2,7 @@
 // project with human marks (../shared/data/tracker, not in git) is tracked from the first
 // human mark of its track, and the result is held against the other marks, as
 // tools/track_eval.py reports them.
+#include "numerics/error.hpp"
 #include "video/track_video.hpp"
 
 #include "video/test_videos.hpp"
@@ -49,7 +50,7 @@ void check(const RealTrack& r) {
               r.file, r.track, h.marks, h.frames, h.median_px, h.p90_px, h.max_px, h.to_correct, 100 * share,
               h.confidently_wrong);
   std::printf("  %dx%d, %d frames\n", res.input.info.width, res.input.info.height, res.frames);
-  for (const std::string& w : res.warnings) std::printf("  warning: %s\n", w.c_str());
+  for (const std::string& w : res.warnings) std::printf("  warning: %s\n", plain_fields(w).c_str());
   ASSERT_GT(h.marks, 0);
   EXPECT_LE(h.confidently_wrong, r.max_confidently_wrong);  // frames > 10 px from the human's mark with a score
   EXPECT_LE(share, kMaxCorrectShare);

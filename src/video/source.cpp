@@ -65,7 +65,7 @@ namespace {
 
 /// A scale of metres per pixel: from a microscope to a stadium seen by one pixel.
 constexpr PhysicalRange kScale{0, 1e3, "m/px", true};
-/// Largest image coordinate accepted for --origin and --calibrate points, px.
+/// Largest image coordinate accepted for `origin` and `calibrate` points, px.
 constexpr double kMaxPixel = 1e6;
 
 std::string point_error(const cv::Point2d& p, const std::string& name) {

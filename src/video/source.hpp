@@ -85,7 +85,7 @@ struct SourceOptions {
 };
 
 /// A video ready to track: what to decode, which frames, their times and the calibration,
-/// plus a Tracker project's own marks (in pixels) for --from-track.
+/// plus a Tracker project's own marks (in pixels) for `from_track`.
 struct VideoInput {
   VideoInfo info;
   Clip clip;
@@ -100,7 +100,7 @@ struct VideoInput {
   std::vector<track::Track> marks_px;
   std::vector<std::string> warnings;  ///< e.g. "no scale: positions are in pixels"
   std::shared_ptr<void> temp_owner;   ///< keeps an extracted temporary video alive
-  /// A plain video without --fps: from the first frame whose timestamp (the container's
+  /// A plain video without `fps`: from the first frame whose timestamp (the container's
   /// presentation time) departs from time.t(frame) by more than a quarter frame, frames take
   /// their timestamps (variable frame rate; FrameReader::warnings() says so).
   bool frame_times_from_timestamps = false;

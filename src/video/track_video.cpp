@@ -5,6 +5,7 @@
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
+#include "numerics/statistics.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -245,22 +246,7 @@ void summarise(TrackedSeries& s) {
     scores.push_back(r.score);
   }
   if (lost_from >= 0) s.lost_ranges.emplace_back(lost_from, lost_to);
-  if (!scores.empty()) {
-    const auto mid = scores.begin() + static_cast<std::ptrdiff_t>(scores.size() / 2);
-    std::nth_element(scores.begin(), mid, scores.end());
-    s.median_score = *mid;
-    if (scores.size() % 2 == 0) {
-      s.median_score = (s.median_score + *std::max_element(scores.begin(), mid)) / 2;
-    }
-  }
-}
-
-double median(std::vector<double> v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  double m = *mid;
-  if (v.size() % 2 == 0) m = (m + *std::max_element(v.begin(), mid)) / 2;
-  return m;
+  if (!scores.empty()) s.median_score = median(std::move(scores));
 }
 
 }  // namespace

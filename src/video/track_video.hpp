@@ -26,7 +26,7 @@ struct Target {
   double x_px = 0, y_px = 0;  ///< start position in image pixels
   int frame = -1;          ///< start frame (-1: the clip's first frame)
   std::string from_track;  ///< non-empty: start from this project track's first mark
-  /// The user's corrections (docs/cli.md#track-video, --mark): frames after the start, each
+  /// The user's corrections (docs/cli.md#track-video, `mark`): frames after the start, each
   /// reported as marked (manual, score 1), the tracking restarting from each; an ellipse's
   /// marks are of its centre.
   std::vector<ManualMark> marks;
@@ -142,7 +142,7 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
 /// forward: track afresh). Throws InputError for a bad mark, the session unchanged.
 std::optional<TrackVideoResult> retrack(TrackSession& session, const std::vector<Target>& targets);
 
-/// The tracked positions as a TrackSet (lost rows left out), for the analyses and --write-trk.
+/// The tracked positions as a TrackSet (lost rows left out), for the analyses and `write_trk`.
 track::TrackSet to_track_set(const TrackVideoResult& result);
 
 /// Writes the table track,frame,t,x,y,x_px,y_px,score (docs/cli.md#track-video): one row per
