@@ -599,17 +599,13 @@ void add_diagnostics(InclineAnalysis& a, const track::Track& track, const Inclin
     a.notes.push_back("theta_c diagnostic skipped: the fitted motion does not stop (k >= 1), so v_y has no extremum");
   }
 
-<<<<<<< HEAD
 }
 
 /// The warnings of data that contradict the physics or the given parameters (a turned frame,
 /// g, wild frames, an impossible mu) and of theta_c's optimistic sigma.
 void add_plausibility_warnings(InclineAnalysis& a, const track::Track& track, const InclineFitOptions& o) {
   const ModelBFit& b = a.model_b;
-  // The frame held aligned (--frame-rotation none) against data that show it turned: a turned
-=======
   // The frame held aligned (frame_rotation none) against data that show it turned: a turned
->>>>>>> noflag
   // frame biases mu and mimics normal friction (0.5 deg: mu +0.0045 = 13 sd, `present` in every
   // run), and the g check below then blames the frame rate. 3 sd, as the g check.
   a.frame_rotation_check = check_frame_rotation(track, o);

@@ -400,31 +400,10 @@ json Workbench::analyze(const std::string& command, const json& values) {
   if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");
   for (auto it = values.begin(); it != values.end(); ++it)
     if (set_by_the_studio(it.key())) throw InputError(field(it.key()), "is set by the studio: its tracks are in s and m");
-<<<<<<< HEAD
   const auto [result, out] = offered->run(values, (root_ / tracks_["csv"].get<std::string>()).string(),
                                           [this](const char* suffix) { return beside(suffix).string(); });
-  analysis_ = {{"command", command}, {"values", values}, {"result", result},
+  analysis_ = {{"command", command}, {"values", values}, {"result", app::plain_fields_json(result)},
                {"out", out.empty() ? json(nullptr) : json(relative(out))}, {"results", app::result_keys_schema(offered->results())}};
-=======
-  if (command == "bounce analyze") {
-    app::BounceAnalyzeOptions o;
-    apply_form_values(o, app::bounce_analyze_fields(), values);
-    o.file = (root_ / tracks_["csv"].get<std::string>()).string();
-    o.bounces_out = beside(".bounce.csv").string();
-    const app::BounceAnalyzeResult r = app::bounce_analyze(o);
-    analysis_ = {{"command", command}, {"values", values}, {"result", app::plain_fields_json(r.json)}, {"out", relative(o.bounces_out)},
-                 {"results", app::result_keys_schema(app::bounce_analyze_result_keys())}};
-    autosave();
-    return state();
-  }
-  app::TrackKinematicsOptions o;
-  apply_form_values(o, app::track_kinematics_fields(), values);
-  o.input.file = (root_ / tracks_["csv"].get<std::string>()).string();
-  o.out = beside(".kinematics.csv").string();
-  const app::TrackKinematicsResult r = app::track_kinematics(o);
-  analysis_ = {{"command", command}, {"values", values}, {"result", app::plain_fields_json(r.json)}, {"out", relative(o.out)},
-               {"results", app::result_keys_schema(app::track_kinematics_result_keys())}};
->>>>>>> noflag
   autosave();
   return state();
 }
