@@ -25,6 +25,28 @@ std::optional<GapImpact> find_impact_across_gap(const track::Track& centre, cons
   for (std::size_t i = 1; i < n; ++i) dts.push_back(t[i] - t[i - 1]);
   const double dt = upper_median(std::move(dts));
   const auto max_gap = static_cast<std::size_t>(std::clamp(0.1 / std::max(dt, 1e-12), 1.0, 200.0));
+  // The split after point k with the outgoing fit from point b: kept in `best` when it is a
+  // bounce (the centre falls before and rises after: a window reaching into the contact or
+  // across the apex fails this), its velocity jump is significant and larger than min_jump,
+  // and it is more significant than the best so far.
+  const auto offer = [&](std::optional<GapImpact>& best, const auto& left, const auto& right, std::size_t k,
+                         std::size_t b, double tm) {
+    const double dvx = right.c[0][1] - left.c[0][1], dvy = right.c[1][1] - left.c[1][1];
+    const double f = left.var_unit(1) + right.var_unit(1);
+    const double sig = std::sqrt(dvx * dvx / (sx * sx * f) + dvy * dvy / (sy * sy * f));
+    if (!(left.c[1][1] < 0 && right.c[1][1] > 0)) return;
+    if (!(sig > options.threshold) || !(std::hypot(dvx, dvy) > options.min_jump)) return;
+    if (best && sig <= best->impact.significance) return;
+    GapImpact g;
+    g.impact.index = k;
+    g.impact.frame = centre.points[k].frame;
+    g.impact.t = tm;
+    g.impact.dvx = dvx;
+    g.impact.dvy = dvy;
+    g.impact.significance = sig;
+    g.first_post = b;
+    best = g;
+  };
   // Windows of w points on each side, w doubling; then (w = 0) all the points on each side:
   // no other impact was detected, so each side is one flight.
   for (auto w = static_cast<std::size_t>(options.window);; w = 2 * w <= n ? 2 * w : 0) {
@@ -37,23 +59,7 @@ std::optional<GapImpact> find_impact_across_gap(const track::Track& centre, cons
         const auto left = track::fit_polynomial(&t[k + 1 - wl], &x[k + 1 - wl], &y[k + 1 - wl], static_cast<int>(wl), tm, 2);
         const auto right = track::fit_polynomial(&t[b], &x[b], &y[b], static_cast<int>(wr), tm, 2);
         if (!left.ok || !right.ok) continue;
-        const double dvx = right.c[0][1] - left.c[0][1], dvy = right.c[1][1] - left.c[1][1];
-        const double f = left.var_unit(1) + right.var_unit(1);
-        const double sig = std::sqrt(dvx * dvx / (sx * sx * f) + dvy * dvy / (sy * sy * f));
-        // A bounce: the centre falls before and rises after (a window reaching into the
-        // contact or across the apex fails this).
-        if (!(left.c[1][1] < 0 && right.c[1][1] > 0)) continue;
-        if (!(sig > options.threshold) || !(std::hypot(dvx, dvy) > options.min_jump)) continue;
-        if (best && sig <= best->impact.significance) continue;
-        GapImpact g;
-        g.impact.index = k;
-        g.impact.frame = centre.points[k].frame;
-        g.impact.t = tm;
-        g.impact.dvx = dvx;
-        g.impact.dvy = dvy;
-        g.impact.significance = sig;
-        g.first_post = b;
-        best = g;
+        offer(best, left, right, k, b, tm);
       }
     }
     if (best) return best;
@@ -76,21 +82,7 @@ std::optional<GapImpact> find_impact_across_gap(const track::Track& centre, cons
       for (std::size_t i = b; i < n; ++i) y_rest[i] = y[i] - left.c[1][2] * (t[i] - tm) * (t[i] - tm);
       const auto right = track::fit_polynomial(&t[b], &x[b], &y_rest[b], static_cast<int>(n - b), tm, 1);
       if (!right.ok) continue;
-      const double dvx = right.c[0][1] - left.c[0][1], dvy = right.c[1][1] - left.c[1][1];
-      const double f = left.var_unit(1) + right.var_unit(1);
-      const double sig = std::sqrt(dvx * dvx / (sx * sx * f) + dvy * dvy / (sy * sy * f));
-      if (!(left.c[1][1] < 0 && right.c[1][1] > 0)) continue;
-      if (!(sig > options.threshold) || !(std::hypot(dvx, dvy) > options.min_jump)) continue;
-      if (best && sig <= best->impact.significance) continue;
-      GapImpact g;
-      g.impact.index = k;
-      g.impact.frame = centre.points[k].frame;
-      g.impact.t = tm;
-      g.impact.dvx = dvx;
-      g.impact.dvy = dvy;
-      g.impact.significance = sig;
-      g.first_post = b;
-      best = g;
+      offer(best, left, right, k, b, tm);
     }
   }
   return best;
