@@ -31,7 +31,9 @@ inline const Fields<TrackInputOptions>& track_input_fields() {
     d.add("file", &O::file, "", "Tracker .trk/.trz, Tracker Export Data text, or CSV").as(FieldRole::input_files).needed();
     d.add("time_scale", &O::time_scale, "", "real seconds per file second (240 fps played at 30 fps: 0.125)")
         .in(ranges::time_scale);
-    d.add("length_unit", &O::length_unit, "", "unit of the file's lengths, overriding the file's (m, cm, mm, km, um, in, ft)");
+    d.add("length_unit", &O::length_unit, "",
+          "unit of the file's lengths, overriding the file's (m, cm, mm, km, um, in, ft; when not given: the file's "
+          "unit, else m)");
     d.add("entry", &O::entry, "", "for a .trz: the .trk inside to read (when not given: the first)");
     return d;
   }();
