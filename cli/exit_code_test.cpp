@@ -37,6 +37,10 @@ TEST(ExitCodes, EachClassOfErrorExitsAsDocsCliSays) {
       {sim + "--out '" + dir + "/missing/x.csv'", 1, "--out: directory '"},
       {sim + "--out '" + dir + "/x.csv' --report '" + dir + "/missing/x.html'", 1, "--report"},
       {"incline predict --mu 0.3 --phi-deg 95 --v0 2", 1, "--phi-deg"},  // physically impossible
+      // studio's options from their declaration (src/studio/studio_options.hpp): checked before serving
+      {"studio '" + dir + "/no-such-folder'", 1, "no such file or folder"},
+      {"studio '" + dir + "' --port 70000", 1, "--port"},
+      {"studio '" + dir + "' --port http", 1, "--port: malformed number"},
       {"track kinematics '" + film + "' --track A --method savgol --order 9 --out '" + dir + "/k.csv'", 1,
        "--order must be 1..6"},
   };

@@ -75,7 +75,7 @@ void collect(const CLI::App& app, const std::string& prefix, json& out) {
 std::string text_of(const json& commands) {
   std::string s;
   for (const json& c : commands) {
-    s += c["command"].get<std::string>() + (c["declared"].get<bool>() ? "" : "  (options not yet declared)") + "\n";
+    s += c["command"].get<std::string>() + "\n";
     for (const json& f : c.value("fields", json::array())) {
       const std::string flag = f["flag"].is_null() ? f["name"].get<std::string>() + " (Python only)" : f["flag"].get<std::string>();
       s += "  " + flag + "  " + f["type"].get<std::string>() +
@@ -97,12 +97,30 @@ std::string text_of(const json& commands) {
   return s;
 }
 
+/// `schema` has no option of its own but --json: an empty declaration, so that it is listed as
+/// declared like every other command, and its one result key.
+struct SchemaOptions {};
+
+const app::Fields<SchemaOptions>& schema_fields() {
+  static const app::Fields<SchemaOptions> f;
+  return f;
+}
+
+const app::ResultKeys& schema_result_keys() {
+  static const app::ResultKeys k = {
+      {"commands.*", "", "each command: its options, declared fields with types, units, defaults and ranges, result keys"},
+  };
+  return k;
+}
+
 }  // namespace
 
 void register_schema(CLI::App& root) {
   auto json_out = std::make_shared<bool>(false);
   auto* cmd = root.add_subcommand("schema", "Every command's options and result keys, with types, units, defaults and ranges "
                                             "(for forms and documentation)");
+  static SchemaOptions none;
+  add_declared_options(*cmd, none, schema_fields(), schema_result_keys());
   add_json_flag(*cmd, *json_out);
   cmd->callback([json_out, &root] {
     json commands = json::array();
