@@ -348,8 +348,11 @@ std::vector<Threshold> MapTracer::thresholds() const {
   const bool ratio_axis = st.grid.axes.back().quantity == Quantity::ratio;
   std::vector<Threshold> rows = st.rows_out;
   parallel_for(static_cast<std::int64_t>(st.pending.size()), st.options.threads, [&](std::int64_t q) {
-    const auto& [row, edge] = st.pending[static_cast<std::size_t>(q)];
-    Threshold& t = rows[row];
+    // Named members, not a structured binding: clang before 16 cannot capture a binding in the
+    // lambda below (the sanitizer tree is built with clang, docs/design.md#build-and-ci).
+    const auto& pending = st.pending[static_cast<std::size_t>(q)];
+    const auto& edge = pending.second;
+    Threshold& t = rows[pending.first];
     std::int64_t evaluations = 0;
     const ContourPoint p = st.refiner.refine(edge, evaluations);
     const CellInput in = st.grid.at([&] {

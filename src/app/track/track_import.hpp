@@ -47,9 +47,6 @@ io::ImportOptions import_options(const TrackInputOptions& input, std::vector<std
 /// Throws InputError naming the file and "--track" when the choice is ambiguous.
 const track::Track& choose_track(const track::TrackSet& set, const std::string& wanted);
 
-/// JSON number, null for NaN and infinities.
-nlohmann::json json_number(double v);
-
 struct TrackImportOptions {
   TrackInputOptions input;
   std::vector<std::string> track;  ///< keep only these tracks, in this order; empty: all

@@ -1,4 +1,5 @@
 #include "app/track/track_rigid_body.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 
 #include "app/common/output_paths.hpp"

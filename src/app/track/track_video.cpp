@@ -1,4 +1,5 @@
 #include "app/track/track_video.hpp"
+#include "app/common/json_number.hpp"
 #include "app/common/result_keys.hpp"
 
 #include "app/common/output_paths.hpp"
@@ -131,7 +132,7 @@ video::TrackVideoOptions build_options(const TrackVideoOptions& a) {
   }
   for (const auto& text : a.mark) {
     auto [name, m] = parse_mark(text);
-    const auto t = std::find_if(o.targets.begin(), o.targets.end(), [&](const video::Target& x) { return x.name == name; });
+    const auto t = std::find_if(o.targets.begin(), o.targets.end(), [&name = name](const video::Target& x) { return x.name == name; });
     if (t == o.targets.end()) {
       std::string names;
       for (const auto& x : o.targets) names += (names.empty() ? "'" : ", '") + x.name + "'";
