@@ -36,6 +36,14 @@ DEBUG_INFO ?= -g1
 CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 $(DEBUG_INFO) -DNDEBUG"
 # The benchmarks are built by `make bench` only: CI never runs them.
 BENCH ?= OFF
+# The library and program sources in unity batches of 8 (TRIBOLAB_UNITY_SOURCES): each batch
+# parses and instantiates Eigen, Ceres, CLI11 and OpenCV once instead of once per file, about
+# half the compiler time of a full build (docs/benchmarks.md#ci). The tree tested is the tree
+# shipped. Iterating on one file, `make build UNITY=OFF` recompiles that file alone.
+UNITY ?= ON
+# The test programs' own code at -O0 (TRIBOLAB_TEST_OPT): half the compiler time of a test batch
+# at -O2; the code under test keeps -O2. `make build TEST_OPT=` for the build type's level.
+TEST_OPT ?= -O0
 
 .PHONY: deps vendor build install test test-fast test-mpi asan fuzz demo bench clean
 
@@ -63,7 +71,8 @@ $(PLOTLY_JS): $(VENDOR)/package.json $(VENDOR)/package-lock.json
 # The main tree has MPI (one file sees it: src/app/sweep/sweep_mpi.cpp), so `make test` runs the
 # 2-rank sweep in this tree: no separate MPI build.
 build: deps
-	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_MPI=ON -DTRIBOLAB_BENCH=$(BENCH)
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_MPI=ON -DTRIBOLAB_BENCH=$(BENCH) \
+	  -DTRIBOLAB_UNITY_SOURCES=$(UNITY) -DTRIBOLAB_TEST_OPT=$(TEST_OPT)
 	cmake --build $(BUILD) -j $(JOBS)
 
 # The Python module into the platlib of Debian's /usr/bin/python3 (/usr/local/lib/python3.X/dist-packages).
@@ -102,17 +111,21 @@ fuzz-run-%:
 	  echo "fuzz_$* FAILED (the input is saved in $(FUZZ_BUILD)/)"; exit 1; \
 	fi
 
-# At -O2 like the main tree. -O1 compiles 1.5x faster (37 s against 54 s for
-# src/numerics/polyfit.cpp), but there ASan saw a free of memory Ceres' covariance had not
-# malloc-ed (bounce fit; likely Eigen template copies shared between our objects and
-# libceres, inlined at -O2), never seen at -O2 so far: to be understood before -O1 comes back.
-# The library and program sources in unity batches of 8 (TRIBOLAB_UNITY_SOURCES): each file
-# no longer parses and instantiates Eigen, Ceres, CLI11 and OpenCV again; the main tree, the
-# one shipped and the one a developer rebuilds file by file, keeps one object per source.
+# The sanitizer tree: clang's ASan + UBSan (GCC compiles the main tree, so CI compiles every
+# file with both). Under the sanitizers clang takes about half GCC's compiler time on our
+# files (docs/benchmarks.md#ci). The library and program sources at -O2 like the main tree, in
+# unity batches of 8; the test programs' own code at -O0 (3.3x less compiler time than at -O2
+# under the sanitizers; the code under test keeps -O2). The Ceres free ASan once reported at
+# -O1 was Eigen's sanitizer-only allocation offset meeting Debian's libceres (CMakeLists.txt,
+# EIGEN_MALLOC_ALREADY_ALIGNED).
 asan: deps
-	cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DTRIBOLAB_SANITIZE=ON -DTRIBOLAB_BENCH=OFF \
-	  -DTRIBOLAB_UNITY_SOURCES=ON
+	cmake -S . -B $(ASAN_BUILD) $(CMAKE_FLAGS) -DCMAKE_CXX_COMPILER=clang++ -DTRIBOLAB_SANITIZE=ON \
+	  -DTRIBOLAB_BENCH=OFF -DTRIBOLAB_UNITY_SOURCES=ON -DTRIBOLAB_TEST_OPT=-O0
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	@# The main tree's test times, when the sanitizer tree has none of its own: CTest starts the
+	@# longest tests first instead of ending on a 100 s coverage study run alone.
+	@mkdir -p $(ASAN_BUILD)/Testing/Temporary; cost=Testing/Temporary/CTestCostData.txt; \
+	  if [ -f $(BUILD)/$$cost ] && [ ! -f $(ASAN_BUILD)/$$cost ]; then cp $(BUILD)/$$cost $(ASAN_BUILD)/$$cost; fi
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
 
