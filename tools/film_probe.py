@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Why a marked point on real film is not followed: six probes held against the human's marks.
+"""Why a marked point on real film is not followed: seven probes held against the human's marks.
 
 issue 24, docs/benchmarks.md#tracking-on-real-film. For one track of a Tracker project whose
 video is an image sequence inside the .trz (CarInLoop.trz's `masa A`), each probe places the
@@ -17,6 +17,8 @@ with that help rules its method out for this clip:
               frame), searched within 80 px on the first step, then 30 px around a
               constant-velocity prediction; fb is the forward-backward error (Kalal et al. 2010);
   chain-mid   the same, started from the human's mark of --mid (a sharper frame), both ways;
+  mark-look   the template of the human's mark of --mid kept (not renewed, not turned), searched
+              as chain-mid: what a user's mark would add if it gave the path tracker its look;
   reblur      the other direction: the car as seen around the chain's point in a sharper frame k
               (201 px), turned to the start's heading and blurred by shutter * (|v0| - |vk|) along
               it (headings and speeds from the chain), is placed in the start frame; the click's
@@ -154,15 +156,17 @@ def probe_deblur(g, marks, p, f0, shutter):
     return out
 
 
-def chain(g, marks, p, f0, step, last):
-    """Frame-to-frame template from f0's mark towards `last`: {frame: (x, y, ncc, fb)}."""
+def chain(g, marks, p, f0, step, last, fixed=False):
+    """Frame-to-frame template from f0's mark towards `last` (fixed: f0's template throughout):
+    {frame: (x, y, ncc, fb)}."""
     h = p // 2
     x, y = marks[f0]
     vx = vy = 0.0
     out = {}
     f = f0
+    first = patch(g[f0], x, y, h)
     while f != last:
-        t = patch(g[f], x, y, h)
+        t = first if fixed else patch(g[f], x, y, h)
         r = best_in(g[f + step], t, x + vx, y + vy, 80 if f == f0 else 30) if t is not None else None
         if r is None:
             break
@@ -266,7 +270,7 @@ def main():
     ap.add_argument("--track", default="masa A")
     ap.add_argument("--patch", type=int, default=51, help="template side, px (the path tracker chose 51 on CarInLoop)")
     ap.add_argument("--mid", type=int, default=20, help="the frame chain-mid starts from")
-    ap.add_argument("--probes", default="rotate,deblur,chain,chain-mid,reblur,blob")
+    ap.add_argument("--probes", default="rotate,deblur,chain,chain-mid,mark-look,reblur,blob")
     a = ap.parse_args()
     rgb, marks = read_project(a.project, a.track)
     marks = {f: xy for f, xy in marks.items() if f < len(rgb)}
@@ -287,6 +291,12 @@ def main():
         both = chain(g, marks, a.patch, a.mid, 1, last)
         both.update(chain(g, marks, a.patch, a.mid, -1, f0))
         report(f"chain-mid (from frame {a.mid})", both, marks, bar)
+    if "mark-look" in probes:
+        both = chain(g, marks, a.patch, a.mid, 1, last, fixed=True)
+        both.update(chain(g, marks, a.patch, a.mid, -1, f0, fixed=True))
+        placed = {f: v for f, v in both.items() if v[2] >= 0.6}  # the path tracker's min_score
+        print(f"mark-look: {len(placed)} of {len(both)} frames correlate >= 0.6 with frame {a.mid}'s look")
+        report(f"mark-look (frame {a.mid}'s look)", both, marks, bar)
     if "reblur" in probes:
         report("reblur", probe_reblur(g, marks, a.patch, f0, last), marks, bar)
     if "blob" in probes:
