@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Why a marked point on real film is not followed: seven probes held against the human's marks.
+"""Why a marked point on real film is not followed: eight probes held against the human's marks.
 
 issue 24, docs/benchmarks.md#tracking-on-real-film. For one track of a Tracker project whose
 video is an image sequence inside the .trz (CarInLoop.trz's `masa A`), each probe places the
@@ -24,6 +24,10 @@ with that help rules its method out for this clip:
               it (headings and speeds from the chain), is placed in the start frame; the click's
               offset from where it lands, turned back, gives the point in frame k (shutter 1,
               |v0| 70 px/frame, the human's first step);
+  edge        where each mark lies along the motion (the human's heading, 9 px wide) from the
+              half-contrast point of the car's white-to-green edge (green minus the larger of red
+              and blue): > 0 behind it; a blurred edge is a ramp whose middle is the edge at
+              mid-exposure, so a mark kept on one point of the car keeps its distance;
   blob        the foreground (absolute difference from the per-pixel median background above
               35 grey levels) of the first frame's colours (8 levels per channel, those twice as
               frequent near the click as elsewhere in the foreground), the connected region with
@@ -216,6 +220,27 @@ def probe_reblur(g, marks, p, f0, last, shutter=1.0, v0=70.0):
     return out
 
 
+def probe_edge(rgb, marks):
+    green = rgb[..., 1] - np.maximum(rgb[..., 0], rgb[..., 2])
+    s, w = np.arange(-80, 81), np.arange(-4, 5)
+    out = []
+    for f in sorted(marks):
+        v = velocity(marks, f)
+        u = v / np.hypot(*v)
+        n = np.array([-u[1], u[0]])
+        pts = np.array(marks[f])[None, None, :] + s[:, None, None] * u + w[None, :, None] * n
+        prof = ndimage.map_coordinates(green[f], [pts[..., 1].ravel(), pts[..., 0].ravel()], order=1)
+        prof = prof.reshape(len(s), len(w)).mean(axis=1)
+        k = int(np.argmax(prof[:121]))  # the green (rear) at most 40 px ahead of the mark
+        half = 0.5 * (prof[k] + prof[80:].min())
+        j = k
+        while j < len(s) - 1 and prof[j] >= half:
+            j += 1
+        a, b = prof[j - 1], prof[j]
+        out.append(f"{f}:{s[j - 1] + (a - half) / (a - b) if a != b else s[j]:.0f}")
+    print("edge (px behind the white-green edge, per frame): " + " ".join(out))
+
+
 def probe_blob(rgb, marks, f0):
     bg = np.median(rgb[::3], axis=0)
     fg = lambda f: np.abs(rgb[f] - bg).max(axis=2) > 35
@@ -270,7 +295,7 @@ def main():
     ap.add_argument("--track", default="masa A")
     ap.add_argument("--patch", type=int, default=51, help="template side, px (the path tracker chose 51 on CarInLoop)")
     ap.add_argument("--mid", type=int, default=20, help="the frame chain-mid starts from")
-    ap.add_argument("--probes", default="rotate,deblur,chain,chain-mid,mark-look,reblur,blob")
+    ap.add_argument("--probes", default="rotate,deblur,chain,chain-mid,mark-look,reblur,edge,blob")
     a = ap.parse_args()
     rgb, marks = read_project(a.project, a.track)
     marks = {f: xy for f, xy in marks.items() if f < len(rgb)}
@@ -299,6 +324,8 @@ def main():
         report(f"mark-look (frame {a.mid}'s look)", both, marks, bar)
     if "reblur" in probes:
         report("reblur", probe_reblur(g, marks, a.patch, f0, last), marks, bar)
+    if "edge" in probes:
+        probe_edge(rgb, marks)
     if "blob" in probes:
         report("blob", probe_blob(rgb, marks, f0), marks, bar)
 
