@@ -29,8 +29,8 @@ with that help rules its method out for this clip:
               and blue): > 0 behind it; a blurred edge is a ramp whose middle is the edge at
               mid-exposure, so a mark kept on one point of the car keeps its distance;
   blob        the foreground (absolute difference from the per-pixel median background above
-              35 grey levels) of the first frame's colours (8 levels per channel, those twice as
-              frequent near the click as elsewhere in the foreground), the connected region with
+              35 grey levels) of the first frame's colours (8 levels per channel, those 1.5 times as
+              frequent near the click as elsewhere in the foreground; ratio above 0.6), the region with
               most pixels within 100 px of the human's mark: the mark is its centroid plus the
               first frame's offset turned with the region's principal axis.
 
