@@ -66,13 +66,14 @@ Server::Server(int port, std::size_t max_body_bytes, const std::function<std::un
       if (read) return false;  // the body is read once
       return read_with([&](const char* data, std::size_t n) { return piece(std::string_view(data, n)); });
     };
-    answer(impl_->handler->handle(r), out);
+    const Response a = impl_->handler->handle(r);
     const std::uint64_t limit = impl_->handler->rules().max_upload_bytes;
     const std::uint64_t declared = in.get_header_value<std::uint64_t>("Content-Length");
     if (!read && declared <= limit) {
       std::uint64_t dropped = 0;
       read_with([&](const char*, std::size_t n) { return (dropped += n) <= limit; });
     }
+    answer(a, out);  // after reading: a failed read sets cpp-httplib's status, the answer's own replaces it
   };
   impl_->http.Get(".*", serve).Options(".*", serve);
   impl_->http.Post(".*", serve_body).Put(".*", serve_body).Patch(".*", serve_body).Delete(".*", serve_body);

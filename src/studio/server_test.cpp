@@ -93,6 +93,12 @@ TEST(StudioServer, AnswersOverLoopbackAndSurvivesGarbage) {
   httplib::Client client("127.0.0.1", port);
   // cpp-httplib's client sends Host: 127.0.0.1:PORT, as a browser does.
   const httplib::Headers auth = {{"X-Tribolab-Token", token}};
+  // A form (as an <input> in a <form> would post it): refused 415, its parts read and dropped
+  // (the e2e test posts an empty form, whose failed parse must not change the status).
+  const httplib::MultipartFormDataItems form = {{"file", std::string(1000, 'x'), "clip.avi", "video/x-msvideo"}};
+  auto posted = client.Post("/api/upload?name=clip.avi", auth, form);
+  ASSERT_TRUE(posted);
+  EXPECT_EQ(posted->status, 415) << posted->body;
   auto files = client.Get("/api/files", auth);
   ASSERT_TRUE(files);
   EXPECT_EQ(files->status, 200);
@@ -191,6 +197,12 @@ TEST(StudioServer, UploadsAreStreamedToTheFolder) {
   auto wrong = client.Post("/api/upload?name=notes.txt", auth, std::string(1 << 20, 'x'), "text/plain");
   ASSERT_TRUE(wrong);
   EXPECT_EQ(wrong->status, 415);
+  // A form (as an <input> in a <form> would post it): refused 415, its parts read and dropped
+  // (the e2e test posts an empty form, whose failed parse must not change the status).
+  const httplib::MultipartFormDataItems form = {{"file", std::string(1000, 'x'), "clip.avi", "video/x-msvideo"}};
+  auto posted = client.Post("/api/upload?name=clip.avi", auth, form);
+  ASSERT_TRUE(posted);
+  EXPECT_EQ(posted->status, 415) << posted->body;
   auto files = client.Get("/api/files", auth);
   ASSERT_TRUE(files);
   EXPECT_EQ(files->status, 200);
