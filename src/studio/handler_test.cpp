@@ -287,7 +287,7 @@ TEST_F(HandlerTest, BackendErrorsBecomeJsonAnswers) {
 
 // Uploads (POST /api/upload?name=NAME, the file's bytes as the body): every rule, then a good
 // upload that is opened as a file chosen from the folder.
-class UploadTest : public HandlerTest {
+class StudioUploadTest : public HandlerTest {
  protected:
   Request upload(const std::string& name, std::string body) {
     std::string target = "/api/upload?name=";
@@ -312,7 +312,7 @@ class UploadTest : public HandlerTest {
   }
 };
 
-TEST_F(UploadTest, AGoodUploadIsSavedInUploadsAndOpened) {
+TEST_F(StudioUploadTest, AGoodUploadIsSavedInUploadsAndOpened) {
   const std::string bytes("RIFF\0\x01\x02video bytes", 18);
   const Response a = handler->handle(upload("throw.avi", bytes));
   ASSERT_EQ(a.status, 200) << a.body;
@@ -330,7 +330,7 @@ TEST_F(UploadTest, AGoodUploadIsSavedInUploadsAndOpened) {
   EXPECT_EQ(files["upload"]["extensions"].size(), openable_extensions().size());
 }
 
-TEST_F(UploadTest, AnExistingNameIsNeverReplaced) {
+TEST_F(StudioUploadTest, AnExistingNameIsNeverReplaced) {
   ASSERT_EQ(handler->handle(upload("clip.avi", "one")).status, 200);
   const Response again = handler->handle(upload("clip.avi", "two"));
   ASSERT_EQ(again.status, 200) << again.body;
@@ -340,7 +340,7 @@ TEST_F(UploadTest, AnExistingNameIsNeverReplaced) {
   EXPECT_EQ(backend.opened, fs::canonical(root / "uploads" / "clip-2.avi"));
 }
 
-TEST_F(UploadTest, ATokenAHostAndAnOriginAreNeededAsEverywhere) {
+TEST_F(StudioUploadTest, ATokenAHostAndAnOriginAreNeededAsEverywhere) {
   Request no_token = upload("clip.avi", "x");
   no_token.headers.pop_back();
   EXPECT_EQ(handler->handle(no_token).status, 403);
@@ -355,7 +355,7 @@ TEST_F(UploadTest, ATokenAHostAndAnOriginAreNeededAsEverywhere) {
   EXPECT_EQ(handler->handle(good("GET", "/api/upload?name=clip.avi")).status, 405);
 }
 
-TEST_F(UploadTest, BadNamesAndPathsStayInUploads) {
+TEST_F(StudioUploadTest, BadNamesAndPathsStayInUploads) {
   // Path parts are dropped: the file lands in uploads/ under its last component.
   const Response up = handler->handle(upload("../../escape.avi", "x"));
   ASSERT_EQ(up.status, 200) << up.body;
@@ -370,7 +370,7 @@ TEST_F(UploadTest, BadNamesAndPathsStayInUploads) {
   EXPECT_EQ(uploaded().size(), 2u);
 }
 
-TEST_F(UploadTest, OnlyFilesTheStudioOpensAreTaken) {
+TEST_F(StudioUploadTest, OnlyFilesTheStudioOpensAreTaken) {
   for (const char* name : {"notes.txt", "clip", "clip.avi.sh", "photo.JPG"}) {
     const Response a = handler->handle(upload(name, "x"));
     EXPECT_EQ(a.status, 415) << name;
@@ -383,7 +383,7 @@ TEST_F(UploadTest, OnlyFilesTheStudioOpensAreTaken) {
   EXPECT_EQ(backend.calls, 0);
 }
 
-TEST_F(UploadTest, TooLargeIsRefusedDeclaredOrStreamed) {
+TEST_F(StudioUploadTest, TooLargeIsRefusedDeclaredOrStreamed) {
   Handler small(root, AccessRules{kToken, kPort, 1000, 200, 400, 100}, Assets{"", ""}, backend);
   // The whole body over the limit.
   Response a = small.handle(upload("clip.avi", std::string(101, 'x')));
@@ -413,7 +413,7 @@ TEST_F(UploadTest, TooLargeIsRefusedDeclaredOrStreamed) {
   EXPECT_EQ(small.handle(good("POST", "/api/track", std::string(1001, ' '))).status, 413);
 }
 
-TEST_F(UploadTest, ACutConnectionOrAnEmptyFileSavesNothing) {
+TEST_F(StudioUploadTest, ACutConnectionOrAnEmptyFileSavesNothing) {
   Request cut = upload("clip.avi", "");
   cut.read_body = [](const std::function<bool(std::string_view)>& piece) {
     piece("first half");
@@ -427,7 +427,7 @@ TEST_F(UploadTest, ACutConnectionOrAnEmptyFileSavesNothing) {
   EXPECT_EQ(backend.calls, 0);
 }
 
-TEST_F(UploadTest, AFullOrUnwritableDiskIsAClearError) {
+TEST_F(StudioUploadTest, AFullOrUnwritableDiskIsAClearError) {
   // A full disk, as write() sees it: the process may write files of at most 64 bytes.
   {
     struct rlimit before {};
@@ -452,7 +452,7 @@ TEST_F(UploadTest, AFullOrUnwritableDiskIsAClearError) {
   EXPECT_EQ(backend.calls, 0);
 }
 
-TEST_F(UploadTest, AFileTheBackendCannotOpenIsKeptAndSaidSo) {
+TEST_F(StudioUploadTest, AFileTheBackendCannotOpenIsKeptAndSaidSo) {
   struct Refusing : RecordingBackend {
     json open(const fs::path&) override { throw InputError("not a video OpenCV decodes"); }
   } refusing;
@@ -463,7 +463,7 @@ TEST_F(UploadTest, AFileTheBackendCannotOpenIsKeptAndSaidSo) {
   EXPECT_EQ(uploaded(), std::vector<std::string>{"fake.mp4"});
 }
 
-TEST_F(UploadTest, AnUploadWaitsForNoActionAndIsOne) {
+TEST_F(StudioUploadTest, AnUploadWaitsForNoActionAndIsOne) {
   struct Slow : RecordingBackend {
     std::promise<void> started, release;
     json track(const TrackStart& s) override {

@@ -23,14 +23,14 @@ int status_of(std::string_view given) {
   return 200;
 }
 
-TEST(UploadName, KeepsAPlainName) {
+TEST(StudioUploadName, KeepsAPlainName) {
   EXPECT_EQ(upload_name("throw.avi"), "throw.avi");
   EXPECT_EQ(upload_name("VID_2026-03-01(2).MP4"), "VID_2026-03-01(2).MP4");  // the extension in any case
   EXPECT_EQ(upload_name("Würfel über Rampe.mov"), "Würfel_über_Rampe.mov");    // letters of any script kept
   EXPECT_EQ(upload_name("BallToss.trz"), "BallToss.trz");
 }
 
-TEST(UploadName, DropsEveryPathPart) {
+TEST(StudioUploadName, DropsEveryPathPart) {
   EXPECT_EQ(upload_name("../../etc/clip.mp4"), "clip.mp4");
   EXPECT_EQ(upload_name("/abs/olute/clip.mp4"), "clip.mp4");
   EXPECT_EQ(upload_name("C:\\Users\\me\\..\\clip.mp4"), "clip.mp4");  // a Windows browser's path
@@ -42,7 +42,7 @@ TEST(UploadName, DropsEveryPathPart) {
   for (const char* given : {"..", ".", "../", "uploads/", "a/.."}) EXPECT_EQ(status_of(given), 415) << given;
 }
 
-TEST(UploadName, NoHiddenControlOrSpecialCharacters) {
+TEST(StudioUploadName, NoHiddenControlOrSpecialCharacters) {
   EXPECT_EQ(upload_name(".hidden.avi"), "hidden.avi");
   EXPECT_EQ(upload_name("-rf.avi"), "rf.avi");  // never read as an option
   EXPECT_EQ(upload_name("a\x01" "b\nc\td.avi"), "a_b_c_d.avi");
@@ -59,14 +59,14 @@ TEST(UploadName, NoHiddenControlOrSpecialCharacters) {
   EXPECT_EQ(long_utf8, std::string(99, 'x') + ".mp4");
 }
 
-TEST(UploadName, OnlyFilesTheStudioOpens) {
+TEST(StudioUploadName, OnlyFilesTheStudioOpens) {
   EXPECT_EQ(status_of(""), 400);
   for (const char* given : {"notes.txt", "clip", "clip.avi.exe", "photo.jpg", "trk", ".."})
     EXPECT_EQ(status_of(given), 415) << given;
   for (const auto& ext : openable_extensions()) EXPECT_EQ(status_of("a" + ext), 200) << ext;
 }
 
-class UploadFileTest : public ::testing::Test {
+class StudioUploadFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
     root = fs::temp_directory_path() / ("studio_upload_test_" + std::to_string(::getpid()));
@@ -89,7 +89,7 @@ class UploadFileTest : public ::testing::Test {
   fs::path root;
 };
 
-TEST_F(UploadFileTest, WritesPiecesAndNeverReplacesAFile) {
+TEST_F(StudioUploadFileTest, WritesPiecesAndNeverReplacesAFile) {
   fs::create_directories(root / "uploads");
   std::ofstream(root / "uploads" / "clip.avi") << "first";
   std::ofstream(root / "uploads" / "clip-3.avi.studio.json") << "{}";  // an autosave left from a deleted clip-3.avi
@@ -105,7 +105,7 @@ TEST_F(UploadFileTest, WritesPiecesAndNeverReplacesAFile) {
   EXPECT_EQ(listing(), (std::vector<std::string>{"clip-2.avi", "clip-3.avi.studio.json", "clip-4.avi", "clip.avi"}));
 }
 
-TEST_F(UploadFileTest, AnUncommittedUploadLeavesNothing) {
+TEST_F(StudioUploadFileTest, AnUncommittedUploadLeavesNothing) {
   {
     UploadFile f(root);
     f.write("partial");
@@ -113,7 +113,7 @@ TEST_F(UploadFileTest, AnUncommittedUploadLeavesNothing) {
   EXPECT_TRUE(listing().empty());
 }
 
-TEST_F(UploadFileTest, AnUploadsFolderThatIsNotAFolderIsAClearError) {
+TEST_F(StudioUploadFileTest, AnUploadsFolderThatIsNotAFolderIsAClearError) {
   std::ofstream(root / "uploads") << "a file";
   try {
     UploadFile f(root);
