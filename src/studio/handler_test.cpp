@@ -340,7 +340,7 @@ TEST_F(StudioUploadTest, AnExistingNameIsNeverReplaced) {
   EXPECT_EQ(backend.opened, fs::canonical(root / "uploads" / "clip-2.avi"));
 }
 
-TEST_F(StudioUploadTest, ATokenAHostAndAnOriginAreNeededAsEverywhere) {
+TEST_F(StudioUploadTest, ATokenAHostAnOriginAndTheRateAreNeededAsEverywhere) {
   Request no_token = upload("clip.avi", "x");
   no_token.headers.pop_back();
   EXPECT_EQ(handler->handle(no_token).status, 403);
@@ -353,6 +353,11 @@ TEST_F(StudioUploadTest, ATokenAHostAndAnOriginAreNeededAsEverywhere) {
   EXPECT_FALSE(fs::exists(root / "uploads"));
   EXPECT_EQ(backend.calls, 0);
   EXPECT_EQ(handler->handle(good("GET", "/api/upload?name=clip.avi")).status, 405);
+  // The rate limit counts an upload as any request, before anything is written.
+  Handler limited(root, AccessRules{kToken, kPort, 1000, 1, 1}, Assets{"", ""}, backend);
+  EXPECT_EQ(limited.handle(good("GET", "/api/state")).status, 200);
+  EXPECT_EQ(limited.handle(upload("clip.avi", "x")).status, 429);
+  EXPECT_FALSE(fs::exists(root / "uploads"));
 }
 
 TEST_F(StudioUploadTest, BadNamesAndPathsStayInUploads) {
