@@ -276,7 +276,12 @@ Response Handler::upload(const Request& request, const Target& target) {
   try {
     state = backend_.open(c.path);
   } catch (const InputError& e) {
-    throw InputError(saved + " is saved, but the studio cannot open it: " + e.what());
+    // The page is told the folder's name for the file, not where the folder is on the disk.
+    std::string why = e.what();
+    const std::string absolute = c.path.string();
+    for (auto at = why.find(absolute); at != std::string::npos; at = why.find(absolute, at + saved.size()))
+      why.replace(at, absolute.size(), saved);
+    throw InputError(saved + " is saved, but the studio cannot open it: " + why);
   }
   state["uploaded"] = {{"file", saved}, {"bytes", file.size()}, {"name", given}};
   return json_ok(state);

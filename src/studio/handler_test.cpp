@@ -459,12 +459,13 @@ TEST_F(StudioUploadTest, AFullOrUnwritableDiskIsAClearError) {
 
 TEST_F(StudioUploadTest, AFileTheBackendCannotOpenIsKeptAndSaidSo) {
   struct Refusing : RecordingBackend {
-    json open(const fs::path&) override { throw InputError("not a video OpenCV decodes"); }
+    json open(const fs::path& file) override { throw InputError(file.string(), "not a video OpenCV decodes"); }
   } refusing;
   Handler h(root, AccessRules{kToken, kPort, 1000}, Assets{"", ""}, refusing);
   const Response a = h.handle(upload("fake.mp4", "not a video"));
   EXPECT_EQ(a.status, 400);
-  EXPECT_EQ(error_of(a), "uploads/fake.mp4 is saved, but the studio cannot open it: not a video OpenCV decodes");
+  // (the file named as in the folder, not by its absolute path)
+  EXPECT_EQ(error_of(a), "uploads/fake.mp4 is saved, but the studio cannot open it: uploads/fake.mp4: not a video OpenCV decodes");
   EXPECT_EQ(uploaded(), std::vector<std::string>{"fake.mp4"});
 }
 
