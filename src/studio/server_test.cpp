@@ -213,6 +213,12 @@ TEST(StudioServer, UploadsAreStreamedToTheFolder) {
   const std::string refused = first_answer(port, head);
   EXPECT_NE(refused.find("413"), std::string::npos) << "[" << refused.substr(0, 300) << "]";
   EXPECT_NE(refused.find("more than the studio takes"), std::string::npos) << refused.substr(0, 300);
+  // Cut off: 100 of the 1000 bytes declared, then the connection closed (a tab closed, Cancel):
+  // answered 400 if the client still listens, and the partial file removed.
+  const std::string cut = raw_exchange(port, "POST /api/upload?name=cut.avi HTTP/1.1\r\nHost: 127.0.0.1:" +
+                                                 std::to_string(port) + "\r\nX-Tribolab-Token: " + token +
+                                                 "\r\nContent-Length: 1000\r\n\r\n" + std::string(100, 'x'));
+  EXPECT_TRUE(cut.empty() || cut.find("cut off") != std::string::npos) << cut.substr(0, 300);
   // Without the token: refused, nothing written.
   auto anonymous = client.Post("/api/upload?name=x.avi", std::string(1000, 'x'), "video/x-msvideo");
   ASSERT_TRUE(anonymous);
