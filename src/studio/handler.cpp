@@ -216,7 +216,7 @@ std::string Handler::small_body(const Request& request) const {
     body.append(piece);
     return true;
   });
-  if (over) throw too_large("more than " + std::to_string(max));
+  if (over) throw BadRequest{413, "the request body is longer than the " + std::to_string(max) + " bytes allowed"};
   if (!read) throw BadRequest{400, "the request body was cut off"};
   return body;
 }
@@ -241,11 +241,11 @@ Response Handler::upload(const Request& request, const Target& target) {
     throw UploadError(415, "send the file's bytes as the request body (as the page does), not as a form (" + type + ")");
   const std::uint64_t max = rules_.max_upload_bytes;
   const auto declared = declared_length(request);
-  const auto too_large = [&](const std::string& size) {
-    return UploadError(413, "'" + given + "' has " + size + ", more than the studio takes (" + megabytes(max) +
+  const auto too_large = [&](const std::string& size) {  // "has 3000.0 MB, more than", "is longer than"
+    return UploadError(413, "'" + given + "' " + size + " the studio takes (" + megabytes(max) +
                                 "): cut the clip, or put it in the studio's folder and open it from there");
   };
-  if (declared && *declared > max) throw too_large(megabytes(*declared));
+  if (declared && *declared > max) throw too_large("has " + megabytes(*declared) + ", more than");
   const ActionClaim claim = claim_action();
   UploadFile file(root_);
   if (declared && *declared > file.available_bytes())
@@ -265,7 +265,7 @@ Response Handler::upload(const Request& request, const Target& target) {
   };
   const bool read = request.read_body ? request.read_body(sink) : sink(request.body);
   if (failed) throw *failed;
-  if (over) throw too_large("more than " + megabytes(max));
+  if (over) throw too_large("is longer than");
   if (!read) throw UploadError(400, "the upload of '" + given + "' was cut off after " + megabytes(file.size()) + ": nothing was saved");
   if (file.size() == 0) throw UploadError(400, "'" + given + "' is empty: nothing was saved");
   const std::string saved = file.commit(name);

@@ -393,13 +393,15 @@ TEST_F(StudioUploadTest, TooLargeIsRefusedDeclaredOrStreamed) {
   // The whole body over the limit.
   Response a = small.handle(upload("clip.avi", std::string(101, 'x')));
   EXPECT_EQ(a.status, 413);
-  EXPECT_NE(error_of(a).find("more than the studio takes"), std::string::npos) << error_of(a);
+  EXPECT_NE(error_of(a).find("'clip.avi' is longer than the studio takes (0.0 MB)"), std::string::npos) << error_of(a);
   // A declared size over the limit: refused before a byte is read.
   Request declared = upload("clip.avi", "");
   declared.headers.emplace_back("Content-Length", "5000000000");
   bool read = false;
   declared.read_body = [&](const std::function<bool(std::string_view)>&) { return read = true; };
-  EXPECT_EQ(small.handle(declared).status, 413);
+  const Response b = small.handle(declared);
+  EXPECT_EQ(b.status, 413);
+  EXPECT_NE(error_of(b).find("'clip.avi' has 5000.0 MB, more than the studio takes"), std::string::npos) << error_of(b);
   EXPECT_FALSE(read);
   // Streamed without a declared size (chunked): stopped when it passes the limit.
   Request chunked = upload("clip.avi", "");

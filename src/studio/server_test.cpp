@@ -118,6 +118,20 @@ TEST(StudioServer, AnswersOverLoopbackAndSurvivesGarbage) {
   auto big = client.Post("/api/track", auth, std::string(5000, ' '), "application/json");
   ASSERT_TRUE(big);
   EXPECT_EQ(big->status, 413);
+  // Chunked (no Content-Length), which cpp-httplib's buffered handlers would read whole into
+  // memory whatever its size (0.11.4 checks only a declared length): stopped at the limit.
+  const std::string five_mb(5 << 20, ' ');
+  auto chunked = client.Post(
+      "/api/track", auth,
+      [&](std::size_t offset, httplib::DataSink& sink) {
+        if (offset >= five_mb.size()) {
+          sink.done();
+          return true;
+        }
+        return sink.write(five_mb.data() + offset, 64 << 10);
+      },
+      "application/json");
+  EXPECT_TRUE(!chunked || chunked->status == 413) << chunked->status << " " << chunked->body;
   // Not HTTP at all, a broken request line, a huge header: answered or dropped, never a crash.
   (void)raw_exchange(port, std::string("\x00\x01\x02garbage\r\n\r\n", 15));
   (void)raw_exchange(port, "GET\r\n\r\n");
