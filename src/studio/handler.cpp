@@ -224,9 +224,10 @@ std::string Handler::small_body(const Request& request) const {
 Handler::ActionClaim Handler::claim_action() {
   bool idle = false;
   if (!action_running_.compare_exchange_strong(idle, true)) {
-    const nlohmann::json p = backend_.progress();
-    throw BadRequest{409, "another action is running (" + p.value("action", std::string("an action")) +
-                              "): wait for it to end, or cancel it (POST /api/cancel)"};
+    // While a file is sent the backend runs nothing: the upload is named by the handler.
+    std::string what = uploading_ ? "uploading a file" : backend_.progress().value("action", std::string());
+    if (what.empty()) what = "an action";
+    throw BadRequest{409, "another action is running (" + what + "): wait for it to end, or cancel it (POST /api/cancel)"};
   }
   return ActionClaim(&action_running_);
 }
@@ -247,6 +248,11 @@ Response Handler::upload(const Request& request, const Target& target) {
   };
   if (declared && *declared > max) throw too_large("has " + megabytes(*declared) + ", more than");
   const ActionClaim claim = claim_action();
+  struct Sending {
+    std::atomic<bool>& flag;
+    explicit Sending(std::atomic<bool>& f) : flag(f) { flag = true; }
+    ~Sending() { flag = false; }
+  } sending(uploading_);
   UploadFile file(root_);
   if (declared && *declared > file.available_bytes())
     throw UploadError(507, "'" + given + "' has " + megabytes(*declared) + " but the disk has " +
@@ -269,6 +275,7 @@ Response Handler::upload(const Request& request, const Target& target) {
   if (!read) throw UploadError(400, "the upload of '" + given + "' was cut off after " + megabytes(file.size()) + ": nothing was saved");
   if (file.size() == 0) throw UploadError(400, "'" + given + "' is empty: nothing was saved");
   const std::string saved = file.commit(name);
+  uploading_ = false;  // now the backend opens it, and names that action itself
   const Confined c = confine(root_, saved);
   if (!c.problem.empty()) throw BadRequest{403, c.problem};
   std::lock_guard lock(backend_mutex_);

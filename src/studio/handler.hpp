@@ -135,6 +135,7 @@ class Handler {
   Backend& backend_;
   std::mutex backend_mutex_;
   std::atomic<bool> action_running_{false};
+  std::atomic<bool> uploading_{false};  ///< an upload's bytes are arriving (the action running)
   std::mutex rate_mutex_;
   double tokens_ = 0;                                   ///< the rate limit's bucket
   std::chrono::steady_clock::time_point refilled_;

@@ -491,6 +491,24 @@ TEST_F(StudioUploadTest, AnUploadWaitsForNoActionAndIsOne) {
   slow.release.set_value();
   EXPECT_EQ(tracking.get().status, 200);
   EXPECT_EQ(h.handle(upload("clip.avi", "x")).status, 200);
+  // While a file arrives, another action is refused naming the upload.
+  Request slow_upload = upload("slow.avi", "");
+  std::promise<void> arriving, rest;
+  slow_upload.read_body = [&](const std::function<bool(std::string_view)>& piece) {
+    piece("first");
+    arriving.set_value();
+    rest.get_future().wait();
+    return piece("second");
+  };
+  auto sending = std::async(std::launch::async, [&] { return h.handle(slow_upload); });
+  arriving.get_future().wait();
+  const Response refused = h.handle(good("POST", "/api/track", R"({"x": 1, "y": 2, "frame": 0})"));
+  EXPECT_EQ(refused.status, 409);
+  EXPECT_NE(error_of(refused).find("(uploading a file)"), std::string::npos) << error_of(refused);
+  EXPECT_EQ(h.handle(good("GET", "/api/frame?i=0")).status, 200);  // frames are still served meanwhile
+  rest.set_value();
+  EXPECT_EQ(sending.get().status, 200);
+  EXPECT_EQ(read(root / "uploads" / "slow.avi"), "firstsecond");
 }
 
 TEST(Token, Has256RandomBits) {
