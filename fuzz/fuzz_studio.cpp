@@ -2,7 +2,9 @@
 // read as "METHOD\nTARGET\nName: value\n...\n\nBODY". Every answer must be a status with a
 // body; a crash, an exception escaping handle(), a sanitizer report or a hang is a bug. The
 // backend only answers (the actions are tested by studio_tests and the browser test), so what
-// is fuzzed is the parsing, the security rules, the routing and the checks of every JSON body.
+// is fuzzed is the parsing, the security rules, the routing and the checks of every JSON body,
+// and the upload (POST /api/upload?name=...): its name rules, limits and the file it writes
+// (into the fuzz folder's uploads/, emptied after every input).
 #include "studio/handler.hpp"
 
 #include <cstdint>
@@ -33,15 +35,20 @@ struct AnsweringBackend : Backend {
 /// The token the fuzzer can learn from the seed inputs (fuzz/corpus/studio/).
 const std::string kToken(64, '0');
 
-Handler& handler() {
-  static AnsweringBackend backend;
+const std::filesystem::path& root() {
   static const std::filesystem::path root = [] {
     auto p = std::filesystem::temp_directory_path() / "tribolab_fuzz_studio";
     std::filesystem::create_directories(p / "sub");
     return p;
   }();
+  return root;
+}
+
+Handler& handler() {
+  static AnsweringBackend backend;
   // No rate limit worth the name: the fuzzer sends millions of requests a second, each must be parsed.
-  static Handler h(root, AccessRules{kToken, 8765, 4096, 1e12, 1e12}, Assets{"<html></html>", "plotly"}, backend);
+  // Uploads of at most 64 KiB, so that one input's file is small.
+  static Handler h(root(), AccessRules{kToken, 8765, 4096, 1e12, 1e12, 1 << 16}, Assets{"<html></html>", "plotly"}, backend);
   return h;
 }
 
@@ -67,5 +74,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   r.body = std::string(rest);
   const Response a = handler().handle(r);
   if (a.status < 200 || a.status > 599 || a.content_type.empty()) std::abort();
+  std::error_code ec;
+  std::filesystem::remove_all(root() / "uploads", ec);  // one stat when nothing was uploaded
   return 0;
 }

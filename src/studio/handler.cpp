@@ -1,9 +1,11 @@
 #include "studio/handler.hpp"
 
 #include "numerics/error.hpp"
+#include "studio/upload.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 
 namespace tribolab::studio {
@@ -23,6 +25,22 @@ json object_body(const Request& r) {
   if (j.is_discarded()) throw InputError("the request body is not valid JSON");
   if (!j.is_object()) throw InputError("the request body must be a JSON object");
   return j;
+}
+
+/// The Content-Length header as a number; nullopt when absent (a chunked body). 400 when it is
+/// not a plain decimal number.
+std::optional<std::uint64_t> declared_length(const Request& r) {
+  const auto v = r.header("Content-Length");
+  if (!v) return std::nullopt;
+  if (v->empty() || v->size() > 19 || v->find_first_not_of("0123456789") != std::string::npos)
+    throw BadRequest{400, "the Content-Length header is not a number of bytes"};
+  return std::stoull(*v);
+}
+
+std::string megabytes(std::uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
+  return text;
 }
 
 double number(const json& j, const char* key) {
@@ -164,9 +182,14 @@ Response Handler::handle(const Request& request) {
     const auto target = parse_target(request.target);
     if (!target) return json_error(400, "the request target is malformed");
     if (auto refused = refuse(request, *target, rules_)) return *refused;
-    return route(request, *target);
+    if (target->path == "/api/upload") return upload(request, *target);
+    if (!request.read_body && request.body.size() <= rules_.max_body_bytes) return route(request, *target);
+    Request read{request.method, request.target, request.headers, small_body(request), nullptr};
+    return route(read, *target);
   } catch (const BadRequest& e) {
     return json_error(e.status, e.message);
+  } catch (const UploadError& e) {
+    return json_error(e.status, e.what());
   } catch (const InputError& e) {
     return json_error(400, e.what());
   } catch (const std::exception& e) {
@@ -174,6 +197,101 @@ Response Handler::handle(const Request& request) {
   } catch (...) {
     return json_error(500, "internal error");
   }
+}
+
+std::string Handler::small_body(const Request& request) const {
+  const std::size_t max = rules_.max_body_bytes;
+  const auto too_large = [&](const std::string& size) {
+    return BadRequest{413, "the request body has " + size + " bytes, more than the " + std::to_string(max) + " allowed"};
+  };
+  if (!request.read_body) {
+    if (request.body.size() > max) throw too_large(std::to_string(request.body.size()));
+    return request.body;
+  }
+  if (const auto n = declared_length(request); n && *n > max) throw too_large(std::to_string(*n));
+  std::string body;
+  bool over = false;
+  const bool read = request.read_body([&](std::string_view piece) {
+    if (body.size() + piece.size() > max) return !(over = true);
+    body.append(piece);
+    return true;
+  });
+  if (over) throw BadRequest{413, "the request body is longer than the " + std::to_string(max) + " bytes allowed"};
+  if (!read) throw BadRequest{400, "the request body was cut off"};
+  return body;
+}
+
+Handler::ActionClaim Handler::claim_action() {
+  bool idle = false;
+  if (!action_running_.compare_exchange_strong(idle, true)) {
+    // While a file is sent the backend runs nothing: the upload is named by the handler.
+    std::string what = uploading_ ? "uploading a file" : backend_.progress().value("action", std::string());
+    if (what.empty()) what = "an action";
+    throw BadRequest{409, "another action is running (" + what + "): wait for it to end, or cancel it (POST /api/cancel)"};
+  }
+  return ActionClaim(&action_running_);
+}
+
+Response Handler::upload(const Request& request, const Target& target) {
+  if (request.method != "POST") throw BadRequest{405, "method " + request.method + " is not allowed on /api/upload"};
+  const std::string given = target.param("name").value_or("");
+  const std::string name = upload_name(given);
+  std::string type = request.header("Content-Type").value_or("");
+  std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (type.rfind("multipart/", 0) == 0)
+    throw UploadError(415, "send the file's bytes as the request body (as the page does), not as a form (" + type + ")");
+  const std::uint64_t max = rules_.max_upload_bytes;
+  const auto declared = declared_length(request);
+  const auto too_large = [&](const std::string& size) {  // "has 3000.0 MB, more than", "is longer than"
+    return UploadError(413, "'" + given + "' " + size + " the studio takes (" + megabytes(max) +
+                                "): cut the clip, or put it in the studio's folder and open it from there");
+  };
+  if (declared && *declared > max) throw too_large("has " + megabytes(*declared) + ", more than");
+  const ActionClaim claim = claim_action();
+  struct Sending {
+    std::atomic<bool>& flag;
+    explicit Sending(std::atomic<bool>& f) : flag(f) { flag = true; }
+    ~Sending() { flag = false; }
+  } sending(uploading_);
+  UploadFile file(root_);
+  if (declared && *declared > file.available_bytes())
+    throw UploadError(507, "'" + given + "' has " + megabytes(*declared) + " but the disk has " +
+                               megabytes(file.available_bytes()) + " free: free some space");
+  bool over = false;
+  std::optional<UploadError> failed;
+  const auto sink = [&](std::string_view piece) {
+    if (file.size() + piece.size() > max) return !(over = true);
+    try {
+      file.write(piece);
+    } catch (const UploadError& e) {
+      failed = e;
+      return false;
+    }
+    return true;
+  };
+  const bool read = request.read_body ? request.read_body(sink) : sink(request.body);
+  if (failed) throw *failed;
+  if (over) throw too_large("is longer than");
+  if (!read) throw UploadError(400, "the upload of '" + given + "' was cut off after " + megabytes(file.size()) + ": nothing was saved");
+  if (file.size() == 0) throw UploadError(400, "'" + given + "' is empty: nothing was saved");
+  const std::string saved = file.commit(name);
+  uploading_ = false;  // now the backend opens it, and names that action itself
+  const Confined c = confine(root_, saved);
+  if (!c.problem.empty()) throw BadRequest{403, c.problem};
+  std::lock_guard lock(backend_mutex_);
+  json state;
+  try {
+    state = backend_.open(c.path);
+  } catch (const InputError& e) {
+    // The page is told the folder's name for the file, not where the folder is on the disk.
+    std::string why = e.what();
+    const std::string absolute = c.path.string();
+    for (auto at = why.find(absolute); at != std::string::npos; at = why.find(absolute, at + saved.size()))
+      why.replace(at, absolute.size(), saved);
+    throw InputError(saved + " is saved, but the studio cannot open it: " + why);
+  }
+  state["uploaded"] = {{"file", saved}, {"bytes", file.size()}, {"name", given}};
+  return json_ok(state);
 }
 
 Response Handler::route(const Request& request, const Target& target) {
@@ -204,25 +322,15 @@ Response Handler::route(const Request& request, const Target& target) {
   // One action at a time: another asked meanwhile is refused, not queued behind it.
   const bool action = path == "/api/open" || path == "/api/calibration" || path == "/api/track" ||
                       path == "/api/mark" || path == "/api/analyze";
-  struct ActionFlag {
-    std::atomic<bool>* flag = nullptr;
-    ~ActionFlag() {
-      if (flag) *flag = false;
-    }
-  } running;
-  if (action && request.method == "POST") {
-    bool idle = false;
-    if (!action_running_.compare_exchange_strong(idle, true)) {
-      const nlohmann::json p = backend_.progress();
-      throw BadRequest{409, "another action is running (" + p.value("action", std::string("an action")) +
-                                "): wait for it to end, or cancel it (POST /api/cancel)"};
-    }
-    running.flag = &action_running_;
-  }
+  const ActionClaim running = action && request.method == "POST" ? claim_action() : ActionClaim();
   std::lock_guard lock(backend_mutex_);
   if (path == "/api/files") {
     need(get);
-    return json_ok(backend_.files());
+    // What the page checks before sending a file (the server checks again).
+    json listing = backend_.files();
+    listing["upload"] = {{"folder", std::string(kUploadFolder)}, {"max_bytes", rules_.max_upload_bytes},
+                         {"extensions", openable_extensions()}};
+    return json_ok(listing);
   }
   if (path == "/api/state") {
     need(get);

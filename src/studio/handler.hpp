@@ -97,20 +97,45 @@ class Handler {
   /// `root`: the folder the studio serves (made canonical here; must exist).
   Handler(const std::filesystem::path& root, AccessRules rules, Assets assets, Backend& backend);
   /// The answer to `request`; never throws. One request reaches the backend at a time, but
-  /// progress and cancel, which reach it while an action runs; an action (open, calibrate,
+  /// progress and cancel, which reach it while an action runs; an action (open, upload, calibrate,
   /// track, mark, analyze) asked while another runs is answered 409 at once, not queued.
   /// More requests than the rules' rate are answered 429.
+  ///
+  /// `POST /api/upload?name=NAME` with the file's bytes as the body (not a form) saves them
+  /// in the folder's `uploads/` under a safe, free name (upload.hpp) as they arrive, then opens
+  /// the file as `POST /api/open` would; it is an action (409 while another runs). Refused
+  /// before a byte is written: a name the studio does not open (415), a declared size over
+  /// AccessRules::max_upload_bytes (413) or over the disk's free space (507); while
+  /// writing: more bytes than the limit (413), a full or unwritable disk (507), a connection
+  /// cut (400); nothing is left behind by a refused or failed upload.
   Response handle(const Request& request);
   const std::filesystem::path& root() const { return root_; }
+  const AccessRules& rules() const { return rules_; }
 
  private:
   Response route(const Request& request, const Target& target);
+  Response upload(const Request& request, const Target& target);
+  /// The body of a request to a route other than the upload, at most max_body_bytes (413).
+  std::string small_body(const Request& request) const;
+  /// Marks an action as running until the returned guard ends; 409 when one already runs.
+  struct ActionClaim {
+    std::atomic<bool>* flag = nullptr;
+    ActionClaim() = default;
+    explicit ActionClaim(std::atomic<bool>* f) : flag(f) {}
+    ActionClaim(ActionClaim&& o) noexcept : flag(o.flag) { o.flag = nullptr; }
+    ActionClaim& operator=(ActionClaim&&) = delete;
+    ~ActionClaim() {
+      if (flag) *flag = false;
+    }
+  };
+  ActionClaim claim_action();
   std::filesystem::path root_;
   AccessRules rules_;
   Assets assets_;
   Backend& backend_;
   std::mutex backend_mutex_;
   std::atomic<bool> action_running_{false};
+  std::atomic<bool> uploading_{false};  ///< an upload's bytes are arriving (the action running)
   std::mutex rate_mutex_;
   double tokens_ = 0;                                   ///< the rate limit's bucket
   std::chrono::steady_clock::time_point refilled_;

@@ -3,6 +3,7 @@
 #include "studio/handler.hpp"
 
 #include "numerics/error.hpp"
+#include "studio/upload.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -11,7 +12,12 @@
 #include <future>
 #include <thread>
 #include <fstream>
+#include <iterator>
+#include <cstdio>
+#include <algorithm>
 #include <vector>
+#include <signal.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace tribolab::studio {
@@ -63,7 +69,7 @@ class HandlerTest : public ::testing::Test {
   Request good(std::string method, std::string target, std::string body = "") {
     return {std::move(method), std::move(target),
             {{"Host", "127.0.0.1:8765"}, {"Origin", "http://127.0.0.1:8765"}, {"X-Tribolab-Token", kToken}},
-            std::move(body)};
+            std::move(body), nullptr};
   }
   static std::string error_of(const Response& r) { return json::parse(r.body).at("error").get<std::string>(); }
 
@@ -222,7 +228,7 @@ TEST_F(HandlerTest, MoreRequestsThanTheRateAreAnswered429) {
   const Response refused = limited.handle(good("GET", "/api/files"));
   EXPECT_EQ(refused.status, 429);
   EXPECT_NE(error_of(refused).find("too many requests"), std::string::npos);
-  EXPECT_EQ(limited.handle(Request{"GET", "/api/files", {}, ""}).status, 429);  // no token either
+  EXPECT_EQ(limited.handle(Request{"GET", "/api/files", {}, "", nullptr}).status, 429);  // no token either
   EXPECT_EQ(backend.calls, 5);
   std::this_thread::sleep_for(std::chrono::milliseconds(450));  // 2 requests' worth
   EXPECT_EQ(limited.handle(good("GET", "/api/files")).status, 200);
@@ -277,6 +283,232 @@ TEST_F(HandlerTest, BackendErrorsBecomeJsonAnswers) {
   EXPECT_EQ(input.status, 400);
   EXPECT_EQ(error_of(input), "clip.avi: not a video");
   EXPECT_EQ(h.handle(good("GET", "/api/state")).status, 500);
+}
+
+// Uploads (POST /api/upload?name=NAME, the file's bytes as the body): every rule, then a good
+// upload that is opened as a file chosen from the folder.
+class StudioUploadTest : public HandlerTest {
+ protected:
+  Request upload(const std::string& name, std::string body) {
+    std::string target = "/api/upload?name=";
+    for (unsigned char c : name) {  // percent-encoded, as the page's encodeURIComponent
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      target += std::isalnum(c) ? std::string(1, static_cast<char>(c)) : std::string(hex);
+    }
+    return good("POST", target, std::move(body));
+  }
+  /// The files under uploads/ (none when it does not exist).
+  std::vector<std::string> uploaded() {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(root / "uploads", ec)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  static std::string read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+};
+
+TEST_F(StudioUploadTest, AGoodUploadIsSavedInUploadsAndOpened) {
+  const std::string bytes("RIFF\0\x01\x02video bytes", 18);
+  const Response a = handler->handle(upload("throw.avi", bytes));
+  ASSERT_EQ(a.status, 200) << a.body;
+  EXPECT_EQ(read(root / "uploads" / "throw.avi"), bytes);
+  EXPECT_EQ(backend.opened, fs::canonical(root / "uploads" / "throw.avi"));  // opened as if chosen from the folder
+  const json j = json::parse(a.body);
+  EXPECT_EQ(j["uploaded"]["file"], "uploads/throw.avi");
+  EXPECT_EQ(j["uploaded"]["bytes"], bytes.size());
+  EXPECT_EQ(j["file"], "throw.avi");  // the backend's answer (the recording backend's: the name)
+  EXPECT_EQ(uploaded(), std::vector<std::string>{"throw.avi"});  // no temporary file left
+  // The listing tells the page the rules it checks before sending.
+  const json files = json::parse(handler->handle(good("GET", "/api/files")).body);
+  EXPECT_EQ(files["upload"]["max_bytes"], AccessRules{}.max_upload_bytes);
+  EXPECT_EQ(files["upload"]["folder"], "uploads");
+  EXPECT_EQ(files["upload"]["extensions"].size(), openable_extensions().size());
+}
+
+TEST_F(StudioUploadTest, AnExistingNameIsNeverReplaced) {
+  ASSERT_EQ(handler->handle(upload("clip.avi", "one")).status, 200);
+  const Response again = handler->handle(upload("clip.avi", "two"));
+  ASSERT_EQ(again.status, 200) << again.body;
+  EXPECT_EQ(json::parse(again.body)["uploaded"]["file"], "uploads/clip-2.avi");
+  EXPECT_EQ(read(root / "uploads" / "clip.avi"), "one");
+  EXPECT_EQ(read(root / "uploads" / "clip-2.avi"), "two");
+  EXPECT_EQ(backend.opened, fs::canonical(root / "uploads" / "clip-2.avi"));
+}
+
+TEST_F(StudioUploadTest, ATokenAHostAnOriginAndTheRateAreNeededAsEverywhere) {
+  Request no_token = upload("clip.avi", "x");
+  no_token.headers.pop_back();
+  EXPECT_EQ(handler->handle(no_token).status, 403);
+  Request foreign = upload("clip.avi", "x");
+  foreign.headers[1].second = "http://evil.example";  // a page of another site posting a file
+  EXPECT_EQ(handler->handle(foreign).status, 403);
+  Request rebound = upload("clip.avi", "x");
+  rebound.headers[0].second = "evil.example:8765";
+  EXPECT_EQ(handler->handle(rebound).status, 403);
+  EXPECT_FALSE(fs::exists(root / "uploads"));
+  EXPECT_EQ(backend.calls, 0);
+  EXPECT_EQ(handler->handle(good("GET", "/api/upload?name=clip.avi")).status, 405);
+  // The rate limit counts an upload as any request, before anything is written.
+  Handler limited(root, AccessRules{kToken, kPort, 1000, 1, 1}, Assets{"", ""}, backend);
+  EXPECT_EQ(limited.handle(good("GET", "/api/state")).status, 200);
+  EXPECT_EQ(limited.handle(upload("clip.avi", "x")).status, 429);
+  EXPECT_FALSE(fs::exists(root / "uploads"));
+}
+
+TEST_F(StudioUploadTest, BadNamesAndPathsStayInUploads) {
+  // Path parts are dropped: the file lands in uploads/ under its last component.
+  const Response up = handler->handle(upload("../../escape.avi", "x"));
+  ASSERT_EQ(up.status, 200) << up.body;
+  EXPECT_EQ(json::parse(up.body)["uploaded"]["file"], "uploads/escape.avi");
+  EXPECT_FALSE(fs::exists(root.parent_path() / "escape.avi"));
+  EXPECT_EQ(handler->handle(upload("sub/../..\\..\\.hidden\x01name.avi", "x")).status, 200);
+  EXPECT_EQ(uploaded(), (std::vector<std::string>{"escape.avi", "hidden_name.avi"}));
+  // Nothing usable: refused, nothing written.
+  EXPECT_EQ(handler->handle(good("POST", "/api/upload", "x")).status, 400);  // no name
+  EXPECT_EQ(handler->handle(upload("..", "x")).status, 415);
+  EXPECT_EQ(handler->handle(upload("../", "x")).status, 415);
+  EXPECT_EQ(uploaded().size(), 2u);
+}
+
+TEST_F(StudioUploadTest, OnlyFilesTheStudioOpensAreTaken) {
+  for (const char* name : {"notes.txt", "clip", "clip.avi.sh", "photo.JPG"}) {
+    const Response a = handler->handle(upload(name, "x"));
+    EXPECT_EQ(a.status, 415) << name;
+    EXPECT_NE(error_of(a).find("is not a file the studio opens"), std::string::npos) << error_of(a);
+  }
+  Request form = upload("clip.avi", "--b\r\nContent-Disposition: form-data\r\n\r\nx\r\n--b--\r\n");
+  form.headers.emplace_back("Content-Type", "multipart/form-data; boundary=b");
+  EXPECT_EQ(handler->handle(form).status, 415);
+  EXPECT_FALSE(fs::exists(root / "uploads"));
+  EXPECT_EQ(backend.calls, 0);
+}
+
+TEST_F(StudioUploadTest, TooLargeIsRefusedDeclaredOrStreamed) {
+  Handler small(root, AccessRules{kToken, kPort, 1000, 200, 400, 100}, Assets{"", ""}, backend);
+  // The whole body over the limit.
+  Response a = small.handle(upload("clip.avi", std::string(101, 'x')));
+  EXPECT_EQ(a.status, 413);
+  EXPECT_NE(error_of(a).find("'clip.avi' is longer than the studio takes (0.0 MB)"), std::string::npos) << error_of(a);
+  // A declared size over the limit: refused before a byte is read.
+  Request declared = upload("clip.avi", "");
+  declared.headers.emplace_back("Content-Length", "5000000000");
+  bool read = false;
+  declared.read_body = [&](const std::function<bool(std::string_view)>&) { return read = true; };
+  const Response b = small.handle(declared);
+  EXPECT_EQ(b.status, 413);
+  EXPECT_NE(error_of(b).find("'clip.avi' has 5000.0 MB, more than the studio takes"), std::string::npos) << error_of(b);
+  EXPECT_FALSE(read);
+  // Streamed without a declared size (chunked): stopped when it passes the limit.
+  Request chunked = upload("clip.avi", "");
+  int pieces = 0;
+  chunked.read_body = [&](const std::function<bool(std::string_view)>& piece) {
+    for (; pieces < 1000; ++pieces)
+      if (!piece(std::string(30, 'x'))) return false;
+    return true;
+  };
+  EXPECT_EQ(small.handle(chunked).status, 413);
+  EXPECT_EQ(pieces, 3);  // 90 bytes taken, the 4th piece refused: the rest is never read
+  // Exactly the limit is taken; nothing was left by the refused ones.
+  EXPECT_EQ(small.handle(upload("clip.avi", std::string(100, 'x'))).status, 200);
+  EXPECT_EQ(uploaded(), std::vector<std::string>{"clip.avi"});
+  // A JSON body still has its own, smaller limit.
+  EXPECT_EQ(small.handle(good("POST", "/api/track", std::string(1001, ' '))).status, 413);
+}
+
+TEST_F(StudioUploadTest, ACutConnectionOrAnEmptyFileSavesNothing) {
+  Request cut = upload("clip.avi", "");
+  cut.read_body = [](const std::function<bool(std::string_view)>& piece) {
+    piece("first half");
+    return false;  // the connection ended early
+  };
+  const Response a = handler->handle(cut);
+  EXPECT_EQ(a.status, 400);
+  EXPECT_NE(error_of(a).find("cut off"), std::string::npos) << error_of(a);
+  EXPECT_EQ(handler->handle(upload("clip.avi", "")).status, 400);
+  EXPECT_TRUE(uploaded().empty());
+  EXPECT_EQ(backend.calls, 0);
+}
+
+TEST_F(StudioUploadTest, AFullOrUnwritableDiskIsAClearError) {
+  // A full disk, as write() sees it: the process may write files of at most 64 bytes.
+  {
+    struct rlimit before {};
+    ::getrlimit(RLIMIT_FSIZE, &before);
+    const auto old_handler = ::signal(SIGXFSZ, SIG_IGN);  // write() then fails with EFBIG
+    struct rlimit small = before;
+    small.rlim_cur = 64;
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    const Response a = handler->handle(upload("big.avi", std::string(1000, 'x')));
+    ::setrlimit(RLIMIT_FSIZE, &before);
+    ::signal(SIGXFSZ, old_handler);
+    EXPECT_EQ(a.status, 507) << a.body;
+    EXPECT_NE(error_of(a).find("the disk is full"), std::string::npos) << error_of(a);
+    EXPECT_TRUE(uploaded().empty());  // the partial file removed
+  }
+  // uploads/ cannot be made a folder (a file of that name; a read-only folder is the same error).
+  fs::remove_all(root / "uploads");
+  std::ofstream(root / "uploads") << "a file";
+  const Response b = handler->handle(upload("clip.avi", "x"));
+  EXPECT_EQ(b.status, 507);
+  EXPECT_NE(error_of(b).find("uploads/"), std::string::npos) << error_of(b);
+  EXPECT_EQ(backend.calls, 0);
+}
+
+TEST_F(StudioUploadTest, AFileTheBackendCannotOpenIsKeptAndSaidSo) {
+  struct Refusing : RecordingBackend {
+    json open(const fs::path& file) override { throw InputError(file.string(), "not a video OpenCV decodes"); }
+  } refusing;
+  Handler h(root, AccessRules{kToken, kPort, 1000}, Assets{"", ""}, refusing);
+  const Response a = h.handle(upload("fake.mp4", "not a video"));
+  EXPECT_EQ(a.status, 400);
+  // (the file named as in the folder, not by its absolute path)
+  EXPECT_EQ(error_of(a), "uploads/fake.mp4 is saved, but the studio cannot open it: uploads/fake.mp4: not a video OpenCV decodes");
+  EXPECT_EQ(uploaded(), std::vector<std::string>{"fake.mp4"});
+}
+
+TEST_F(StudioUploadTest, AnUploadWaitsForNoActionAndIsOne) {
+  struct Slow : RecordingBackend {
+    std::promise<void> started, release;
+    json track(const TrackStart& s) override {
+      started.set_value();
+      release.get_future().wait();
+      return {{"name", s.name}};
+    }
+  } slow;
+  Handler h(root, AccessRules{kToken, kPort, 1000}, Assets{"", ""}, slow);
+  auto tracking = std::async(std::launch::async, [&] {
+    return h.handle(good("POST", "/api/track", R"({"x": 1, "y": 2, "frame": 0})"));
+  });
+  slow.started.get_future().wait();
+  const Response a = h.handle(upload("clip.avi", "x"));
+  EXPECT_EQ(a.status, 409);
+  EXPECT_FALSE(fs::exists(root / "uploads"));
+  slow.release.set_value();
+  EXPECT_EQ(tracking.get().status, 200);
+  EXPECT_EQ(h.handle(upload("clip.avi", "x")).status, 200);
+  // While a file arrives, another action is refused naming the upload.
+  Request slow_upload = upload("slow.avi", "");
+  std::promise<void> arriving, rest;
+  slow_upload.read_body = [&](const std::function<bool(std::string_view)>& piece) {
+    piece("first");
+    arriving.set_value();
+    rest.get_future().wait();
+    return piece("second");
+  };
+  auto sending = std::async(std::launch::async, [&] { return h.handle(slow_upload); });
+  arriving.get_future().wait();
+  const Response refused = h.handle(good("POST", "/api/track", R"({"x": 1, "y": 2, "frame": 0})"));
+  EXPECT_EQ(refused.status, 409);
+  EXPECT_NE(error_of(refused).find("(uploading a file)"), std::string::npos) << error_of(refused);
+  EXPECT_EQ(h.handle(good("GET", "/api/frame?i=0")).status, 200);  // frames are still served meanwhile
+  rest.set_value();
+  EXPECT_EQ(sending.get().status, 200);
+  EXPECT_EQ(read(root / "uploads" / "slow.avi"), "firstsecond");
 }
 
 TEST(Token, Has256RandomBits) {

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +20,12 @@ struct Request {
   std::string target;  ///< path and query as sent, percent-encoded: "/api/frame?i=3&token=..."
   std::vector<std::pair<std::string, std::string>> headers;  ///< as received, names in any case
   std::string body;
+  /// The body still to be read, when the server did not read it into `body`: calls `piece`
+  /// with each piece as it arrives, in order, until the end (true) or until `piece` returns
+  /// false or the connection fails (false). The handler reads it with the limit of the route
+  /// (an upload is written to disk piece by piece, any other body is at most
+  /// AccessRules::max_body_bytes). Unset (tests, the fuzzer): the body is `body`.
+  std::function<bool(const std::function<bool(std::string_view piece)>& piece)> read_body;
   /// The first header named `name` (case-insensitive), or nullopt.
   std::optional<std::string> header(std::string_view name) const;
 };

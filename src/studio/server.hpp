@@ -14,7 +14,10 @@ namespace tribolab::studio {
 class Server {
  public:
   /// Binds 127.0.0.1:`port` (0: a free port). Throws InputError when the port is taken.
-  /// `make_handler` is given the bound port (the Host and Origin the handler accepts).
+  /// `make_handler` is given the bound port (the Host and Origin the handler accepts). Every
+  /// body reaches the handler unread (Request::read_body), which applies its rules' limits
+  /// (AccessRules::max_body_bytes, max_upload_bytes); cpp-httplib itself refuses a body
+  /// declared longer than the largest of those and `max_body_bytes`.
   Server(int port, std::size_t max_body_bytes, const std::function<std::unique_ptr<Handler>(int port)>& make_handler);
   ~Server();
   Server(const Server&) = delete;

@@ -11,6 +11,7 @@
 #include "numerics/error.hpp"
 #include "studio/form_values.hpp"
 #include "studio/guard.hpp"
+#include "studio/upload.hpp"
 #include "video/source.hpp"
 
 #include <fmt/format.h>
@@ -27,14 +28,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-bool studio_can_open(const fs::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  for (const char* e : {".mp4", ".mov", ".avi", ".mkv", ".webm", ".m4v", ".trk", ".trz"})
-    if (ext == e) return true;
-  return false;
-}
 
 /// The series of a tracking as the page draws them: rows with image and world positions,
 /// score and lost flag; NaN positions of lost rows become null.
@@ -122,14 +115,19 @@ json Workbench::files() {
   json list = json::array();
   std::vector<std::string> names;
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(root_, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (!studio_can_open(entry.path())) continue;
-    const Confined c = confine(root_, name);  // a symlink out of the folder is not listed
-    if (!c.problem.empty() || !fs::is_regular_file(c.path, ec)) continue;
-    names.push_back(name);
+  // The folder's files, then those uploaded from the page (uploads/NAME).
+  for (const std::string folder : {std::string(), std::string(kUploadFolder) + "/"}) {
+    std::vector<std::string> here;
+    for (const auto& entry : fs::directory_iterator(root_ / folder, ec)) {
+      const std::string name = folder + entry.path().filename().string();
+      if (!studio_can_open(entry.path())) continue;
+      const Confined c = confine(root_, name);  // a symlink out of the folder is not listed
+      if (!c.problem.empty() || !fs::is_regular_file(c.path, ec)) continue;
+      here.push_back(name);
+    }
+    std::sort(here.begin(), here.end());
+    names.insert(names.end(), here.begin(), here.end());
   }
-  std::sort(names.begin(), names.end());
   for (const auto& n : names) list.push_back(n);
   return {{"folder", root_.filename().string()}, {"files", list}};
 }

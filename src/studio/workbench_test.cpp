@@ -67,6 +67,36 @@ class WorkbenchTest : public ::testing::Test {
   fs::path root;
 };
 
+// A film uploaded through the handler (POST /api/upload): saved in uploads/, decoded and opened
+// by the workbench as a click in the list would open it, listed after the folder's files, and
+// tracked from a click like any other.
+TEST_F(WorkbenchTest, AnUploadedFilmIsOpenedListedAndTracked) {
+  const fs::path elsewhere = root.string() + "_elsewhere";
+  fs::create_directories(elsewhere);
+  film(elsewhere / "my film.avi", kFrames);
+  Workbench wb(root);
+  Handler handler(root, AccessRules{std::string(64, 'a'), 8765}, Assets{"", ""}, wb);
+  const auto request = [](std::string method, std::string target, std::string body) {
+    return Request{std::move(method), std::move(target),
+                   {{"Host", "127.0.0.1:8765"}, {"X-Tribolab-Token", std::string(64, 'a')}}, std::move(body), nullptr};
+  };
+  const std::string bytes = slurp_file(elsewhere / "my film.avi");
+  const Response up = handler.handle(request("POST", "/api/upload?name=my%20film.avi", bytes));
+  ASSERT_EQ(up.status, 200) << up.body;
+  const json state = json::parse(up.body);
+  EXPECT_EQ(state["file"], "uploads/my_film.avi");
+  EXPECT_EQ(state["uploaded"]["file"], "uploads/my_film.avi");
+  EXPECT_EQ(state["frames"].size(), static_cast<std::size_t>(kFrames));
+  EXPECT_EQ(slurp_file(root / "uploads" / "my_film.avi"), bytes);
+  const json files = json::parse(handler.handle(request("GET", "/api/files", "")).body);
+  EXPECT_EQ(files["files"], json({"patch.avi", "uploads/my_film.avi"}));
+  const Response tracked = handler.handle(request(
+      "POST", "/api/track", json{{"name", "m"}, {"kind", "point"}, {"x", 30}, {"y", 60}, {"frame", 0}}.dump()));
+  ASSERT_EQ(tracked.status, 200) << tracked.body;
+  EXPECT_TRUE(fs::exists(root / "uploads" / "my_film.avi.tracks.csv"));
+  fs::remove_all(elsewhere);
+}
+
 TEST_F(WorkbenchTest, ClickTracksSavesAndReopens) {
   Workbench wb(root);
   EXPECT_EQ(wb.files()["files"], json::array({"patch.avi"}));
