@@ -33,7 +33,7 @@ py::dict body_states(const std::vector<S>& v) {
   return d;
 }
 
-constexpr const char* kStates = "t (s), x, y (m, centre), theta (rad), vx, vy (m/s), omega (rad/s)";
+constexpr const char* kBounceStates = "t (s), x, y (m, centre), theta (rad), vx, vy (m/s), omega (rad/s)";
 
 }  // namespace
 
@@ -49,7 +49,7 @@ void bind_bounce(py::module_& m) {
             f["gap"] = of_each(r.samples, [](const app::FlightSample& s) { return s.gap; });
             d["flight"] = f;
           },
-          std::string("flight: dict of arrays ") + kStates + ", gap (m, lowest point above the floor)");
+          std::string("flight: dict of arrays ") + kBounceStates + ", gap (m, lowest point above the floor)");
   }
   {
     using bounce::ContactSample;
@@ -68,7 +68,7 @@ void bind_bounce(py::module_& m) {
             h["v_t"] = of_each(v, [](const ContactSample& s) { return s.v_t; });
             d["contact"] = h;
           },
-          std::string("contact: dict of arrays ") + kStates +
+          std::string("contact: dict of arrays ") + kBounceStates +
               ", d (m, penetration), d_dot (m/s), N, f (N), v_t (m/s, slip)");
   }
   {
@@ -77,7 +77,7 @@ void bind_bounce(py::module_& m) {
     c.declared(app::bounce_drop_fields());
     c.def(&app::bounce_drop,
           [](const app::BounceDropResult& r, py::dict& d) { d["samples"] = body_states(r.trajectory); },
-          std::string("samples: dict of arrays ") + kStates +
+          std::string("samples: dict of arrays ") + kBounceStates +
               " (empty unless trajectory, report or keep_trajectory)");
   }
   {

@@ -19,7 +19,7 @@ py::dict states(const std::vector<State>& v) {
                  field("ay", &State::ay));
 }
 
-constexpr const char* kStates =
+constexpr const char* kInclineStates =
     "t (s), x, y (m; x across the slope, y up it), vx, vy (m/s), ax, ay (m/s^2)";
 
 }  // namespace
@@ -32,7 +32,7 @@ void bind_incline(py::module_& m) {
     c.declared(app::incline_predict_fields());
     c.def(&app::incline_predict,
           [](const app::InclinePredictResult& r, py::dict& d) { d["trajectory"] = states(r.trajectory); },
-          std::string("trajectory: dict of arrays ") + kStates + ", 401 samples (none if the duration is infinite)");
+          std::string("trajectory: dict of arrays ") + kInclineStates + ", 401 samples (none if the duration is infinite)");
   }
   {
     Command<app::InclineSimulateOptions> c(m, "simulate",
@@ -40,7 +40,7 @@ void bind_incline(py::module_& m) {
     c.declared(app::incline_simulate_fields());
     c.def(&app::incline_simulate,
           [](const app::InclineSimulateResult& r, py::dict& d) { d["trajectory"] = states(r.trajectory); },
-          std::string("trajectory: dict of arrays ") + kStates);
+          std::string("trajectory: dict of arrays ") + kInclineStates);
   }
   {
     Command<app::InclineFamiliesOptions> c(m, "families",
@@ -54,7 +54,7 @@ void bind_incline(py::module_& m) {
                                       std::pair{"vx", &State::vx}, std::pair{"vy", &State::vy},
                                       std::pair{"ax", &State::ax}, std::pair{"ay", &State::ay}});
           },
-          std::string("curves: dict of 2-D arrays (len(values), samples) ") + kStates);
+          std::string("curves: dict of 2-D arrays (len(values), samples) ") + kInclineStates);
   }
   {
     Command<app::InclineMuFromStopOptions> c(m, "mu_from_stop",
@@ -90,7 +90,7 @@ void bind_incline(py::module_& m) {
             d["truth"] = states(r.run.truth);
           },
           std::string("track_points: dict of arrays frame, t (s, file time), x, y (m, with noise); truth: dict of "
-                      "arrays ") + kStates + " (noise-free, at each point)");
+                      "arrays ") + kInclineStates + " (noise-free, at each point)");
   }
   {
     Command<app::InclineAnalyzeOptions> c(m, "analyze",
@@ -121,7 +121,7 @@ void bind_incline(py::module_& m) {
           },
           std::string("fits: one per file (None where it failed), dicts of the measured points "
                       "data (t, x, y; s, m), the fitted models model_b and model_a on a fine grid (") +
-              kStates + "), residual_x_b, residual_y_b (m)");
+              kInclineStates + "), residual_x_b, residual_y_b (m)");
   }
   {
     Command<app::InclineMuFromSlideOptions> c(m, "mu_from_slide",
