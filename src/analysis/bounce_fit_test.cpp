@@ -1,5 +1,6 @@
 // Tests of fit_bounces on synthetic tables made by simulate_contact with noise.
 #include "analysis/bounce_fit.hpp"
+#include "numerics/sanitizer.hpp"
 #include "analysis/bounce_synth.hpp"
 #include "bounce/impact.hpp"
 
@@ -179,7 +180,7 @@ TEST(BounceFit, IntervalsCoverTheTruthWithOutliers) {
 // the unweighted 0.0049, whose error is 6 of its sigmas), and one such table outweighs the
 // others in a mean of 8 (the sanitizer build's count).
 TEST(BounceFit, RowsWeightedByTheirOwnUncertaintiesCover) {
-#if defined(__SANITIZE_ADDRESS__)
+#if TRIBOLAB_ASAN
   const int default_runs = 8;  // ~9 s in the normal build for 30: kept short under ASan
 #else
   const int default_runs = 30;

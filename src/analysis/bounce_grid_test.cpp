@@ -2,6 +2,7 @@
 // synth_video makes, long and repeated contacts included, is analysed, and e_velocity lies
 // at the truth within its stated sigma. docs/theory.md#bounce-analysis.
 #include "analysis/bounce_analyze.hpp"
+#include "numerics/sanitizer.hpp"
 #include "analysis/bounce_synth.hpp"
 #include "numerics/error.hpp"
 #include "analysis/analysis_test_util.hpp"
@@ -102,7 +103,7 @@ void expect_coverage(int count, int n, double p, const char* what) {
 // and 5 mm; the bounds follow n.
 TEST(BounceGrid, EveryThrowIsAnalysedAndEWithinItsSigma) {
   const std::vector<double> omegas = {-50, -30, -10, 0, 10, 30, 50};
-#if defined(__SANITIZE_ADDRESS__)
+#if TRIBOLAB_ASAN
   // The whole grid's throws with these spins, at their own seeds (a thinned grid with seeds
   // renumbered drew a throw the whole grid does not hold).
   const std::vector<double> only = {-50, -10, 10, 50};

@@ -1,4 +1,5 @@
 #include "sweep/runner.hpp"
+#include "numerics/sanitizer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -197,7 +198,7 @@ TEST(Runner, ThreadCountIsBounded) {
   EXPECT_EQ(o.validate(), "threads must be 0 (all cores) to 1024, got -1");
 }
 
-#if !defined(__SANITIZE_ADDRESS__)
+#if !TRIBOLAB_ASAN
 /// In a death test's child: limits the address space to ~100 MiB above what is used (room
 /// for a few 8 MiB thread stacks only), asks for 1000 threads, prints the InputError.
 void start_1000_threads_under_a_limit() {
