@@ -270,19 +270,13 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
                                             const std::string& report_path,
                                             const std::function<std::string(std::size_t)>& run_command,
                                             report::PlotlyMode plotly) {
-  std::vector<std::string> links(runs.size());
-  if (!report_path.empty()) {
-    const std::string folder = series_runs_folder(report_path);
-    std::filesystem::create_directories(folder);
-    const std::string folder_name = std::filesystem::path(folder).filename().string();
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      if (!runs[i].analysis) continue;
-      const std::string name = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(with_study_source(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), Study::rugby_ball),
-                         folder + "/" + name, plotly, std::filesystem::absolute(report_path).parent_path().string());
-      links[i] = folder_name + "/" + name;
-    }
-  }
+  std::vector<std::string> sources;
+  for (const auto& run : runs) sources.push_back(run.source);
+  const std::vector<std::string> links =
+      write_run_reports(sources, report_path, plotly, [&](std::size_t i) -> std::optional<report::Report> {
+        if (!runs[i].analysis) return std::nullopt;
+        return with_study_source(bounce_analyze_report(run_command(i), ball, *runs[i].analysis), Study::rugby_ball);
+      });
   report::Report rep;
   rep.title = "tribolab bounce analyze: a series of " + std::to_string(runs.size()) + " bounces";
   rep.subtitle = command;

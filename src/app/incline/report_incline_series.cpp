@@ -32,22 +32,6 @@ Figure figure(std::string title, std::string x, std::string y, int height = 360)
 }
 
 
-/// Percent-encodes every byte a Table link does not accept.
-std::string encode_link(const std::string& path) {
-  std::string out;
-  for (unsigned char c : path) {
-    const bool ok = std::isalnum(c) || c == '.' || c == '_' || c == '-' || c == '/';
-    if (ok) {
-      out += static_cast<char>(c);
-    } else {
-      static const char* hex = "0123456789ABCDEF";
-      out += '%';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
 
 /// Pull of point k (k-th analysed run) in the weighted mean, NaN when it has none.
 double pull_of(const std::optional<analysis::WeightedMean>& m, const std::vector<int>& index, std::size_t k) {
@@ -153,10 +137,6 @@ int add_scaling(report::Section& s, const std::string& title, const analysis::In
   return n;
 }
 
-std::string run_link(const std::string& report_path, std::size_t i, const std::string& source, std::size_t n) {
-  const std::string folder = fs::path(series_runs_folder(report_path)).filename().string();
-  return encode_link(folder + "/" + series_run_file(i, source, n));
-}
 
 }  // namespace
 
@@ -266,18 +246,13 @@ int add_incline_series(report::Report& r, const std::string& title, const std::v
 report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>& runs,
                                              const analysis::InclineSeriesSummary& summary,
                                              const std::string& report_path, report::PlotlyMode plotly) {
-  std::vector<std::string> links(runs.size());
-  if (!report_path.empty()) {
-    const std::string folder = series_runs_folder(report_path);
-    fs::create_directories(folder);
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      if (!runs[i].analysis) continue;
-      const std::string file = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(with_study_source(incline_analyze_report(runs[i].source, *runs[i].analysis), Study::incline),
-                         (fs::path(folder) / file).string(), plotly, fs::absolute(report_path).parent_path().string());
-      links[i] = run_link(report_path, i, runs[i].source, runs.size());
-    }
-  }
+  std::vector<std::string> sources;
+  for (const auto& run : runs) sources.push_back(run.source);
+  const std::vector<std::string> links =
+      write_run_reports(sources, report_path, plotly, [&](std::size_t i) -> std::optional<report::Report> {
+        if (!runs[i].analysis) return std::nullopt;
+        return with_study_source(incline_analyze_report(runs[i].source, *runs[i].analysis), Study::incline);
+      });
   report::Report r;
   r.title = "tribolab: incline analyze, a series of " + std::to_string(runs.size()) + " runs";
   r.subtitle = "Models B and A fitted to every run, and the series summarised as the incline study did (table 1, figures 5A–8 (五A–八))";
@@ -288,18 +263,13 @@ report::Report incline_analyze_series_report(const std::vector<InclineSeriesRun>
 report::Report incline_slide_series_report(const std::vector<SlideSeriesRun>& runs,
                                            const analysis::SlideSeriesSummary& sum, const std::string& report_path,
                                            report::PlotlyMode plotly) {
-  std::vector<std::string> links(runs.size());
-  if (!report_path.empty()) {
-    const std::string folder = series_runs_folder(report_path);
-    fs::create_directories(folder);
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      if (!runs[i].result) continue;
-      const std::string file = series_run_file(i, runs[i].source, runs.size());
-      report::write_html(with_study_source(incline_slide_report(runs[i].source, *runs[i].result, runs[i].options), Study::incline),
-                         (fs::path(folder) / file).string(), plotly, fs::absolute(report_path).parent_path().string());
-      links[i] = run_link(report_path, i, runs[i].source, runs.size());
-    }
-  }
+  std::vector<std::string> sources;
+  for (const auto& run : runs) sources.push_back(run.source);
+  const std::vector<std::string> links =
+      write_run_reports(sources, report_path, plotly, [&](std::size_t i) -> std::optional<report::Report> {
+        if (!runs[i].result) return std::nullopt;
+        return with_study_source(incline_slide_report(runs[i].source, *runs[i].result, runs[i].options), Study::incline);
+      });
   report::Report r;
   r.title = "tribolab: incline mu-from-slide, a series of " + std::to_string(runs.size()) + " slides";
   r.subtitle = "μ from straight slides (incline study, eq a), combined with inverse-variance weights";
