@@ -282,8 +282,7 @@ report::Report bounce_analyze_series_report(const std::string& command, const bo
   rep.subtitle = command;
   add_bounce_series(rep, "", runs, points, summary, options, links);
   std::vector<const analysis::BounceAnalysis*> analyses;
-  std::vector<std::string> sources;
-  for (const auto& run : runs) analyses.push_back(run.analysis), sources.push_back(run.source);
+  for (const auto& run : runs) analyses.push_back(run.analysis);
   if (const auto w = analysis::bounce_series_warnings(analyses, sources); !w.empty()) {
     auto& ws = rep.add_section("Warnings");  // docs/theory.md#plausibility-checks
     ws.add_list(w);
