@@ -18,11 +18,11 @@ import shutil
 import subprocess
 import sys
 
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select, WebDriverWait
+
+from studio_browser import render_throw, studio_page
 
 ZOOM = 1  # chosen in the page: one image pixel is one CSS pixel (the 640x480 film fits the window)
 
@@ -38,42 +38,15 @@ def main(tribolab, out):
     os.makedirs(folder)
     # 28 frames of 640x480 on a plain background (the demo film's size: at 320x240 the tracked
     # tips put e_velocity 3.4 sigma from the truth, at 640x480 within 0.1 sigma).
-    render = json.loads(subprocess.run(
-        [tribolab, "bounce", "render", "--size", "640x480", "--fps", "100", "--height", "0.3", "--after", "0.05",
-         "--background", "plain", "--no-floor", "--out", os.path.join(folder, "throw.avi"),
-         "--truth", os.path.join(folder, "truth.csv"), "--json"], check=True, capture_output=True, text=True).stdout)
+    render, truth = render_throw(tribolab, os.path.join(folder, "throw.avi"), os.path.join(folder, "truth.csv"),
+                                 "640x480")
     scale = render["scale_m_per_px"]
-    ox, oy = render["origin_px"]
-    truth = {}
-    with open(os.path.join(folder, "truth.csv")) as f:
-        for row in csv.DictReader(f):
-            if row["track"] == "ball":
-                truth[int(row["frame"])] = (ox + float(row["x"]) / scale, oy - float(row["y"]) / scale)
-
-    server = subprocess.Popen([tribolab, "studio", folder], stdout=subprocess.PIPE, text=True)
-    try:
-        server.stdout.readline()
-        url = server.stdout.readline().strip()
-        if "token=" not in url:
-            fail("no URL printed: " + url)
-        options = webdriver.ChromeOptions()
-        options.binary_location = "/usr/bin/chromium"
-        for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000",
-                  "--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1"]:  # offline: no other host resolves
-            options.add_argument(a)
-        driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
-        try:
-            dragged = run_page(driver, url, out, truth, scale, render["ball_start_px"], render["origin_px"],
-                               render["truth"]["e_velocity"])
-        finally:
-            logs = driver.get_log("browser")
-            driver.quit()
-        errors = [e for e in logs if e["level"] == "SEVERE"]
-        if errors:
-            fail("script errors: " + json.dumps(errors))
-    finally:
-        server.terminate()
-        server.wait(timeout=10)
+    with studio_page(tribolab, folder, fail) as (driver, url, logs):
+        dragged = run_page(driver, url, out, truth, scale, render["ball_start_px"], render["origin_px"],
+                           render["truth"]["e_velocity"])
+    errors = [e for e in logs if e["level"] == "SEVERE"]
+    if errors:
+        fail("script errors: " + json.dumps(errors))
     # The saved Tracker project reads back with `track import`: the ball on every frame, the
     # dragged frame where it was dragged (the CSV beside it gives that frame's world position).
     imported_csv = os.path.join(out, "studio_imported.csv")

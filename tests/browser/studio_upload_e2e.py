@@ -9,20 +9,18 @@ studio_5_uploaded.png and studio_6_upload_refused.png are left in OUT_DIR.
 
     /usr/bin/python3 tests/browser/studio_upload_e2e.py TRIBOLAB OUT_DIR
 """
-import csv
 import filecmp
 import json
 import math
 import os
 import shutil
-import subprocess
 import sys
 
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select, WebDriverWait
+
+from studio_browser import render_throw, studio_page
 
 
 def fail(message):
@@ -37,42 +35,13 @@ def main(tribolab, out):
         shutil.rmtree(d, ignore_errors=True)
         os.makedirs(d)
     video = os.path.join(source, "throw.avi")
-    render = json.loads(subprocess.run(
-        [tribolab, "bounce", "render", "--size", "320x240", "--fps", "100", "--height", "0.3", "--after", "0.05",
-         "--background", "plain", "--no-floor", "--out", video, "--truth", os.path.join(source, "truth.csv"),
-         "--json"], check=True, capture_output=True, text=True).stdout)
-    scale = render["scale_m_per_px"]
-    ox, oy = render["origin_px"]
-    truth = {}
-    with open(os.path.join(source, "truth.csv")) as f:
-        for row in csv.DictReader(f):
-            if row["track"] == "ball":
-                truth[int(row["frame"])] = (ox + float(row["x"]) / scale, oy - float(row["y"]) / scale)
-
-    server = subprocess.Popen([tribolab, "studio", folder], stdout=subprocess.PIPE, text=True)
-    try:
-        server.stdout.readline()
-        url = server.stdout.readline().strip()
-        if "token=" not in url:
-            fail("no URL printed: " + url)
-        options = webdriver.ChromeOptions()
-        options.binary_location = "/usr/bin/chromium"
-        for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000",
-                  "--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1"]:  # offline: no other host resolves
-            options.add_argument(a)
-        driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
-        try:
-            run_page(driver, url, out, video, truth, render["ball_start_px"])
-        finally:
-            logs = driver.get_log("browser")
-            driver.quit()
-        # The page logs the refused requests it made on purpose (415, 400) as failed loads.
-        errors = [e for e in logs if e["level"] == "SEVERE" and "/api/upload" not in e["message"]]
-        if errors:
-            fail("script errors: " + json.dumps(errors))
-    finally:
-        server.terminate()
-        server.wait(timeout=10)
+    render, truth = render_throw(tribolab, video, os.path.join(source, "truth.csv"), "320x240")
+    with studio_page(tribolab, folder, fail) as (driver, url, logs):
+        run_page(driver, url, out, video, truth, render["ball_start_px"])
+    # The page logs the refused requests it made on purpose (415, 400) as failed loads.
+    errors = [e for e in logs if e["level"] == "SEVERE" and "/api/upload" not in e["message"]]
+    if errors:
+        fail("script errors: " + json.dumps(errors))
     uploads = os.path.join(folder, "uploads")
     names = sorted(os.listdir(uploads))
     expected = ["fake.mp4", "throw-2.avi", "throw.avi"]
