@@ -55,6 +55,13 @@ def main(tribolab, out):
     print("ok studio upload")
 
 
+def listed_files(driver):
+    """The page's file list, read in one script: reading each item's text from Python races the
+    page's re-rendering of the list (a stale element while it is being replaced)."""
+    return driver.execute_script(
+        "return Array.from(document.querySelectorAll('#files li'), li => li.innerText.trim())")
+
+
 def run_page(driver, url, out, video, truth, ball_start):
     wait = WebDriverWait(driver, 30)
     status = lambda: driver.find_element(By.ID, "status").text
@@ -73,7 +80,7 @@ def run_page(driver, url, out, video, truth, ball_start):
         fail("uploading: " + error())
     if "saved as uploads/throw.avi" not in status():
         fail("the status after the upload: " + status())
-    wait.until(lambda d: [li.text for li in d.find_elements(By.CSS_SELECTOR, "#files li")] == ["uploads/throw.avi"])
+    wait.until(lambda d: listed_files(d) == ["uploads/throw.avi"])
     if driver.find_element(By.CSS_SELECTOR, "#files li.open").text != "uploads/throw.avi":
         fail("the uploaded file is not shown as the one open")
     if driver.find_element(By.ID, "slider").get_attribute("max") != str(len(truth) - 1):
@@ -110,7 +117,7 @@ def run_page(driver, url, out, video, truth, ball_start):
     wait.until(lambda d: "saved as uploads/throw-2.avi" in status() or error())
     if error():
         fail("uploading again: " + error())
-    listed = lambda: [li.text for li in driver.find_elements(By.CSS_SELECTOR, "#files li")]
+    listed = lambda: listed_files(driver)
     try:
         # (the tracking's Tracker project beside the first is listed too: it opens)
         wait.until(lambda d: listed() == ["uploads/throw-2.avi", "uploads/throw.avi", "uploads/throw.avi.tracks.trk"])
