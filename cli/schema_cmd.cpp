@@ -83,7 +83,7 @@ std::string text_of(const json& commands) {
            (f["default"].is_null() ? std::string("none") : f["default"].dump()) + (f["required"].get<bool>() ? ", required" : "") +
            "  " + f["help"].get<std::string>() + "\n";
     }
-    if (!c.contains("results")) continue;
+    if (!c.contains("results") || c["results"].empty()) continue;  // studio prints no result
     s += "  result keys:";
     for (const json& k : c["results"])
       s += " " + k["key"].get<std::string>() + (k["unit"].get<std::string>().empty() ? "" : " (" + k["unit"].get<std::string>() + ")");

@@ -1,4 +1,4 @@
-// `tribolab studio [FILE_OR_FOLDER] [--port N] [--open]`: the browser workbench
+// `tribolab studio [file_or_folder] [--port N] [--open]`: the browser workbench
 // (docs/cli.md#studio). Serves the folder (src/studio/) on 127.0.0.1 and prints the page's URL
 // with its secret token; runs until interrupted (every action is already autosaved).
 #include "app.hpp"
@@ -26,13 +26,12 @@ void register_studio(CLI::App& root) {
                 "by clicking, run the analyses, save CSV and .trk (a local web server on 127.0.0.1)");
   auto opt = std::make_shared<studio::StudioOptions>();
   add_declared_options(*cmd, *opt, studio::studio_fields(), studio::studio_result_keys());
-  cmd->get_option("folder")->type_name("FILE_OR_FOLDER");
   cmd->callback([opt] {
     app::check_ranges(*opt, studio::studio_fields());
     namespace fs = std::filesystem;
     std::error_code ec;
-    const fs::path given(opt->folder);
-    if (!fs::exists(given, ec)) throw InputError(opt->folder, "no such file or folder");
+    const fs::path given(opt->file_or_folder);
+    if (!fs::exists(given, ec)) throw InputError(opt->file_or_folder, "no such file or folder");
     const bool folder = fs::is_directory(given, ec);
     const fs::path root = fs::canonical(folder ? given : (given.has_parent_path() ? given.parent_path() : fs::path(".")));
     studio::Workbench workbench(root);

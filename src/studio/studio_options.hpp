@@ -11,7 +11,7 @@
 namespace tribolab::studio {
 
 struct StudioOptions {
-  std::string folder = ".";  ///< folder served, or a video or project in it (opened at start)
+  std::string file_or_folder = ".";  ///< folder served, or a video or project in it (opened at start)
   int port = 0;              ///< port on 127.0.0.1; 0 = a free one
   bool open = false;         ///< open the page in the desktop's browser
 };
@@ -23,7 +23,7 @@ inline const app::Fields<StudioOptions>& studio_fields() {
   using O = StudioOptions;
   static const app::Fields<O> f = [] {
     app::Fields<O> d;
-    d.add("folder", &O::folder, "",
+    d.add("file_or_folder", &O::file_or_folder, "",
           "folder served (every file read or written is inside it), or a video or project in it, opened at "
           "start (when not given: the current folder)")
         .as(app::FieldRole::input_files);
