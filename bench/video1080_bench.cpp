@@ -4,6 +4,7 @@
 // target), written once as H.264 (.mp4, libx264 through OpenCV's FFmpeg backend: what a phone
 // records). Every benchmark decodes the whole file; the tracking ones also make the grey image
 // and run the tracker on every frame, as `track video` does.
+#include "video/codec.hpp"
 #include "video/frame.hpp"
 #include "video/ellipse_tracker.hpp"
 #include "video/path_tracker.hpp"
@@ -11,7 +12,6 @@
 #include "video/render_throw.hpp"
 
 #include <benchmark/benchmark.h>
-#include <opencv2/videoio.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -45,11 +45,11 @@ const Clip1080& clip1080() {
     o.motion.omega = 0;  // the sticker does not turn in flight: the path tracker's template does not rotate
     const auto film = video::plan_throw_film(o);
     c.path = (std::filesystem::temp_directory_path() / ("video1080_bench_" + std::to_string(::getpid()) + ".mp4")).string();
-    cv::VideoWriter w(c.path, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('a', 'v', 'c', '1'), o.render.fps,
-                      cv::Size(o.render.width, o.render.height));
-    if (!w.isOpened()) throw std::runtime_error("video1080_bench: cannot write H.264 here");
+    const auto w = video::create_video_file(c.path, video::fourcc('a', 'v', 'c', '1'), o.render.fps,
+                                            cv::Size(o.render.width, o.render.height));
+    if (!w) throw std::runtime_error("video1080_bench: cannot write H.264 here");
     const int n = std::min(film.frames, 120);
-    for (int k = 0; k < n; ++k) w.write(video::render_frame(film.scene, k / o.render.fps, film.render, k));
+    for (int k = 0; k < n; ++k) w->write(video::render_frame(film.scene, k / o.render.fps, film.render, k));
     c.frames = n;
     const auto shape = film.scene(0).front();
     c.ball = {shape.cx_px, shape.cy_px};
@@ -64,9 +64,9 @@ void BM_Decode1080pH264(benchmark::State& state) {
   const Clip1080& c = clip1080();
   std::int64_t frames = 0;
   for (auto _ : state) {
-    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    const auto cap = video::open_video_file(c.path);
     cv::Mat m;
-    while (cap.read(m)) {
+    while (cap->read(m)) {
       benchmark::DoNotOptimize(m.data);
       ++frames;
     }
@@ -80,9 +80,9 @@ void BM_DecodeAndGray1080pH264(benchmark::State& state) {
   const Clip1080& c = clip1080();
   std::int64_t frames = 0;
   for (auto _ : state) {
-    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    const auto cap = video::open_video_file(c.path);
     video::Frame f;
-    while (cap.read(f.bgr)) {
+    while (cap->read(f.bgr)) {
       video::make_gray(f);
       benchmark::DoNotOptimize(f.gray.data);
       ++frames;
@@ -98,11 +98,11 @@ void BM_DecodeTrackPath1080pH264(benchmark::State& state) {
   std::int64_t frames = 0;
   int lost = 0;
   for (auto _ : state) {
-    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    const auto cap = video::open_video_file(c.path);
     video::PathTracker tracker;
     video::Frame f;
     bool started = false;
-    while (cap.read(f.bgr)) {
+    while (cap->read(f.bgr)) {
       f.t = f.index / 240.0;
       video::make_gray(f);
       if (!started) {
@@ -128,12 +128,12 @@ void BM_DecodeTrackEllipse1080pH264(benchmark::State& state) {
   std::int64_t frames = 0;
   int lost = 0;
   for (auto _ : state) {
-    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    const auto cap = video::open_video_file(c.path);
     video::EllipseTracker tracker;
     video::Frame f;
     bool started = false;
     lost = 0;
-    while (cap.read(f.bgr)) {
+    while (cap->read(f.bgr)) {
       f.t = f.index / 240.0;
       video::make_gray(f);
       if (!started) {

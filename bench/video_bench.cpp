@@ -3,13 +3,13 @@
 // tracking excludes decoding). The video is a rendered throw (bounce render's defaults: 240
 // fps, textured background, noise 2, shutter 0.5; a checker sticker on the ball for the point
 // tracker), written once to a temporary .avi (MJPG).
+#include "video/codec.hpp"
 #include "video/frame.hpp"
 #include "video/ellipse_tracker.hpp"
 #include "video/point_tracker.hpp"
 #include "video/render_throw.hpp"
 
 #include <benchmark/benchmark.h>
-#include <opencv2/videoio.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -48,9 +48,9 @@ const Clip& clip() {
     // The sticker's centre: mark_u_px along the body x-axis (angle counter-clockwise on screen).
     c.sticker = {shape.cx_px + shape.mark_u_px * std::cos(shape.angle_rad),
                  shape.cy_px - shape.mark_u_px * std::sin(shape.angle_rad)};
-    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    const auto cap = video::open_video_file(c.path);
     video::Frame f;
-    while (cap.read(f.bgr)) {
+    while (cap->read(f.bgr)) {
       f.t = f.index / film.render.fps;
       video::make_gray(f);
       c.frames.push_back(f);
@@ -67,9 +67,9 @@ void BM_Decode640x480(benchmark::State& state) {
   const Clip& c = clip();
   std::int64_t frames = 0;
   for (auto _ : state) {
-    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    const auto cap = video::open_video_file(c.path);
     cv::Mat m;
-    while (cap.read(m)) {
+    while (cap->read(m)) {
       benchmark::DoNotOptimize(m.data);
       ++frames;
     }
@@ -82,9 +82,9 @@ void BM_DecodeAndGray640x480(benchmark::State& state) {
   const Clip& c = clip();
   std::int64_t frames = 0;
   for (auto _ : state) {
-    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
+    const auto cap = video::open_video_file(c.path);
     video::Frame f;
-    while (cap.read(f.bgr)) {
+    while (cap->read(f.bgr)) {
       video::make_gray(f);
       benchmark::DoNotOptimize(f.gray.data);
       ++frames;

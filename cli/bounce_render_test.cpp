@@ -2,12 +2,13 @@
 #include "cli_test_util.hpp"
 
 #include "io/track_csv.hpp"
+#include "video/codec.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
+#include <opencv2/videoio.hpp>  // cv::CAP_PROP_*
 
 #include <algorithm>
 #include <cmath>
@@ -55,13 +56,13 @@ TEST(BounceRenderCli, VideoAndTruthAgreeWithTheJsonCalibration) {
   EXPECT_EQ(set.find("ball.A").points.size(), static_cast<std::size_t>(frames));
   EXPECT_EQ(set.find("ball.B").points.size(), static_cast<std::size_t>(frames));
 
-  cv::VideoCapture cap(video, cv::CAP_FFMPEG);
-  ASSERT_TRUE(cap.isOpened());
-  EXPECT_NEAR(cap.get(cv::CAP_PROP_FPS), 100, 1e-9);
+  const auto cap = video::open_video_file(video);
+  ASSERT_TRUE(cap);
+  EXPECT_NEAR(cap->get(cv::CAP_PROP_FPS), 100, 1e-9);
   cv::Mat f;
   int k = 0;
   double worst = 0;
-  while (cap.read(f)) {
+  while (cap->read(f)) {
     ASSERT_LT(k, frames);
     EXPECT_EQ(f.cols, 320);
     EXPECT_EQ(f.rows, 240);

@@ -120,7 +120,7 @@ struct Figure {
   std::string validate() const;
 };
 
-/// An encoded still image, e.g. a video frame with the tracks drawn (cv::imencode's output).
+/// An encoded still image, e.g. a video frame with the tracks drawn (video::encode_image's output).
 /// It is embedded in the page as a base64 data URI, so the report stays one offline file.
 struct Image {
   std::vector<unsigned char> data;  ///< the bytes of a JPEG or PNG file

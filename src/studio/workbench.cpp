@@ -12,10 +12,11 @@
 #include "studio/form_values.hpp"
 #include "studio/guard.hpp"
 #include "studio/upload.hpp"
+#include "video/codec.hpp"
 #include "video/source.hpp"
 
 #include <fmt/format.h>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // the cv::IMWRITE_* names; encoding is video/codec.hpp's
 
 #include <algorithm>
 #include <fstream>
@@ -142,8 +143,8 @@ json Workbench::open(const fs::path& file) {
   std::size_t total = 0;
   video::Frame f;
   while (reader.next(f)) {
-    std::vector<unsigned char> buf;
-    if (!cv::imencode(".jpg", f.bgr, buf, {cv::IMWRITE_JPEG_QUALITY, 90}))
+    const std::vector<unsigned char> buf = video::encode_image(".jpg", f.bgr, {cv::IMWRITE_JPEG_QUALITY, 90});
+    if (buf.empty())
       throw InputError(file.string(), fmt::format("frame {} could not be encoded as JPEG", f.index));
     total += buf.size();
     if (total > kMaxFrameBytes)

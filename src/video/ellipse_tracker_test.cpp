@@ -1,5 +1,6 @@
 // EllipseTracker on rendered scenes with known truth (docs/theory.md#ellipse-tracking).
 #include "video/ellipse_tracker.hpp"
+#include "video/codec.hpp"
 
 #include "numerics/units.hpp"
 
@@ -11,7 +12,6 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 #include <unistd.h>
 
 #include <algorithm>
@@ -178,12 +178,12 @@ TEST(EllipseTracker, SpinningBallDecodedFromCompressedVideo) {
   for (const char* name : {"throw.avi", "throw.mp4"}) {
     const std::string path = (dir / name).string();
     write_video(path, scene, 24, o);
-    cv::VideoCapture cap(path);
-    ASSERT_TRUE(cap.isOpened()) << path;
+    const auto cap = open_video_file(path);
+    ASSERT_TRUE(cap) << path;
     EllipseTracker tracker;
     std::vector<double> centre, angle;
     Frame f;
-    for (int i = 0; cap.read(f.bgr); ++i) {
+    for (int i = 0; cap->read(f.bgr); ++i) {
       f.index = i;
       f.t = i / o.fps;
       make_gray(f);

@@ -7,6 +7,7 @@
 // Tracked with defaults: every frame, the centre against the render's truth, the tips on the
 // same ends of the ball throughout, and e from analyze_bounce against the simulated bounce.
 #include "video/track_video.hpp"
+#include "video/codec.hpp"
 
 #include "analysis/bounce_analyze.hpp"
 #include "video/render.hpp"
@@ -14,7 +15,7 @@
 #include "numerics/statistics.hpp"
 
 #include <gtest/gtest.h>
-#include <opencv2/videoio.hpp>
+#include <opencv2/videoio.hpp>  // cv::CAP_PROP_*
 
 #include <algorithm>
 #include <cmath>
@@ -47,11 +48,11 @@ const LossyClip& lossy_clip() {
     c.film = plan_throw_film(o);
     c.path = (std::filesystem::temp_directory_path() /
               ("tribolab_lossy_h264_" + std::to_string(::getpid()) + ".mp4")).string();
-    cv::VideoWriter w(c.path, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('a', 'v', 'c', '1'),
-                      o.render.fps / kLossyKeep, cv::Size(o.render.width, o.render.height));
-    if (!w.isOpened()) return c;  // frames == 0: the test says why
+    const auto w = create_video_file(c.path, fourcc('a', 'v', 'c', '1'), o.render.fps / kLossyKeep,
+                                     cv::Size(o.render.width, o.render.height));
+    if (!w) return c;  // frames == 0: the test says why
     for (int k = 0; k < c.film.frames; k += kLossyKeep) {
-      w.write(render_frame(c.film.scene, k / o.render.fps, c.film.render, k));
+      w->write(render_frame(c.film.scene, k / o.render.fps, c.film.render, k));
       ++c.frames;
     }
     return c;
@@ -63,13 +64,13 @@ TEST(LossyVideo, H264At30FpsIsTrackedWithDefaultOptions) {
   const LossyClip& c = lossy_clip();
   ASSERT_GT(c.frames, 15) << "OpenCV's FFmpeg backend could not write H.264 (avc1) to " << c.path;
   {
-    cv::VideoCapture cap(c.path, cv::CAP_FFMPEG);
-    ASSERT_TRUE(cap.isOpened());
-    const int fourcc = static_cast<int>(cap.get(cv::CAP_PROP_FOURCC));
-    const std::string codec{static_cast<char>(fourcc & 255), static_cast<char>((fourcc >> 8) & 255),
-                            static_cast<char>((fourcc >> 16) & 255), static_cast<char>((fourcc >> 24) & 255)};
+    const auto cap = open_video_file(c.path);
+    ASSERT_TRUE(cap);
+    const int code = static_cast<int>(cap->get(cv::CAP_PROP_FOURCC));
+    const std::string codec{static_cast<char>(code & 255), static_cast<char>((code >> 8) & 255),
+                            static_cast<char>((code >> 16) & 255), static_cast<char>((code >> 24) & 255)};
     EXPECT_EQ(codec, "avc1");
-    EXPECT_NEAR(cap.get(cv::CAP_PROP_FPS), 30, 1e-6);
+    EXPECT_NEAR(cap->get(cv::CAP_PROP_FPS), 30, 1e-6);
   }
   const ThrowView& view = c.film.view;
   TrackVideoOptions o;  // defaults throughout, as a user would start

@@ -1,4 +1,5 @@
 #include "video/point_tracker.hpp"
+#include "video/codec.hpp"
 
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
@@ -9,7 +10,6 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -441,15 +441,15 @@ TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
       std::filesystem::temp_directory_path() / ("point_tracker_codec_" + std::to_string(::getpid()) + ".avi");
   const int frames = 24;
   write_video(path.string(), scene, frames, o);
-  cv::VideoCapture video(path.string());
-  ASSERT_TRUE(video.isOpened());
+  auto video = open_video_file(path.string());
+  ASSERT_TRUE(video);
   PointTracker tracker;
   Errors e;
   for (int i = 0; i < frames; ++i) {
     Frame f;
     f.index = i;
     f.t = i / o.fps;
-    ASSERT_TRUE(video.read(f.bgr)) << "frame " << i;
+    ASSERT_TRUE(video->read(f.bgr)) << "frame " << i;
     make_gray(f);
     if (i == 0) {
       tracker.start(f, w.mark(0).x, w.mark(0).y, "mark");
@@ -463,7 +463,7 @@ TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
     e.position_px.push_back(std::hypot(ob.x_px - w.mark(f.t).x, ob.y_px - w.mark(f.t).y));
     e.angle_deg.push_back(to_deg(std::abs(ob.angle_rad - (w.angle(f.t) - w.angle(0)))));
   }
-  video.release();
+  video.reset();  // closed before the file is removed
   std::filesystem::remove(path);
   e.print("blurred wheel through MJPG");
   EXPECT_EQ(e.lost, 0);

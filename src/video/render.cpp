@@ -8,9 +8,9 @@
 #include "io/output_path.hpp"
 #include "io/temp_files.hpp"
 #include "numerics/error.hpp"
+#include "video/codec.hpp"
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -258,15 +258,13 @@ void write_video(const std::string& path, const Scene& scene, int frames, const 
   const fs::path target(path);
   std::string ext = target.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
-  int api = 0, fourcc = 0;
+  int code = 0;
   if (ext == ".avi") {
     // FFmpeg's MJPEG encoder (mean error ~1 grey level). Not OpenCV's own CAP_OPENCV_MJPEG:
     // in OpenCV 4.6 it wrote a black 16x16 block into some frames (render_throw_test.cpp).
-    api = cv::CAP_FFMPEG;
-    fourcc = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
+    code = fourcc('M', 'J', 'P', 'G');
   } else if (ext == ".mp4") {
-    api = cv::CAP_FFMPEG;
-    fourcc = cv::VideoWriter::fourcc('m', 'p', '4', 'v');
+    code = fourcc('m', 'p', '4', 'v');
   } else {
     throw InputError(path, "unknown video type '" + ext + "' (expected .avi or .mp4)");
   }
@@ -285,14 +283,11 @@ void write_video(const std::string& path, const Scene& scene, int frames, const 
     }
   } guard{tmp};
   {
-    cv::VideoWriter writer;
     // FFmpeg's writer takes no quality property (it rejects VIDEOWRITER_PROP_QUALITY).
-    if (!writer.open(tmp.string(), api, fourcc, options.fps, cv::Size(options.width, options.height)) ||
-        !writer.isOpened()) {
-      throw InputError(path, "cannot write this video (codec or permissions)");
-    }
-    for (int i = 0; i < frames; ++i) writer.write(render_frame(scene, i / options.fps, options, i));
-    writer.release();
+    const auto writer = create_video_file(tmp.string(), code, options.fps, cv::Size(options.width, options.height));
+    if (!writer) throw InputError(path, "cannot write this video (codec or permissions)");
+    for (int i = 0; i < frames; ++i) writer->write(render_frame(scene, i / options.fps, options, i));
+    writer->close();
   }
   std::error_code ec;
   if (!fs::exists(tmp, ec) || fs::file_size(tmp, ec) == 0) throw InputError(path, "writing the video failed");

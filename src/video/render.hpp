@@ -2,7 +2,7 @@
 // and `bounce render` (docs/theory.md#video-rendering). A scene is a background plus shapes
 // whose pose is a function of time; each frame integrates the shapes over the exposure
 // (motion blur: `blur_samples` sub-frames across the shutter time, centred on the frame's time), renders anti-aliased by
-// supersampling, adds sensor noise, and is written with OpenCV's VideoWriter.
+// supersampling, adds sensor noise, and is written with FFmpeg (video/codec.hpp).
 #pragma once
 
 #include "video/frame.hpp"

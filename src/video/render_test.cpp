@@ -1,10 +1,11 @@
 #include "video/render.hpp"
+#include "video/codec.hpp"
 
 #include "numerics/error.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
+#include <opencv2/videoio.hpp>  // cv::CAP_PROP_*
 
 #include <cmath>
 #include <filesystem>
@@ -193,13 +194,13 @@ TEST_P(WriteVideo, DecodesToTheFramesSizeAndRateWritten) {
   o.blur_samples = 2;
   const Scene scene = [](double t) { return std::vector<ShapePose>{white_ellipse(50 + 600 * t, 120, 20, 12, 3 * t)}; };
   write_video(path.string(), scene, 12, o);
-  cv::VideoCapture cap(path.string(), cv::CAP_FFMPEG);
-  ASSERT_TRUE(cap.isOpened());
-  EXPECT_NEAR(cap.get(cv::CAP_PROP_FPS), 30, 1e-6);
+  const auto cap = open_video_file(path.string());
+  ASSERT_TRUE(cap);
+  EXPECT_NEAR(cap->get(cv::CAP_PROP_FPS), 30, 1e-6);
   int count = 0;
   cv::Mat frame;
   double err = 0;
-  while (cap.read(frame)) {
+  while (cap->read(frame)) {
     EXPECT_EQ(frame.cols, 320);
     EXPECT_EQ(frame.rows, 240);
     if (count == 5) err = cv::norm(frame, render_frame(scene, 5 / o.fps, o, 5), cv::NORM_L1) / frame.total() / 3;

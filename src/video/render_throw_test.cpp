@@ -1,10 +1,10 @@
 #include "video/render_throw.hpp"
+#include "video/codec.hpp"
 
 #include "numerics/error.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <unistd.h>
 
@@ -131,10 +131,11 @@ TEST(ThrowFilm, WrittenVideoDecodesToTheRenderedFrames) {
   for (const char* ext : {".avi", ".mp4"}) {
     const fs::path path = fs::temp_directory_path() / ("render_throw_test_" + std::to_string(::getpid()) + ext);
     write_video(path.string(), f.scene, f.frames, f.render);
-    cv::VideoCapture cap(path.string(), cv::CAP_FFMPEG);
+    const auto cap = open_video_file(path.string());
+    ASSERT_TRUE(cap) << ext;
     cv::Mat frame;
     int k = 0;
-    while (cap.read(frame)) {
+    while (cap->read(frame)) {
       const cv::Mat direct = render_frame(f.scene, k / f.render.fps, f.render, k);
       EXPECT_LT(cv::norm(frame, direct, cv::NORM_L1) / frame.total() / 3, 3.0) << ext << " frame " << k;
       EXPECT_LT(cv::norm(frame, direct, cv::NORM_INF), 120.0) << ext << " frame " << k;

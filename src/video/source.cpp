@@ -6,9 +6,10 @@
 #include "io/track_import.hpp"
 #include "numerics/error.hpp"
 #include "numerics/physical_range.hpp"
+#include "video/codec.hpp"
 
 #include <opencv2/core/utils/logger.hpp>
-#include <opencv2/videoio.hpp>
+#include <opencv2/videoio.hpp>  // the cv::CAP_PROP_* names; decoding is codec.hpp's
 
 #include <algorithm>
 #include <atomic>
@@ -153,20 +154,20 @@ VideoInfo probe_video(const std::string& path, const std::string& where) {
   quiet_decoder_logs();
   // (an image sequence is an FFmpeg pattern such as frame%04d.jpg, not one file)
   if (path.find('%') == std::string::npos) require_regular_file(path, where);
-  cv::VideoCapture cap;
+  std::unique_ptr<VideoFileReader> cap;
   try {
-    cap.open(path, cv::CAP_FFMPEG);
+    cap = open_video_file(path);
   } catch (const cv::Exception&) {
     // OpenCV throws for some unreadable inputs; reported below as not decodable
   }
-  if (!cap.isOpened()) {
+  if (!cap) {
     throw InputError(where, "cannot be decoded as a video (FFmpeg does not recognise the "
                             "container or its codec; is it a video file?)");
   }
   cv::Mat first;
   bool ok = false;
   try {
-    ok = cap.read(first);
+    ok = cap->read(first);
   } catch (const cv::Exception&) {
     ok = false;
   }
@@ -177,11 +178,11 @@ VideoInfo probe_video(const std::string& path, const std::string& where) {
   info.path = path;
   info.width = first.cols;
   info.height = first.rows;
-  const double n = cap.get(cv::CAP_PROP_FRAME_COUNT);
+  const double n = cap->get(cv::CAP_PROP_FRAME_COUNT);
   info.frame_count = std::isfinite(n) && n > 0 && n < 1e8 ? static_cast<int>(std::lround(n)) : 0;
-  const double fps = cap.get(cv::CAP_PROP_FPS);
+  const double fps = cap->get(cv::CAP_PROP_FPS);
   info.fps = std::isfinite(fps) && fps > 0 && fps <= 1e5 ? fps : 0;
-  info.codec = fourcc_text(cap.get(cv::CAP_PROP_FOURCC));
+  info.codec = fourcc_text(cap->get(cv::CAP_PROP_FOURCC));
   return info;
 }
 
@@ -430,7 +431,7 @@ VideoInput open_input(const std::string& path, const SourceOptions& options) {
 
 struct FrameReader::Impl {
   VideoInput input;  // a copy: keeps a temporary video alive while frames are read
-  cv::VideoCapture cap;
+  std::unique_ptr<VideoFileReader> cap;
   int next_index = 0;  // video index of the frame the next grab() returns
   int steps_done = 0;
   bool finished = false;
@@ -448,7 +449,7 @@ struct FrameReader::Impl {
   double frame_time(int index) {
     const double nominal = input.time.t(index);
     if (!input.frame_times_from_timestamps) return nominal;
-    const double ms = cap.get(cv::CAP_PROP_POS_MSEC);
+    const double ms = cap->get(cv::CAP_PROP_POS_MSEC);
     const double stamp = (input.time.start_time_s + ms / 1000) * input.time.time_scale;
     const double tol = 0.25 * input.time.frame_duration_s * input.time.time_scale;
     if (!std::isfinite(ms) || !(stamp > last_t)) return nominal;
@@ -499,7 +500,8 @@ struct FrameReader::Impl {
 FrameReader::FrameReader(const VideoInput& input) : impl_(std::make_unique<Impl>()) {
   quiet_decoder_logs();
   impl_->input = input;
-  if (!impl_->cap.open(input.info.path, cv::CAP_FFMPEG)) {
+  impl_->cap = open_video_file(input.info.path);
+  if (!impl_->cap) {
     throw InputError(input.input, "cannot be decoded as a video");
   }
 }
@@ -516,13 +518,13 @@ bool FrameReader::next(Frame& frame) {
   const int target = clip.start_frame + m.steps_done * clip.step_size;
   try {
     while (m.next_index < target) {  // frames outside the clip: demuxed, never converted
-      if (!m.cap.grab()) return m.end(target);
+      if (!m.cap->grab()) return m.end(target);
       ++m.next_index;
     }
     // a fresh Mat each frame: trackers may keep (shallow copies of) earlier frames, which
     // decoding into a reused buffer would overwrite
     cv::Mat bgr;
-    if (!m.cap.read(bgr) || bgr.empty()) {
+    if (!m.cap->read(bgr) || bgr.empty()) {
       m.note_timestamps();
       return m.end(target);
     }

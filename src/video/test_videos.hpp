@@ -4,11 +4,11 @@
 #pragma once
 
 #include "numerics/source_dir_test_util.hpp"
+#include "video/codec.hpp"
 #include "video/frame.hpp"
 #include "video/render.hpp"
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -65,10 +65,9 @@ inline cv::Mat test_frame(const TestVideo& v, int i) {
 
 /// Writes the video as Motion-JPEG in an .avi (decoded by every FFmpeg build).
 inline void write_test_video(const std::string& path, const TestVideo& v) {
-  cv::VideoWriter w(path, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), v.fps,
-                    cv::Size(v.width, v.height));
-  if (!w.isOpened()) throw std::runtime_error("cannot write test video " + path);
-  for (int i = 0; i < v.frames; ++i) w.write(test_frame(v, i));
+  const auto w = create_video_file(path, fourcc('M', 'J', 'P', 'G'), v.fps, cv::Size(v.width, v.height));
+  if (!w) throw std::runtime_error("cannot write test video " + path);
+  for (int i = 0; i < v.frames; ++i) w->write(test_frame(v, i));
 }
 
 /// Frame `index` of `scene` as a tracker receives it: rendered at t = index / fps, grey made.

@@ -6,8 +6,9 @@
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
 #include "numerics/statistics.hpp"
+#include "video/codec.hpp"
 
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // the cv::IMWRITE_* names; encoding is codec.hpp's
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -519,7 +520,8 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
     Thumbnail t;
     t.frame = meta.index;
     t.t = meta.t;
-    if (!cv::imencode(".jpg", img, t.jpeg, {cv::IMWRITE_JPEG_QUALITY, 85})) {
+    t.jpeg = encode_image(".jpg", img, {cv::IMWRITE_JPEG_QUALITY, 85});
+    if (t.jpeg.empty()) {
       throw InputError(input, "cannot encode a thumbnail as JPEG");
     }
     result.thumbnails.push_back(std::move(t));

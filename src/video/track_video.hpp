@@ -101,7 +101,7 @@ struct TrackedSeries {
 struct Thumbnail {
   int frame = 0;
   double t = 0;
-  std::vector<unsigned char> jpeg;     ///< JPEG bytes (cv::imencode)
+  std::vector<unsigned char> jpeg;     ///< JPEG bytes (video::encode_image)
 };
 
 struct TrackVideoResult {

@@ -1,4 +1,5 @@
 #include "video/track_video.hpp"
+#include "video/codec.hpp"
 
 #include "io/track_import.hpp"
 #include "io/tracker_trk.hpp"
@@ -10,7 +11,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // cv::IMREAD_*
 
 #include <cmath>
 #include <cstdlib>
@@ -186,7 +187,7 @@ TEST(TrackVideo, ThumbnailsAreEvenlySpacedSmallJpegs) {
   for (int k = 0; k < 4; ++k) {
     EXPECT_EQ(r.thumbnails[k].frame, want[k]);
     EXPECT_DOUBLE_EQ(r.thumbnails[k].t, want[k] / kFps);
-    const cv::Mat img = cv::imdecode(r.thumbnails[k].jpeg, cv::IMREAD_COLOR);
+    const cv::Mat img = decode_image(r.thumbnails[k].jpeg, cv::IMREAD_COLOR);
     ASSERT_FALSE(img.empty());
     EXPECT_EQ(img.cols, 320);  // already 320 px wide: kept at full size
     EXPECT_EQ(img.rows, 240);

@@ -12,8 +12,8 @@
 //              --window-size=1100,1250 --screenshot=docs/img/report.png file://OUT.html)
 #include "report/format.hpp"
 #include "report/html.hpp"
+#include "video/codec.hpp"
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
@@ -131,7 +131,8 @@ rpt::Image drawn_image(const std::string& ext, std::string caption) {
   cv::circle(img, cv::Point(80, 60), 30, cv::Scalar(40, 40, 200), cv::FILLED, cv::LINE_AA);
   cv::putText(img, ext, cv::Point(8, 110), cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   rpt::Image im;
-  if (!cv::imencode(ext, img, im.data)) throw std::runtime_error("OpenCV cannot encode " + ext);
+  im.data = tribolab::video::encode_image(ext, img);
+  if (im.data.empty()) throw std::runtime_error("OpenCV cannot encode " + ext);
   im.caption = std::move(caption);
   return im;
 }

@@ -3,12 +3,13 @@
 // positions and red markers on the score, the orientation is unwrapped, the thumbnails are
 // embedded byte for byte, and an ellipse's ends do not repeat its orientation and score.
 #include "app/track/report_track_video.hpp"
+#include "video/codec.hpp"
 
 #include "report/format.hpp"
 #include "report/html.hpp"
 
 #include <gtest/gtest.h>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // cv::IMREAD_*
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -29,8 +30,8 @@ constexpr int kVideoFrames = 24;
 std::vector<unsigned char> thumbnail_jpeg(int frame) {
   cv::Mat img(120, 160, CV_8UC3, cv::Scalar(200, 200, 200));
   cv::circle(img, cv::Point(20 + 5 * frame, 60), 12, cv::Scalar(40, 40, 200), cv::FILLED, cv::LINE_AA);
-  std::vector<unsigned char> jpeg;
-  EXPECT_TRUE(cv::imencode(".jpg", img, jpeg));
+  std::vector<unsigned char> jpeg = video::encode_image(".jpg", img);
+  EXPECT_FALSE(jpeg.empty());
   return jpeg;
 }
 
@@ -234,7 +235,7 @@ TEST(TrackVideoReport, ThumbnailsAreEmbeddedByteForByte) {
   }
   EXPECT_NE(html.find("<figcaption>frame 12, t = 0.05 s</figcaption>"), std::string::npos);
   // The bytes are a real picture: OpenCV decodes them back to the size drawn.
-  const cv::Mat back = cv::imdecode(r.thumbnails[1].jpeg, cv::IMREAD_COLOR);
+  const cv::Mat back = video::decode_image(r.thumbnails[1].jpeg, cv::IMREAD_COLOR);
   EXPECT_EQ(back.cols, 160);
   EXPECT_EQ(back.rows, 120);
 }
