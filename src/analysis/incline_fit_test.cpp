@@ -2,6 +2,7 @@
 // (src/analysis/incline_synthetic.hpp): recovery, interval coverage, model A detection.
 #include "analysis/incline_fit.hpp"
 #include "analysis/incline_synthetic.hpp"
+#include "numerics/coverage_test_util.hpp"
 #include "numerics/error.hpp"
 
 #include <gtest/gtest.h>
@@ -71,8 +72,13 @@ bool covers(const Estimate& e, double truth) { return e.ci_low <= truth && truth
 // the check with probability ~0.3 %; the seeds are fixed, so the outcome is reproducible).
 double binomial_tolerance(double p, int n) { return 3 * std::sqrt(p * (1 - p) / n); }
 
+// The sanitizer tree runs the first 40 seeds: each coverage count must reach
+// binomial_floor(40, 0.95) = 33 (P(X < 33) = 7.1e-4; a sigma half the true one passes with
+// probability 0.026) and each false-positive count stay at most binomial_ceiling(40, 0.05) = 7
+// (P(X > 7) = 7.1e-4; a test whose sigma is half the true one says `present` 33 % of the time
+// and passes with probability 0.026).
 TEST(InclineFit, IntervalsCoverTheTruthNinetyFivePercentOfTheTime) {
-  const int runs = 200;
+  const int runs = study_draws(200, 40);
   int cover_mu = 0, cover_v0 = 0, cover_t0 = 0, cover_x0 = 0, cover_y0 = 0;
   int cover_mu_a = 0, cover_na = 0, present = 0, an_present = 0, an_runs = 0, cover_psi = 0;
   InclineFitOptions fo;
@@ -105,6 +111,14 @@ TEST(InclineFit, IntervalsCoverTheTruthNinetyFivePercentOfTheTime) {
               cover_x0 / double(runs), cover_y0 / double(runs), cover_mu_a / double(runs),
               cover_na / double(runs), cover_psi / double(runs), present / double(runs),
               an_present / double(an_runs), an_runs);
+  if (!is_full_study(runs, 200)) {
+    for (int c : {cover_mu, cover_v0, cover_t0, cover_x0, cover_y0, cover_mu_a, cover_na, cover_psi})
+      EXPECT_GE(c, binomial_floor(runs, 0.95));
+    EXPECT_LE(present, binomial_ceiling(runs, 0.05));
+    EXPECT_EQ(an_runs, runs);
+    EXPECT_LE(an_present, binomial_ceiling(an_runs, 0.05));
+    return;
+  }
   for (int c : {cover_mu, cover_v0, cover_t0, cover_x0, cover_y0, cover_mu_a, cover_na, cover_psi})
     EXPECT_NEAR(c / double(runs), 0.95, tol);
   // False-positive rate of the verdict: near the 5 % size of the test.
@@ -116,7 +130,11 @@ TEST(InclineFit, IntervalsCoverTheTruthNinetyFivePercentOfTheTime) {
 TEST(InclineFit, DetectsANormalFrictionComponent) {
   // normal_accel = 0.3 m/s^2 (5 % of alpha): model A's interval is ~+-0.015, so the power is
   // essentially 1; every one of 50 runs must detect it and cover the truth at 99.9 %.
-  const int runs = 50;
+  // The sanitizer tree runs the first 20 seeds, with the same bounds: P(2 or more misses of 20
+  // 99.9 % intervals) = 1.9e-4. (A sigma half the true one misses 9.9 % of the time: at most
+  // one miss in 20 then has probability 0.40, in 50 0.035; the 95 % coverage studies above are
+  // the sharper check of sigma.)
+  const int runs = study_draws(50, 20);
   int detected = 0, covered = 0;
   for (int i = 0; i < runs; ++i) {
     const auto s = seed_run(5000 + i, 0.3, i % 2 ? 80 : 240);
@@ -181,6 +199,27 @@ TEST(InclineFit, TurnedCameraFrameIsNotMistakenForNormalFriction) {
   // 150 runs at 0.5 deg and 60 at 1 deg (80/120/240 fps, 1 mm noise, seed figure 五's launch).
   // Binomial tolerance +-3 sqrt(p(1-p)/N): 0.053 at N = 150 (rate 5 %), 0.053 at N = 150
   // (coverage 95 %); at N = 60 the 5 % rate's tolerance is 0.084.
+  // The sanitizer tree runs the first 40 and 20 seeds, with the exact binomial bounds for them:
+  // coverage at least binomial_floor(40, 0.95) = 33 and (20, 0.95) = 15, `present` at most
+  // binomial_ceiling(40, 0.05) = 7 and (20, 0.05) = 5 (each fails a correct method with
+  // probability < 1e-3). A sigma half the true one (coverage 0.67, `present` 33 %) passes a
+  // count of 40 with probability 0.026, one of 20 with 0.32.
+  const int n_half = study_draws(150, 40), n_one = study_draws(60, 20);
+  if (!is_full_study(n_half, 150)) {
+    const TurnedFrameCounts half = analyse_turned_runs(n_half, 20000, 0.5, 0.0, true);
+    ASSERT_EQ(half.runs, n_half);
+    EXPECT_LE(half.present, binomial_ceiling(n_half, 0.05));
+    EXPECT_GE(half.cover_psi, binomial_floor(n_half, 0.95));
+    EXPECT_GE(half.cover_mu, binomial_floor(n_half, 0.95));
+    ASSERT_EQ(half.an_runs, n_half);
+    EXPECT_LE(half.an_present, binomial_ceiling(n_half, 0.05));
+    const TurnedFrameCounts one = analyse_turned_runs(n_one, 21000, -1.0, 0.0, true);
+    ASSERT_EQ(one.runs, n_one);
+    EXPECT_LE(one.present, binomial_ceiling(n_one, 0.05));
+    EXPECT_GE(one.cover_psi, binomial_floor(n_one, 0.95));
+    EXPECT_LT(std::max(half.max_abs_correlation, one.max_abs_correlation), 0.95);  // as below
+    return;
+  }
   const TurnedFrameCounts half = analyse_turned_runs(150, 20000, 0.5, 0.0, true);
   ASSERT_EQ(half.runs, 150);
   EXPECT_NEAR(half.present / 150.0, 0.05, binomial_tolerance(0.05, 150));
@@ -214,13 +253,24 @@ TEST(InclineFit, DetectsNormalFrictionThroughATurnedFrame) {
   // 0.3 is 30 sigma and 0.1 is ~11 sigma: a 1.96-sigma test detects both in essentially every
   // run (the bound 27 of 30 for 0.1 leaves room for the F-test's part of the verdict). The mean
   // of the 30 fits must be unbiased within 3 standard errors of the mean.
-  const TurnedFrameCounts strong = analyse_turned_runs(30, 23000, 0.5, 0.3, true);
+  // The sanitizer tree runs the first 10 seeds of each: every strong run detected, psi covered
+  // in at least binomial_floor(10, 0.95) = 6 (P(X < 6) = 6.4e-5), at most 2 weak runs missed
+  // (P(3 or more) = 1.1e-4 even at a 1 % miss rate; an 11-sigma effect misses far less), the
+  // means within 3 standard errors of 10 runs.
+  const int runs = study_draws(30, 10);
+  const bool full = is_full_study(runs, 30);
+  const TurnedFrameCounts strong = analyse_turned_runs(runs, 23000, 0.5, 0.3, true);
   EXPECT_EQ(strong.present, strong.runs);
-  EXPECT_NEAR(strong.cover_psi / double(strong.runs), 0.95, binomial_tolerance(0.95, strong.runs));
-  const TurnedFrameCounts weak = analyse_turned_runs(30, 24000, 0.5, 0.1, true);
-  EXPECT_GE(weak.present, 27);  // measured 30 of 30
-  EXPECT_NEAR(strong.sum_normal_accel / strong.runs, 0.3, 3 * strong.sum_sigma_normal_accel / strong.runs / std::sqrt(30.0));
-  EXPECT_NEAR(weak.sum_normal_accel / weak.runs, 0.1, 3 * weak.sum_sigma_normal_accel / weak.runs / std::sqrt(30.0));
+  if (full) {
+    EXPECT_NEAR(strong.cover_psi / double(strong.runs), 0.95, binomial_tolerance(0.95, strong.runs));
+  } else {
+    EXPECT_GE(strong.cover_psi, binomial_floor(strong.runs, 0.95));
+  }
+  const TurnedFrameCounts weak = analyse_turned_runs(runs, 24000, 0.5, 0.1, true);
+  EXPECT_GE(weak.present, full ? 27 : runs - 2);  // measured 30 of 30
+  const double sqrt_runs = std::sqrt(double(runs));
+  EXPECT_NEAR(strong.sum_normal_accel / strong.runs, 0.3, 3 * strong.sum_sigma_normal_accel / strong.runs / sqrt_runs);
+  EXPECT_NEAR(weak.sum_normal_accel / weak.runs, 0.1, 3 * weak.sum_sigma_normal_accel / weak.runs / sqrt_runs);
 }
 
 TEST(InclineFit, DiagnosticsRunInTheDeRotatedFrame) {

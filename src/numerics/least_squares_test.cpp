@@ -1,6 +1,7 @@
 #include "numerics/least_squares.hpp"
 #include "numerics/polyfit.hpp"
 
+#include "numerics/coverage_test_util.hpp"
 #include "numerics/error.hpp"
 
 #include <gtest/gtest.h>
@@ -179,10 +180,12 @@ TEST(LeastSquares, SandwichIsHubersFormula) {
 // The sandwich is an asymptotic estimator: with many points per data set (400) its slope
 // interval covers under unequal noise and 10% outliers, where s^2 (J~^T J~)^-1 (counting the
 // outliers at full size) is far too wide and Huber's scalar form (one noise level) too narrow.
-// 200 data sets; Binomial(200, 0.95): mean 190, sd 3.1; accepted 181..199 (3 sd).
+// 200 data sets; Binomial(200, 0.95): mean 190, sd 3.1; accepted 181..199 (3 sd). The
+// sanitizer tree fits the first 40: at least binomial_floor(40, 0.95) = 33 covering (P(X < 33)
+// = 7.1e-4); an interval of half the true sigma (coverage 0.67) passes with probability 0.026.
 TEST(LeastSquares, SandwichIntervalsCoverWithUnequalNoiseAndOutliers) {
   int covered = 0, covered_gn = 0, covered_h = 0;
-  const int runs = 200, points = 400;
+  const int runs = study_draws(200, 40), points = 400;
   const std::vector<FitParameter> start{param("a", 0), param("b", 0)};
   for (int s = 0; s < runs; ++s) {
     const LineData d(1000 + s, 0.1, points);
@@ -199,7 +202,11 @@ TEST(LeastSquares, SandwichIntervalsCoverWithUnequalNoiseAndOutliers) {
   }
   std::cout << "slope coverage over " << runs << " data sets of " << points << " points: sandwich " << covered
             << ", gauss_newton " << covered_gn << ", huber " << covered_h << "\n";
-  EXPECT_NEAR(covered, 190, 9.3);
+  if (is_full_study(runs, 200)) {
+    EXPECT_NEAR(covered, 190, 9.3);
+  } else {
+    EXPECT_GE(covered, binomial_floor(runs, 0.95));
+  }
 }
 
 TEST(LeastSquares, FixedParameterStaysAndHasNoSigma) {

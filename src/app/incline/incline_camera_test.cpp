@@ -10,6 +10,7 @@
 #include "app/incline/incline_analysis.hpp"
 #include "app/incline/incline_analyze.hpp"
 #include "io/track_csv.hpp"
+#include "numerics/coverage_test_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -125,8 +126,24 @@ double tolerance(double p, int n) { return 3 * std::sqrt(p * (1 - p) / n); }
 
 constexpr int kRuns = 100;  // per sign: 50 at 80 fps, 50 at 240 fps
 
-void expect_honest(const Counts& k) {
-  ASSERT_EQ(k.runs, kRuns);
+// The sanitizer tree runs the first 30 seeds per sign (study_draws) against the exact binomial
+// bounds for 30 (each fails an honest fit with probability < 1e-3): psi within 2 sd in at least
+// binomial_floor(30, 0.954) = 24, mu within 1 sd in 12..28 (binomial_floor and _ceiling at
+// 0.683), within its 95 % interval in at least 24, `present` at most 6. A sigma half the true
+// one passes the psi count with probability 0.12 and the ci95 count with 0.095 per sign.
+void expect_honest(const Counts& k, int runs) {
+  ASSERT_EQ(k.runs, runs);
+  if (!is_full_study(runs, kRuns)) {
+    EXPECT_GE(k.psi_in_2sd, binomial_floor(runs, 0.954));
+    for (int in_1sd : {k.mu_b_in_1sd, k.mu_a_in_1sd}) {
+      EXPECT_GE(in_1sd, binomial_floor(runs, 0.683));
+      EXPECT_LE(in_1sd, binomial_ceiling(runs, 0.683));
+    }
+    EXPECT_GE(k.mu_b_in_ci, binomial_floor(runs, 0.95));
+    EXPECT_LE(k.present, binomial_ceiling(runs, 0.05));
+    EXPECT_EQ(k.warned, 0);
+    return;
+  }
   // psi within 2 of its sd: 95.4 % for a Gaussian estimate (the Student t on 2n - 6 >= 170
   // degrees of freedom is Gaussian to 0.1 %); lower bound 95.4 % - 3 binomial sd = 85 %.
   EXPECT_GE(k.psi_in_2sd / double(kRuns), 0.954 - tolerance(0.954, kRuns));
@@ -143,11 +160,13 @@ void expect_honest(const Counts& k) {
 
 // psi fitted (the default): the turn is recovered and nothing is biased.
 TEST(InclineAnalyze, RecoversACameraTurnedHalfADegree) {
-  expect_honest(analyse_turned("plus", kRuns, 31000, 0.5, "fit"));
+  const int runs = study_draws(kRuns, 30);
+  expect_honest(analyse_turned("plus", runs, 31000, 0.5, "fit"), runs);
 }
 
 TEST(InclineAnalyze, RecoversACameraTurnedMinusHalfADegree) {
-  expect_honest(analyse_turned("minus", kRuns, 32000, -0.5, "fit"));
+  const int runs = study_draws(kRuns, 30);
+  expect_honest(analyse_turned("minus", runs, 32000, -0.5, "fit"), runs);
 }
 
 // --frame-rotation none on the same turned camera: the bias it causes, and the warning. Measured
@@ -155,8 +174,10 @@ TEST(InclineAnalyze, RecoversACameraTurnedMinusHalfADegree) {
 // g = 9.53 or 10.07 m/s^2 at +-0.5 deg, which sends the user to the frame rate): mu +0.0045
 // (+0.5 deg) and -0.0045 (-0.5 deg), ~13 of its sd 0.00035; `present` in every run with
 // f_N/m = +-0.075 m/s^2. The command must say that the frame it was told is aligned is not.
+// The sanitizer tree runs the first 5 seeds per sign (each run's checks are ~13 and ~7.5 sd
+// events, so 5 runs check them as 20 do) and 12 aligned runs (below).
 TEST(InclineAnalyze, WarnsWhenAFrameHeldAlignedIsTurned) {
-  constexpr int runs = 20;
+  const int runs = study_draws(20, 5);
   for (double psi : {0.5, -0.5}) {
     const Counts k = analyse_turned(psi > 0 ? "none_plus" : "none_minus", runs, psi > 0 ? 33000 : 34000, psi, "none");
     ASSERT_EQ(k.runs, runs);
@@ -193,10 +214,18 @@ TEST(InclineAnalyze, WarnsWhenAFrameHeldAlignedIsTurned) {
   }
   // An aligned camera analysed with --frame-rotation none must not be warned about: the check
   // is a 3-sd test (0.27 % false alarms), so 40 runs allow at most 1 (P(>= 2) ~ 0.5 %).
-  const Counts aligned = analyse_turned("none_aligned", 40, 35000, 0.0, "none");
-  ASSERT_EQ(aligned.runs, 40);
+  // Sanitizer tree: 12 runs, at most 1 warned (P(>= 2) = 4.7e-4), mu within 1 sd in at least
+  // binomial_floor(12, 0.683) = 3 (P(X < 3) = 3.4e-4; the coverage of mu is checked with power
+  // by the two tests above).
+  const int aligned_runs = study_draws(40, 12);
+  const Counts aligned = analyse_turned("none_aligned", aligned_runs, 35000, 0.0, "none");
+  ASSERT_EQ(aligned.runs, aligned_runs);
   EXPECT_LE(aligned.frame_warned, 1);
-  EXPECT_NEAR(aligned.mu_b_in_1sd / 40.0, 0.683, tolerance(0.683, 40));
+  if (is_full_study(aligned_runs, 40)) {
+    EXPECT_NEAR(aligned.mu_b_in_1sd / 40.0, 0.683, tolerance(0.683, 40));
+  } else {
+    EXPECT_GE(aligned.mu_b_in_1sd, binomial_floor(aligned_runs, 0.683));
+  }
 }
 
 }  // namespace
