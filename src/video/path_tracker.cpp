@@ -93,6 +93,71 @@ struct StepCandidates {
   std::vector<Candidate> c;
 };
 
+// One state of the path search: the path's last two points (step t, candidate k; back step g,
+// candidate j of step t - g), enough for its acceleration at the next one.
+struct PathState {
+  float F = kInf, B = kInf;  // best cost up to and including this state / after it
+  int back = -1;             // the predecessor's index in step t - g
+  short k = 0, g = 0, j = 0;
+};
+
+// The best path: its cost, its last step and each step's chosen candidate (-1: none).
+struct BestPath {
+  double total = 0;
+  int end = 0;
+  std::vector<int> chosen;
+};
+
+// The path points' difference from the background (grey levels): the path's median, and per
+// step the median over its run of consecutive path points.
+struct PathForeground {
+  double typical = 0;
+  std::vector<double> run;
+};
+
+// The best path by dynamic programming over the steps' candidates under the motion prior
+// (finish()). off[t][k * G + g - 1] is the first state of the block (k, g) of S[t]; the block
+// holds one state per candidate of t - g.
+struct PathSearch {
+  // The states of every step, and where the marks are.
+  PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius);
+  const std::vector<StepCandidates>& steps;  // a marked step holds its mark alone
+  int T = 0;                                 // steps
+  int G = 0;                                 // largest step between two path points
+  double reach = 0, radius = 0;              // px (PathTracker::Impl's)
+  std::vector<int> marks_before;             // marked steps among 0 .. t-1
+  int last_mark = 0;                         // the last marked step (0: none)
+  std::vector<std::vector<PathState>> S;
+  std::vector<std::vector<int>> off;
+
+  // A mark in (t0, t1).
+  bool skips_mark(int t0, int t1) const { return marks_before[t1] - marks_before[t0 + 1] > 0; }
+  // Candidate k of step t is the user's mark.
+  bool manual(int t, int k) const { return steps[t].c[k].manual; }
+  // Candidate k of step t, px.
+  cv::Point2d pos(int t, int k) const { return cv::Point2d(steps[t].c[k].x, steps[t].c[k].y); }
+  // The states [first, end) of the block (k, g) of step t.
+  std::pair<int, int> block(int t, int k, int g) const {
+    return std::pair<int, int>(off[t][k * G + g - 1], off[t][k * G + g]);
+  }
+  // Candidate k1 of step t1 lies within reach of candidate k0 of step t0.
+  bool gate(int t0, int k0, int t1, int k1) const;
+  // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
+  double accel(int ta, int ka, int tb, int kb, int tc, int kc) const;
+  // Forward: each state's best cost up to and including it (F) and its predecessor.
+  void forward();
+  // Backward: the best cost after a state, ending anywhere (the frames left cost kMissCost).
+  void backward();
+  // The best path from the forward costs.
+  BestPath best_path() const;
+  // Candidate k of step t has a rival: a candidate farther than rival_px whose best full
+  // path costs less than kRivalMargin more than `total`.
+  bool has_rival(int t, int k, double total, double rival_px) const;
+};
+
+// The chosen path points' difference from the background, over the path and over each run.
+PathForeground path_foreground(const std::vector<StepCandidates>& steps, const std::vector<int>& chosen);
+
 // Scale-normalised Laplacian-of-Gaussian magnitude sigma^2 |LoG| at `p`, maximised over
 // scale (Lindeberg's automatic scale selection): the blob radius is sigma * sqrt(2).
 double blob_radius(const cv::Mat& gray, cv::Point2d p) {
@@ -226,6 +291,16 @@ struct PathTracker::Impl {
 
   void update(const Frame& f);
   std::vector<Observation> finish();
+  // Each candidate's fg and unary cost (once: the background samples are complete at the first finish()).
+  void compute_unary_costs();
+  // The steps with each marked step's candidates replaced by its mark.
+  std::vector<StepCandidates> steps_with_marks() const;
+  // Per step after the start: the best path's point, or lost and why (counts the loss causes).
+  std::vector<Observation> observe_path(const PathSearch& search, const BestPath& best, const PathForeground& fg);
+  // Reports as lost a short run of points between lost frames (lost_alone).
+  void drop_unconfirmed_runs(std::vector<Observation>& obs);
+  // Reports as lost a run reached only across more than G steps without a reported point (lost_unlinked).
+  void drop_unlinked_runs(std::vector<Observation>& obs, int G);
   std::string main_loss_hint() const;  // the likeliest cause but a streak (loss_hint)
 };
 
@@ -548,25 +623,21 @@ std::vector<Observation> PathTracker::finish() {
   return impl_->finish();
 }
 
-std::vector<Observation> PathTracker::Impl::finish() {
-  const int T = static_cast<int>(this->steps.size());
-  const int G = opt.max_gap_frames + 1;  // largest step between two path points
-  // Unary costs: likeness and difference from the background median (once: the background
-  // samples are complete at the first finish()).
-  if (!fg_done) {
-    for (int t = 1; t < T; ++t) {
-      for (Candidate& c : this->steps[t].c) {
-        c.fg = foreground(c);
-        c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
-      }
+void PathTracker::Impl::compute_unary_costs() {
+  if (fg_done) return;
+  for (int t = 1; t < static_cast<int>(this->steps.size()); ++t) {
+    for (Candidate& c : this->steps[t].c) {
+      c.fg = foreground(c);
+      c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
     }
-    fg_done = true;
   }
-  // The steps the path is chosen among: a marked step's only candidate is its mark (cost 0;
-  // no fg: it takes no part in the background check below).
-  std::vector<StepCandidates> steps = this->steps;
-  for (int t = 1; t < T; ++t) {
-    const auto mk = marks.find(steps[t].index);
+  fg_done = true;
+}
+
+std::vector<StepCandidates> PathTracker::Impl::steps_with_marks() const {
+  std::vector<StepCandidates> out = this->steps;
+  for (int t = 1; t < static_cast<int>(out.size()); ++t) {
+    const auto mk = marks.find(out[t].index);
     if (mk == marks.end()) continue;
     Candidate c;
     c.x = mk->second.x_px;
@@ -575,61 +646,27 @@ std::vector<Observation> PathTracker::Impl::finish() {
     c.cost = 0;
     c.fg = std::numeric_limits<double>::quiet_NaN();
     c.manual = true;
-    steps[t].c.assign(1, c);
+    out[t].c.assign(1, c);
   }
+  return out;
+}
+
+namespace {
+
+PathSearch::PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius)
+    : steps(steps), T(static_cast<int>(steps.size())), G(max_gap_frames + 1), reach(reach), radius(radius) {
   // Manual marks: the path passes through every one (no transition skips a marked step, the
   // path ends at or after the last).
-  std::vector<int> marks_before(T + 1, 0);  // marked steps among 0 .. t-1
-  int last_mark = 0;
+  marks_before.assign(T + 1, 0);
   for (int t = 0; t < T; ++t) {
     const bool marked = t > 0 && !steps[t].c.empty() && steps[t].c.front().manual;
     marks_before[t + 1] = marks_before[t] + (marked ? 1 : 0);
     if (marked) last_mark = t;
   }
-  auto skips_mark = [&](int t0, int t1) { return marks_before[t1] - marks_before[t0 + 1] > 0; };  // a mark in (t0, t1)
-  auto manual = [&](int t, int k) { return steps[t].c[k].manual; };
-  // States: (step t, candidate k, back step g, candidate j of step t - g): the path's last
-  // two points, enough for its acceleration at the next one. off[t][k * G + g - 1] is the
-  // first state of the block (k, g); the block holds one state per candidate of t - g.
-  struct State {
-    float F = kInf, B = kInf;  // best cost up to and including this state / after it
-    int back = -1;             // the predecessor's index in step t - g
-    short k = 0, g = 0, j = 0;
-  };
-  std::vector<std::vector<State>> S(T);
-  std::vector<std::vector<int>> off(T);
-  S[0].push_back(State{0, kInf, -1, 0, 0, 0});
-  auto pos = [&](int t, int k) { return cv::Point2d(steps[t].c[k].x, steps[t].c[k].y); };
-  auto gate = [&](int t0, int k0, int t1, int k1) {
-    const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
-    // From the start (no velocity known) a gap does not widen the reach: the object was
-    // clicked where it is, and something far away found frames later is something else.
-    if (manual(t0, k0) || manual(t1, k1)) return true;  // the user's mark: anywhere
-    return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
-  };
-  // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
-  auto accel = [&](int ta, int ka, int tb, int kb, int tc, int kc) -> double {
-    const cv::Point2d v1 = (pos(tb, kb) - pos(ta, ka)) / (tb - ta), v2 = (pos(tc, kc) - pos(tb, kb)) / (tc - tb);
-    const cv::Point2d a = (v2 - v1) / (0.5 * (tc - ta));
-    // The mean speed; across a gap the slower of the two, so that a jump to something far
-    // away does not widen its own tolerance (an oscillation, slow at its turning points, needs
-    // the mean).
-    const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
-                                      : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
-    const double sigma = kAccAbs + kAccRel * speed;
-    if (manual(ta, ka) || manual(tb, kb) || manual(tc, kc)) {
-      const double z = std::hypot(a.x, a.y) / sigma;
-      return std::min(0.5 * z * z, kMarkAccCap);
-    }
-    if (tc - tb > 1) {
-      // Found again after a gap: within reach of where the motion before it leads (linear
-      // extrapolation), else something else has been found.
-      const cv::Point2d d = pos(tc, kc) - (pos(tb, kb) + v1 * (tc - tb));
-      if (std::hypot(d.x, d.y) > 2 * radius + kAccRel * std::hypot(v1.x, v1.y) * (tc - tb)) return kInf;
-    }
-    const double z = std::hypot(a.x, a.y) / sigma;
-    return z > kAccGate ? kInf : 0.5 * z * z;
-  };
+  // The states of every step, in blocks (k, g) of one state per candidate of t - g.
+  S.resize(T);
+  off.resize(T);
+  S[0].push_back(PathState{0, kInf, -1, 0, 0, 0});
   for (int t = 1; t < T; ++t) {
     const int K = static_cast<int>(steps[t].c.size());
     off[t].assign(K * G + 1, 0);
@@ -639,7 +676,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
         off[t][k * G + g - 1] = n;
         if (t - g >= 0) {
           for (int j = 0; j < static_cast<int>(steps[t - g].c.size()); ++j) {
-            State st;
+            PathState st;
             st.k = static_cast<short>(k);
             st.g = static_cast<short>(g);
             st.j = static_cast<short>(j);
@@ -651,12 +688,42 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     off[t][K * G] = n;
   }
-  auto block = [&](int t, int k, int g) {
-    return std::pair<int, int>(off[t][k * G + g - 1], off[t][k * G + g]);
-  };
-  // Forward.
+}
+
+bool PathSearch::gate(int t0, int k0, int t1, int k1) const {
+  const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
+  // From the start (no velocity known) a gap does not widen the reach: the object was
+  // clicked where it is, and something far away found frames later is something else.
+  if (manual(t0, k0) || manual(t1, k1)) return true;  // the user's mark: anywhere
+  return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
+}
+
+double PathSearch::accel(int ta, int ka, int tb, int kb, int tc, int kc) const {
+  const cv::Point2d v1 = (pos(tb, kb) - pos(ta, ka)) / (tb - ta), v2 = (pos(tc, kc) - pos(tb, kb)) / (tc - tb);
+  const cv::Point2d a = (v2 - v1) / (0.5 * (tc - ta));
+  // The mean speed; across a gap the slower of the two, so that a jump to something far
+  // away does not widen its own tolerance (an oscillation, slow at its turning points, needs
+  // the mean).
+  const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
+                                    : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
+  const double sigma = kAccAbs + kAccRel * speed;
+  if (manual(ta, ka) || manual(tb, kb) || manual(tc, kc)) {
+    const double z = std::hypot(a.x, a.y) / sigma;
+    return std::min(0.5 * z * z, kMarkAccCap);
+  }
+  if (tc - tb > 1) {
+    // Found again after a gap: within reach of where the motion before it leads (linear
+    // extrapolation), else something else has been found.
+    const cv::Point2d d = pos(tc, kc) - (pos(tb, kb) + v1 * (tc - tb));
+    if (std::hypot(d.x, d.y) > 2 * radius + kAccRel * std::hypot(v1.x, v1.y) * (tc - tb)) return kInf;
+  }
+  const double z = std::hypot(a.x, a.y) / sigma;
+  return z > kAccGate ? kInf : 0.5 * z * z;
+}
+
+void PathSearch::forward() {
   for (int t = 1; t < T; ++t) {
-    for (State& s : S[t]) {
+    for (PathState& s : S[t]) {
       const int tp = t - s.g;
       if (skips_mark(tp, t) || !gate(tp, s.j, t, s.k)) continue;
       const double u = steps[t].c[s.k].cost + kMissCost * (s.g - 1);
@@ -670,7 +737,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
       for (int g2 = 1; g2 <= G && tp - g2 >= 0; ++g2) {
         const auto [a, b] = block(tp, s.j, g2);
         for (int i = a; i < b; ++i) {
-          const State& q = S[tp][i];
+          const PathState& q = S[tp][i];
           if (!(q.F < kInf)) continue;
           const double c = q.F + accel(tp - g2, q.j, tp, s.j, t, s.k);
           if (c < best) {
@@ -685,9 +752,11 @@ std::vector<Observation> PathTracker::Impl::finish() {
       }
     }
   }
-  // Backward: the best cost after a state, ending anywhere (the frames left cost kMissCost).
+}
+
+void PathSearch::backward() {
   for (int t = T - 1; t >= 0; --t) {
-    for (State& s : S[t]) {
+    for (PathState& s : S[t]) {
       double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
       for (int g3 = 1; g3 <= G && t + g3 < T; ++g3) {
         const int t3 = t + g3;
@@ -696,7 +765,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
           const auto [a, b] = block(t3, k3, g3);
           const int idx = a + s.k;  // the successor whose previous point is this state's
           if (idx >= b || !gate(t, s.k, t3, k3)) continue;
-          const State& q = S[t3][idx];
+          const PathState& q = S[t3][idx];
           const double acc = t == 0 ? 0.0 : accel(t - s.g, s.j, t, s.k, t3, k3);
           const double c = steps[t3].c[k3].cost + kMissCost * (g3 - 1) + acc + q.B;
           best = std::min(best, c);
@@ -705,42 +774,58 @@ std::vector<Observation> PathTracker::Impl::finish() {
       s.B = static_cast<float>(best);
     }
   }
-  // The best path (forward and backward agree on its cost: F + B is the same along it).
+}
+
+BestPath PathSearch::best_path() const {
   // (The optimum is also S[0][0].B, the backward pass's best from the start.)
-  double total = last_mark == 0 ? kMissCost * (T - 1) : kInf;  // the start alone, every further frame lost
-  int bt = 0, bs = 0;
+  BestPath p;
+  p.total = last_mark == 0 ? kMissCost * (T - 1) : kInf;  // the start alone, every further frame lost
+  int bs = 0;
   for (int t = std::max(1, last_mark); t < T; ++t) {
     for (int i = 0; i < static_cast<int>(S[t].size()); ++i) {
       const double c = S[t][i].F + kMissCost * (T - 1 - t);
-      if (c < total) {
-        total = c;
-        bt = t;
+      if (c < p.total) {
+        p.total = c;
+        p.end = t;
         bs = i;
       }
     }
   }
-  std::vector<int> chosen(T, -1);
-  for (int t = bt, i = bs; t > 0;) {
-    const State& s = S[t][i];
-    chosen[t] = s.k;
+  p.chosen.assign(T, -1);
+  for (int t = p.end, i = bs; t > 0;) {
+    const PathState& s = S[t][i];
+    p.chosen[t] = s.k;
     i = s.back;
     t -= s.g;
   }
-  // Per frame: the best full path through each candidate (min-marginal); a far candidate
-  // nearly as good as the chosen one makes the frame doubtful.
-  const double rival_px = std::max(3.0, radius);
-  // A path point that stands out from the background far less than the object does along
-  // the path (a still patch of texture reached across a gap) is not the object.
+  return p;
+}
+
+bool PathSearch::has_rival(int t, int k, double total, double rival_px) const {
+  const Candidate& c = steps[t].c[k];
+  bool rival = false;
+  for (int r = 0; r < static_cast<int>(steps[t].c.size()) && !rival; ++r) {
+    const Candidate& q = steps[t].c[r];
+    if (r == k || std::hypot(q.x - c.x, q.y - c.y) <= rival_px) continue;
+    double m = kInf;
+    for (int i = off[t][r * G]; i < off[t][r * G + G]; ++i) m = std::min<double>(m, S[t][i].F + S[t][i].B);
+    rival = m < total + kRivalMargin;
+  }
+  return rival;
+}
+
+PathForeground path_foreground(const std::vector<StepCandidates>& steps, const std::vector<int>& chosen) {
+  const int T = static_cast<int>(steps.size());
+  PathForeground out;
   std::vector<double> path_fg;
   for (int t = 1; t < T; ++t) {
     if (chosen[t] >= 0 && !steps[t].c[chosen[t]].manual) path_fg.push_back(steps[t].c[chosen[t]].fg);
   }
-  double typical_fg = 0;
-  if (!path_fg.empty()) typical_fg = upper_median(std::move(path_fg));
+  if (!path_fg.empty()) out.typical = upper_median(std::move(path_fg));
   // Per run of consecutive path frames, its median difference (an object slowing down at the
   // turning point of a swing sits in the background median for a frame or two; a run of
   // still texture after a gap does throughout).
-  std::vector<double> run_fg(T, 0);
+  out.run.assign(T, 0);
   for (int t = 1; t < T;) {
     if (chosen[t] < 0) {
       ++t;
@@ -751,14 +836,26 @@ std::vector<Observation> PathTracker::Impl::finish() {
     for (; e < T && chosen[e] >= 0; ++e) {
       if (!steps[e].c[chosen[e]].manual) v.push_back(steps[e].c[chosen[e]].fg);
     }
-    double run = typical_fg;  // a run of marks alone is not background
+    double run = out.typical;  // a run of marks alone is not background
     if (!v.empty()) run = upper_median(std::move(v));
-    for (int i = t; i < e; ++i) run_fg[i] = run;
+    for (int i = t; i < e; ++i) out.run[i] = run;
     t = e;
   }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Observation> PathTracker::Impl::observe_path(const PathSearch& search, const BestPath& best,
+                                                         const PathForeground& fg) {
+  const std::vector<StepCandidates>& steps = search.steps;
+  const int T = search.T;
+  // Per frame: the best full path through each candidate (min-marginal); a far candidate
+  // nearly as good as the chosen one makes the frame doubtful.
+  const double rival_px = std::max(3.0, radius);
   std::vector<Observation> obs;
   lost_none = lost_rival = lost_score = lost_background = lost_ridge = lost_end = lost_alone = lost_unlinked = 0;
-  end_frame = steps[bt].index;
+  end_frame = steps[best.end].index;
   // A path point whose correlation peak is a ridge longer than a user's correction distance
   // (4 px per 640 px of image width, at least 4 px) cannot be placed along it: lost.
   ridge_max_px = std::max(kRidgeMinPx, kRidgeMinPx * size.width / 640.0);
@@ -766,7 +863,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     Observation o;
     o.frame = steps[t].index;
     o.lost = true;
-    const int k = chosen[t];
+    const int k = best.chosen[t];
     if (k < 0 && !steps[t].c.empty() && steps[t].c.front().manual) {
       // No path reaches the mark (the object hidden longer than max_gap_frames around it): the mark stands.
       o.x_px = steps[t].c.front().x;
@@ -779,7 +876,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     if (k < 0) {
       ++lost_none;
-      if (t > bt) ++lost_end;
+      if (t > best.end) ++lost_end;
       obs.push_back(o);
       continue;
     }
@@ -794,18 +891,10 @@ std::vector<Observation> PathTracker::Impl::finish() {
       obs.push_back(o);
       continue;
     }
-    bool rival = false;
-    for (int r = 0; r < static_cast<int>(steps[t].c.size()) && !rival; ++r) {
-      const Candidate& q = steps[t].c[r];
-      if (r == k || std::hypot(q.x - c.x, q.y - c.y) <= rival_px) continue;
-      double m = kInf;
-      for (int i = off[t][r * G]; i < off[t][r * G + G]; ++i) m = std::min<double>(m, S[t][i].F + S[t][i].B);
-      rival = m < total + kRivalMargin;
-    }
-    if (rival) {
+    if (search.has_rival(t, k, best.total, rival_px)) {
       ++lost_rival;
       o.score = std::min(o.score, 0.1);
-    } else if (typical_fg > 2 * kFgHalf && run_fg[t] < kFgShare * typical_fg) {
+    } else if (fg.typical > 2 * kFgHalf && fg.run[t] < kFgShare * fg.typical) {
       ++lost_background;
       o.score = std::min(o.score, 0.1);
     } else if (c.spread > ridge_max_px) {
@@ -818,10 +907,10 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     obs.push_back(o);
   }
-  // Confirmation (the M-of-N rule of radar tracking): a run of fewer than kMinRun consecutive
-  // reported points, with lost frames on both sides (the start and a mark count as reported),
-  // is not confirmed by its neighbours' motion: lost. (CarInLoop with patch 25: frame 2
-  // alone between lost frames 1 and 3, 47 px from the human's mark.)
+  return obs;
+}
+
+void PathTracker::Impl::drop_unconfirmed_runs(std::vector<Observation>& obs) {
   for (std::size_t i = 0; i < obs.size();) {
     if (obs[i].lost) {
       ++i;
@@ -841,11 +930,9 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     i = e;
   }
-  // Identity: a run of reported points whose last reported point before it (the start, or a
-  // point of an earlier run) lies more than max_gap + 1 frames back is reached only through
-  // doubtful path points: it may be anything that the template resembles. Lost, unless it holds
-  // a mark. (CarInLoop with patch 75: the path hopped from the car, its points lost, to a
-  // still edge 390 px away and held it for 17 frames.)
+}
+
+void PathTracker::Impl::drop_unlinked_runs(std::vector<Observation>& obs, int G) {
   int last_reported = 0;  // step index; the start
   for (std::size_t i = 0; i < obs.size();) {
     if (obs[i].lost) {
@@ -867,6 +954,35 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     i = e;
   }
+}
+
+std::vector<Observation> PathTracker::Impl::finish() {
+  // Unary costs: likeness and difference from the background median (once: the background
+  // samples are complete at the first finish()).
+  compute_unary_costs();
+  // The steps the path is chosen among: a marked step's only candidate is its mark (cost 0;
+  // no fg: it takes no part in the background check below).
+  const std::vector<StepCandidates> steps = steps_with_marks();
+  PathSearch search(steps, opt.max_gap_frames, reach, radius);
+  search.forward();
+  search.backward();
+  // The best path (forward and backward agree on its cost: F + B is the same along it).
+  const BestPath best = search.best_path();
+  // A path point that stands out from the background far less than the object does along
+  // the path (a still patch of texture reached across a gap) is not the object.
+  const PathForeground fg = path_foreground(steps, best.chosen);
+  std::vector<Observation> obs = observe_path(search, best, fg);
+  // Confirmation (the M-of-N rule of radar tracking): a run of fewer than kMinRun consecutive
+  // reported points, with lost frames on both sides (the start and a mark count as reported),
+  // is not confirmed by its neighbours' motion: lost. (CarInLoop with patch 25: frame 2
+  // alone between lost frames 1 and 3, 47 px from the human's mark.)
+  drop_unconfirmed_runs(obs);
+  // Identity: a run of reported points whose last reported point before it (the start, or a
+  // point of an earlier run) lies more than max_gap + 1 frames back is reached only through
+  // doubtful path points: it may be anything that the template resembles. Lost, unless it holds
+  // a mark. (CarInLoop with patch 75: the path hopped from the car, its points lost, to a
+  // still edge 390 px away and held it for 17 frames.)
+  drop_unlinked_runs(obs, search.G);
   return obs;
 }
 
