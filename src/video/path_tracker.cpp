@@ -28,9 +28,10 @@ constexpr int kPerWindow = 3;
 // A best candidate correlating this well is a confident sighting (the lead anchor).
 constexpr double kConfident = 0.9;
 constexpr double kCandidateFloor = 0.3;
-// Coarse to fine (PathTracker::Impl::update): a union of windows larger than this, px², with a
-// template of at least kCoarseMinPatch px, is correlated at half resolution first (floor
-// kCoarseFloor there: halving blurs a peak), each peak refined within kRefinePx at full resolution.
+// Coarse to fine (PathTracker::Impl::correlate_union, coarse_peaks): a union of windows larger
+// than this, px², with a template of at least kCoarseMinPatch px, is correlated at half
+// resolution first (floor kCoarseFloor there: halving blurs a peak), each peak refined within
+// kRefinePx at full resolution.
 constexpr int kCoarseMinArea = 400000;
 constexpr int kCoarseMinPatch = 15;
 constexpr double kCoarseFloor = 0.2;
@@ -92,6 +93,45 @@ struct StepCandidates {
   int index = 0;
   std::vector<Candidate> c;
 };
+
+// update()'s steps and their results.
+// A place the object can be: a recent candidate (or where the confident sightings lead) and
+// the steps since it, px.
+struct Anchor {
+  cv::Point2d at;
+  int age;
+};
+
+// The anchors' search windows (each within reach of its anchor, clipped to the image) and their union, px.
+struct SearchWindows {
+  std::vector<cv::Rect> wins;
+  cv::Rect uni;
+};
+
+// The correlation over the windows' union: at full resolution (`all`), or at half resolution
+// (`coarse_res`) with the union's grey levels (`w32`) kept for the refinement.
+struct UnionCorrelation {
+  bool coarse = false;
+  cv::Mat w32, all, coarse_res;
+};
+
+// A correlation peak in one window.
+struct Peak {
+  cv::Point at;     // template top-left in the window's result, px
+  double v;         // correlation there
+  cv::Point2d off;  // sub-pixel offset
+  double fitted;    // the peak fit's value
+  double ridge = 0; // peak_ridge_px
+};
+
+// The candidates found in a step's windows, and the index in `c` of each window's best peak.
+struct FoundPeaks {
+  std::vector<Candidate> c;
+  std::vector<std::size_t> window_best;
+};
+
+// The best kPerWindow peaks of a window's full-resolution correlation `res`.
+std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress);
 
 // One state of the path search: the path's last two points (step t, candidate k; back step g,
 // candidate j of step t - g), enough for its acceleration at the next one.
@@ -290,6 +330,19 @@ struct PathTracker::Impl {
   }
 
   void update(const Frame& f);
+  // Where the object can be in the next step: the anchors of its search windows.
+  std::vector<Anchor> find_anchors() const;
+  // The anchors' windows in `gray` and their union.
+  SearchWindows search_windows(const std::vector<Anchor>& anchors, const cv::Mat& gray) const;
+  // The template's correlation over the windows' union (coarse for a large union; makes templ_half).
+  UnionCorrelation correlate_union(const SearchWindows& w, const cv::Mat& gray);
+  // The best kPerWindow peaks of one window (`rrect` in the union's result) found coarse to fine.
+  std::vector<Peak> coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect, int suppress) const;
+  // Adds a window's peaks as candidates, a peak already found from another window once.
+  void add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray, int suppress,
+                        FoundPeaks& found) const;
+  // At most kCandidates of the found (every window's best first); updates the lead sightings (step n).
+  std::vector<Candidate> keep_best(FoundPeaks& found, int n);
   std::vector<Observation> finish();
   // Each candidate's fg and unary cost (once: the background samples are complete at the first finish()).
   void compute_unary_costs();
@@ -429,20 +482,7 @@ void PathTracker::update(const Frame& frame) {
   impl_->update(frame);
 }
 
-void PathTracker::Impl::update(const Frame& f) {
-  const cv::Mat& gray = f.gray;
-  if (gray.size() != size || gray.type() != CV_8UC1) {
-    throw InputError(name, "frame " + std::to_string(f.index) + " has no grey image of the start frame's size");
-  }
-  sample(gray);
-  // Where the object can be: within reach (times the frames elapsed) of the best three
-  // candidates of the last step that had any and of the best one of the two such steps
-  // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
-  // peaks far away never crowd out a blurred object near an anchor.
-  struct Anchor {
-    cv::Point2d at;
-    int age;
-  };
+std::vector<Anchor> PathTracker::Impl::find_anchors() const {
   std::vector<Anchor> anchors;
   const int n = static_cast<int>(steps.size());
   for (int k = n - 1, used = 0; k >= 0 && used < 3; --k) {
@@ -467,153 +507,191 @@ void PathTracker::Impl::update(const Frame& f) {
     const cv::Point2d at = lead[1] + k * (lead[1] - lead[0]);
     if (at.x >= 0 && at.y >= 0 && at.x < size.width && at.y < size.height) anchors.push_back({at, 1});
   }
-  StepCandidates out;
-  out.index = f.index;
-  const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
-  cv::Mat w32, all;
-  std::vector<Candidate> found;
-  std::vector<std::size_t> window_best;  // index in `found` of each window's best peak
-  // The anchors' windows overlap (the oldest anchor's covers most of the image): the
-  // correlation is computed once over their union, and each window reads its part of it
-  // (the same values as correlating the window alone: the template inside the window).
-  std::vector<cv::Rect> wins;
-  cv::Rect uni;
+  return anchors;
+}
+
+SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& anchors, const cv::Mat& gray) const {
+  SearchWindows w;
   for (const Anchor& a : anchors) {
     const double r = reach * a.age + h + 1;
     const cv::Rect win = cv::Rect(static_cast<int>(std::floor(a.at.x - r)), static_cast<int>(std::floor(a.at.y - r)),
                                   static_cast<int>(std::ceil(2 * r)) + 1, static_cast<int>(std::ceil(2 * r)) + 1) &
                          cv::Rect(0, 0, gray.cols, gray.rows);
     if (win.width <= p + 2 || win.height <= p + 2) continue;
-    wins.push_back(win);
-    uni = uni.area() == 0 ? win : (uni | win);
+    w.wins.push_back(win);
+    w.uni = w.uni.area() == 0 ? win : (w.uni | win);
   }
-  // A large union with a template that survives halving is searched coarse to fine: the
-  // correlation at half resolution finds each window's peaks, each refined by the
-  // full-resolution correlation within 3 px (a quarter of the work over the union).
-  const bool coarse = !wins.empty() && p >= kCoarseMinPatch && uni.area() > kCoarseMinArea;
-  cv::Mat coarse_res;
-  if (!wins.empty()) {
-    gray(uni).convertTo(w32, CV_32F);
-    if (coarse) {
+  return w;
+}
+
+UnionCorrelation PathTracker::Impl::correlate_union(const SearchWindows& w, const cv::Mat& gray) {
+  UnionCorrelation u;
+  u.coarse = !w.wins.empty() && p >= kCoarseMinPatch && w.uni.area() > kCoarseMinArea;
+  if (!w.wins.empty()) {
+    gray(w.uni).convertTo(u.w32, CV_32F);
+    if (u.coarse) {
       if (templ_half.empty()) cv::pyrDown(templ, templ_half);
       cv::Mat half;
-      cv::pyrDown(w32, half);
-      cv::matchTemplate(half, templ_half, coarse_res, cv::TM_CCOEFF_NORMED);
-      cv::patchNaNs(coarse_res, -1);
+      cv::pyrDown(u.w32, half);
+      cv::matchTemplate(half, templ_half, u.coarse_res, cv::TM_CCOEFF_NORMED);
+      cv::patchNaNs(u.coarse_res, -1);
     } else {
-      cv::matchTemplate(w32, templ, all, cv::TM_CCOEFF_NORMED);
-      cv::patchNaNs(all, -1);
+      cv::matchTemplate(u.w32, templ, u.all, cv::TM_CCOEFF_NORMED);
+      cv::patchNaNs(u.all, -1);
     }
   }
-  struct Peak {
-    cv::Point at;     // template top-left in the window's result, px
-    double v;         // correlation there
-    cv::Point2d off;  // sub-pixel offset
-    double fitted;    // the peak fit's value
-    double ridge = 0; // peak_ridge_px
-  };
-  for (const cv::Rect& win : wins) {
-    const cv::Rect rrect(win.x - uni.x, win.y - uni.y, win.width - p + 1, win.height - p + 1);  // in the union's result
-    std::vector<Peak> peaks;
-    if (!coarse) {
-      const cv::Mat res = all(rrect);
-      cv::Mat scratch = res.clone();
-      for (int k = 0; k < kPerWindow; ++k) {
-        Peak pk;
-        cv::minMaxLoc(scratch, nullptr, &pk.v, nullptr, &pk.at);
-        if (pk.v < kCandidateFloor) break;
-        cv::circle(scratch, pk.at, suppress, cv::Scalar(-1), cv::FILLED);
-        pk.fitted = pk.v;
-        pk.off = subpixel_peak(res, pk.at, &pk.fitted);
-        pk.ridge = peak_ridge_px(res, pk.at, pk.v, 1);
-        peaks.push_back(pk);
-      }
-    } else {
-      const cv::Rect crect = cv::Rect(rrect.x / 2, rrect.y / 2, (rrect.width + 1) / 2, (rrect.height + 1) / 2) &
-                             cv::Rect(0, 0, coarse_res.cols, coarse_res.rows);
-      if (crect.width < 1 || crect.height < 1) continue;
-      cv::Mat scratch = coarse_res(crect).clone();
-      std::vector<Peak> refined;
-      for (int k = 0; k < 2 * kPerWindow; ++k) {
-        double v;
-        cv::Point c;
-        cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
-        if (v < kCoarseFloor) break;
-        cv::circle(scratch, c, std::max(1, suppress / 2), cv::Scalar(-1), cv::FILLED);
-        const double ridge = peak_ridge_px(coarse_res, crect.tl() + c, v, 2);
-        // Refine: the full-resolution correlation within kRefinePx of the coarse peak.
-        const cv::Point tl(2 * (crect.x + c.x) - rrect.x, 2 * (crect.y + c.y) - rrect.y);  // in the window's result
-        const cv::Rect near = cv::Rect(tl.x - kRefinePx, tl.y - kRefinePx, 2 * kRefinePx + 1, 2 * kRefinePx + 1) &
-                              cv::Rect(0, 0, rrect.width, rrect.height);
-        if (near.width < 1 || near.height < 1) continue;
-        cv::Mat fine;
-        cv::matchTemplate(w32(cv::Rect(rrect.x + near.x, rrect.y + near.y, near.width + p - 1, near.height + p - 1)),
-                          templ, fine, cv::TM_CCOEFF_NORMED);
-        cv::patchNaNs(fine, -1);
-        Peak pk;
-        cv::Point in;
-        cv::minMaxLoc(fine, nullptr, &pk.v, nullptr, &in);
-        pk.fitted = pk.v;
-        pk.off = subpixel_peak(fine, in, &pk.fitted);
-        pk.at = near.tl() + in;
-        pk.ridge = ridge;
-        refined.push_back(pk);
-      }
-      std::sort(refined.begin(), refined.end(), [](const Peak& a, const Peak& b) { return a.v > b.v; });
-      for (const Peak& pk : refined) {
-        if (static_cast<int>(peaks.size()) >= kPerWindow || pk.v < kCandidateFloor) break;
-        const bool dup = std::any_of(peaks.begin(), peaks.end(), [&](const Peak& q) {
-          return std::hypot(q.at.x - pk.at.x, q.at.y - pk.at.y) <= suppress;
-        });
-        if (!dup) peaks.push_back(pk);
-      }
-    }
-    for (std::size_t k = 0; k < peaks.size(); ++k) {
-      const cv::Point at = peaks[k].at;
-      const cv::Point2d off = peaks[k].off;
-      const double fitted = peaks[k].fitted;
-      const double ridge = peaks[k].ridge;
-      const double x = win.x + at.x + off.x + h, y = win.y + at.y + off.y + h;
-      // The same peak seen from two windows is kept once.
-      const auto same = std::find_if(found.begin(), found.end(), [&](const Candidate& c) {
-        return std::hypot(c.x - x, c.y - y) < suppress;
-      });
-      if (same != found.end()) {
-        if (k == 0) window_best.push_back(static_cast<std::size_t>(same - found.begin()));
-        continue;
-      }
-      if (k == 0) window_best.push_back(found.size());
-      found.push_back(make_candidate(gray, x, y, std::min(1.0, fitted)));
-      found.back().spread = ridge;
-    }
+  return u;
+}
+
+namespace {
+
+std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress) {
+  std::vector<Peak> peaks;
+  cv::Mat scratch = res.clone();
+  for (int k = 0; k < kPerWindow; ++k) {
+    Peak pk;
+    cv::minMaxLoc(scratch, nullptr, &pk.v, nullptr, &pk.at);
+    if (pk.v < kCandidateFloor) break;
+    cv::circle(scratch, pk.at, suppress, cv::Scalar(-1), cv::FILLED);
+    pk.fitted = pk.v;
+    pk.off = subpixel_peak(res, pk.at, &pk.fitted);
+    pk.ridge = peak_ridge_px(res, pk.at, pk.v, 1);
+    peaks.push_back(pk);
   }
-  // At most kCandidates: every window's best, then the best of the rest.
-  std::vector<bool> keep(found.size(), false);
+  return peaks;
+}
+
+}  // namespace
+
+std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect,
+                                                  int suppress) const {
+  std::vector<Peak> peaks;
+  const cv::Rect crect = cv::Rect(rrect.x / 2, rrect.y / 2, (rrect.width + 1) / 2, (rrect.height + 1) / 2) &
+                         cv::Rect(0, 0, u.coarse_res.cols, u.coarse_res.rows);
+  if (crect.width < 1 || crect.height < 1) return peaks;
+  cv::Mat scratch = u.coarse_res(crect).clone();
+  std::vector<Peak> refined;
+  for (int k = 0; k < 2 * kPerWindow; ++k) {
+    double v;
+    cv::Point c;
+    cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
+    if (v < kCoarseFloor) break;
+    cv::circle(scratch, c, std::max(1, suppress / 2), cv::Scalar(-1), cv::FILLED);
+    const double ridge = peak_ridge_px(u.coarse_res, crect.tl() + c, v, 2);
+    // Refine: the full-resolution correlation within kRefinePx of the coarse peak.
+    const cv::Point tl(2 * (crect.x + c.x) - rrect.x, 2 * (crect.y + c.y) - rrect.y);  // in the window's result
+    const cv::Rect near = cv::Rect(tl.x - kRefinePx, tl.y - kRefinePx, 2 * kRefinePx + 1, 2 * kRefinePx + 1) &
+                          cv::Rect(0, 0, rrect.width, rrect.height);
+    if (near.width < 1 || near.height < 1) continue;
+    cv::Mat fine;
+    cv::matchTemplate(u.w32(cv::Rect(rrect.x + near.x, rrect.y + near.y, near.width + p - 1, near.height + p - 1)),
+                      templ, fine, cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(fine, -1);
+    Peak pk;
+    cv::Point in;
+    cv::minMaxLoc(fine, nullptr, &pk.v, nullptr, &in);
+    pk.fitted = pk.v;
+    pk.off = subpixel_peak(fine, in, &pk.fitted);
+    pk.at = near.tl() + in;
+    pk.ridge = ridge;
+    refined.push_back(pk);
+  }
+  std::sort(refined.begin(), refined.end(), [](const Peak& a, const Peak& b) { return a.v > b.v; });
+  for (const Peak& pk : refined) {
+    if (static_cast<int>(peaks.size()) >= kPerWindow || pk.v < kCandidateFloor) break;
+    const bool dup = std::any_of(peaks.begin(), peaks.end(), [&](const Peak& q) {
+      return std::hypot(q.at.x - pk.at.x, q.at.y - pk.at.y) <= suppress;
+    });
+    if (!dup) peaks.push_back(pk);
+  }
+  return peaks;
+}
+
+void PathTracker::Impl::add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray,
+                                         int suppress, FoundPeaks& found) const {
+  for (std::size_t k = 0; k < peaks.size(); ++k) {
+    const cv::Point at = peaks[k].at;
+    const cv::Point2d off = peaks[k].off;
+    const double fitted = peaks[k].fitted;
+    const double ridge = peaks[k].ridge;
+    const double x = win.x + at.x + off.x + h, y = win.y + at.y + off.y + h;
+    // The same peak seen from two windows is kept once.
+    const auto same = std::find_if(found.c.begin(), found.c.end(), [&](const Candidate& c) {
+      return std::hypot(c.x - x, c.y - y) < suppress;
+    });
+    if (same != found.c.end()) {
+      if (k == 0) found.window_best.push_back(static_cast<std::size_t>(same - found.c.begin()));
+      continue;
+    }
+    if (k == 0) found.window_best.push_back(found.c.size());
+    found.c.push_back(make_candidate(gray, x, y, std::min(1.0, fitted)));
+    found.c.back().spread = ridge;
+  }
+}
+
+std::vector<Candidate> PathTracker::Impl::keep_best(FoundPeaks& found, int n) {
+  std::vector<bool> keep(found.c.size(), false);
   int kept = 0;
-  for (std::size_t i : window_best) {
+  for (std::size_t i : found.window_best) {
     if (!keep[i] && kept < kCandidates) {
       keep[i] = true;
       ++kept;
     }
   }
-  std::vector<std::size_t> order(found.size());
+  std::vector<std::size_t> order(found.c.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found[a].ncc > found[b].ncc; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found.c[a].ncc > found.c[b].ncc; });
   for (std::size_t i : order) {
     if (!keep[i] && kept < kCandidates) {
       keep[i] = true;
       ++kept;
     }
   }
-  if (!order.empty() && found[order[0]].ncc >= kConfident) {
+  if (!order.empty() && found.c[order[0]].ncc >= kConfident) {
     lead[0] = lead[1];
     lead_frames[0] = lead_frames[1];
-    lead[1] = cv::Point2d(found[order[0]].x, found[order[0]].y);
+    lead[1] = cv::Point2d(found.c[order[0]].x, found.c[order[0]].y);
     lead_frames[1] = n;
   }
-  for (std::size_t i = 0; i < found.size(); ++i) {
-    if (keep[i]) out.c.push_back(std::move(found[i]));
+  std::vector<Candidate> out;
+  for (std::size_t i = 0; i < found.c.size(); ++i) {
+    if (keep[i]) out.push_back(std::move(found.c[i]));
   }
+  return out;
+}
+
+void PathTracker::Impl::update(const Frame& f) {
+  const cv::Mat& gray = f.gray;
+  if (gray.size() != size || gray.type() != CV_8UC1) {
+    throw InputError(name, "frame " + std::to_string(f.index) + " has no grey image of the start frame's size");
+  }
+  sample(gray);
+  // Where the object can be: within reach (times the frames elapsed) of the best three
+  // candidates of the last step that had any and of the best one of the two such steps
+  // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
+  // peaks far away never crowd out a blurred object near an anchor.
+  const std::vector<Anchor> anchors = find_anchors();
+  const int n = static_cast<int>(steps.size());
+  StepCandidates out;
+  out.index = f.index;
+  const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
+  FoundPeaks found;
+  // The anchors' windows overlap (the oldest anchor's covers most of the image): the
+  // correlation is computed once over their union, and each window reads its part of it
+  // (the same values as correlating the window alone: the template inside the window).
+  const SearchWindows w = search_windows(anchors, gray);
+  // A large union with a template that survives halving is searched coarse to fine: the
+  // correlation at half resolution finds each window's peaks, each refined by the
+  // full-resolution correlation within 3 px (a quarter of the work over the union).
+  const UnionCorrelation u = correlate_union(w, gray);
+  for (const cv::Rect& win : w.wins) {
+    // The window in the union's result.
+    const cv::Rect rrect(win.x - w.uni.x, win.y - w.uni.y, win.width - p + 1, win.height - p + 1);
+    const std::vector<Peak> peaks = u.coarse ? coarse_peaks(u, rrect, suppress) : fine_peaks(u.all(rrect), suppress);
+    add_window_peaks(peaks, win, gray, suppress, found);
+  }
+  // At most kCandidates: every window's best, then the best of the rest.
+  out.c = keep_best(found, n);
   steps.push_back(std::move(out));
 }
 
