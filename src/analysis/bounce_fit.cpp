@@ -144,15 +144,16 @@ std::string rows_text(const WholeImpactDifference& d, std::size_t n_rows) {
 }
 
 
-BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitOptions& o) {
-  if (auto e = o.validate(); !e.empty()) throw input_error_of(e);
+namespace {
+
+/// The solver's parameters, 0 log K, 1 n, 2 log D or e, 3 mu: start, bounds and which are fixed.
+std::vector<numerics::FitParameter> fit_parameters(const BounceFitOptions& o) {
   const bool hooke = o.model == bounce::NormalModel::hooke;
   const bool hertz = o.model == bounce::NormalModel::hertz;
   auto fixed_or = [&](const char* name, double v) {
     auto it = o.fixed.find(name);
     return it == o.fixed.end() ? v : it->second;
   };
-  // Solver parameters: 0 log K, 1 n, 2 log D or e, 3 mu.
   std::vector<numerics::FitParameter> params(4);
   params[0] = {"log_K", std::log(fixed_or("K", o.K0)), std::log(1e1), std::log(1e10), o.fixed.count("K") > 0};
   params[1] = {"n", hooke ? 1.0 : fixed_or("n", o.n0), 1.0, 3.0, hooke || o.fixed.count("n") > 0};
@@ -165,31 +166,33 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   params[3] = {"mu", fixed_or("mu", o.mu0), 0.0, 3.0, o.fixed.count("mu") > 0};
   if (hooke && o.fixed.count("n") && o.fixed.at("n") != 1.0)
     throw InputError(field("fix"), "the hooke law is linear (n = 1)");
+  return params;
+}
 
-  auto spec_of = [&](const double* p) {
-    bounce::NormalLawSpec s;
-    s.model = o.model;
-    s.K = std::exp(p[0]);
-    s.n = p[1];
-    if (o.restitution_model) {
-      s.restitution = p[2];
-    } else {
-      s.D = hertz ? 0.0 : std::exp(p[2]);
-    }
-    return s;
-  };
-  auto friction_of = [&](const double* p) {
-    bounce::FrictionModel f = o.friction;
-    f.mu = p[3];
-    return f;
-  };
-  const int N = static_cast<int>(rows.size());
-  int n_free = 0;
-  for (const auto& p : params) n_free += p.fixed ? 0 : 1;
-  if (3 * N <= n_free) {
-    throw InputError(std::to_string(N) + " bounce(s) give " + std::to_string(3 * N) + " residuals; " +
-                     std::to_string(n_free) + " free parameters need more rows");
+/// The normal law of the solver's parameters `p`.
+bounce::NormalLawSpec spec_of(const BounceFitOptions& o, const double* p) {
+  const bool hertz = o.model == bounce::NormalModel::hertz;
+  bounce::NormalLawSpec s;
+  s.model = o.model;
+  s.K = std::exp(p[0]);
+  s.n = p[1];
+  if (o.restitution_model) {
+    s.restitution = p[2];
+  } else {
+    s.D = hertz ? 0.0 : std::exp(p[2]);
   }
+  return s;
+}
+
+/// The friction law of the solver's parameters `p`.
+bounce::FrictionModel friction_of(const BounceFitOptions& o, const double* p) {
+  bounce::FrictionModel f = o.friction;
+  f.mu = p[3];
+  return f;
+}
+
+/// The solver's settings.
+numerics::FitOptions solver_options(const BounceFitOptions& o) {
   numerics::FitOptions fo;
   fo.loss = o.loss;
   fo.loss_scale = o.loss_scale;
@@ -198,76 +201,41 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   fo.parameter_tolerance = 1e-8;
   fo.gradient_tolerance = 1e-12;
   fo.covariance = o.covariance;  // docs/theory.md#bounce-fit: which estimator and why
-  // Residual weights: 1 (unweighted) until the rows' own uncertainties are carried in below.
-  std::vector<double> weight(static_cast<std::size_t>(3 * N), 1.0);
-  int with_sigmas = 0;
-  for (const auto& row : rows) with_sigmas += row.has_sigmas();
-  if (with_sigmas != 0 && with_sigmas != N)
-    throw InputError(std::to_string(with_sigmas) + " of " + std::to_string(N) +
-                     " bounces have uncertainties (sigma columns): give them for every row or for none");
-  auto residuals = [&](const double* p, double* r) {
-    const auto spec = spec_of(p);
-    const auto fr = friction_of(p);
-    for (int i = 0; i < N; ++i) {
-      BounceFitRow q;
-      try {
-        q = predict_bounce(rows[i], o.ball, spec, fr, o.tolerance);
-      } catch (const Error&) {
-        return false;  // e.g. a restitution the law cannot reach: the solver backs off
-      }
-      r[3 * i] = weight[3 * i] * q.r_vx;
-      r[3 * i + 1] = weight[3 * i + 1] * q.r_vy;
-      r[3 * i + 2] = weight[3 * i + 2] * q.r_b_omega;
-      if (!std::isfinite(q.r_vx) || !std::isfinite(q.r_vy) || !std::isfinite(q.r_b_omega)) return false;
-    }
-    return true;
-  };
-  BounceFitResult out;
-  out.fit = numerics::fit_least_squares(residuals, 3 * N, params, fo);
-  // A second start from the data: the median restitution -vy_out/vy_in and the central-impact
-  // relation of the law — Hunt–Crossley e(chi v_in), or for Hooke's linear spring-dashpot
-  // e(zeta) with zeta = D / (2 sqrt(K m)) — give the damping (or e) that matches the typical
-  // rebound. This avoids the local minima a poor damping start falls into (friction
-  // branches), and for Hooke a default D0 that overdamps the contact so that no bounce ends.
-  // The start with the lower cost wins.
-  if (!params[2].fixed) {
-    std::vector<double> e_rows, v_rows;
-    for (const auto& r : rows) {
-      e_rows.push_back(-r.vy_out / r.vy_in);
-      v_rows.push_back(std::abs(r.vy_in));
-    }
-    const double e_med = std::clamp(upper_median(e_rows), 0.05, 0.99);
-    auto second = params;
-    if (o.restitution_model) {
-      second[2].initial = e_med;
-    } else if (hooke) {
-      double zeta = 0.9;  // heavily damped but still separating when e_med is out of reach
-      try {
-        zeta = bounce::hooke_damping_ratio(e_med);
-      } catch (const Error&) {
-      }
-      const double D = 2 * zeta * std::sqrt(std::exp(params[0].initial) * o.ball.mass);
-      second[2].initial = std::clamp(std::log(D), std::log(1e-6), std::log(1e10));
-    } else {
-      const double chi = bounce::hunt_crossley_chi_v(e_med) / upper_median(v_rows);
-      second[2].initial = std::clamp(std::log(chi * std::exp(params[0].initial)), std::log(1e-6), std::log(1e10));
-    }
-    auto alt = numerics::fit_least_squares(residuals, 3 * N, second, fo);
-    if (alt.ok() && (!out.fit.ok() || alt.cost < out.fit.cost)) out.fit = std::move(alt);
+  return fo;
+}
+
+/// The parameters started from the data: parameter 2 (damping or e) from the median rebound.
+std::vector<numerics::FitParameter> start_from_data(const std::vector<BounceRow>& rows, const BounceFitOptions& o,
+                                                    const std::vector<numerics::FitParameter>& params) {
+  const bool hooke = o.model == bounce::NormalModel::hooke;
+  std::vector<double> e_rows, v_rows;
+  for (const auto& r : rows) {
+    e_rows.push_back(-r.vy_out / r.vy_in);
+    v_rows.push_back(std::abs(r.vy_in));
   }
-  if (with_sigmas == N && out.fit.ok()) {
-    weigh_by_uncertainties(rows, o, spec_of(out.fit.values.data()), friction_of(out.fit.values.data()), weight);
-    auto start = params;
-    for (std::size_t k = 0; k < start.size(); ++k) start[k].initial = out.fit.values[k];
-    out.fit = numerics::fit_least_squares(residuals, 3 * N, start, fo);
+  const double e_med = std::clamp(upper_median(e_rows), 0.05, 0.99);
+  auto second = params;
+  if (o.restitution_model) {
+    second[2].initial = e_med;
+  } else if (hooke) {
+    double zeta = 0.9;  // heavily damped but still separating when e_med is out of reach
+    try {
+      zeta = bounce::hooke_damping_ratio(e_med);
+    } catch (const Error&) {
+    }
+    const double D = 2 * zeta * std::sqrt(std::exp(params[0].initial) * o.ball.mass);
+    second[2].initial = std::clamp(std::log(D), std::log(1e-6), std::log(1e10));
+  } else {
+    const double chi = bounce::hunt_crossley_chi_v(e_med) / upper_median(v_rows);
+    second[2].initial = std::clamp(std::log(chi * std::exp(params[0].initial)), std::log(1e-6), std::log(1e10));
   }
+  return second;
+}
+
+/// The law's parameters and standard errors from the solver's values (out.fit).
+void take_parameters(BounceFitResult& out, const BounceFitOptions& o) {
+  const bool hertz = o.model == bounce::NormalModel::hertz;
   const auto& f = out.fit;
-  if (!f.ok()) {
-    std::string why = f.message;
-    if (f.status == numerics::FitStatus::not_identifiable)
-      why = "the data cannot determine all free parameters (" + f.message + "); fix some with " + field("fix");
-    numerics::throw_fit_failure(f, "", "bounce fit failed: " + why);
-  }
   const auto& v = f.values;
   const auto& s = f.sigma;
   out.K = std::exp(v[0]);
@@ -286,9 +254,13 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
   out.mu = v[3];
   out.sigma_mu = s[3];
   out.rms = f.rms;
-  const auto spec = spec_of(v.data());
-  const auto fr = friction_of(v.data());
-  for (const auto& row : rows) out.rows.push_back(predict_bounce(row, o.ball, spec, fr, o.tolerance));
+}
+
+/// The free parameters' names and the warnings: parameters at a bound, rows a second touch changes.
+void add_warnings(BounceFitResult& out, const std::vector<BounceRow>& rows, const BounceFitOptions& o,
+                  const std::vector<numerics::FitParameter>& params, const bounce::NormalLawSpec& spec,
+                  const bounce::FrictionModel& fr) {
+  const auto& v = out.fit.values;
   const char* shown[] = {"K", "n", o.restitution_model ? "e" : "D", "mu"};
   for (int k = 0; k < 4; ++k)
     if (!params[k].fixed) out.free_parameters.push_back(shown[k]);
@@ -313,6 +285,76 @@ BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitO
                            "contact only, so for these rows the law fitted is not the one simulate, drop and the maps "
                            "use; leave them out or take the law as approximate (docs/theory.md#bounce-fit)");
   }
+}
+
+}  // namespace
+
+BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitOptions& o) {
+  if (auto e = o.validate(); !e.empty()) throw input_error_of(e);
+  // Solver parameters: 0 log K, 1 n, 2 log D or e, 3 mu.
+  const std::vector<numerics::FitParameter> params = fit_parameters(o);
+  const int N = static_cast<int>(rows.size());
+  int n_free = 0;
+  for (const auto& p : params) n_free += p.fixed ? 0 : 1;
+  if (3 * N <= n_free) {
+    throw InputError(std::to_string(N) + " bounce(s) give " + std::to_string(3 * N) + " residuals; " +
+                     std::to_string(n_free) + " free parameters need more rows");
+  }
+  const numerics::FitOptions fo = solver_options(o);
+  // Residual weights: 1 (unweighted) until the rows' own uncertainties are carried in below.
+  std::vector<double> weight(static_cast<std::size_t>(3 * N), 1.0);
+  int with_sigmas = 0;
+  for (const auto& row : rows) with_sigmas += row.has_sigmas();
+  if (with_sigmas != 0 && with_sigmas != N)
+    throw InputError(std::to_string(with_sigmas) + " of " + std::to_string(N) +
+                     " bounces have uncertainties (sigma columns): give them for every row or for none");
+  auto residuals = [&](const double* p, double* r) {
+    const auto spec = spec_of(o, p);
+    const auto fr = friction_of(o, p);
+    for (int i = 0; i < N; ++i) {
+      BounceFitRow q;
+      try {
+        q = predict_bounce(rows[i], o.ball, spec, fr, o.tolerance);
+      } catch (const Error&) {
+        return false;  // e.g. a restitution the law cannot reach: the solver backs off
+      }
+      r[3 * i] = weight[3 * i] * q.r_vx;
+      r[3 * i + 1] = weight[3 * i + 1] * q.r_vy;
+      r[3 * i + 2] = weight[3 * i + 2] * q.r_b_omega;
+      if (!std::isfinite(q.r_vx) || !std::isfinite(q.r_vy) || !std::isfinite(q.r_b_omega)) return false;
+    }
+    return true;
+  };
+  BounceFitResult out;
+  out.fit = numerics::fit_least_squares(residuals, 3 * N, params, fo);
+  // A second start from the data: the median restitution -vy_out/vy_in and the central-impact
+  // relation of the law — Hunt–Crossley e(chi v_in), or for Hooke's linear spring-dashpot
+  // e(zeta) with zeta = D / (2 sqrt(K m)) — give the damping (or e) that matches the typical
+  // rebound. This avoids the local minima a poor damping start falls into (friction
+  // branches), and for Hooke a default D0 that overdamps the contact so that no bounce ends.
+  // The start with the lower cost wins.
+  if (!params[2].fixed) {
+    auto alt = numerics::fit_least_squares(residuals, 3 * N, start_from_data(rows, o, params), fo);
+    if (alt.ok() && (!out.fit.ok() || alt.cost < out.fit.cost)) out.fit = std::move(alt);
+  }
+  if (with_sigmas == N && out.fit.ok()) {
+    weigh_by_uncertainties(rows, o, spec_of(o, out.fit.values.data()), friction_of(o, out.fit.values.data()), weight);
+    auto start = params;
+    for (std::size_t k = 0; k < start.size(); ++k) start[k].initial = out.fit.values[k];
+    out.fit = numerics::fit_least_squares(residuals, 3 * N, start, fo);
+  }
+  const auto& f = out.fit;
+  if (!f.ok()) {
+    std::string why = f.message;
+    if (f.status == numerics::FitStatus::not_identifiable)
+      why = "the data cannot determine all free parameters (" + f.message + "); fix some with " + field("fix");
+    numerics::throw_fit_failure(f, "", "bounce fit failed: " + why);
+  }
+  take_parameters(out, o);
+  const auto spec = spec_of(o, f.values.data());
+  const auto fr = friction_of(o, f.values.data());
+  for (const auto& row : rows) out.rows.push_back(predict_bounce(row, o.ball, spec, fr, o.tolerance));
+  add_warnings(out, rows, o, params, spec, fr);
   return out;
 }
 

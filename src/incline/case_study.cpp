@@ -39,11 +39,10 @@ double mu_from_slide_acceleration(double phi, double a, double g) {
   return (g * std::sin(phi) - a) / (g * std::cos(phi));  // seed 000, eq (a)
 }
 
-CaseStudy seed000_case_study() {
-  CaseStudy cs;
-  cs.mu_o_from_eq_a = mu_from_slide_acceleration(to_rad(41.09), 1.758, kG);
+namespace {
 
-  // Table 1 (表一), seed 000 陸-四-5.
+/// Table 1 (表一), seed 000 陸-四-5: mu_A from each column's stop, and its printed-number checks.
+void add_table1(CaseStudy& cs) {
   struct Col { double phi, x, y, mu_a, diff; };
   const Col cols[] = {{4.82, 0.478, 0.034, 0.601, -5.21}, {10.37, 0.214, 0.036, 0.588, -7.26},
                       {14.48, 0.594, 0.142, 0.624, -1.58}, {20.96, 0.659, 0.273, 0.648, 2.21},
@@ -67,11 +66,10 @@ CaseStudy seed000_case_study() {
     cs.checks.push_back(check(label,
                               c.mu_a, row.mu, 0.0005, "eq 10A (十A) solved by bracketing the cubic"));
   }
+}
 
-  cs.checks.push_back(check("section 5-1-(1) (伍-一-(一)) mu_o from eq (a), phi = 41.09 deg, a = 1.758 m/s^2",
-                            0.634, cs.mu_o_from_eq_a, 0.0005, "(g sin phi - a)/(g cos phi)"));
-
-  // Figure 八 (phi = 10.37 deg, mu = 0.585): slopes per unit v_x0 (t_f) and v_x0^2 (x_f, y_f).
+/// Figure 八 (phi = 10.37 deg, mu = 0.585): slopes per unit v_x0 (t_f) and v_x0^2 (x_f, y_f).
+void add_figure8_checks(CaseStudy& cs) {
   const Prediction p8 = ClosedForm(setup(0.585, 10.37, 1.0)).predict();
   cs.checks.push_back(check("figure 8-2 (圖八-2) theory slope t_f / v_x0 (phi 10.37 deg, mu 0.585), s^2/m",
                             0.2242, *p8.t_stop, 0.00005, "eq 7 (七) at v_x0 = 1 m/s"));
@@ -87,8 +85,10 @@ CaseStudy seed000_case_study() {
   cs.checks.push_back(check("figure 8-5 (圖八-5) printed difference of -0.1994 from -0.2123, relative to "
                             "-0.1994, %", 6.47, 100 * (0.2123 - 0.1994) / 0.1994, 0.005,
                             "arithmetic on the printed slopes"));
+}
 
-  // Figure 五 (phi = 20.96 deg, mu = 0.634): initial and final accelerations.
+/// Figure 五 (phi = 20.96 deg, mu = 0.634): initial and final accelerations; figures 6, 7, 3-2.
+void add_figure5_checks(CaseStudy& cs) {
   const Parameters s5 = setup(0.634, 20.96, 2.62);
   const Prediction p5 = ClosedForm(s5).predict();
   cs.checks.push_back(check("figure 5-4X (圖五-4X) a_x0 = -g mu cos phi, m/s^2", -5.80, p5.a_x0, 0.005, "eq 1.1a"));
@@ -107,13 +107,15 @@ CaseStudy seed000_case_study() {
   cs.checks.push_back(check("figure 7 (圖七) boundary tan(20.96 deg)", 0.383, std::tan(to_rad(20.96)), 0.0005,
                             "k = 1"));
   cs.checks.push_back(check("figure 3-2 (圖三-2) 1/slope = 1/1.5746", 0.635, 1 / 1.5746, 0.0005, "direct"));
+}
 
-  // Setups of figures 二-八 evaluated with the closed form.
+/// Setups of figures 二-八 evaluated with the closed form.
+void add_setups(CaseStudy& cs) {
   auto add = [&](std::string fig, const Parameters& p) {
     cs.setups.push_back({std::move(fig), p, ClosedForm(p).predict()});
   };
   add("figures 2/4 (圖二/四) (phi 23.20 deg, mu 0.634, v0 2.30 m/s)", setup(0.634, 23.20, 2.30));
-  add("figure 5 (圖五) (phi 20.96 deg, mu 0.634, v0 2.62 m/s)", s5);
+  add("figure 5 (圖五) (phi 20.96 deg, mu 0.634, v0 2.62 m/s)", setup(0.634, 20.96, 2.62));
   add("figure 6 (圖六) (phi = atan 0.634 = 32.37 deg: k = 1, v0 2.62 m/s)",
       [] { Parameters p = setup(0.634, 0, 2.62); p.phi = std::atan(0.634); return p; }());
   add("figure 6 (圖六) (phi 40 deg, mu 0.634, v0 2.62 m/s)", setup(0.634, 40.0, 2.62));
@@ -121,8 +123,11 @@ CaseStudy seed000_case_study() {
   add("figure 7 (圖七) (phi 20.96 deg, mu 0, v0 2.62 m/s: smooth incline)", setup(0.0, 20.96, 2.62));
   add("figure 7A (圖七A) (phi 23.20 deg, mu 0.634, v0 2.30 m/s)", setup(0.634, 23.20, 2.30));
   add("figure 8 (圖八) (phi 10.37 deg, mu 0.585, v0 1 m/s: slopes per unit v0)", setup(0.585, 10.37, 1.0));
+}
 
-  cs.errata = {
+/// The seed's errata, one line each (also in docs/theory.md).
+std::vector<std::string> errata() {
+  return {
       "incline study, appendix 11 (十一) (A2): the integral of x cosh(a + b ln x) has denominator b^2 - 4, "
       "not 4 - b^2 (differentiate the result); eq 3.1 uses the correct sign.",
       "incline study, appendix 10 (十): A = 4/(3r) + 512/(27 r^3); the first line prints -512/(27 r^3), and "
@@ -173,6 +178,23 @@ CaseStudy seed000_case_study() {
       "incline study, section 4-2-(2) (肆-二-(二)): cos(theta_c) = v_yc/|v| is negative on the way down while eq c makes it "
       "tan(phi)/mu > 0; it is |v_yc|/|v| (on simulated model B runs it equals tan(phi)/mu).",
   };
+}
+
+}  // namespace
+
+CaseStudy seed000_case_study() {
+  CaseStudy cs;
+  cs.mu_o_from_eq_a = mu_from_slide_acceleration(to_rad(41.09), 1.758, kG);
+
+  add_table1(cs);
+
+  cs.checks.push_back(check("section 5-1-(1) (伍-一-(一)) mu_o from eq (a), phi = 41.09 deg, a = 1.758 m/s^2",
+                            0.634, cs.mu_o_from_eq_a, 0.0005, "(g sin phi - a)/(g cos phi)"));
+
+  add_figure8_checks(cs);
+  add_figure5_checks(cs);
+  add_setups(cs);
+  cs.errata = errata();
   return cs;
 }
 

@@ -106,6 +106,34 @@ std::string fmt_point(double x, double y) {
   return os.str();
 }
 
+// The motion update() assumes for a frame: steps since the last good centre, whether a
+// velocity is known, the velocity (px per frame) and the spin (rad per frame).
+struct Motion {
+  int steps = 1;
+  bool moving = false;
+  cv::Point2d velocity;
+  double omega = 0;
+};
+
+// The best edge fit of one frame so far (EllipseTracker::update): fits must lie within `gate`
+// px of the prediction `pred`; the score is that of score_of.
+struct FrameFit {
+  cv::Rect image_rect;
+  cv::Point2d pred;           // px
+  double gate = 0;            // px
+  double a_ref = 0, b_ref = 0;  // the running semi-axes, px
+  double score = 0, rms = 0;
+  Ellipse found;
+  // The square reaching `pad` px from the prediction each way, clipped to the image.
+  cv::Rect window(double pad) const;
+  // Score: fraction of normals giving a kept edge point, times agreement of the axes with the
+  // running ones (a merged or partly hidden object changes shape).
+  double score_of(const EdgeFit& fit) const;
+  // Keeps the fit from `init` when it scores better (or as well, with `ties`).
+  void try_fit(const cv::Mat& dist, cv::Point origin, const Ellipse& init, const EdgeFitOptions& opt,
+               bool ties = false);
+};
+
 }  // namespace
 
 std::string EllipseTrackerOptions::validate() const {
@@ -204,6 +232,14 @@ struct EllipseTracker::Impl {
     eo.iterations = 2;
     return eo;
   }
+
+  // update()'s steps.
+  // A fit from the region of the object's colour nearest the prediction, unless the fit is clearly good.
+  void fit_from_segment(FrameFit& fit, const Frame& frame, const EdgeFitOptions& eo) const;
+  // Refits from the ellipse found (the measured motion, other exposures); the exposure of the fit kept.
+  double refit(FrameFit& fit, const Frame& frame, const Motion& m) const;
+  // Takes an accepted fit into the motion and spin models and the running axes.
+  EllipseObservation accept(int index, const FrameFit& fit, double phi_pred, double speed, double exposure_used);
 };
 
 EllipseTracker::EllipseTracker(const EllipseTrackerOptions& options) : impl_(std::make_unique<Impl>()) {
@@ -321,6 +357,108 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
   return s.observe(first.index, e, phi, score, false, round, fit.rms_px);
 }
 
+namespace {
+
+cv::Rect FrameFit::window(double pad) const {
+  // Clamped before the conversion to int: a prediction far outside the image stays defined.
+  const auto clamp_px = [](double v) { return static_cast<int>(std::clamp(v, -1e6, 1e6)); };
+  const int size = clamp_px(2 * pad + 2);
+  return cv::Rect(clamp_px(std::floor(pred.x - pad)), clamp_px(std::floor(pred.y - pad)), size, size) & image_rect;
+}
+
+double FrameFit::score_of(const EdgeFit& fit) const {
+  const double shape = std::max(std::abs(fit.ellipse.a / a_ref - 1), std::abs(fit.ellipse.b / b_ref - 1));
+  return static_cast<double>(fit.inliers) / fit.profiles * std::clamp(1 - 3 * shape, 0.0, 1.0);
+}
+
+void FrameFit::try_fit(const cv::Mat& dist, cv::Point origin, const Ellipse& init, const EdgeFitOptions& opt,
+                       bool ties) {
+  const EdgeFit fit = fit_ellipse_edges(dist, origin, init, opt);
+  if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) return;
+  const double sc = score_of(fit);
+  if (sc > score || (ties && sc >= score)) score = sc, found = fit.ellipse, rms = fit.rms_px;
+}
+
+}  // namespace
+
+void EllipseTracker::Impl::fit_from_segment(FrameFit& fit, const Frame& frame, const EdgeFitOptions& eo) const {
+  const cv::Rect roi = fit.window(a_ref + fit.gate + eo.reach_px + 3);
+  if (!(fit.score < kConfidentScore && roi.width >= 3 && roi.height >= 3)) return;
+  const cv::Mat dist = colour_distance(frame, roi, colour);
+  cv::Mat mask = dist < 0.5 * contrast, labels, stats, cents;
+  const int n = cv::connectedComponentsWithStats(mask, labels, stats, cents, 8, CV_32S);
+  const double area = kPi * a_ref * b_ref;
+  int best = -1;
+  double best_d = fit.gate;
+  for (int k = 1; k < n; ++k) {
+    const double ak = stats.at<int>(k, cv::CC_STAT_AREA);
+    if (ak < 0.4 * area || ak > 2.5 * area) continue;  // not the object (or merged with another)
+    const double d = std::hypot(cents.at<double>(k, 0) + roi.x - fit.pred.x,
+                                cents.at<double>(k, 1) + roi.y - fit.pred.y);
+    if (d < best_d) best_d = d, best = k;
+  }
+  if (best > 0) {
+    const Ellipse seg = ellipse_from_moments(labels == best, cv::Point2d(roi.x, roi.y));
+    if (seg.a > 1 && seg.b > 1) fit.try_fit(dist, roi.tl(), seg, eo);
+  }
+}
+
+double EllipseTracker::Impl::refit(FrameFit& fit, const Frame& frame, const Motion& m) const {
+  double exposure_used = exposure;
+  if (!(fit.score > 0)) return exposure_used;
+  const cv::Point2d last(centres.back().x, centres.back().y);
+  const cv::Point2d v = m.moving ? m.velocity : (cv::Point2d(fit.found.cx, fit.found.cy) - last) / m.steps;
+  const Ellipse from = fit.found;
+  const double d_found = std::hypot(fit.found.cx - fit.pred.x, fit.found.cy - fit.pred.y);
+  bool decided = false, weak = false;
+  for (const double fraction : kExposures) {
+    if (m.moving && fraction == exposure) continue;  // the fits above assumed this one
+    const bool motion_refit = !m.moving && fraction == 1.0;
+    if (!motion_refit) {
+      // Once a short exposure has been learned, every fit short of clearly good is retried.
+      if (!decided) {
+        weak = fit.score < options.min_score || (exposure < 1 && fit.score < kConfidentScore);
+        decided = true;
+      }
+      if (!weak) break;
+    }
+    const EdgeFitOptions eo2 = edge_options(v, m.omega, 0, fraction);
+    if (const cv::Rect roi = fit.window(a_ref + d_found + eo2.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
+      const double before = fit.score;
+      fit.try_fit(colour_distance(frame, roi, colour), roi.tl(), from, eo2, motion_refit);
+      if (fit.score > before || motion_refit) exposure_used = fraction;
+    }
+  }
+  return exposure_used;
+}
+
+EllipseObservation EllipseTracker::Impl::accept(int index, const FrameFit& fit, double phi_pred, double speed,
+                                                double exposure_used) {
+  const Ellipse& found = fit.found;
+  const bool round = found.a - found.b < std::max(kRoundRatio * found.a, kRoundPx);
+  const double phi = round ? phi_pred : phi_pred + std::remainder(-found.psi - phi_pred, kPi);
+  // Motion model: a centre far off the prediction (a bounce) restarts the parabola.
+  const double innovation = std::hypot(found.cx - fit.pred.x, found.cy - fit.pred.y);
+  if (centres.size() >= 2 && innovation > 3 + 0.25 * speed) {
+    speed_hint = std::max(speed, 1.0);
+    centres.clear();
+  }
+  centres.push_back({index, found.cx, found.cy});
+  while (centres.size() > kMotionPoints) centres.pop_front();
+  if (!round) {
+    turns.push_back({index, phi});
+    while (turns.size() > kSpinPoints) turns.pop_front();
+  }
+  phi_last = phi;
+  index_last = index;
+  a_ref = 0.8 * a_ref + 0.2 * found.a;
+  b_ref = 0.8 * b_ref + 0.2 * found.b;
+  lost_run = 0;
+  exposure = exposure_used;
+  if (exposure_used < 1) ++short_exposure_frames;
+  return observe(index, found, phi, fit.score, false, round, fit.rms);
+}
+
 EllipseObservation EllipseTracker::update(const Frame& frame) {
   Impl& s = *impl_;
   TRIBOLAB_ASSERT(!s.centres.empty(), std::string("EllipseTracker::update before start"));
@@ -328,135 +466,54 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   const int index = frame.index;
   cv::Point2d pred = s.predict_centre(index);
   if (!std::isfinite(pred.x) || !std::isfinite(pred.y)) pred = {s.centres.back().x, s.centres.back().y};
-  double omega = s.spin_per_frame();  // rad per frame
-  if (!std::isfinite(omega)) omega = 0;
-  const double phi_pred = s.phi_last + omega * (index - s.index_last);
+  Motion m;
+  m.omega = s.spin_per_frame();  // rad per frame
+  if (!std::isfinite(m.omega)) m.omega = 0;
+  const double phi_pred = s.phi_last + m.omega * (index - s.index_last);
   Ellipse pred_e{pred.x, pred.y, s.a_ref, s.b_ref, -phi_pred};
   if (s.gave_up || img.empty()) {
     ++s.given_up_frames;
     return s.observe(index, pred_e, phi_pred, 0, true, false, 0);
   }
-  const int steps = std::max(1, index - s.centres.back().index);
-  const bool moving = s.centres.size() >= 2;  // a velocity is known
-  const cv::Point2d velocity = moving ? (pred - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps
-                                      : cv::Point2d(0, 0);
-  const double speed = moving ? std::hypot(velocity.x, velocity.y) : s.speed_hint;
+  m.steps = std::max(1, index - s.centres.back().index);
+  m.moving = s.centres.size() >= 2;  // a velocity is known
+  m.velocity = m.moving ? (pred - cv::Point2d(s.centres.back().x, s.centres.back().y)) / m.steps : cv::Point2d(0, 0);
+  const double speed = m.moving ? std::hypot(m.velocity.x, m.velocity.y) : s.speed_hint;
   // Gate: how far the object may lie from the prediction. A bounce reverses the velocity
   // within a frame (error up to 2 |v| dt); lost frames widen the search.
   const double gate = 4 + 0.5 * s.b_ref + 2.2 * speed + 3.0 * s.lost_run;
   // Without a velocity, allow for blur up to the minor semi-axis (a longer smear is no ellipse
   // any more); the fit is redone below with the motion measured.
-  const EdgeFitOptions eo = s.edge_options(velocity, omega, moving ? 0 : std::min(s.speed_hint, s.b_ref), moving ? s.exposure : 1);
-  const cv::Rect image_rect(0, 0, img.cols, img.rows);
-  const auto window = [&](double pad) {
-    // Clamped before the conversion to int: a prediction far outside the image stays defined.
-    const auto clamp_px = [](double v) { return static_cast<int>(std::clamp(v, -1e6, 1e6)); };
-    const int size = clamp_px(2 * pad + 2);
-    return cv::Rect(clamp_px(std::floor(pred.x - pad)), clamp_px(std::floor(pred.y - pad)), size, size) & image_rect;
-  };
-  double score = 0, rms = 0;
-  Ellipse found;
-  // Score: fraction of normals giving a kept edge point, times agreement of the axes with the
-  // running ones (a merged or partly hidden object changes shape).
-  const auto score_of = [&](const EdgeFit& fit) {
-    const double shape = std::max(std::abs(fit.ellipse.a / s.a_ref - 1), std::abs(fit.ellipse.b / s.b_ref - 1));
-    return static_cast<double>(fit.inliers) / fit.profiles * std::clamp(1 - 3 * shape, 0.0, 1.0);
-  };
-  // Keeps the fit from `init` when it scores better (or as well, with `ties`).
-  const auto try_fit = [&](const cv::Mat& dist, cv::Point origin, const Ellipse& init, const EdgeFitOptions& opt,
-                           bool ties = false) {
-    const EdgeFit fit = fit_ellipse_edges(dist, origin, init, opt);
-    if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) return;
-    const double sc = score_of(fit);
-    if (sc > score || (ties && sc >= score)) score = sc, found = fit.ellipse, rms = fit.rms_px;
-  };
+  const EdgeFitOptions eo =
+      s.edge_options(m.velocity, m.omega, m.moving ? 0 : std::min(s.speed_hint, s.b_ref), m.moving ? s.exposure : 1);
+  FrameFit fit;
+  fit.image_rect = cv::Rect(0, 0, img.cols, img.rows);
+  fit.pred = pred;
+  fit.gate = gate;
+  fit.a_ref = s.a_ref, fit.b_ref = s.b_ref;
   // 1. From the prediction (right in flight, also with part of the object hidden), in a window
   //    just holding the predicted outline and its profiles.
-  if (const cv::Rect roi = window(s.a_ref + eo.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
-    try_fit(colour_distance(frame, roi, s.colour), roi.tl(), pred_e, eo);
+  if (const cv::Rect roi = fit.window(s.a_ref + eo.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
+    fit.try_fit(colour_distance(frame, roi, s.colour), roi.tl(), pred_e, eo);
   }
   // 2. Unless that fit is clearly good: segment the whole gate and start from the region of
   //    the object's colour nearest the prediction (right after a bounce); the better score wins.
-  if (const cv::Rect roi = window(s.a_ref + gate + eo.reach_px + 3);
-      score < kConfidentScore && roi.width >= 3 && roi.height >= 3) {
-    const cv::Mat dist = colour_distance(frame, roi, s.colour);
-    cv::Mat mask = dist < 0.5 * s.contrast, labels, stats, cents;
-    const int n = cv::connectedComponentsWithStats(mask, labels, stats, cents, 8, CV_32S);
-    const double area = kPi * s.a_ref * s.b_ref;
-    int best = -1;
-    double best_d = gate;
-    for (int k = 1; k < n; ++k) {
-      const double ak = stats.at<int>(k, cv::CC_STAT_AREA);
-      if (ak < 0.4 * area || ak > 2.5 * area) continue;  // not the object (or merged with another)
-      const double d = std::hypot(cents.at<double>(k, 0) + roi.x - pred.x, cents.at<double>(k, 1) + roi.y - pred.y);
-      if (d < best_d) best_d = d, best = k;
-    }
-    if (best > 0) {
-      const Ellipse seg = ellipse_from_moments(labels == best, cv::Point2d(roi.x, roi.y));
-      if (seg.a > 1 && seg.b > 1) try_fit(dist, roi.tl(), seg, eo);
-    }
-  }
-  double exposure_used = s.exposure;
-  if (score > 0) {
-    // Refit from the ellipse found: with the motion just measured when none was known (every
-    // edge window then allowed for a fast throw's blur; ties kept, as its windows fit the
-    // motion), and, when the fit would be lost (below min_score; below kConfidentScore once a
-    // short exposure has been learned), with every other exposure:
-    // each a sharper edge window, less of the background in it. The same score decides;
-    // nothing outside the gate is considered. A fit that holds is left as it is.
-    const cv::Point2d v = moving ? velocity
-                                 : (cv::Point2d(found.cx, found.cy) - cv::Point2d(s.centres.back().x, s.centres.back().y)) / steps;
-    const Ellipse from = found;
-    const double d_found = std::hypot(found.cx - pred.x, found.cy - pred.y);
-    bool decided = false, weak = false;
-    for (const double fraction : kExposures) {
-      if (moving && fraction == s.exposure) continue;  // the fits above assumed this one
-      const bool motion_refit = !moving && fraction == 1.0;
-      if (!motion_refit) {
-        // Once a short exposure has been learned, every fit short of clearly good is retried.
-        if (!decided) {
-          weak = score < s.options.min_score || (s.exposure < 1 && score < kConfidentScore);
-          decided = true;
-        }
-        if (!weak) break;
-      }
-      const EdgeFitOptions eo2 = s.edge_options(v, omega, 0, fraction);
-      if (const cv::Rect roi = window(s.a_ref + d_found + eo2.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
-        const double before = score;
-        try_fit(colour_distance(frame, roi, s.colour), roi.tl(), from, eo2, motion_refit);
-        if (score > before || motion_refit) exposure_used = fraction;
-      }
-    }
-  }
-  if (score < s.options.min_score) {
-    (score > 0 ? s.weak_frames : s.empty_frames) += 1;
+  s.fit_from_segment(fit, frame, eo);
+  // Refit from the ellipse found: with the motion just measured when none was known (every
+  // edge window then allowed for a fast throw's blur; ties kept, as its windows fit the
+  // motion), and, when the fit would be lost (below min_score; below kConfidentScore once a
+  // short exposure has been learned), with every other exposure:
+  // each a sharper edge window, less of the background in it. The same score decides;
+  // nothing outside the gate is considered. A fit that holds is left as it is.
+  const double exposure_used = s.refit(fit, frame, m);
+  if (fit.score < s.options.min_score) {
+    (fit.score > 0 ? s.weak_frames : s.empty_frames) += 1;
     ++s.lost_run;
     if (s.lost_run > s.options.max_gap_frames) s.gave_up = true;
-    return s.observe(index, pred_e, phi_pred, score, true, false, 0);
+    return s.observe(index, pred_e, phi_pred, fit.score, true, false, 0);
   }
   // Accepted. Orientation: the end of the major axis nearest the predicted A direction.
-  const bool round = found.a - found.b < std::max(kRoundRatio * found.a, kRoundPx);
-  const double phi = round ? phi_pred : phi_pred + std::remainder(-found.psi - phi_pred, kPi);
-  // Motion model: a centre far off the prediction (a bounce) restarts the parabola.
-  const double innovation = std::hypot(found.cx - pred.x, found.cy - pred.y);
-  if (s.centres.size() >= 2 && innovation > 3 + 0.25 * speed) {
-    s.speed_hint = std::max(speed, 1.0);
-    s.centres.clear();
-  }
-  s.centres.push_back({index, found.cx, found.cy});
-  while (s.centres.size() > kMotionPoints) s.centres.pop_front();
-  if (!round) {
-    s.turns.push_back({index, phi});
-    while (s.turns.size() > kSpinPoints) s.turns.pop_front();
-  }
-  s.phi_last = phi;
-  s.index_last = index;
-  s.a_ref = 0.8 * s.a_ref + 0.2 * found.a;
-  s.b_ref = 0.8 * s.b_ref + 0.2 * found.b;
-  s.lost_run = 0;
-  s.exposure = exposure_used;
-  if (exposure_used < 1) ++s.short_exposure_frames;
-  return s.observe(index, found, phi, score, false, round, rms);
+  return s.accept(index, fit, phi_pred, speed, exposure_used);
 }
 
 std::string EllipseTracker::loss_hint() const {

@@ -28,9 +28,10 @@ constexpr int kPerWindow = 3;
 // A best candidate correlating this well is a confident sighting (the lead anchor).
 constexpr double kConfident = 0.9;
 constexpr double kCandidateFloor = 0.3;
-// Coarse to fine (PathTracker::Impl::update): a union of windows larger than this, px², with a
-// template of at least kCoarseMinPatch px, is correlated at half resolution first (floor
-// kCoarseFloor there: halving blurs a peak), each peak refined within kRefinePx at full resolution.
+// Coarse to fine (PathTracker::Impl::correlate_union, coarse_peaks): a union of windows larger
+// than this, px², with a template of at least kCoarseMinPatch px, is correlated at half
+// resolution first (floor kCoarseFloor there: halving blurs a peak), each peak refined within
+// kRefinePx at full resolution.
 constexpr int kCoarseMinArea = 400000;
 constexpr int kCoarseMinPatch = 15;
 constexpr double kCoarseFloor = 0.2;
@@ -92,6 +93,110 @@ struct StepCandidates {
   int index = 0;
   std::vector<Candidate> c;
 };
+
+// update()'s steps and their results.
+// A place the object can be: a recent candidate (or where the confident sightings lead) and
+// the steps since it, px.
+struct Anchor {
+  cv::Point2d at;
+  int age;
+};
+
+// The anchors' search windows (each within reach of its anchor, clipped to the image) and their union, px.
+struct SearchWindows {
+  std::vector<cv::Rect> wins;
+  cv::Rect uni;
+};
+
+// The correlation over the windows' union: at full resolution (`all`), or at half resolution
+// (`coarse_res`) with the union's grey levels (`w32`) kept for the refinement.
+struct UnionCorrelation {
+  bool coarse = false;
+  cv::Mat w32, all, coarse_res;
+};
+
+// A correlation peak in one window.
+struct Peak {
+  cv::Point at;     // template top-left in the window's result, px
+  double v;         // correlation there
+  cv::Point2d off;  // sub-pixel offset
+  double fitted;    // the peak fit's value
+  double ridge = 0; // peak_ridge_px
+};
+
+// The candidates found in a step's windows, and the index in `c` of each window's best peak.
+struct FoundPeaks {
+  std::vector<Candidate> c;
+  std::vector<std::size_t> window_best;
+};
+
+// The best kPerWindow peaks of a window's full-resolution correlation `res`.
+std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress);
+
+// One state of the path search: the path's last two points (step t, candidate k; back step g,
+// candidate j of step t - g), enough for its acceleration at the next one.
+struct PathState {
+  float F = kInf, B = kInf;  // best cost up to and including this state / after it
+  int back = -1;             // the predecessor's index in step t - g
+  short k = 0, g = 0, j = 0;
+};
+
+// The best path: its cost, its last step and each step's chosen candidate (-1: none).
+struct BestPath {
+  double total = 0;
+  int end = 0;
+  std::vector<int> chosen;
+};
+
+// The path points' difference from the background (grey levels): the path's median, and per
+// step the median over its run of consecutive path points.
+struct PathForeground {
+  double typical = 0;
+  std::vector<double> run;
+};
+
+// The best path by dynamic programming over the steps' candidates under the motion prior
+// (finish()). off[t][k * G + g - 1] is the first state of the block (k, g) of S[t]; the block
+// holds one state per candidate of t - g.
+struct PathSearch {
+  // The states of every step, and where the marks are.
+  PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius);
+  const std::vector<StepCandidates>& steps;  // a marked step holds its mark alone
+  int T = 0;                                 // steps
+  int G = 0;                                 // largest step between two path points
+  double reach = 0, radius = 0;              // px (PathTracker::Impl's)
+  std::vector<int> marks_before;             // marked steps among 0 .. t-1
+  int last_mark = 0;                         // the last marked step (0: none)
+  std::vector<std::vector<PathState>> S;
+  std::vector<std::vector<int>> off;
+
+  // A mark in (t0, t1).
+  bool skips_mark(int t0, int t1) const { return marks_before[t1] - marks_before[t0 + 1] > 0; }
+  // Candidate k of step t is the user's mark.
+  bool manual(int t, int k) const { return steps[t].c[k].manual; }
+  // Candidate k of step t, px.
+  cv::Point2d pos(int t, int k) const { return cv::Point2d(steps[t].c[k].x, steps[t].c[k].y); }
+  // The states [first, end) of the block (k, g) of step t.
+  std::pair<int, int> block(int t, int k, int g) const {
+    return std::pair<int, int>(off[t][k * G + g - 1], off[t][k * G + g]);
+  }
+  // Candidate k1 of step t1 lies within reach of candidate k0 of step t0.
+  bool gate(int t0, int k0, int t1, int k1) const;
+  // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
+  double accel(int ta, int ka, int tb, int kb, int tc, int kc) const;
+  // Forward: each state's best cost up to and including it (F) and its predecessor.
+  void forward();
+  // Backward: the best cost after a state, ending anywhere (the frames left cost kMissCost).
+  void backward();
+  // The best path from the forward costs.
+  BestPath best_path() const;
+  // Candidate k of step t has a rival: a candidate farther than rival_px whose best full
+  // path costs less than kRivalMargin more than `total`.
+  bool has_rival(int t, int k, double total, double rival_px) const;
+};
+
+// The chosen path points' difference from the background, over the path and over each run.
+PathForeground path_foreground(const std::vector<StepCandidates>& steps, const std::vector<int>& chosen);
 
 // Scale-normalised Laplacian-of-Gaussian magnitude sigma^2 |LoG| at `p`, maximised over
 // scale (Lindeberg's automatic scale selection): the blob radius is sigma * sqrt(2).
@@ -225,7 +330,30 @@ struct PathTracker::Impl {
   }
 
   void update(const Frame& f);
+  // Where the object can be in the next step: the anchors of its search windows.
+  std::vector<Anchor> find_anchors() const;
+  // The anchors' windows in `gray` and their union.
+  SearchWindows search_windows(const std::vector<Anchor>& anchors, const cv::Mat& gray) const;
+  // The template's correlation over the windows' union (coarse for a large union; makes templ_half).
+  UnionCorrelation correlate_union(const SearchWindows& w, const cv::Mat& gray);
+  // The best kPerWindow peaks of one window (`rrect` in the union's result) found coarse to fine.
+  std::vector<Peak> coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect, int suppress) const;
+  // Adds a window's peaks as candidates, a peak already found from another window once.
+  void add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray, int suppress,
+                        FoundPeaks& found) const;
+  // At most kCandidates of the found (every window's best first); updates the lead sightings (step n).
+  std::vector<Candidate> keep_best(FoundPeaks& found, int n);
   std::vector<Observation> finish();
+  // Each candidate's fg and unary cost (once: the background samples are complete at the first finish()).
+  void compute_unary_costs();
+  // The steps with each marked step's candidates replaced by its mark.
+  std::vector<StepCandidates> steps_with_marks() const;
+  // Per step after the start: the best path's point, or lost and why (counts the loss causes).
+  std::vector<Observation> observe_path(const PathSearch& search, const BestPath& best, const PathForeground& fg);
+  // Reports as lost a short run of points between lost frames (lost_alone).
+  void drop_unconfirmed_runs(std::vector<Observation>& obs);
+  // Reports as lost a run reached only across more than G steps without a reported point (lost_unlinked).
+  void drop_unlinked_runs(std::vector<Observation>& obs, int G);
   std::string main_loss_hint() const;  // the likeliest cause but a streak (loss_hint)
 };
 
@@ -354,20 +482,7 @@ void PathTracker::update(const Frame& frame) {
   impl_->update(frame);
 }
 
-void PathTracker::Impl::update(const Frame& f) {
-  const cv::Mat& gray = f.gray;
-  if (gray.size() != size || gray.type() != CV_8UC1) {
-    throw InputError(name, "frame " + std::to_string(f.index) + " has no grey image of the start frame's size");
-  }
-  sample(gray);
-  // Where the object can be: within reach (times the frames elapsed) of the best three
-  // candidates of the last step that had any and of the best one of the two such steps
-  // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
-  // peaks far away never crowd out a blurred object near an anchor.
-  struct Anchor {
-    cv::Point2d at;
-    int age;
-  };
+std::vector<Anchor> PathTracker::Impl::find_anchors() const {
   std::vector<Anchor> anchors;
   const int n = static_cast<int>(steps.size());
   for (int k = n - 1, used = 0; k >= 0 && used < 3; --k) {
@@ -392,153 +507,191 @@ void PathTracker::Impl::update(const Frame& f) {
     const cv::Point2d at = lead[1] + k * (lead[1] - lead[0]);
     if (at.x >= 0 && at.y >= 0 && at.x < size.width && at.y < size.height) anchors.push_back({at, 1});
   }
-  StepCandidates out;
-  out.index = f.index;
-  const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
-  cv::Mat w32, all;
-  std::vector<Candidate> found;
-  std::vector<std::size_t> window_best;  // index in `found` of each window's best peak
-  // The anchors' windows overlap (the oldest anchor's covers most of the image): the
-  // correlation is computed once over their union, and each window reads its part of it
-  // (the same values as correlating the window alone: the template inside the window).
-  std::vector<cv::Rect> wins;
-  cv::Rect uni;
+  return anchors;
+}
+
+SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& anchors, const cv::Mat& gray) const {
+  SearchWindows w;
   for (const Anchor& a : anchors) {
     const double r = reach * a.age + h + 1;
     const cv::Rect win = cv::Rect(static_cast<int>(std::floor(a.at.x - r)), static_cast<int>(std::floor(a.at.y - r)),
                                   static_cast<int>(std::ceil(2 * r)) + 1, static_cast<int>(std::ceil(2 * r)) + 1) &
                          cv::Rect(0, 0, gray.cols, gray.rows);
     if (win.width <= p + 2 || win.height <= p + 2) continue;
-    wins.push_back(win);
-    uni = uni.area() == 0 ? win : (uni | win);
+    w.wins.push_back(win);
+    w.uni = w.uni.area() == 0 ? win : (w.uni | win);
   }
-  // A large union with a template that survives halving is searched coarse to fine: the
-  // correlation at half resolution finds each window's peaks, each refined by the
-  // full-resolution correlation within 3 px (a quarter of the work over the union).
-  const bool coarse = !wins.empty() && p >= kCoarseMinPatch && uni.area() > kCoarseMinArea;
-  cv::Mat coarse_res;
-  if (!wins.empty()) {
-    gray(uni).convertTo(w32, CV_32F);
-    if (coarse) {
+  return w;
+}
+
+UnionCorrelation PathTracker::Impl::correlate_union(const SearchWindows& w, const cv::Mat& gray) {
+  UnionCorrelation u;
+  u.coarse = !w.wins.empty() && p >= kCoarseMinPatch && w.uni.area() > kCoarseMinArea;
+  if (!w.wins.empty()) {
+    gray(w.uni).convertTo(u.w32, CV_32F);
+    if (u.coarse) {
       if (templ_half.empty()) cv::pyrDown(templ, templ_half);
       cv::Mat half;
-      cv::pyrDown(w32, half);
-      cv::matchTemplate(half, templ_half, coarse_res, cv::TM_CCOEFF_NORMED);
-      cv::patchNaNs(coarse_res, -1);
+      cv::pyrDown(u.w32, half);
+      cv::matchTemplate(half, templ_half, u.coarse_res, cv::TM_CCOEFF_NORMED);
+      cv::patchNaNs(u.coarse_res, -1);
     } else {
-      cv::matchTemplate(w32, templ, all, cv::TM_CCOEFF_NORMED);
-      cv::patchNaNs(all, -1);
+      cv::matchTemplate(u.w32, templ, u.all, cv::TM_CCOEFF_NORMED);
+      cv::patchNaNs(u.all, -1);
     }
   }
-  struct Peak {
-    cv::Point at;     // template top-left in the window's result, px
-    double v;         // correlation there
-    cv::Point2d off;  // sub-pixel offset
-    double fitted;    // the peak fit's value
-    double ridge = 0; // peak_ridge_px
-  };
-  for (const cv::Rect& win : wins) {
-    const cv::Rect rrect(win.x - uni.x, win.y - uni.y, win.width - p + 1, win.height - p + 1);  // in the union's result
-    std::vector<Peak> peaks;
-    if (!coarse) {
-      const cv::Mat res = all(rrect);
-      cv::Mat scratch = res.clone();
-      for (int k = 0; k < kPerWindow; ++k) {
-        Peak pk;
-        cv::minMaxLoc(scratch, nullptr, &pk.v, nullptr, &pk.at);
-        if (pk.v < kCandidateFloor) break;
-        cv::circle(scratch, pk.at, suppress, cv::Scalar(-1), cv::FILLED);
-        pk.fitted = pk.v;
-        pk.off = subpixel_peak(res, pk.at, &pk.fitted);
-        pk.ridge = peak_ridge_px(res, pk.at, pk.v, 1);
-        peaks.push_back(pk);
-      }
-    } else {
-      const cv::Rect crect = cv::Rect(rrect.x / 2, rrect.y / 2, (rrect.width + 1) / 2, (rrect.height + 1) / 2) &
-                             cv::Rect(0, 0, coarse_res.cols, coarse_res.rows);
-      if (crect.width < 1 || crect.height < 1) continue;
-      cv::Mat scratch = coarse_res(crect).clone();
-      std::vector<Peak> refined;
-      for (int k = 0; k < 2 * kPerWindow; ++k) {
-        double v;
-        cv::Point c;
-        cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
-        if (v < kCoarseFloor) break;
-        cv::circle(scratch, c, std::max(1, suppress / 2), cv::Scalar(-1), cv::FILLED);
-        const double ridge = peak_ridge_px(coarse_res, crect.tl() + c, v, 2);
-        // Refine: the full-resolution correlation within kRefinePx of the coarse peak.
-        const cv::Point tl(2 * (crect.x + c.x) - rrect.x, 2 * (crect.y + c.y) - rrect.y);  // in the window's result
-        const cv::Rect near = cv::Rect(tl.x - kRefinePx, tl.y - kRefinePx, 2 * kRefinePx + 1, 2 * kRefinePx + 1) &
-                              cv::Rect(0, 0, rrect.width, rrect.height);
-        if (near.width < 1 || near.height < 1) continue;
-        cv::Mat fine;
-        cv::matchTemplate(w32(cv::Rect(rrect.x + near.x, rrect.y + near.y, near.width + p - 1, near.height + p - 1)),
-                          templ, fine, cv::TM_CCOEFF_NORMED);
-        cv::patchNaNs(fine, -1);
-        Peak pk;
-        cv::Point in;
-        cv::minMaxLoc(fine, nullptr, &pk.v, nullptr, &in);
-        pk.fitted = pk.v;
-        pk.off = subpixel_peak(fine, in, &pk.fitted);
-        pk.at = near.tl() + in;
-        pk.ridge = ridge;
-        refined.push_back(pk);
-      }
-      std::sort(refined.begin(), refined.end(), [](const Peak& a, const Peak& b) { return a.v > b.v; });
-      for (const Peak& pk : refined) {
-        if (static_cast<int>(peaks.size()) >= kPerWindow || pk.v < kCandidateFloor) break;
-        const bool dup = std::any_of(peaks.begin(), peaks.end(), [&](const Peak& q) {
-          return std::hypot(q.at.x - pk.at.x, q.at.y - pk.at.y) <= suppress;
-        });
-        if (!dup) peaks.push_back(pk);
-      }
-    }
-    for (std::size_t k = 0; k < peaks.size(); ++k) {
-      const cv::Point at = peaks[k].at;
-      const cv::Point2d off = peaks[k].off;
-      const double fitted = peaks[k].fitted;
-      const double ridge = peaks[k].ridge;
-      const double x = win.x + at.x + off.x + h, y = win.y + at.y + off.y + h;
-      // The same peak seen from two windows is kept once.
-      const auto same = std::find_if(found.begin(), found.end(), [&](const Candidate& c) {
-        return std::hypot(c.x - x, c.y - y) < suppress;
-      });
-      if (same != found.end()) {
-        if (k == 0) window_best.push_back(static_cast<std::size_t>(same - found.begin()));
-        continue;
-      }
-      if (k == 0) window_best.push_back(found.size());
-      found.push_back(make_candidate(gray, x, y, std::min(1.0, fitted)));
-      found.back().spread = ridge;
-    }
+  return u;
+}
+
+namespace {
+
+std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress) {
+  std::vector<Peak> peaks;
+  cv::Mat scratch = res.clone();
+  for (int k = 0; k < kPerWindow; ++k) {
+    Peak pk;
+    cv::minMaxLoc(scratch, nullptr, &pk.v, nullptr, &pk.at);
+    if (pk.v < kCandidateFloor) break;
+    cv::circle(scratch, pk.at, suppress, cv::Scalar(-1), cv::FILLED);
+    pk.fitted = pk.v;
+    pk.off = subpixel_peak(res, pk.at, &pk.fitted);
+    pk.ridge = peak_ridge_px(res, pk.at, pk.v, 1);
+    peaks.push_back(pk);
   }
-  // At most kCandidates: every window's best, then the best of the rest.
-  std::vector<bool> keep(found.size(), false);
+  return peaks;
+}
+
+}  // namespace
+
+std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect,
+                                                  int suppress) const {
+  std::vector<Peak> peaks;
+  const cv::Rect crect = cv::Rect(rrect.x / 2, rrect.y / 2, (rrect.width + 1) / 2, (rrect.height + 1) / 2) &
+                         cv::Rect(0, 0, u.coarse_res.cols, u.coarse_res.rows);
+  if (crect.width < 1 || crect.height < 1) return peaks;
+  cv::Mat scratch = u.coarse_res(crect).clone();
+  std::vector<Peak> refined;
+  for (int k = 0; k < 2 * kPerWindow; ++k) {
+    double v;
+    cv::Point c;
+    cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
+    if (v < kCoarseFloor) break;
+    cv::circle(scratch, c, std::max(1, suppress / 2), cv::Scalar(-1), cv::FILLED);
+    const double ridge = peak_ridge_px(u.coarse_res, crect.tl() + c, v, 2);
+    // Refine: the full-resolution correlation within kRefinePx of the coarse peak.
+    const cv::Point tl(2 * (crect.x + c.x) - rrect.x, 2 * (crect.y + c.y) - rrect.y);  // in the window's result
+    const cv::Rect near = cv::Rect(tl.x - kRefinePx, tl.y - kRefinePx, 2 * kRefinePx + 1, 2 * kRefinePx + 1) &
+                          cv::Rect(0, 0, rrect.width, rrect.height);
+    if (near.width < 1 || near.height < 1) continue;
+    cv::Mat fine;
+    cv::matchTemplate(u.w32(cv::Rect(rrect.x + near.x, rrect.y + near.y, near.width + p - 1, near.height + p - 1)),
+                      templ, fine, cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(fine, -1);
+    Peak pk;
+    cv::Point in;
+    cv::minMaxLoc(fine, nullptr, &pk.v, nullptr, &in);
+    pk.fitted = pk.v;
+    pk.off = subpixel_peak(fine, in, &pk.fitted);
+    pk.at = near.tl() + in;
+    pk.ridge = ridge;
+    refined.push_back(pk);
+  }
+  std::sort(refined.begin(), refined.end(), [](const Peak& a, const Peak& b) { return a.v > b.v; });
+  for (const Peak& pk : refined) {
+    if (static_cast<int>(peaks.size()) >= kPerWindow || pk.v < kCandidateFloor) break;
+    const bool dup = std::any_of(peaks.begin(), peaks.end(), [&](const Peak& q) {
+      return std::hypot(q.at.x - pk.at.x, q.at.y - pk.at.y) <= suppress;
+    });
+    if (!dup) peaks.push_back(pk);
+  }
+  return peaks;
+}
+
+void PathTracker::Impl::add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray,
+                                         int suppress, FoundPeaks& found) const {
+  for (std::size_t k = 0; k < peaks.size(); ++k) {
+    const cv::Point at = peaks[k].at;
+    const cv::Point2d off = peaks[k].off;
+    const double fitted = peaks[k].fitted;
+    const double ridge = peaks[k].ridge;
+    const double x = win.x + at.x + off.x + h, y = win.y + at.y + off.y + h;
+    // The same peak seen from two windows is kept once.
+    const auto same = std::find_if(found.c.begin(), found.c.end(), [&](const Candidate& c) {
+      return std::hypot(c.x - x, c.y - y) < suppress;
+    });
+    if (same != found.c.end()) {
+      if (k == 0) found.window_best.push_back(static_cast<std::size_t>(same - found.c.begin()));
+      continue;
+    }
+    if (k == 0) found.window_best.push_back(found.c.size());
+    found.c.push_back(make_candidate(gray, x, y, std::min(1.0, fitted)));
+    found.c.back().spread = ridge;
+  }
+}
+
+std::vector<Candidate> PathTracker::Impl::keep_best(FoundPeaks& found, int n) {
+  std::vector<bool> keep(found.c.size(), false);
   int kept = 0;
-  for (std::size_t i : window_best) {
+  for (std::size_t i : found.window_best) {
     if (!keep[i] && kept < kCandidates) {
       keep[i] = true;
       ++kept;
     }
   }
-  std::vector<std::size_t> order(found.size());
+  std::vector<std::size_t> order(found.c.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found[a].ncc > found[b].ncc; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found.c[a].ncc > found.c[b].ncc; });
   for (std::size_t i : order) {
     if (!keep[i] && kept < kCandidates) {
       keep[i] = true;
       ++kept;
     }
   }
-  if (!order.empty() && found[order[0]].ncc >= kConfident) {
+  if (!order.empty() && found.c[order[0]].ncc >= kConfident) {
     lead[0] = lead[1];
     lead_frames[0] = lead_frames[1];
-    lead[1] = cv::Point2d(found[order[0]].x, found[order[0]].y);
+    lead[1] = cv::Point2d(found.c[order[0]].x, found.c[order[0]].y);
     lead_frames[1] = n;
   }
-  for (std::size_t i = 0; i < found.size(); ++i) {
-    if (keep[i]) out.c.push_back(std::move(found[i]));
+  std::vector<Candidate> out;
+  for (std::size_t i = 0; i < found.c.size(); ++i) {
+    if (keep[i]) out.push_back(std::move(found.c[i]));
   }
+  return out;
+}
+
+void PathTracker::Impl::update(const Frame& f) {
+  const cv::Mat& gray = f.gray;
+  if (gray.size() != size || gray.type() != CV_8UC1) {
+    throw InputError(name, "frame " + std::to_string(f.index) + " has no grey image of the start frame's size");
+  }
+  sample(gray);
+  // Where the object can be: within reach (times the frames elapsed) of the best three
+  // candidates of the last step that had any and of the best one of the two such steps
+  // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
+  // peaks far away never crowd out a blurred object near an anchor.
+  const std::vector<Anchor> anchors = find_anchors();
+  const int n = static_cast<int>(steps.size());
+  StepCandidates out;
+  out.index = f.index;
+  const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
+  FoundPeaks found;
+  // The anchors' windows overlap (the oldest anchor's covers most of the image): the
+  // correlation is computed once over their union, and each window reads its part of it
+  // (the same values as correlating the window alone: the template inside the window).
+  const SearchWindows w = search_windows(anchors, gray);
+  // A large union with a template that survives halving is searched coarse to fine: the
+  // correlation at half resolution finds each window's peaks, each refined by the
+  // full-resolution correlation within 3 px (a quarter of the work over the union).
+  const UnionCorrelation u = correlate_union(w, gray);
+  for (const cv::Rect& win : w.wins) {
+    // The window in the union's result.
+    const cv::Rect rrect(win.x - w.uni.x, win.y - w.uni.y, win.width - p + 1, win.height - p + 1);
+    const std::vector<Peak> peaks = u.coarse ? coarse_peaks(u, rrect, suppress) : fine_peaks(u.all(rrect), suppress);
+    add_window_peaks(peaks, win, gray, suppress, found);
+  }
+  // At most kCandidates: every window's best, then the best of the rest.
+  out.c = keep_best(found, n);
   steps.push_back(std::move(out));
 }
 
@@ -548,25 +701,21 @@ std::vector<Observation> PathTracker::finish() {
   return impl_->finish();
 }
 
-std::vector<Observation> PathTracker::Impl::finish() {
-  const int T = static_cast<int>(this->steps.size());
-  const int G = opt.max_gap_frames + 1;  // largest step between two path points
-  // Unary costs: likeness and difference from the background median (once: the background
-  // samples are complete at the first finish()).
-  if (!fg_done) {
-    for (int t = 1; t < T; ++t) {
-      for (Candidate& c : this->steps[t].c) {
-        c.fg = foreground(c);
-        c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
-      }
+void PathTracker::Impl::compute_unary_costs() {
+  if (fg_done) return;
+  for (int t = 1; t < static_cast<int>(this->steps.size()); ++t) {
+    for (Candidate& c : this->steps[t].c) {
+      c.fg = foreground(c);
+      c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
     }
-    fg_done = true;
   }
-  // The steps the path is chosen among: a marked step's only candidate is its mark (cost 0;
-  // no fg: it takes no part in the background check below).
-  std::vector<StepCandidates> steps = this->steps;
-  for (int t = 1; t < T; ++t) {
-    const auto mk = marks.find(steps[t].index);
+  fg_done = true;
+}
+
+std::vector<StepCandidates> PathTracker::Impl::steps_with_marks() const {
+  std::vector<StepCandidates> out = this->steps;
+  for (int t = 1; t < static_cast<int>(out.size()); ++t) {
+    const auto mk = marks.find(out[t].index);
     if (mk == marks.end()) continue;
     Candidate c;
     c.x = mk->second.x_px;
@@ -575,61 +724,27 @@ std::vector<Observation> PathTracker::Impl::finish() {
     c.cost = 0;
     c.fg = std::numeric_limits<double>::quiet_NaN();
     c.manual = true;
-    steps[t].c.assign(1, c);
+    out[t].c.assign(1, c);
   }
+  return out;
+}
+
+namespace {
+
+PathSearch::PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius)
+    : steps(steps), T(static_cast<int>(steps.size())), G(max_gap_frames + 1), reach(reach), radius(radius) {
   // Manual marks: the path passes through every one (no transition skips a marked step, the
   // path ends at or after the last).
-  std::vector<int> marks_before(T + 1, 0);  // marked steps among 0 .. t-1
-  int last_mark = 0;
+  marks_before.assign(T + 1, 0);
   for (int t = 0; t < T; ++t) {
     const bool marked = t > 0 && !steps[t].c.empty() && steps[t].c.front().manual;
     marks_before[t + 1] = marks_before[t] + (marked ? 1 : 0);
     if (marked) last_mark = t;
   }
-  auto skips_mark = [&](int t0, int t1) { return marks_before[t1] - marks_before[t0 + 1] > 0; };  // a mark in (t0, t1)
-  auto manual = [&](int t, int k) { return steps[t].c[k].manual; };
-  // States: (step t, candidate k, back step g, candidate j of step t - g): the path's last
-  // two points, enough for its acceleration at the next one. off[t][k * G + g - 1] is the
-  // first state of the block (k, g); the block holds one state per candidate of t - g.
-  struct State {
-    float F = kInf, B = kInf;  // best cost up to and including this state / after it
-    int back = -1;             // the predecessor's index in step t - g
-    short k = 0, g = 0, j = 0;
-  };
-  std::vector<std::vector<State>> S(T);
-  std::vector<std::vector<int>> off(T);
-  S[0].push_back(State{0, kInf, -1, 0, 0, 0});
-  auto pos = [&](int t, int k) { return cv::Point2d(steps[t].c[k].x, steps[t].c[k].y); };
-  auto gate = [&](int t0, int k0, int t1, int k1) {
-    const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
-    // From the start (no velocity known) a gap does not widen the reach: the object was
-    // clicked where it is, and something far away found frames later is something else.
-    if (manual(t0, k0) || manual(t1, k1)) return true;  // the user's mark: anywhere
-    return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
-  };
-  // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
-  auto accel = [&](int ta, int ka, int tb, int kb, int tc, int kc) -> double {
-    const cv::Point2d v1 = (pos(tb, kb) - pos(ta, ka)) / (tb - ta), v2 = (pos(tc, kc) - pos(tb, kb)) / (tc - tb);
-    const cv::Point2d a = (v2 - v1) / (0.5 * (tc - ta));
-    // The mean speed; across a gap the slower of the two, so that a jump to something far
-    // away does not widen its own tolerance (an oscillation, slow at its turning points, needs
-    // the mean).
-    const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
-                                      : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
-    const double sigma = kAccAbs + kAccRel * speed;
-    if (manual(ta, ka) || manual(tb, kb) || manual(tc, kc)) {
-      const double z = std::hypot(a.x, a.y) / sigma;
-      return std::min(0.5 * z * z, kMarkAccCap);
-    }
-    if (tc - tb > 1) {
-      // Found again after a gap: within reach of where the motion before it leads (linear
-      // extrapolation), else something else has been found.
-      const cv::Point2d d = pos(tc, kc) - (pos(tb, kb) + v1 * (tc - tb));
-      if (std::hypot(d.x, d.y) > 2 * radius + kAccRel * std::hypot(v1.x, v1.y) * (tc - tb)) return kInf;
-    }
-    const double z = std::hypot(a.x, a.y) / sigma;
-    return z > kAccGate ? kInf : 0.5 * z * z;
-  };
+  // The states of every step, in blocks (k, g) of one state per candidate of t - g.
+  S.resize(T);
+  off.resize(T);
+  S[0].push_back(PathState{0, kInf, -1, 0, 0, 0});
   for (int t = 1; t < T; ++t) {
     const int K = static_cast<int>(steps[t].c.size());
     off[t].assign(K * G + 1, 0);
@@ -639,7 +754,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
         off[t][k * G + g - 1] = n;
         if (t - g >= 0) {
           for (int j = 0; j < static_cast<int>(steps[t - g].c.size()); ++j) {
-            State st;
+            PathState st;
             st.k = static_cast<short>(k);
             st.g = static_cast<short>(g);
             st.j = static_cast<short>(j);
@@ -651,12 +766,42 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     off[t][K * G] = n;
   }
-  auto block = [&](int t, int k, int g) {
-    return std::pair<int, int>(off[t][k * G + g - 1], off[t][k * G + g]);
-  };
-  // Forward.
+}
+
+bool PathSearch::gate(int t0, int k0, int t1, int k1) const {
+  const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
+  // From the start (no velocity known) a gap does not widen the reach: the object was
+  // clicked where it is, and something far away found frames later is something else.
+  if (manual(t0, k0) || manual(t1, k1)) return true;  // the user's mark: anywhere
+  return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
+}
+
+double PathSearch::accel(int ta, int ka, int tb, int kb, int tc, int kc) const {
+  const cv::Point2d v1 = (pos(tb, kb) - pos(ta, ka)) / (tb - ta), v2 = (pos(tc, kc) - pos(tb, kb)) / (tc - tb);
+  const cv::Point2d a = (v2 - v1) / (0.5 * (tc - ta));
+  // The mean speed; across a gap the slower of the two, so that a jump to something far
+  // away does not widen its own tolerance (an oscillation, slow at its turning points, needs
+  // the mean).
+  const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
+                                    : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
+  const double sigma = kAccAbs + kAccRel * speed;
+  if (manual(ta, ka) || manual(tb, kb) || manual(tc, kc)) {
+    const double z = std::hypot(a.x, a.y) / sigma;
+    return std::min(0.5 * z * z, kMarkAccCap);
+  }
+  if (tc - tb > 1) {
+    // Found again after a gap: within reach of where the motion before it leads (linear
+    // extrapolation), else something else has been found.
+    const cv::Point2d d = pos(tc, kc) - (pos(tb, kb) + v1 * (tc - tb));
+    if (std::hypot(d.x, d.y) > 2 * radius + kAccRel * std::hypot(v1.x, v1.y) * (tc - tb)) return kInf;
+  }
+  const double z = std::hypot(a.x, a.y) / sigma;
+  return z > kAccGate ? kInf : 0.5 * z * z;
+}
+
+void PathSearch::forward() {
   for (int t = 1; t < T; ++t) {
-    for (State& s : S[t]) {
+    for (PathState& s : S[t]) {
       const int tp = t - s.g;
       if (skips_mark(tp, t) || !gate(tp, s.j, t, s.k)) continue;
       const double u = steps[t].c[s.k].cost + kMissCost * (s.g - 1);
@@ -670,7 +815,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
       for (int g2 = 1; g2 <= G && tp - g2 >= 0; ++g2) {
         const auto [a, b] = block(tp, s.j, g2);
         for (int i = a; i < b; ++i) {
-          const State& q = S[tp][i];
+          const PathState& q = S[tp][i];
           if (!(q.F < kInf)) continue;
           const double c = q.F + accel(tp - g2, q.j, tp, s.j, t, s.k);
           if (c < best) {
@@ -685,9 +830,11 @@ std::vector<Observation> PathTracker::Impl::finish() {
       }
     }
   }
-  // Backward: the best cost after a state, ending anywhere (the frames left cost kMissCost).
+}
+
+void PathSearch::backward() {
   for (int t = T - 1; t >= 0; --t) {
-    for (State& s : S[t]) {
+    for (PathState& s : S[t]) {
       double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
       for (int g3 = 1; g3 <= G && t + g3 < T; ++g3) {
         const int t3 = t + g3;
@@ -696,7 +843,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
           const auto [a, b] = block(t3, k3, g3);
           const int idx = a + s.k;  // the successor whose previous point is this state's
           if (idx >= b || !gate(t, s.k, t3, k3)) continue;
-          const State& q = S[t3][idx];
+          const PathState& q = S[t3][idx];
           const double acc = t == 0 ? 0.0 : accel(t - s.g, s.j, t, s.k, t3, k3);
           const double c = steps[t3].c[k3].cost + kMissCost * (g3 - 1) + acc + q.B;
           best = std::min(best, c);
@@ -705,42 +852,58 @@ std::vector<Observation> PathTracker::Impl::finish() {
       s.B = static_cast<float>(best);
     }
   }
-  // The best path (forward and backward agree on its cost: F + B is the same along it).
+}
+
+BestPath PathSearch::best_path() const {
   // (The optimum is also S[0][0].B, the backward pass's best from the start.)
-  double total = last_mark == 0 ? kMissCost * (T - 1) : kInf;  // the start alone, every further frame lost
-  int bt = 0, bs = 0;
+  BestPath p;
+  p.total = last_mark == 0 ? kMissCost * (T - 1) : kInf;  // the start alone, every further frame lost
+  int bs = 0;
   for (int t = std::max(1, last_mark); t < T; ++t) {
     for (int i = 0; i < static_cast<int>(S[t].size()); ++i) {
       const double c = S[t][i].F + kMissCost * (T - 1 - t);
-      if (c < total) {
-        total = c;
-        bt = t;
+      if (c < p.total) {
+        p.total = c;
+        p.end = t;
         bs = i;
       }
     }
   }
-  std::vector<int> chosen(T, -1);
-  for (int t = bt, i = bs; t > 0;) {
-    const State& s = S[t][i];
-    chosen[t] = s.k;
+  p.chosen.assign(T, -1);
+  for (int t = p.end, i = bs; t > 0;) {
+    const PathState& s = S[t][i];
+    p.chosen[t] = s.k;
     i = s.back;
     t -= s.g;
   }
-  // Per frame: the best full path through each candidate (min-marginal); a far candidate
-  // nearly as good as the chosen one makes the frame doubtful.
-  const double rival_px = std::max(3.0, radius);
-  // A path point that stands out from the background far less than the object does along
-  // the path (a still patch of texture reached across a gap) is not the object.
+  return p;
+}
+
+bool PathSearch::has_rival(int t, int k, double total, double rival_px) const {
+  const Candidate& c = steps[t].c[k];
+  bool rival = false;
+  for (int r = 0; r < static_cast<int>(steps[t].c.size()) && !rival; ++r) {
+    const Candidate& q = steps[t].c[r];
+    if (r == k || std::hypot(q.x - c.x, q.y - c.y) <= rival_px) continue;
+    double m = kInf;
+    for (int i = off[t][r * G]; i < off[t][r * G + G]; ++i) m = std::min<double>(m, S[t][i].F + S[t][i].B);
+    rival = m < total + kRivalMargin;
+  }
+  return rival;
+}
+
+PathForeground path_foreground(const std::vector<StepCandidates>& steps, const std::vector<int>& chosen) {
+  const int T = static_cast<int>(steps.size());
+  PathForeground out;
   std::vector<double> path_fg;
   for (int t = 1; t < T; ++t) {
     if (chosen[t] >= 0 && !steps[t].c[chosen[t]].manual) path_fg.push_back(steps[t].c[chosen[t]].fg);
   }
-  double typical_fg = 0;
-  if (!path_fg.empty()) typical_fg = upper_median(std::move(path_fg));
+  if (!path_fg.empty()) out.typical = upper_median(std::move(path_fg));
   // Per run of consecutive path frames, its median difference (an object slowing down at the
   // turning point of a swing sits in the background median for a frame or two; a run of
   // still texture after a gap does throughout).
-  std::vector<double> run_fg(T, 0);
+  out.run.assign(T, 0);
   for (int t = 1; t < T;) {
     if (chosen[t] < 0) {
       ++t;
@@ -751,14 +914,26 @@ std::vector<Observation> PathTracker::Impl::finish() {
     for (; e < T && chosen[e] >= 0; ++e) {
       if (!steps[e].c[chosen[e]].manual) v.push_back(steps[e].c[chosen[e]].fg);
     }
-    double run = typical_fg;  // a run of marks alone is not background
+    double run = out.typical;  // a run of marks alone is not background
     if (!v.empty()) run = upper_median(std::move(v));
-    for (int i = t; i < e; ++i) run_fg[i] = run;
+    for (int i = t; i < e; ++i) out.run[i] = run;
     t = e;
   }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Observation> PathTracker::Impl::observe_path(const PathSearch& search, const BestPath& best,
+                                                         const PathForeground& fg) {
+  const std::vector<StepCandidates>& steps = search.steps;
+  const int T = search.T;
+  // Per frame: the best full path through each candidate (min-marginal); a far candidate
+  // nearly as good as the chosen one makes the frame doubtful.
+  const double rival_px = std::max(3.0, radius);
   std::vector<Observation> obs;
   lost_none = lost_rival = lost_score = lost_background = lost_ridge = lost_end = lost_alone = lost_unlinked = 0;
-  end_frame = steps[bt].index;
+  end_frame = steps[best.end].index;
   // A path point whose correlation peak is a ridge longer than a user's correction distance
   // (4 px per 640 px of image width, at least 4 px) cannot be placed along it: lost.
   ridge_max_px = std::max(kRidgeMinPx, kRidgeMinPx * size.width / 640.0);
@@ -766,7 +941,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     Observation o;
     o.frame = steps[t].index;
     o.lost = true;
-    const int k = chosen[t];
+    const int k = best.chosen[t];
     if (k < 0 && !steps[t].c.empty() && steps[t].c.front().manual) {
       // No path reaches the mark (the object hidden longer than max_gap_frames around it): the mark stands.
       o.x_px = steps[t].c.front().x;
@@ -779,7 +954,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     if (k < 0) {
       ++lost_none;
-      if (t > bt) ++lost_end;
+      if (t > best.end) ++lost_end;
       obs.push_back(o);
       continue;
     }
@@ -794,18 +969,10 @@ std::vector<Observation> PathTracker::Impl::finish() {
       obs.push_back(o);
       continue;
     }
-    bool rival = false;
-    for (int r = 0; r < static_cast<int>(steps[t].c.size()) && !rival; ++r) {
-      const Candidate& q = steps[t].c[r];
-      if (r == k || std::hypot(q.x - c.x, q.y - c.y) <= rival_px) continue;
-      double m = kInf;
-      for (int i = off[t][r * G]; i < off[t][r * G + G]; ++i) m = std::min<double>(m, S[t][i].F + S[t][i].B);
-      rival = m < total + kRivalMargin;
-    }
-    if (rival) {
+    if (search.has_rival(t, k, best.total, rival_px)) {
       ++lost_rival;
       o.score = std::min(o.score, 0.1);
-    } else if (typical_fg > 2 * kFgHalf && run_fg[t] < kFgShare * typical_fg) {
+    } else if (fg.typical > 2 * kFgHalf && fg.run[t] < kFgShare * fg.typical) {
       ++lost_background;
       o.score = std::min(o.score, 0.1);
     } else if (c.spread > ridge_max_px) {
@@ -818,10 +985,10 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     obs.push_back(o);
   }
-  // Confirmation (the M-of-N rule of radar tracking): a run of fewer than kMinRun consecutive
-  // reported points, with lost frames on both sides (the start and a mark count as reported),
-  // is not confirmed by its neighbours' motion: lost. (CarInLoop with patch 25: frame 2
-  // alone between lost frames 1 and 3, 47 px from the human's mark.)
+  return obs;
+}
+
+void PathTracker::Impl::drop_unconfirmed_runs(std::vector<Observation>& obs) {
   for (std::size_t i = 0; i < obs.size();) {
     if (obs[i].lost) {
       ++i;
@@ -841,11 +1008,9 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     i = e;
   }
-  // Identity: a run of reported points whose last reported point before it (the start, or a
-  // point of an earlier run) lies more than max_gap + 1 frames back is reached only through
-  // doubtful path points: it may be anything that the template resembles. Lost, unless it holds
-  // a mark. (CarInLoop with patch 75: the path hopped from the car, its points lost, to a
-  // still edge 390 px away and held it for 17 frames.)
+}
+
+void PathTracker::Impl::drop_unlinked_runs(std::vector<Observation>& obs, int G) {
   int last_reported = 0;  // step index; the start
   for (std::size_t i = 0; i < obs.size();) {
     if (obs[i].lost) {
@@ -867,6 +1032,35 @@ std::vector<Observation> PathTracker::Impl::finish() {
     }
     i = e;
   }
+}
+
+std::vector<Observation> PathTracker::Impl::finish() {
+  // Unary costs: likeness and difference from the background median (once: the background
+  // samples are complete at the first finish()).
+  compute_unary_costs();
+  // The steps the path is chosen among: a marked step's only candidate is its mark (cost 0;
+  // no fg: it takes no part in the background check below).
+  const std::vector<StepCandidates> steps = steps_with_marks();
+  PathSearch search(steps, opt.max_gap_frames, reach, radius);
+  search.forward();
+  search.backward();
+  // The best path (forward and backward agree on its cost: F + B is the same along it).
+  const BestPath best = search.best_path();
+  // A path point that stands out from the background far less than the object does along
+  // the path (a still patch of texture reached across a gap) is not the object.
+  const PathForeground fg = path_foreground(steps, best.chosen);
+  std::vector<Observation> obs = observe_path(search, best, fg);
+  // Confirmation (the M-of-N rule of radar tracking): a run of fewer than kMinRun consecutive
+  // reported points, with lost frames on both sides (the start and a mark count as reported),
+  // is not confirmed by its neighbours' motion: lost. (CarInLoop with patch 25: frame 2
+  // alone between lost frames 1 and 3, 47 px from the human's mark.)
+  drop_unconfirmed_runs(obs);
+  // Identity: a run of reported points whose last reported point before it (the start, or a
+  // point of an earlier run) lies more than max_gap + 1 frames back is reached only through
+  // doubtful path points: it may be anything that the template resembles. Lost, unless it holds
+  // a mark. (CarInLoop with patch 75: the path hopped from the car, its points lost, to a
+  // still edge 390 px away and held it for 17 frames.)
+  drop_unlinked_runs(obs, search.G);
   return obs;
 }
 

@@ -278,6 +278,43 @@ struct PointTracker::Impl {
   }
 
   Observation update(const Frame& frame);
+
+  // update()'s steps, with their results.
+  struct SearchReach {
+    int first_search = 0;  // the first step's search half-width, px
+    int half_width = 0;    // this frame's search half-width (the gate), px
+  };
+  struct AngleSearch {
+    bool search = false;          // the angle is searched (max_turn_deg > 0, a pattern that turns)
+    std::vector<double> angles;   // the angles correlated, rad
+    double spacing = 0;           // between them, rad
+  };
+  struct PeakChoice {
+    bool found = false;  // false: lost (no peak, rivals, or beyond the gate on re-acquisition)
+    cv::Point at;        // the chosen peak in the correlation maps
+    double score = 0;    // its score (lost: the score to report)
+  };
+  struct Refined {
+    cv::Point2d centre;  // px
+    double angle = 0;    // rad
+    double score = 0;    // the peak value at the refined angle and position
+  };
+  // The template's extra smear per unit of exposure: v - R(theta) v0, px per frame.
+  cv::Point2d blur_change(const MotionState& pred) const;
+  // The search half-width around the prediction (and the first step's).
+  SearchReach search_reach(const MotionState& pred, bool reacquire) const;
+  // The angles to correlate around the predicted one.
+  AngleSearch angle_search(const MotionState& pred) const;
+  // The correlation maps of `window` for every angle (`results`) and their envelope (`best_map`).
+  void correlate(const std::vector<double>& angles, int half_width);
+  // The peak nearest the prediction, unless a rival makes it doubtful.
+  PeakChoice choose_peak(const MotionState& pred, const cv::Rect& win, bool reacquire, int first_search);
+  // Sub-pixel position and angle (and the exposure fraction, learned) around peak `at` of window `win`.
+  Refined refine(const cv::Mat& gray, const cv::Rect& win, cv::Point at, const AngleSearch& as, cv::Point2d dv);
+  // The score passes min_score, the first match's bar and the drop check (kept among the recent scores).
+  bool score_accepted(double score);
+  // Takes the accepted observation into the motion model (o.refound set on re-acquisition).
+  void accept(Observation& o, const MotionState& pred, bool reacquire);
 };
 
 void PointTracker::Impl::coarse_to_fine(const std::vector<double>& angles, double min_score) {
@@ -473,49 +510,26 @@ Observation PointTracker::mark(const Frame& frame, double x_px, double y_px) {
   return o;
 }
 
-Observation PointTracker::Impl::update(const Frame& frame) {
-  const cv::Mat& gray = frame.gray;
-  if (gray.size() != image_size || gray.type() != CV_8UC1) {
-    throw InputError(name, "frame " + std::to_string(frame.index) + " has no grey image of the " +
-                               "start frame's size");
-  }
-  if (frame.index <= last_frame) {
-    throw InputError(name, "frame " + std::to_string(frame.index) + " does not follow frame " +
-                               std::to_string(last_frame));
-  }
-  last_frame = frame.index;
-  const MotionState pred = model.predict(frame.index);
-  // Given up (more than max_gap_frames lost in a row): every frame is searched again, as
-  // after a start, around the motion model's prediction (docs/theory.md#point-tracking).
-  const bool reacquire = gave_up;
-
-  // Motion blur: the template already carries the start's smear (shutter * v0, turned with
-  // the pattern); the frame's smear is shutter * v, so the template is smeared further by
-  // shutter * (v - R(theta) v0) (docs/theory.md#point-tracking).
+cv::Point2d PointTracker::Impl::blur_change(const MotionState& pred) const {
   cv::Point2d dv(0, 0);
   if (have_v0) {
     const double c = std::cos(pred.angle_rad), sn = std::sin(pred.angle_rad);
     dv = cv::Point2d(pred.vx_px - (c * v0.x + sn * v0.y), pred.vy_px - (-sn * v0.x + c * v0.y));
   }
-  set_blur(shutter * dv);
+  return dv;
+}
 
-  // Search half-width (also the gate a match must fall in): three times the largest of the
-  // last prediction errors plus a margin; wide on the first step (no velocity known yet: a
-  // quarter of the image's smaller side, since a toss filmed at 15 fps moves 70 px a frame).
-  // While lost, the extrapolation error grows with the horizon like the squared number of
-  // frames bridged times the one-frame error (a polynomial model's error grows at least
-  // that fast), so the gate widens from the recent prediction quality, not from the speed:
-  // a ballistic object predicted to 0.1 px keeps a tight gate that a look-alike resting a
-  // few radii away cannot enter (docs/theory.md#point-tracking).
+PointTracker::Impl::SearchReach PointTracker::Impl::search_reach(const MotionState& pred, bool reacquire) const {
   const int p = opt.patch_px, h = half();
-  const int first_search = std::max({2 * p, 48, std::min(image_size.width, image_size.height) / 4});
+  SearchReach r;
+  r.first_search = std::max({2 * p, 48, std::min(image_size.width, image_size.height) / 4});
   double worst = 0;
   for (double e : innovation_px) worst = std::max(worst, e);
   double s;
   if (opt.search_px > 0) {
     s = opt.search_px;
   } else if (model.size() < 2) {
-    s = first_search;
+    s = r.first_search;
   } else if (model.size() < 3) {
     s = std::max<double>(h, 4 + 0.5 * std::hypot(pred.vx_px, pred.vy_px));  // no acceleration yet
   } else {
@@ -525,44 +539,37 @@ Observation PointTracker::Impl::update(const Frame& frame) {
     // Re-acquisition: the gate (where a match is accepted) is the first step's window; the
     // search looks twice as far, so that a look-alike just outside the gate is seen as a
     // rival and leaves the point lost rather than guessed.
-    s = 2.0 * first_search;
+    s = 2.0 * r.first_search;
   } else if (gap > 0) {
-    s = std::min<double>(s + 2 + 3 * worst * (gap + 1) * (gap + 1), 2.0 * first_search + s);
+    s = std::min<double>(s + 2 + 3 * worst * (gap + 1) * (gap + 1), 2.0 * r.first_search + s);
   }
-  const int si = static_cast<int>(std::ceil(s));
+  r.half_width = static_cast<int>(std::ceil(s));
+  return r;
+}
 
-  // Angles: around the predicted one, within three times the recent angle error (all of
-  // max_turn_deg at the start or after a loss), in steps that move the patch's corner by at
-  // most ~1.5 px. When that range is within half a step, the predicted angle alone is
-  // correlated and the refinement below (which reaches 0.75 step) finds the angle.
-  const bool search_angle = opt.max_turn_deg > 0 && turns;
-  std::vector<double> angles;
-  double angle_spacing = angle_step();  // between coarse samples
-  if (search_angle) {
+PointTracker::Impl::AngleSearch PointTracker::Impl::angle_search(const MotionState& pred) const {
+  AngleSearch a;
+  a.search = opt.max_turn_deg > 0 && turns;
+  a.spacing = angle_step();
+  if (a.search) {
     double range = to_rad(opt.max_turn_deg);
     if (model.size() >= 3 && gap == 0) {
       double worst = 0;
       for (double e : innovation_rad) worst = std::max(worst, e);
       range = std::min(range, 3 * worst);
     }
-    const int k = range <= angle_spacing / 2 ? 0 : static_cast<int>(std::ceil(range / angle_spacing));
-    if (k > 0) angle_spacing = range / k;
-    for (int i = -k; i <= k; ++i) angles.push_back(pred.angle_rad + i * angle_spacing);
+    const int k = range <= a.spacing / 2 ? 0 : static_cast<int>(std::ceil(range / a.spacing));
+    if (k > 0) a.spacing = range / k;
+    for (int i = -k; i <= k; ++i) a.angles.push_back(pred.angle_rad + i * a.spacing);
   } else {
-    angles.push_back(0);
+    a.angles.push_back(0);
   }
+  return a;
+}
 
-  // Window in the image around the prediction (clipped); too small: the point left the view.
-  const int cx = static_cast<int>(std::lround(pred.x_px)), cy = static_cast<int>(std::lround(pred.y_px));
-  const cv::Rect want(cx - si - h, cy - si - h, 2 * (si + h) + 1, 2 * (si + h) + 1);
-  const cv::Rect win = want & cv::Rect(0, 0, gray.cols, gray.rows);
-  if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0);
-  gray(win).convertTo(window, CV_32F);
-
-  // Correlation maps for every angle and their upper envelope: directly for a narrow
-  // window, coarse to fine for a wide one (the first step, a long gap).
+void PointTracker::Impl::correlate(const std::vector<double>& angles, int half_width) {
   results.resize(angles.size());
-  if (si > kCoarseFromPatches * p) {
+  if (half_width > kCoarseFromPatches * opt.patch_px) {
     coarse_to_fine(angles, opt.min_score);
   } else {
     for (std::size_t i = 0; i < angles.size(); ++i) {
@@ -575,12 +582,11 @@ Observation PointTracker::Impl::update(const Frame& frame) {
       }
     }
   }
+}
 
-  // Candidate peaks above min_score (non-maximum suppression over a patch radius). Peaks
-  // within kRival of the best score are rivals: an object that looks the same. Of several
-  // rivals the one nearest the prediction is taken only if every other lies more than twice
-  // as far (+2 px): two look-alikes near the prediction leave the point lost, not guessed.
-  // Weaker peaks (part of the pattern matching part of the template) never compete.
+PointTracker::Impl::PeakChoice PointTracker::Impl::choose_peak(const MotionState& pred, const cv::Rect& win,
+                                                               bool reacquire, int first_search) {
+  const int h = half();
   constexpr double kRival = 0.1;  // NCC scatter between frames of one object is ~0.02
   const cv::Point2d pred_in_map(pred.x_px - win.x - h, pred.y_px - win.y - h);
   struct Peak {
@@ -599,21 +605,17 @@ Observation PointTracker::Impl::update(const Frame& frame) {
     peaks.push_back({at, v, std::hypot(at.x - pred_in_map.x, at.y - pred_in_map.y)});
     cv::circle(scratch, at, h, cv::Scalar(-1), cv::FILLED);
   }
-  if (peaks.empty()) return lost_observation(frame.index, pred, top_score);
+  if (peaks.empty()) return {false, {}, top_score};
   std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.dist < b.dist; });
-  if (peaks.size() > 1 && peaks[1].dist < 2 * peaks[0].dist + 2) {
-    return lost_observation(frame.index, pred, peaks[0].score);
-  }
-  if (reacquire && peaks[0].dist > first_search) return lost_observation(frame.index, pred, peaks[0].score);
-  const cv::Point at = peaks[0].at;
+  if (peaks.size() > 1 && peaks[1].dist < 2 * peaks[0].dist + 2) return {false, {}, peaks[0].score};
+  if (reacquire && peaks[0].dist > first_search) return {false, {}, peaks[0].score};
+  return {true, peaks[0].at, peaks[0].score};
+}
 
-  // Refinement (docs/theory.md#point-tracking): the image is resampled (bilinear) on a
-  // (patch + 4) px square centred on the current estimate, so the peak sits at the centre
-  // of a 5x5 correlation map and every angle is compared at the same, sub-pixel, position
-  // (comparing integer-pixel peaks couples the angle to the pixel grid). The angle is the
-  // vertex of a parabola through the fitted peak values at the current angle and half a
-  // step either side; the position moves to the quadratic peak at that angle. Twice, the
-  // second time with half the angle step.
+PointTracker::Impl::Refined PointTracker::Impl::refine(const cv::Mat& gray, const cv::Rect& win, cv::Point at,
+                                                       const AngleSearch& as, cv::Point2d dv) {
+  const int p = opt.patch_px, h = half();
+  const std::vector<double>& angles = as.angles;
   std::size_t kb = 0;
   for (std::size_t i = 1; i < angles.size(); ++i) {
     if (results[i].at<float>(at) > results[kb].at<float>(at)) kb = i;
@@ -632,7 +634,7 @@ Observation PointTracker::Impl::update(const Frame& frame) {
     return v;
   };
   double score = 0;
-  double hstep = search_angle ? 0.5 * angle_spacing : 0;
+  double hstep = as.search ? 0.5 * as.spacing : 0;
   for (int pass = 0; pass < 2; ++pass, hstep /= 2) {
     cv::getRectSubPix(gray, cv::Size(p + 4, p + 4), cv::Point2f(centre), local, CV_32F);
     if (hstep > 0) {
@@ -657,26 +659,27 @@ Observation PointTracker::Impl::update(const Frame& frame) {
     score = peak_value(angle, &shift);
     centre += shift;
   }
-  Observation o;
-  o.frame = frame.index;
-  o.x_px = centre.x;
-  o.y_px = centre.y;
-  o.angle_rad = angle;
-  o.score = std::clamp(score, 0.0, 1.0);
-  if (score < opt.min_score) return lost_observation(frame.index, pred, score);
+  return {centre, angle, score};
+}
+
+bool PointTracker::Impl::score_accepted(double score) {
+  if (score < opt.min_score) return false;
   // The first match has nothing to be compared with and the widest window: it must look
   // like the start (a small ball on a textured background scored 0.84 on the background it
   // left, which then held the track).
-  if (model.size() == 1 && score < kFirstMatchScore) return lost_observation(frame.index, pred, score);
+  if (model.size() == 1 && score < kFirstMatchScore) return false;
   // A sudden drop of the score below what this object scored lately means the view changed
   // (a hand partly over it, another object in the gate): lost rather than a biased position.
   if (recent_scores.size() >= 3) {
     const double typical = upper_median(std::vector<double>(recent_scores.begin(), recent_scores.end()));
-    if (score < typical - kMaxScoreDrop) return lost_observation(frame.index, pred, score);
+    if (score < typical - kMaxScoreDrop) return false;
   }
   recent_scores.push_back(score);
   if (recent_scores.size() > 5) recent_scores.pop_front();
+  return true;
+}
 
+void PointTracker::Impl::accept(Observation& o, const MotionState& pred, bool reacquire) {
   if (reacquire) {
     // Found again: the motion model starts afresh from here (its extrapolation across the
     // gap says nothing of the motion now), as after start().
@@ -696,13 +699,90 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   while (innovation_px.size() > 3) innovation_px.pop_front();
   while (innovation_rad.size() > 3) innovation_rad.pop_front();
   gap = 0;
-  model.add(frame.index, o.x_px, o.y_px, o.angle_rad);
+  model.add(o.frame, o.x_px, o.y_px, o.angle_rad);
   if (!have_v0 && !restarted && model.size() == 3) {
     // The start's velocity from the parabola through the first three positions.
     const MotionState at_start = model.predict(start_frame);
     v0 = cv::Point2d(at_start.vx_px, at_start.vy_px);
     have_v0 = true;
   }
+}
+
+Observation PointTracker::Impl::update(const Frame& frame) {
+  const cv::Mat& gray = frame.gray;
+  if (gray.size() != image_size || gray.type() != CV_8UC1) {
+    throw InputError(name, "frame " + std::to_string(frame.index) + " has no grey image of the " +
+                               "start frame's size");
+  }
+  if (frame.index <= last_frame) {
+    throw InputError(name, "frame " + std::to_string(frame.index) + " does not follow frame " +
+                               std::to_string(last_frame));
+  }
+  last_frame = frame.index;
+  const MotionState pred = model.predict(frame.index);
+  // Given up (more than max_gap_frames lost in a row): every frame is searched again, as
+  // after a start, around the motion model's prediction (docs/theory.md#point-tracking).
+  const bool reacquire = gave_up;
+
+  // Motion blur: the template already carries the start's smear (shutter * v0, turned with
+  // the pattern); the frame's smear is shutter * v, so the template is smeared further by
+  // shutter * (v - R(theta) v0) (docs/theory.md#point-tracking).
+  const cv::Point2d dv = blur_change(pred);
+  set_blur(shutter * dv);
+
+  // Search half-width (also the gate a match must fall in): three times the largest of the
+  // last prediction errors plus a margin; wide on the first step (no velocity known yet: a
+  // quarter of the image's smaller side, since a toss filmed at 15 fps moves 70 px a frame).
+  // While lost, the extrapolation error grows with the horizon like the squared number of
+  // frames bridged times the one-frame error (a polynomial model's error grows at least
+  // that fast), so the gate widens from the recent prediction quality, not from the speed:
+  // a ballistic object predicted to 0.1 px keeps a tight gate that a look-alike resting a
+  // few radii away cannot enter (docs/theory.md#point-tracking).
+  const int p = opt.patch_px, h = half();
+  const SearchReach reach = search_reach(pred, reacquire);
+  const int si = reach.half_width;
+
+  // Angles: around the predicted one, within three times the recent angle error (all of
+  // max_turn_deg at the start or after a loss), in steps that move the patch's corner by at
+  // most ~1.5 px. When that range is within half a step, the predicted angle alone is
+  // correlated and the refinement below (which reaches 0.75 step) finds the angle.
+  const AngleSearch as = angle_search(pred);
+
+  // Window in the image around the prediction (clipped); too small: the point left the view.
+  const int cx = static_cast<int>(std::lround(pred.x_px)), cy = static_cast<int>(std::lround(pred.y_px));
+  const cv::Rect want(cx - si - h, cy - si - h, 2 * (si + h) + 1, 2 * (si + h) + 1);
+  const cv::Rect win = want & cv::Rect(0, 0, gray.cols, gray.rows);
+  if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0);
+  gray(win).convertTo(window, CV_32F);
+
+  // Correlation maps for every angle and their upper envelope: directly for a narrow
+  // window, coarse to fine for a wide one (the first step, a long gap).
+  correlate(as.angles, si);
+
+  // Candidate peaks above min_score (non-maximum suppression over a patch radius). Peaks
+  // within kRival of the best score are rivals: an object that looks the same. Of several
+  // rivals the one nearest the prediction is taken only if every other lies more than twice
+  // as far (+2 px): two look-alikes near the prediction leave the point lost, not guessed.
+  // Weaker peaks (part of the pattern matching part of the template) never compete.
+  const PeakChoice peak = choose_peak(pred, win, reacquire, reach.first_search);
+  if (!peak.found) return lost_observation(frame.index, pred, peak.score);
+
+  // Refinement (docs/theory.md#point-tracking): the image is resampled (bilinear) on a
+  // (patch + 4) px square centred on the current estimate, so the peak sits at the centre
+  // of a 5x5 correlation map and every angle is compared at the same, sub-pixel, position
+  // (comparing integer-pixel peaks couples the angle to the pixel grid). The angle is the
+  // vertex of a parabola through the fitted peak values at the current angle and half a
+  // step either side; the position moves to the quadratic peak at that angle. Twice, the
+  // second time with half the angle step.
+  const Refined r = refine(gray, win, peak.at, as, dv);
+  Observation o;
+  o.frame = frame.index;
+  o.x_px = r.centre.x;
+  o.y_px = r.centre.y;
+  o.angle_rad = r.angle;
+  o.score = std::clamp(r.score, 0.0, 1.0);
+  if (!score_accepted(r.score)) return lost_observation(frame.index, pred, r.score);
+  accept(o, pred, reacquire);
   return o;
 }
 
