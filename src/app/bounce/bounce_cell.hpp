@@ -86,7 +86,7 @@ BounceCell make_bounce_cell(const BounceCellOptions& options, BounceCellKind kin
 sweep::CellModel bounce_cell_model(const BounceCell& cell);
 
 /// The options and kind a description line records (the inverse of
-/// BounceCell::description). Throws InputError("--report", ...) naming the problem when the
+/// BounceCell::description). Throws InputError(field("report"), ...) naming the problem when the
 /// line is not one this version writes or reads (unknown kind or field, malformed number).
 struct ParsedBounceCell {
   BounceCellOptions options;

@@ -11,14 +11,14 @@
 namespace tribolab::app {
 namespace {
 
-/// Creates `dir` (and its parents); InputError naming --out when that is impossible.
+/// Creates `dir` (and its parents); InputError naming the field `out` when that is impossible.
 void make_output_folder(const std::string& dir) {
   namespace fs = std::filesystem;
-  if (dir.empty()) throw InputError("--out", "folder name is empty");
+  if (dir.empty()) throw InputError(field("out"), "folder name is empty");
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) {
-    throw InputError("--out", "cannot create folder '" + dir + "'" +
+    throw InputError(field("out"), "cannot create folder '" + dir + "'" +
                                   (ec ? ": " + ec.message() : ": a file has that name"));
   }
 }

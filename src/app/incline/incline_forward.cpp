@@ -192,7 +192,7 @@ InclineFamiliesResult incline_families(const InclineFamiliesOptions& s) {
       v = to_rad(v);
     } else {
       check_range(v, o.vary == incline::FamilyParameter::v0 ? ranges::speed : ranges::friction,
-                  "--values (" + s.vary + ")");
+                  field("values") + " (" + s.vary + ")");
     }
     o.values.push_back(v);
   }

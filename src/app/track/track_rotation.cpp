@@ -40,11 +40,12 @@ std::vector<std::string> rotation_warnings(const track::PivotRotation& r) {
   // radius are far above tracking noise (a few px on a wheel of a hundred).
   if (r.rms_residual > 0.05 * r.radius) {
     w.push_back(fmt::format("the point strays from its circle by {:.2g} m rms ({:.1f} % of the radius {:.3g} m): it "
-                            "does not turn about one {} pivot (a rolling wheel's axle moves: --moving-pivot; a car "
+                            "does not turn about one {} pivot (a rolling wheel's axle moves: {}; a car "
                             "entering and leaving a loop is on a circle only part of the time: keep that part with "
-                            "--from/--to)",
+                            "{}/{})",
                             r.rms_residual, 100 * r.rms_residual / r.radius, r.radius,
-                            r.pivot_vx == 0 && r.pivot_vy == 0 ? "fixed" : "uniformly moving"));
+                            r.pivot_vx == 0 && r.pivot_vy == 0 ? "fixed" : "uniformly moving", field("moving_pivot"),
+                            field("t_from"), field("t_to")));
   }
   // omega(t) = omega + alpha u is the model; local spins beyond 5 of their sigmas + 2 % in
   // more than a tenth of the frames mean it is not (a pendulum's spin swings back and forth)
