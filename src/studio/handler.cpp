@@ -97,6 +97,17 @@ CalibrationInput calibration_from_json(const json& j) {
 
 namespace {
 
+/// `text` with the folder's own place on disk left out of the paths in it: the page names a
+/// file as the user chose it, relative to the folder (a message like "/home/ann/lab/clip.mp4:
+/// no frame" says where the folder is, which the page never needs to show).
+std::string within_folder(std::string text, const std::filesystem::path& root) {
+  std::string prefix = root.string();
+  if (prefix.empty()) return text;
+  if (prefix.back() != '/') prefix += '/';
+  for (std::size_t p = text.find(prefix); p != std::string::npos; p = text.find(prefix, p)) text.erase(p, prefix.size());
+  return text;
+}
+
 std::string track_name(const json& j, const char* key, const std::string& fallback) {
   const std::string name = text(j, key, fallback);
   if (name.empty() || name.size() > 40) throw InputError(std::string("'") + key + "' must have 1 to 40 characters");
@@ -187,13 +198,13 @@ Response Handler::handle(const Request& request) {
     Request read{request.method, request.target, request.headers, small_body(request), nullptr};
     return route(read, *target);
   } catch (const BadRequest& e) {
-    return json_error(e.status, e.message);
+    return json_error(e.status, within_folder(e.message, root_));
   } catch (const UploadError& e) {
-    return json_error(e.status, e.what());
+    return json_error(e.status, within_folder(e.what(), root_));
   } catch (const InputError& e) {
-    return json_error(400, e.what());
+    return json_error(400, within_folder(e.what(), root_));
   } catch (const std::exception& e) {
-    return json_error(500, std::string("internal error: ") + e.what());
+    return json_error(500, within_folder(std::string("internal error: ") + e.what(), root_));
   } catch (...) {
     return json_error(500, "internal error");
   }

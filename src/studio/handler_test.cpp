@@ -285,6 +285,24 @@ TEST_F(HandlerTest, BackendErrorsBecomeJsonAnswers) {
   EXPECT_EQ(h.handle(good("GET", "/api/state")).status, 500);
 }
 
+// The backend names files by their full path (the video layer's messages); the page shows
+// them relative to the folder, never where the folder is on disk.
+TEST_F(HandlerTest, ErrorsNameFilesWithinTheFolder) {
+  struct Refusing : RecordingBackend {
+    json open(const fs::path& file) override { throw InputError(file.string(), "no frame could be decoded"); }
+    json state() override { throw std::runtime_error("cannot read " + (root / "sub" / "x.trk").string()); }
+    fs::path root;
+  } refusing;
+  refusing.root = fs::canonical(root);
+  Handler h(root, AccessRules{kToken, kPort, 1000}, Assets{"", ""}, refusing);
+  const Response opened = h.handle(good("POST", "/api/open", R"({"file": "sub/inner.avi"})"));
+  EXPECT_EQ(opened.status, 400);
+  EXPECT_EQ(error_of(opened), "sub/inner.avi: no frame could be decoded");
+  const Response state = h.handle(good("GET", "/api/state"));
+  EXPECT_EQ(state.status, 500);
+  EXPECT_EQ(error_of(state), "internal error: cannot read sub/x.trk");
+}
+
 // Uploads (POST /api/upload?name=NAME, the file's bytes as the body): every rule, then a good
 // upload that is opened as a file chosen from the folder.
 class StudioUploadTest : public HandlerTest {
