@@ -13,6 +13,7 @@
 #include "app/sweep/sweep_text.hpp"
 #include "numerics/error.hpp"
 #include "report/plotly_script.hpp"
+#include "track/track.hpp"
 
 #include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
@@ -161,6 +162,14 @@ py::dict columns(const std::vector<S>& samples, std::pair<const char*, M S::*>..
   py::dict d;
   ((d[fields.first] = column(samples, fields.second)), ...);
   return d;
+}
+
+/// A track's points as a dict of arrays frame, t, x, y (the columns every command that
+/// returns tracked or synthetic points gives).
+inline py::dict point_columns(const std::vector<track::TrackPoint>& points) {
+  using track::TrackPoint;
+  return columns(points, field("frame", &TrackPoint::frame), field("t", &TrackPoint::t), field("x", &TrackPoint::x),
+                 field("y", &TrackPoint::y));
 }
 
 /// Rows of equally long sample tables (the members of a family) as a dict of 2-D float64

@@ -136,10 +136,8 @@ void bind_synth_video(py::module_& m) {
   c.declared(app::bounce_synth_video_fields());
   c.def(&app::bounce_synth_video,
         [](const app::BounceSynthVideoResult& r, py::dict& d) {
-          using track::TrackPoint;
           for (const auto* t : {&r.video.tip_a, &r.video.tip_b}) {
-            d[py::str("tip_" + t->name)] = columns(t->points, field("frame", &TrackPoint::frame), field("t", &TrackPoint::t),
-                                                   field("x", &TrackPoint::x), field("y", &TrackPoint::y));
+            d[py::str("tip_" + t->name)] = point_columns(t->points);
           }
         },
         "tip_A, tip_B: dicts of arrays frame, t (s, file time), x, y (m, with noise)");
@@ -152,11 +150,9 @@ void bind_render(py::module_& m) {
   c.declared(app::bounce_render_fields());
   c.def(&app::bounce_render,
         [](const app::BounceRenderResult& r, py::dict& d) {
-          using track::TrackPoint;
           py::dict tracks;
           for (const auto& t : r.truth.tracks) {
-            tracks[py::str(t.name)] = columns(t.points, field("frame", &TrackPoint::frame), field("t", &TrackPoint::t),
-                                              field("x", &TrackPoint::x), field("y", &TrackPoint::y));
+            tracks[py::str(t.name)] = point_columns(t.points);
           }
           d["truth_tracks"] = tracks;
         },

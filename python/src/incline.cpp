@@ -84,9 +84,7 @@ void bind_incline(py::module_& m) {
     c.declared(app::incline_synth_fields());
     c.def(&app::incline_synth,
           [](const app::InclineSynthResult& r, py::dict& d) {
-            using track::TrackPoint;
-            d["track_points"] = columns(r.run.track.points, field("frame", &TrackPoint::frame), field("t", &TrackPoint::t),
-                                        field("x", &TrackPoint::x), field("y", &TrackPoint::y));
+            d["track_points"] = point_columns(r.run.track.points);
             d["truth"] = states(r.run.truth);
           },
           std::string("track_points: dict of arrays frame, t (s, file time), x, y (m, with noise); truth: dict of "

@@ -11,7 +11,6 @@
 namespace tribolab::python {
 
 void bind_track(py::module_& m) {
-  using track::TrackPoint;
   {
     Command<app::TrackImportOptions> c(m, "load",
         "Reads tracked points (`tribolab track import`): a Tracker .trk/.trz, Tracker's exported "
@@ -21,9 +20,7 @@ void bind_track(py::module_& m) {
           [](const app::TrackImportResult& r, py::dict& d) {
             py::dict tracks;
             for (const auto& t : r.tracks) {
-              tracks[py::str(t.name)] = columns(t.points, field("frame", &TrackPoint::frame),
-                                                field("t", &TrackPoint::t), field("x", &TrackPoint::x),
-                                                field("y", &TrackPoint::y));
+              tracks[py::str(t.name)] = point_columns(t.points);
             }
             d["points"] = tracks;
           },

@@ -63,11 +63,4 @@ std::vector<unsigned char> encode_image(const std::string& ext, const cv::Mat& i
 
 cv::Mat decode_image(const std::vector<unsigned char>& bytes, int flags) { return api().decode(bytes, flags); }
 
-bool codec_library_loaded() {
-  void* lib = ::dlopen(kCodecLibrary, RTLD_LAZY | RTLD_LOCAL | RTLD_NOLOAD);
-  if (lib == nullptr) return false;
-  ::dlclose(lib);  // drops the reference RTLD_NOLOAD took
-  return true;
-}
-
 }  // namespace tribolab::video

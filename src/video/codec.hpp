@@ -63,7 +63,4 @@ constexpr int fourcc(char c1, char c2, char c3, char c4) {
 /// The codec library's file name, for messages (and how a program finds it: its run path).
 inline constexpr const char* kCodecLibrary = "libtribolab_codec.so";
 
-/// True when the codec library is loaded into this process (a test of the lazy loading).
-bool codec_library_loaded();
-
 }  // namespace tribolab::video
