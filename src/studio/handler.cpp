@@ -90,6 +90,7 @@ CalibrationInput calibration_from_json(const json& j) {
   c.stick_px = optional_numbers<4>(j, "stick");
   c.stick_length_m = optional_number(j, "length").value_or(0);
   c.origin_px = optional_numbers<2>(j, "origin");
+  c.axes_deg = optional_number(j, "axes_deg").value_or(0);
   c.fps = optional_number(j, "fps");
   c.time_scale = optional_number(j, "time_scale").value_or(1);
   return c;
@@ -161,6 +162,7 @@ json to_json(const CalibrationInput& c) {
   return {{"stick", c.stick_px ? json(*c.stick_px) : json(nullptr)},
           {"length", c.stick_length_m},
           {"origin", c.origin_px ? json(*c.origin_px) : json(nullptr)},
+          {"axes_deg", c.axes_deg},
           {"fps", c.fps ? json(*c.fps) : json(nullptr)},
           {"time_scale", c.time_scale}};
 }

@@ -27,6 +27,7 @@ struct CalibrationInput {
   std::optional<std::array<double, 4>> stick_px;  ///< two ends of a stick X1,Y1,X2,Y2, px
   double stick_length_m = 0;                      ///< its length, m (> 0 with a stick)
   std::optional<std::array<double, 2>> origin_px; ///< world origin in the image, px
+  double axes_deg = 0;                            ///< world x-axis counter-clockwise from the image x-axis, deg (0: the video's)
   std::optional<double> fps;                      ///< frames per second (unset: the container's), 1/s
   double time_scale = 1;                          ///< real s per video s (slow motion 240 -> 30 fps: 0.125)
 };

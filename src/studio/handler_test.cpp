@@ -180,10 +180,22 @@ TEST_F(HandlerTest, MalformedJsonIsAnsweredNotCrashed) {
     EXPECT_FALSE(error_of(a).empty());
   }
   EXPECT_EQ(handler->handle(good("POST", "/api/calibration", R"({"stick": [1, 2, 3]})")).status, 400);
+  EXPECT_EQ(handler->handle(good("POST", "/api/calibration", R"({"axes_deg": "30"})")).status, 400);
   EXPECT_EQ(handler->handle(good("POST", "/api/analyze", R"({"values": 3})")).status, 400);
   EXPECT_EQ(handler->handle(good("GET", "/api/frame?i=-1")).status, 400);
   EXPECT_EQ(handler->handle(good("GET", "/api/frame?i=%zz")).status, 400);
   EXPECT_EQ(backend.calls, 0);
+}
+
+// The axes' angle the page sends after a drag: read, kept in the state and autosave, 0 when
+// not given (the video's own).
+TEST(CalibrationJson, ReadsAndWritesTheAxesAngle) {
+  EXPECT_EQ(calibration_from_json(json::object()).axes_deg, 0);
+  const CalibrationInput c = calibration_from_json({{"origin", {10, 20}}, {"axes_deg", -12.5}});
+  EXPECT_EQ(c.axes_deg, -12.5);
+  EXPECT_EQ(to_json(c)["axes_deg"], -12.5);
+  EXPECT_EQ(calibration_from_json(to_json(c)).axes_deg, -12.5);
+  EXPECT_THROW(calibration_from_json({{"axes_deg", {1, 2}}}), InputError);
 }
 
 TEST_F(HandlerTest, MarkRequestsAreCheckedBeforeTheBackend) {

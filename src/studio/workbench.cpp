@@ -9,6 +9,7 @@
 #include "app/track/track_video.hpp"
 #include "io/atomic_file.hpp"
 #include "numerics/error.hpp"
+#include "numerics/physical_range.hpp"
 #include "studio/form_values.hpp"
 #include "studio/guard.hpp"
 #include "studio/upload.hpp"
@@ -19,6 +20,7 @@
 #include <opencv2/imgcodecs.hpp>  // the cv::IMWRITE_* names; encoding is video/codec.hpp's
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -163,6 +165,10 @@ json Workbench::open(const fs::path& file) {
   height_ = input.info.height;
   video_ = {{"width", input.info.width}, {"height", input.info.height}, {"fps", input.info.fps},
             {"codec", input.info.codec}, {"calibrated", input.calibration.calibrated}};
+  // The coordinate system the file brings (a Tracker project's, or a plain video's default:
+  // origin at the bottom-left pixel, x right, y up), drawn by the page until one is set.
+  const io::TrkCoordFrame& axes = input.calibration.coords.front();
+  video_["axes"] = {{"origin_px", {axes.origin_x, axes.origin_y}}, {"axes_deg", axes.angle_deg}};
   calibration_ = {};
   session_ = std::make_shared<video::TrackSession>();
   starts_.clear();
@@ -203,6 +209,8 @@ json Workbench::calibrate(const CalibrationInput& c) {
     throw InputError("the two ends of the stick are less than a pixel apart");
   if (c.fps && !(*c.fps > 0)) throw InputError("'fps' must be positive, 1/s");
   if (!(c.time_scale > 0)) throw InputError("'time_scale' must be positive");
+  if (!(std::abs(c.axes_deg) <= ranges::angle_deg.hi))
+    throw InputError(fmt::format("'axes_deg' must be an angle from {} to {} deg", ranges::angle_deg.lo, ranges::angle_deg.hi));
   const CalibrationInput before = calibration_;
   calibration_ = c;
   try {
@@ -299,6 +307,7 @@ void Workbench::run_tracks() {
     o.calibrate = fmt::format("{},{},{},{},{}", (*c.stick_px)[0], (*c.stick_px)[1], (*c.stick_px)[2], (*c.stick_px)[3],
                               c.stick_length_m);
   if (c.origin_px) o.origin = fmt::format("{},{}", (*c.origin_px)[0], (*c.origin_px)[1]);
+  o.axes_deg = c.axes_deg;
   o.fps = c.fps;
   o.time_scale = c.time_scale;
   if (!session_) session_ = std::make_shared<video::TrackSession>();

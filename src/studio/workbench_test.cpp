@@ -138,6 +138,35 @@ TEST_F(WorkbenchTest, ClickTracksSavesAndReopens) {
   EXPECT_EQ(restored["analysis"]["result"]["points"], kFrames);
 }
 
+// The axes dragged in the page (an origin and an angle): the tracks' world coordinates are the
+// image's turned counter-clockwise by the angle about the origin (y up), as Tracker's axes are;
+// an angle out of range leaves the calibration as it was, and the autosave restores it.
+TEST_F(WorkbenchTest, TurnedAxesTurnTheTracksWorldCoordinates) {
+  Workbench wb(root);
+  json s = wb.open(root / "patch.avi");
+  EXPECT_EQ(s["video"]["axes"]["origin_px"], json({0.0, 239.0}));  // a plain video's: the bottom-left pixel
+  EXPECT_EQ(s["video"]["axes"]["axes_deg"], 0.0);
+  wb.track({"patch", "point", 30, 60, 0, {}});
+  CalibrationInput c;
+  c.origin_px = {{100, 100}};
+  c.axes_deg = 30;
+  s = wb.calibrate(c);
+  EXPECT_EQ(s["calibration"]["axes_deg"], 30.0);
+  EXPECT_EQ(s["tracks"]["summary"]["calibration"]["axes_deg"], 30.0);
+  const double cs = std::cos(std::numbers::pi / 6), sn = std::sin(std::numbers::pi / 6);
+  const json& rows = s["tracks"]["series"][0]["rows"];
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(kFrames));
+  for (const json& r : rows) {
+    const double u = r["x_px"].get<double>() - 100, v = 100 - r["y_px"].get<double>();
+    EXPECT_NEAR(r["x"].get<double>(), cs * u + sn * v, 1e-9) << r.dump();
+    EXPECT_NEAR(r["y"].get<double>(), -sn * u + cs * v, 1e-9) << r.dump();
+  }
+  c.axes_deg = 400;
+  EXPECT_THROW(wb.calibrate(c), InputError);
+  Workbench again(root);
+  EXPECT_EQ(again.open(root / "patch.avi")["calibration"]["axes_deg"], 30.0);
+}
+
 TEST_F(WorkbenchTest, ALostTrackIsWarnedNamingTheFieldsNotFlags) {
   // The core names the options that help as fields (field("max_gap"), numerics/error.hpp): the
   // page shows them by their field names, as its forms do, never as the marks' control

@@ -4,8 +4,10 @@ by clicking a stick's two ends and the origin, click the ball, wait for the trac
 every frame checking the drawn point against the rendered truth, run the `track kinematics` form
 and read g back from its listing, run the `bounce analyze` form and find e within its sigma of
 the render's, then drag the ball's point in one frame off by a few pixels
-(a correction), wait for the re-tracking, and read the saved .trk back with `track import`:
-the dragged frame holds the dragged position, the others are still on the ball. Screenshots of
+(a correction), wait for the re-tracking, drag the axes' origin and turn the axes by 90 deg
+by their x-axis's ring (the tracks follow into the turned axes), and read the saved .trk back
+with `track import`: the dragged frame holds the dragged position in the turned axes, the
+others are still on the ball. Screenshots of
 each step are left in OUT_DIR.
 
     /usr/bin/python3 tests/browser/studio_e2e.py TRIBOLAB OUT_DIR
@@ -245,6 +247,44 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     if "marks of ball at frames %d, %d" % (DRAG, PLACE) not in driver.find_element(By.ID, "marks-text").text:
         fail("the marks are not listed: " + driver.find_element(By.ID, "marks-text").text)
     driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
+
+    # Axes: drag their origin 20 px right and 10 px down, then the ring at the x-axis's end
+    # (kAxisLength = 50 screen px along x) round to straight up: the axes turn by 90 deg and are
+    # applied at once; every tracked point's world x, y is then its image offset from the new
+    # origin turned clockwise by 90 deg (x = up, y = left), in the stick's metres.
+    axes = json.loads(canvas.get_attribute("data-axes"))
+    ox, oy = axes["origin_px"]
+    if abs(ox - clicked_origin[0]) > 1e-9 or abs(oy - clicked_origin[1]) > 1e-9 or axes["axes_deg"] != 0:
+        fail("the axes are drawn at %s, the origin was set at %s with angle 0" % (axes, clicked_origin))
+    at_screen = lambda x, y: (round((x + 0.5) * ZOOM + 1 - canvas.size["width"] / 2),
+                              round((y + 0.5) * ZOOM + 1 - canvas.size["height"] / 2))
+    ActionChains(driver).move_to_element_with_offset(canvas, *at_screen(ox, oy)).click_and_hold() \
+        .move_by_offset(10, 5).move_by_offset(10, 5).release().perform()
+    wait.until(lambda d: ended("calibrating"))
+    if error():
+        fail("dragging the axes' origin: " + error())
+    ox, oy = ox + 20, oy + 10
+    ActionChains(driver).move_to_element_with_offset(canvas, *at_screen(ox + 50 / ZOOM, oy)).click_and_hold() \
+        .move_by_offset(-25, -25).move_by_offset(-25, -25).release().perform()
+    wait.until(lambda d: ended("calibrating") and json.loads(canvas.get_attribute("data-axes"))["axes_deg"] == 90)
+    if error():
+        fail("turning the axes: " + error())
+    axes = json.loads(canvas.get_attribute("data-axes"))
+    if abs(axes["origin_px"][0] - ox) > 1e-9 or abs(axes["origin_px"][1] - oy) > 1e-9:
+        fail("the axes' origin dragged to %.1f, %.1f is drawn at %s" % (ox, oy, axes["origin_px"]))
+    if driver.find_element(By.ID, "axes-deg").get_attribute("value") != "90":
+        fail("the axes angle shows '%s' after turning the axes up" % driver.find_element(By.ID, "axes-deg").get_attribute("value"))
+    driver.save_screenshot(os.path.join(out, "studio_4b_axes.png"))
+    rows = driver.execute_script("return state.tracks.series.find((s) => s.name === 'ball').rows")
+    worst = 0
+    for r in rows:
+        if r["lost"]:
+            continue
+        x_want, y_want = -(r["y_px"] - oy) * scale, -(r["x_px"] - ox) * scale
+        worst = max(worst, abs(r["x"] - x_want), abs(r["y"] - y_want))
+    if worst > 1e-9:
+        fail("after turning the axes by 90 deg a point's world position is %.3g m from its image offset turned" % worst)
+    print("axes dragged and turned by 90 deg: world x, y are the turned image offsets (worst %.1g m)" % worst)
     return DRAG, after["x_px"], after["y_px"]
 
 
