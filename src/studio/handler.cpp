@@ -353,6 +353,10 @@ Response Handler::route(const Request& request, const Target& target) {
     need(get);
     return json_ok(backend_.forms());
   }
+  if (path == "/api/report") {
+    need(get);
+    return {200, "text/html; charset=utf-8", backend_.report_html()};
+  }
   if (path == "/api/frame") {
     need(get);
     const auto i = target.param("i");

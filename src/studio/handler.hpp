@@ -78,6 +78,8 @@ class Backend {
   virtual nlohmann::json mark(const MarkInput& mark) = 0;
   virtual nlohmann::json forms() = 0;                                    ///< the analyses' declared fields
   virtual nlohmann::json analyze(const std::string& command, const nlohmann::json& values) = 0;
+  /// The last analysis's HTML report, as written beside the file (InputError when there is none).
+  virtual std::string report_html() = 0;
   virtual nlohmann::json state() = 0;                                    ///< the project as autosaved
   /// The long action under way: {"running", "action", "done", "expected"} (frames). Called
   /// while another thread runs an action: must be thread-safe.

@@ -38,6 +38,7 @@ struct RecordingBackend : Backend {
   json mark(const MarkInput& m) override { ++calls; marked = m; return {{"track", m.track}}; }
   json forms() override { ++calls; return json::object(); }
   json analyze(const std::string& command, const json&) override { ++calls; return {{"command", command}}; }
+  std::string report_html() override { ++calls; return "<html>report</html>"; }
   json state() override { ++calls; return json::object(); }
   std::atomic<int> progress_calls{0}, cancel_calls{0};
   json progress() override { ++progress_calls; return {{"running", false}, {"action", "tracking"}}; }
@@ -88,7 +89,12 @@ TEST_F(HandlerTest, GoodRequestsReachTheBackend) {
   const Response opened = handler->handle(good("POST", "/api/open", R"({"file": "sub/inner.avi"})"));
   EXPECT_EQ(opened.status, 200) << opened.body;
   EXPECT_EQ(backend.opened, fs::canonical(root / "sub" / "inner.avi"));
-  EXPECT_EQ(backend.calls, 3);
+  const Response report = handler->handle(good("GET", "/api/report"));
+  EXPECT_EQ(report.status, 200);
+  EXPECT_EQ(report.content_type, "text/html; charset=utf-8");
+  EXPECT_EQ(report.body, "<html>report</html>");
+  EXPECT_EQ(handler->handle(good("POST", "/api/report", "{}")).status, 405);
+  EXPECT_EQ(backend.calls, 4);
 }
 
 TEST_F(HandlerTest, TokenInTheQueryIsAcceptedAsInTheHeader) {

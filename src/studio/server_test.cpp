@@ -33,6 +33,7 @@ struct EchoBackend : Backend {
   json mark(const MarkInput& m) override { return {{"track", m.track}, {"frame", m.frame}}; }
   json forms() override { return json::object(); }
   json analyze(const std::string& c, const json&) override { return {{"command", c}}; }
+  std::string report_html() override { return "<html>report</html>"; }
   json state() override { return json::object(); }
   json progress() override { return {{"running", false}}; }
   json cancel() override { return {{"cancelling", false}}; }

@@ -119,7 +119,7 @@ json Workbench::files() {
   std::vector<std::string> names;
   std::error_code ec;
   // The folder's files, then those uploaded from the page (uploads/NAME).
-  for (const std::string folder : {std::string(), std::string(kUploadFolder) + "/"}) {
+  for (const std::string& folder : {std::string(), std::string(kUploadFolder) + "/"}) {
     std::vector<std::string> here;
     for (const auto& entry : fs::directory_iterator(root_ / folder, ec)) {
       const std::string name = folder + entry.path().filename().string();
@@ -333,15 +333,21 @@ json form_of(const app::Fields<O>& declared, const app::ResultKeys& results) {
 
 namespace {
 
+/// What an analysis run from the studio gives: its result and the files it wrote.
+struct AnalysisRun {
+  json result;         ///< the command's --json
+  std::string out;     ///< its table (CSV), "" for none
+  std::string report;  ///< its HTML report (Plotly.js embedded: a file to show as it is)
+};
+
 /// One analysis the studio offers: its form, and how it runs on the studio's tracks (`csv`,
-/// in s and m) with a form's values, its outputs named by `beside` (FILE + suffix). `run`
-/// returns the result's JSON and the file it wrote ("" for none).
+/// in s and m) with a form's values, its outputs named by `beside` (FILE + suffix).
 struct OfferedAnalysis {
   const char* command;
   std::function<json()> form;
   const app::ResultKeys& (*results)();  ///< its declared result keys
-  std::function<std::pair<json, std::string>(const json& values, const std::string& csv,
-                                              const std::function<std::string(const char*)>& beside)>
+  std::function<AnalysisRun(const json& values, const std::string& csv,
+                            const std::function<std::string(const char*)>& beside)>
       run;
 };
 
@@ -361,27 +367,31 @@ const std::vector<OfferedAnalysis>& offered_analyses() {
          app::TrackKinematicsOptions o;
          o.input.file = csv;
          o.out = beside(".kinematics.csv");
-         return std::pair{run_form(o, app::track_kinematics_fields(), values, app::track_kinematics), o.out};
+         o.report = beside(".kinematics.html");
+         return AnalysisRun{run_form(o, app::track_kinematics_fields(), values, app::track_kinematics), o.out, o.report};
        }},
       {"track rigid-body", [] { return form_of(app::track_rigid_body_fields(), app::track_rigid_body_result_keys()); }, app::track_rigid_body_result_keys,
        [](const json& values, const std::string& csv, const Beside& beside) {
          app::TrackRigidBodyOptions o;
          o.input.file = csv;
          o.out = beside(".rigid_body.csv");
-         return std::pair{run_form(o, app::track_rigid_body_fields(), values, app::track_rigid_body), o.out};
+         o.report = beside(".rigid_body.html");
+         return AnalysisRun{run_form(o, app::track_rigid_body_fields(), values, app::track_rigid_body), o.out, o.report};
        }},
       {"bounce analyze", [] { return form_of(app::bounce_analyze_fields(), app::bounce_analyze_result_keys()); }, app::bounce_analyze_result_keys,
        [](const json& values, const std::string& csv, const Beside& beside) {
          app::BounceAnalyzeOptions o;
          o.file = csv;
          o.bounces_out = beside(".bounce.csv");
-         return std::pair{run_form(o, app::bounce_analyze_fields(), values, app::bounce_analyze), o.bounces_out};
+         o.report = beside(".bounce.html");
+         return AnalysisRun{run_form(o, app::bounce_analyze_fields(), values, app::bounce_analyze), o.bounces_out, o.report};
        }},
       {"incline analyze", [] { return form_of(app::incline_analyze_fields(), app::incline_analyze_result_keys()); }, app::incline_analyze_result_keys,
-       [](const json& values, const std::string& csv, const Beside&) {
+       [](const json& values, const std::string& csv, const Beside& beside) {
          app::InclineAnalyzeOptions o;
          o.files = {csv};
-         return std::pair{run_form(o, app::incline_analyze_fields(), values, app::incline_analyze), std::string()};
+         o.report = beside(".incline.html");
+         return AnalysisRun{run_form(o, app::incline_analyze_fields(), values, app::incline_analyze), std::string(), o.report};
        }},
   };
   return list;
@@ -408,12 +418,28 @@ json Workbench::analyze(const std::string& command, const json& values) {
   if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");
   for (auto it = values.begin(); it != values.end(); ++it)
     if (set_by_the_studio(it.key())) throw InputError(field(it.key()), "is set by the studio: its tracks are in s and m");
-  const auto [result, out] = offered->run(values, (root_ / tracks_["csv"].get<std::string>()).string(),
-                                          [this](const char* suffix) { return beside(suffix).string(); });
-  analysis_ = {{"command", command}, {"values", values}, {"result", app::plain_fields_json(result)},
-               {"out", out.empty() ? json(nullptr) : json(relative(out))}, {"results", app::result_keys_schema(offered->results())}};
+  const AnalysisRun run = offered->run(values, (root_ / tracks_["csv"].get<std::string>()).string(),
+                                       [this](const char* suffix) { return beside(suffix).string(); });
+  const auto written = [this](const std::string& path) { return path.empty() ? json(nullptr) : json(relative(path)); };
+  analysis_ = {{"command", command}, {"values", values}, {"result", app::plain_fields_json(run.result)},
+               {"out", written(run.out)}, {"report", written(run.report)},
+               {"results", app::result_keys_schema(offered->results())}};
   autosave();
   return state();
+}
+
+std::string Workbench::report_html() {
+  require_open();
+  if (!analysis_.is_object() || !analysis_.contains("report") || !analysis_["report"].is_string())
+    throw InputError("run an analysis first: its report is shown here");
+  const std::string name = analysis_["report"].get<std::string>();
+  const Confined c = confine(root_, name);
+  if (!c.problem.empty()) throw InputError(name, "will not be read: " + c.problem);
+  std::ifstream in(c.path, std::ios::binary);
+  if (!in) throw InputError(name, "the report is gone: run the analysis again");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 json Workbench::state() {

@@ -36,6 +36,7 @@ class Workbench : public Backend {
   nlohmann::json mark(const MarkInput& mark) override;
   nlohmann::json forms() override;
   nlohmann::json analyze(const std::string& command, const nlohmann::json& values) override;
+  std::string report_html() override;
   nlohmann::json state() override;
   nlohmann::json progress() override;
   nlohmann::json cancel() override;

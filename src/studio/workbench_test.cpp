@@ -127,9 +127,17 @@ TEST_F(WorkbenchTest, ClickTracksSavesAndReopens) {
   EXPECT_THROW(wb.analyze("track kinematics", {{"nonsense", 1}}), InputError);
   EXPECT_THROW(wb.analyze("track kinematics", {{"time_scale", 0.5}}), InputError);  // the tracks are in s already
   EXPECT_THROW(wb.analyze("bounce fit", json::object()), InputError);
+  EXPECT_THROW(wb.report_html(), InputError);  // no analysis yet
   s = wb.analyze("track kinematics", {{"method", "savgol"}, {"window", 5}});
   EXPECT_EQ(s["analysis"]["result"]["points"], kFrames);
   EXPECT_TRUE(fs::exists(root / "patch.avi.kinematics.csv"));
+  // Its report, written beside the file and shown in the page: the command's own HTML report
+  // with Plotly.js inside (the page shows it in a sandboxed frame; nothing else is fetched).
+  EXPECT_EQ(s["analysis"]["report"], "patch.avi.kinematics.html");
+  const std::string report = wb.report_html();
+  EXPECT_EQ(report, slurp_file(root / "patch.avi.kinematics.html"));
+  EXPECT_NE(report.find("<html"), std::string::npos);
+  EXPECT_NE(report.find("Plotly.newPlot"), std::string::npos);
 
   Workbench again(root);  // a new session (a killed server) restores the project
   const json restored = again.open(root / "patch.avi");

@@ -186,6 +186,24 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     if not abs(e - e_truth) <= sigma_e:
         fail("bounce analyze: e_velocity = %s +- %s, the render's is %.5f" % (e, sigma_e, e_truth))
     print("bounce analyze: e_velocity = %s +- %s (render: %.5f)" % (e, sigma_e, e_truth))
+    # Its report below the listing: the command's own HTML report (throw.avi.bounce.html, the
+    # six figures of `bounce analyze --report`), drawn in the page's sandboxed frame.
+    if "throw.avi.bounce.html" not in driver.find_element(By.CSS_SELECTOR, "#analysis p").text:
+        fail("the listing does not name the report: " + driver.find_element(By.CSS_SELECTOR, "#analysis p").text)
+    report = driver.find_element(By.ID, "report")
+    wait.until(lambda d: report.is_displayed() and "<title>tribolab bounce analyze" in (report.get_attribute("srcdoc") or ""))
+    driver.switch_to.frame(report)
+    try:
+        wait.until(lambda d: len(d.find_elements(By.CSS_SELECTOR, ".js-plotly-plot .main-svg")) >= 6)
+        figures = len(driver.find_elements(By.CSS_SELECTOR, ".js-plotly-plot"))
+    finally:
+        driver.switch_to.default_content()
+    if figures != 6:
+        fail("the report in the page draws %d figures, bounce analyze's report has 6" % figures)
+    driver.execute_script("arguments[0].scrollIntoView()", report)
+    driver.save_screenshot(os.path.join(out, "studio_3c_report.png"))
+    driver.execute_script("window.scrollTo(0, 0)")
+    print("bounce analyze's report drawn in the page: %d figures" % figures)
 
     # Correct: drag the ball's point in frame DRAG 4 px right and 3 px up (as many CSS px at zoom 1), off
     # the truth on purpose so that the saved position is seen to be the dragged one.
