@@ -27,6 +27,7 @@ struct AnsweringBackend : Backend {
   json mark(const MarkInput& m) override { return {{"track", m.track}, {"frame", m.frame}, {"remove", m.remove}}; }
   json forms() override { return json::object(); }
   json analyze(const std::string& c, const json& v) override { return {{"command", c}, {"values", v}}; }
+  std::string report_html() override { return "<html></html>"; }
   json state() override { return json::object(); }
   json progress() override { return {{"running", false}}; }
   json cancel() override { return {{"cancelling", false}}; }
