@@ -26,7 +26,7 @@ struct AnsweringBackend : Backend {
   json track(const TrackStart& s) override { return to_json(s); }
   json mark(const MarkInput& m) override { return {{"track", m.track}, {"frame", m.frame}, {"remove", m.remove}}; }
   json forms() override { return json::object(); }
-  json analyze(const std::string& c, const json& v) override { return {{"command", c}, {"values", v}}; }
+  json analyze(const std::string& c, const json& v, const std::vector<std::filesystem::path>&) override { return {{"command", c}, {"values", v}}; }
   std::string report_html() override { return "<html></html>"; }
   json state() override { return json::object(); }
   json progress() override { return {{"running", false}}; }

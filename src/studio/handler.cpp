@@ -391,7 +391,22 @@ Response Handler::route(const Request& request, const Target& target) {
     const std::string command = text(body, "command", "");
     const json values = body.contains("values") ? body["values"] : json::object();
     if (!values.is_object()) throw BadRequest{400, "'values' must be a JSON object"};
-    return json_ok(backend_.analyze(command, values));
+    // A series: the other videos whose tracks join the open one's, each a file of the folder.
+    std::vector<std::filesystem::path> series;
+    if (body.contains("series") && !body["series"].is_null()) {
+      const json& names = body["series"];
+      if (!names.is_array() || names.size() > 1000) throw BadRequest{400, "'series' must be a list of file names"};
+      for (const json& name : names) {
+        if (!name.is_string()) throw BadRequest{400, "'series' must be a list of file names"};
+        const Confined c = confine(root_, name.get<std::string>());
+        if (!c.problem.empty()) throw BadRequest{403, c.problem};
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(c.path, ec))
+          throw BadRequest{404, "no such file in the folder: " + name.get<std::string>()};
+        series.push_back(c.path);
+      }
+    }
+    return json_ok(backend_.analyze(command, values, series));
   }
   return json_error(404, "no such route: " + path);
 }

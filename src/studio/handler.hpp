@@ -77,7 +77,10 @@ class Backend {
   /// Sets or removes a mark and re-tracks that track (the state, with the new track).
   virtual nlohmann::json mark(const MarkInput& mark) = 0;
   virtual nlohmann::json forms() = 0;                                    ///< the analyses' declared fields
-  virtual nlohmann::json analyze(const std::string& command, const nlohmann::json& values) = 0;
+  /// Runs an offered analysis on the open file's tracks and, for a series, on those of the
+  /// other files named (confined, existing files of the folder), in that order after it.
+  virtual nlohmann::json analyze(const std::string& command, const nlohmann::json& values,
+                                 const std::vector<std::filesystem::path>& series) = 0;
   /// The last analysis's HTML report, as written beside the file (InputError when there is none).
   virtual std::string report_html() = 0;
   virtual nlohmann::json state() = 0;                                    ///< the project as autosaved

@@ -37,7 +37,12 @@ struct RecordingBackend : Backend {
   MarkInput marked;
   json mark(const MarkInput& m) override { ++calls; marked = m; return {{"track", m.track}}; }
   json forms() override { ++calls; return json::object(); }
-  json analyze(const std::string& command, const json&) override { ++calls; return {{"command", command}}; }
+  json analyze(const std::string& command, const json&, const std::vector<fs::path>& others) override {
+    ++calls;
+    series = others;
+    return {{"command", command}};
+  }
+  std::vector<fs::path> series;
   std::string report_html() override { ++calls; return "<html>report</html>"; }
   json state() override { ++calls; return json::object(); }
   std::atomic<int> progress_calls{0}, cancel_calls{0};
@@ -202,6 +207,20 @@ TEST(CalibrationJson, ReadsAndWritesTheAxesAngle) {
   EXPECT_EQ(to_json(c)["axes_deg"], -12.5);
   EXPECT_EQ(calibration_from_json(to_json(c)).axes_deg, -12.5);
   EXPECT_THROW(calibration_from_json({{"axes_deg", {1, 2}}}), InputError);
+}
+
+// A series names other files of the folder, each confined as an opened file is.
+TEST_F(HandlerTest, SeriesFilesAreConfinedToTheFolder) {
+  const Response ok = handler->handle(good("POST", "/api/analyze", R"({"command": "c", "series": ["sub/inner.avi"]})"));
+  EXPECT_EQ(ok.status, 200) << ok.body;
+  EXPECT_EQ(backend.series, std::vector<fs::path>{fs::canonical(root / "sub" / "inner.avi")});
+  const int calls = backend.calls;
+  EXPECT_EQ(handler->handle(good("POST", "/api/analyze", R"({"command": "c", "series": ["../outside.avi"]})")).status, 403);
+  EXPECT_EQ(handler->handle(good("POST", "/api/analyze", R"({"command": "c", "series": ["/etc/passwd"]})")).status, 403);
+  EXPECT_EQ(handler->handle(good("POST", "/api/analyze", R"({"command": "c", "series": ["none.avi"]})")).status, 404);
+  EXPECT_EQ(handler->handle(good("POST", "/api/analyze", R"({"command": "c", "series": "sub/inner.avi"})")).status, 400);
+  EXPECT_EQ(handler->handle(good("POST", "/api/analyze", R"({"command": "c", "series": [1]})")).status, 400);
+  EXPECT_EQ(backend.calls, calls);
 }
 
 TEST_F(HandlerTest, MarkRequestsAreCheckedBeforeTheBackend) {

@@ -32,7 +32,7 @@ struct EchoBackend : Backend {
   json track(const TrackStart& s) override { return {{"name", s.name}, {"x", s.x_px}}; }
   json mark(const MarkInput& m) override { return {{"track", m.track}, {"frame", m.frame}}; }
   json forms() override { return json::object(); }
-  json analyze(const std::string& c, const json&) override { return {{"command", c}}; }
+  json analyze(const std::string& c, const json&, const std::vector<std::filesystem::path>&) override { return {{"command", c}}; }
   std::string report_html() override { return "<html>report</html>"; }
   json state() override { return json::object(); }
   json progress() override { return {{"running", false}}; }

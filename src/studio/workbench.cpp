@@ -1,6 +1,7 @@
 #include "studio/workbench.hpp"
 
 #include "app/bounce/bounce_analyze.hpp"
+#include "app/bounce/bounce_series.hpp"
 #include "app/incline/incline_analyze.hpp"
 #include "app/common/result_keys.hpp"
 #include "app/common/spelled_json.hpp"
@@ -131,8 +132,14 @@ json Workbench::files() {
     std::sort(here.begin(), here.end());
     names.insert(names.end(), here.begin(), here.end());
   }
-  for (const auto& n : names) list.push_back(n);
-  return {{"folder", root_.filename().string()}, {"files", list}};
+  // Those tracked in the studio (FILE.tracks.csv beside them): what a series can take.
+  json tracked = json::array();
+  for (const auto& n : names) {
+    list.push_back(n);
+    const Confined c = confine(root_, n + ".tracks.csv");
+    if (c.problem.empty() && fs::is_regular_file(c.path, ec)) tracked.push_back(n);
+  }
+  return {{"folder", root_.filename().string()}, {"files", list}, {"tracked", tracked}};
 }
 
 json Workbench::open(const fs::path& file) {
@@ -340,16 +347,25 @@ struct AnalysisRun {
   std::string report;  ///< its HTML report (Plotly.js embedded: a file to show as it is)
 };
 
-/// One analysis the studio offers: its form, and how it runs on the studio's tracks (`csv`,
-/// in s and m) with a form's values, its outputs named by `beside` (FILE + suffix).
+/// One analysis the studio offers: its form, and how it runs on the studio's tracks (`csvs`,
+/// in s and m: the open file's, then those of the series' other videos) with a form's values,
+/// its outputs named by `beside` (FILE + suffix).
 struct OfferedAnalysis {
   const char* command;
   std::function<json()> form;
-  const app::ResultKeys& (*results)();  ///< its declared result keys
-  std::function<AnalysisRun(const json& values, const std::string& csv,
+  app::ResultKeys (*results)();  ///< its declared result keys (one run's, and a series' summary's)
+  bool series;                   ///< takes several videos' tracks (a series, as on the command line)
+  std::function<AnalysisRun(const json& values, const std::vector<std::string>& csvs,
                             const std::function<std::string(const char*)>& beside)>
       run;
 };
+
+/// One run's result keys and those of a series' summary.
+app::ResultKeys joined(const app::ResultKeys& run, const app::ResultKeys& summary) {
+  app::ResultKeys keys = run;
+  keys.insert(keys.end(), summary.begin(), summary.end());
+  return keys;
+}
 
 /// Sets the form's `values` on `o` through `fields`, runs `analysis` and returns its JSON.
 template <class O, class Run>
@@ -362,34 +378,39 @@ json run_form(O o, const app::Fields<O>& fields, const json& values, Run analysi
 const std::vector<OfferedAnalysis>& offered_analyses() {
   using Beside = std::function<std::string(const char*)>;
   static const std::vector<OfferedAnalysis> list = {
-      {"track kinematics", [] { return form_of(app::track_kinematics_fields(), app::track_kinematics_result_keys()); }, app::track_kinematics_result_keys,
-       [](const json& values, const std::string& csv, const Beside& beside) {
+      {"track kinematics", [] { return form_of(app::track_kinematics_fields(), app::track_kinematics_result_keys()); },
+       [] { return app::track_kinematics_result_keys(); }, false,
+       [](const json& values, const std::vector<std::string>& csvs, const Beside& beside) {
          app::TrackKinematicsOptions o;
-         o.input.file = csv;
+         o.input.file = csvs.front();
          o.out = beside(".kinematics.csv");
          o.report = beside(".kinematics.html");
          return AnalysisRun{run_form(o, app::track_kinematics_fields(), values, app::track_kinematics), o.out, o.report};
        }},
-      {"track rigid-body", [] { return form_of(app::track_rigid_body_fields(), app::track_rigid_body_result_keys()); }, app::track_rigid_body_result_keys,
-       [](const json& values, const std::string& csv, const Beside& beside) {
+      {"track rigid-body", [] { return form_of(app::track_rigid_body_fields(), app::track_rigid_body_result_keys()); },
+       [] { return app::track_rigid_body_result_keys(); }, false,
+       [](const json& values, const std::vector<std::string>& csvs, const Beside& beside) {
          app::TrackRigidBodyOptions o;
-         o.input.file = csv;
+         o.input.file = csvs.front();
          o.out = beside(".rigid_body.csv");
          o.report = beside(".rigid_body.html");
          return AnalysisRun{run_form(o, app::track_rigid_body_fields(), values, app::track_rigid_body), o.out, o.report};
        }},
-      {"bounce analyze", [] { return form_of(app::bounce_analyze_fields(), app::bounce_analyze_result_keys()); }, app::bounce_analyze_result_keys,
-       [](const json& values, const std::string& csv, const Beside& beside) {
-         app::BounceAnalyzeOptions o;
-         o.file = csv;
-         o.bounces_out = beside(".bounce.csv");
-         o.report = beside(".bounce.html");
-         return AnalysisRun{run_form(o, app::bounce_analyze_fields(), values, app::bounce_analyze), o.bounces_out, o.report};
+      {"bounce analyze", [] { return form_of(app::bounce_analyze_series_fields(), app::bounce_analyze_result_keys()); },
+       [] { return joined(app::bounce_analyze_result_keys(), app::bounce_analyze_series_result_keys()); }, true,
+       [](const json& values, const std::vector<std::string>& csvs, const Beside& beside) {
+         app::BounceAnalyzeSeriesOptions o;
+         o.files = csvs;
+         o.each.bounces_out = beside(".bounce.csv");
+         o.each.report = beside(".bounce.html");
+         return AnalysisRun{run_form(o, app::bounce_analyze_series_fields(), values, app::bounce_analyze_series),
+                            o.each.bounces_out, o.each.report};
        }},
-      {"incline analyze", [] { return form_of(app::incline_analyze_fields(), app::incline_analyze_result_keys()); }, app::incline_analyze_result_keys,
-       [](const json& values, const std::string& csv, const Beside& beside) {
+      {"incline analyze", [] { return form_of(app::incline_analyze_fields(), app::incline_analyze_result_keys()); },
+       [] { return joined(app::incline_analyze_result_keys(), app::incline_analyze_series_result_keys()); }, true,
+       [](const json& values, const std::vector<std::string>& csvs, const Beside& beside) {
          app::InclineAnalyzeOptions o;
-         o.files = {csv};
+         o.files = csvs;
          o.report = beside(".incline.html");
          return AnalysisRun{run_form(o, app::incline_analyze_fields(), values, app::incline_analyze), std::string(), o.report};
        }},
@@ -401,11 +422,28 @@ const std::vector<OfferedAnalysis>& offered_analyses() {
 
 json Workbench::forms() {
   json forms = json::object();
-  for (const OfferedAnalysis& a : offered_analyses()) forms[a.command] = a.form();
+  for (const OfferedAnalysis& a : offered_analyses()) {
+    forms[a.command] = a.form();
+    forms[a.command]["series"] = a.series;  // takes other videos' tracks too
+  }
   return forms;
 }
 
-json Workbench::analyze(const std::string& command, const json& values) {
+/// `j` with the folder's own place on disk left out of its texts (a series' run files are the
+/// tracks' CSVs by their full paths): the page names files relative to the folder.
+json within_folder(json j, const std::string& root) {
+  const std::string prefix = root.back() == '/' ? root : root + '/';
+  if (j.is_string()) {
+    std::string s = j.get<std::string>();
+    for (std::size_t p = s.find(prefix); p != std::string::npos; p = s.find(prefix, p)) s.erase(p, prefix.size());
+    return s;
+  }
+  if (j.is_structured())
+    for (auto& e : j) e = within_folder(std::move(e), root);
+  return j;
+}
+
+json Workbench::analyze(const std::string& command, const json& values, const std::vector<fs::path>& series) {
   require_open();
   Action action(*this, "analysing");
   const auto& list = offered_analyses();
@@ -418,10 +456,29 @@ json Workbench::analyze(const std::string& command, const json& values) {
   if (!tracks_.contains("csv")) throw InputError("track an object first: the analysis reads its track");
   for (auto it = values.begin(); it != values.end(); ++it)
     if (set_by_the_studio(it.key())) throw InputError(field(it.key()), "is set by the studio: its tracks are in s and m");
-  const AnalysisRun run = offered->run(values, (root_ / tracks_["csv"].get<std::string>()).string(),
-                                       [this](const char* suffix) { return beside(suffix).string(); });
+  // A series: the open video's tracks first, then those of each other video named, as the
+  // studio wrote them when that video was tracked (FILE.tracks.csv).
+  std::vector<std::string> csvs = {(root_ / tracks_["csv"].get<std::string>()).string()};
+  json series_names = json::array();
+  if (!series.empty() && !offered->series)
+    throw InputError(fmt::format("'{}' analyses one video; a series of videos is offered for bounce analyze and "
+                                 "incline analyze", command));
+  for (const fs::path& other : series) {
+    if (other == file_) throw InputError(relative(other), "is the video open: it is the series' first run already");
+    const fs::path csv = other.parent_path() / (other.filename().string() + ".tracks.csv");
+    const Confined c = confine(root_, relative(csv));
+    std::error_code ec;
+    if (!c.problem.empty() || !fs::is_regular_file(c.path, ec))
+      throw InputError(relative(other), "has no tracks yet: open it in the studio and track it, then add it to the series");
+    if (std::find(csvs.begin(), csvs.end(), csv.string()) != csvs.end())
+      throw InputError(relative(other), "is in the series twice");
+    csvs.push_back(csv.string());
+    series_names.push_back(relative(other));
+  }
+  const AnalysisRun run = offered->run(values, csvs, [this](const char* suffix) { return beside(suffix).string(); });
   const auto written = [this](const std::string& path) { return path.empty() ? json(nullptr) : json(relative(path)); };
-  analysis_ = {{"command", command}, {"values", values}, {"result", app::plain_fields_json(run.result)},
+  analysis_ = {{"command", command}, {"values", values}, {"series", series_names},
+               {"result", within_folder(app::plain_fields_json(run.result), root_.string())},
                {"out", written(run.out)}, {"report", written(run.report)},
                {"results", app::result_keys_schema(offered->results())}};
   autosave();

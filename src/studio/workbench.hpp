@@ -35,7 +35,8 @@ class Workbench : public Backend {
   /// Sets or removes a mark of a track (on its start frame: moves the start) and re-tracks.
   nlohmann::json mark(const MarkInput& mark) override;
   nlohmann::json forms() override;
-  nlohmann::json analyze(const std::string& command, const nlohmann::json& values) override;
+  nlohmann::json analyze(const std::string& command, const nlohmann::json& values,
+                         const std::vector<std::filesystem::path>& series = {}) override;
   std::string report_html() override;
   nlohmann::json state() override;
   nlohmann::json progress() override;

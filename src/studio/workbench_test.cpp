@@ -431,6 +431,29 @@ TEST_F(WorkbenchFilmTest, AnInclineRunIsAnalysedFromAClick) {
   // A single number is a list of one.
   const json one = wb.analyze("incline analyze", {{"track", "disc"}, {"phi_deg", 20.0}, {"no_model_a", true}});
   EXPECT_EQ(one["analysis"]["result"]["mu"], r["mu"]);
+
+  // A series of videos, as `incline analyze FILE...` takes them: the same film under another
+  // name, tracked there, analysed with the first one's tracks after its own.
+  const json values = {{"track", "disc"}, {"phi_deg", 20.0}, {"no_model_a", true}};
+  fs::copy_file(root / "incline.avi", root / "again.avi");
+  EXPECT_THROW(wb.analyze("incline analyze", values, {root / "again.avi"}), InputError);  // not tracked yet
+  EXPECT_THROW(wb.analyze("incline analyze", values, {root / "incline.avi"}), InputError);  // the open one
+  EXPECT_THROW(wb.analyze("track kinematics", json::object(), {root / "again.avi"}), InputError);  // one video only
+  wb.open(root / "again.avi");
+  wb.calibrate(calibration());
+  wb.track({"disc", "ellipse", x0_px, y0_px, 0, {}});
+  EXPECT_THROW(wb.analyze("incline analyze", values, {root / "incline.avi", root / "incline.avi"}), InputError);
+  s = wb.analyze("incline analyze", values, {root / "incline.avi"});
+  const json& runs = s["analysis"]["result"]["runs"];
+  ASSERT_EQ(runs.size(), 2u) << s["analysis"].dump();
+  EXPECT_EQ(runs[0]["file"], "again.avi.tracks.csv");  // named within the folder, as the page shows files
+  EXPECT_EQ(runs[1]["file"], "incline.avi.tracks.csv");
+  EXPECT_EQ(runs[1]["mu"], one["analysis"]["result"]["mu"]);
+  EXPECT_EQ(runs[0]["mu"], one["analysis"]["result"]["mu"]);  // the same film
+  EXPECT_EQ(s["analysis"]["result"]["summary"]["n_ok"], 2);
+  EXPECT_EQ(s["analysis"]["series"], json({"incline.avi"}));
+  EXPECT_EQ(s["analysis"]["report"], "again.avi.incline.html");
+  EXPECT_NE(wb.report_html().find("again.avi.tracks.csv"), std::string::npos);
 }
 
 TEST_F(WorkbenchFilmTest, ATurningBallsSpinComesFromRigidBody) {

@@ -42,6 +42,7 @@ def main(tribolab, out):
     # tips put e_velocity 3.4 sigma from the truth, at 640x480 within 0.1 sigma).
     render, truth = render_throw(tribolab, os.path.join(folder, "throw.avi"), os.path.join(folder, "truth.csv"),
                                  "640x480")
+    shutil.copyfile(os.path.join(folder, "throw.avi"), os.path.join(folder, "throw2.avi"))  # a series' second run
     scale = render["scale_m_per_px"]
     with studio_page(tribolab, folder, fail) as (driver, url, logs):
         dragged = run_page(driver, url, out, truth, scale, render["ball_start_px"], render["origin_px"],
@@ -100,34 +101,38 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
         dy = round((y + 0.5) * ZOOM + 1 - canvas.size["height"] / 2)
         ActionChains(driver).move_to_element_with_offset(canvas, dx, dy).click().perform()
 
-    # Calibration: a 400 px stick along the floor (its ends at half pixels: image x is CSS
-    # x - 0.5 at zoom 1, so they are clicked exactly), its length from the render's scale, and the origin.
-    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=stick]").click()
-    click_image(80.5, 400.5)
-    click_image(480.5, 400.5)
-    stick = [float(v) for v in driver.find_element(By.ID, "stick-text").text.split(":")[1].split("px")[0].split(",")]
-    if max(abs(a - b) for a, b in zip(stick, [80.5, 400.5, 480.5, 400.5])) > 1e-6:
-        fail("the stick's ends were read at %s, clicked at 80.5,400.5,480.5,400.5" % stick)
-    length = driver.find_element(By.ID, "stick-length")
-    length.clear()
-    length.send_keys(repr(400 * scale))
-    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=origin]").click()
-    click_image(round(origin_px[0]) + 0.5, round(origin_px[1]) + 0.5)  # the render's, to a pixel (only shifts x, y)
-    clicked_origin = [float(v) for v in driver.find_element(By.ID, "origin-text").text.split(":")[1].split("px")[0].split(",")]
-    driver.find_element(By.ID, "apply-calibration").click()
     # (while an action runs the status shows its progress, "WHAT: frame N of M"; it ends "WHAT: done" or "WHAT: failed")
     ended = lambda what: status() in (what + ": done", what + ": failed")
-    wait.until(lambda d: ended("calibrating"))
-    if error():
-        fail("calibration: " + error())
 
-    # Track: one click on the ball in frame 0.
-    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
-    click_image(*ball_start)
-    wait.until(lambda d: ended("tracking"))
-    wait.until(lambda d: canvas.get_attribute("data-drawn") not in (None, "", "[]") or error())
-    if error():
-        fail("tracking: " + error())
+    def calibrate_and_track():
+        # Calibration: a 400 px stick along the floor (its ends at half pixels: image x is CSS
+        # x - 0.5 at zoom 1, so they are clicked exactly), its length from the render's scale, and the origin.
+        driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=stick]").click()
+        click_image(80.5, 400.5)
+        click_image(480.5, 400.5)
+        stick = [float(v) for v in driver.find_element(By.ID, "stick-text").text.split(":")[1].split("px")[0].split(",")]
+        if max(abs(a - b) for a, b in zip(stick, [80.5, 400.5, 480.5, 400.5])) > 1e-6:
+            fail("the stick's ends were read at %s, clicked at 80.5,400.5,480.5,400.5" % stick)
+        length = driver.find_element(By.ID, "stick-length")
+        length.clear()
+        length.send_keys(repr(400 * scale))
+        driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=origin]").click()
+        click_image(round(origin_px[0]) + 0.5, round(origin_px[1]) + 0.5)  # the render's, to a pixel (only shifts x, y)
+        clicked = [float(v) for v in driver.find_element(By.ID, "origin-text").text.split(":")[1].split("px")[0].split(",")]
+        driver.find_element(By.ID, "apply-calibration").click()
+        wait.until(lambda d: ended("calibrating"))
+        if error():
+            fail("calibration: " + error())
+        # Track: one click on the ball in frame 0.
+        driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
+        click_image(*ball_start)
+        wait.until(lambda d: ended("tracking"))
+        wait.until(lambda d: canvas.get_attribute("data-drawn") not in (None, "", "[]") or error())
+        if error():
+            fail("tracking: " + error())
+        return clicked
+
+    clicked_origin = calibrate_and_track()
     driver.save_screenshot(os.path.join(out, "studio_2_tracked.png"))
     worst = 0
     for frame in sorted(truth):
@@ -179,7 +184,8 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     driver.save_screenshot(os.path.join(out, "studio_3b_bounce.png"))
     cell = lambda key, i: driver.find_element(By.CSS_SELECTOR, "#analysis-table tr[data-key='%s']" % key) \
         .find_elements(By.TAG_NAME, "td")[i].text
-    e, sigma_e = float(cell("e_velocity", 1)), float(cell("sigma_e_velocity", 1))
+    e_text, sigma_e = cell("e_velocity", 1), float(cell("sigma_e_velocity", 1))
+    e = float(e_text)
     if cell("floor_y", 2) != "m" or cell("impact_time", 2) != "s":
         fail("the bounce listing's units: floor_y in '%s', impact_time in '%s'" % (cell("floor_y", 2), cell("impact_time", 2)))
     # The issue's bar: e within its standard uncertainty of the render's truth.
@@ -265,6 +271,42 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     if "marks of ball at frames %d, %d" % (DRAG, PLACE) not in driver.find_element(By.ID, "marks-text").text:
         fail("the marks are not listed: " + driver.find_element(By.ID, "marks-text").text)
     driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
+
+    # A series, as `bounce analyze FILE...` takes it: throw2.avi (a copy of the film) opened,
+    # calibrated and tracked as throw.avi was, then analysed with throw.avi's tracks ticked
+    # under the form. Its run is throw.avi's first analysis again, to the digit; throw.avi's
+    # run now has the two marks.
+    driver.find_element(By.XPATH, "//ul[@id='files']/li[text()='throw2.avi']").click()
+    wait.until(lambda d: ended("opening throw2.avi"))
+    if error():
+        fail("opening throw2.avi: " + error())
+    calibrate_and_track()
+    Select(driver.find_element(By.ID, "analysis-command")).select_by_value("bounce analyze")
+    form = driver.find_element(By.ID, "analysis-form")
+    floor = form.find_element(By.NAME, "floor_y")
+    floor.clear()
+    floor.send_keys(repr((clicked_origin[1] - origin_px[1]) * scale))
+    wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, "#series input[value='throw.avi']"))
+    if driver.find_elements(By.CSS_SELECTOR, "#series input[value='throw2.avi']"):
+        fail("the series offers the open video itself")
+    driver.find_element(By.CSS_SELECTOR, "#series input[value='throw.avi']").click()
+    driver.find_element(By.ID, "run-analysis").click()
+    wait.until(lambda d: ended("analysing"))
+    if error():
+        fail("bounce analyze of a series: " + error())
+    if cell("runs.0.file", 1) != '"throw2.avi.tracks.csv"' or cell("runs.1.file", 1) != '"throw.avi.tracks.csv"':
+        fail("the series' runs are %s, %s" % (cell("runs.0.file", 1), cell("runs.1.file", 1)))
+    if cell("runs.0.e_velocity", 1) != e_text or cell("runs.0.e_velocity", 2) != "":
+        fail("the series' first run has e_velocity %s, the same film alone %s" % (cell("runs.0.e_velocity", 1), e_text))
+    if cell("summary.n_ok", 1) != "2" or cell("runs.0.impact_time", 2) != "s":
+        fail("the series' summary: n_ok %s; runs' impact_time in '%s'" % (cell("summary.n_ok", 1), cell("runs.0.impact_time", 2)))
+    wait.until(lambda d: "throw.avi.tracks.csv" in (report.get_attribute("srcdoc") or ""))
+    driver.save_screenshot(os.path.join(out, "studio_4a_series.png"))
+    print("bounce analyze of a series of 2 videos in the page: e_velocity %s, %s" %
+          (cell("runs.0.e_velocity", 1), cell("runs.1.e_velocity", 1)))
+    driver.find_element(By.XPATH, "//ul[@id='files']/li[text()='throw.avi']").click()
+    wait.until(lambda d: ended("opening throw.avi"))
+    wait.until(lambda d: canvas.get_attribute("data-frame") == "0")
 
     # Axes: drag their origin 20 px right and 10 px down, then the ring at the x-axis's end
     # (kAxisLength = 50 screen px along x) round to straight up: the axes turn by 90 deg and are
