@@ -24,6 +24,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <sstream>
 
 namespace tribolab::studio {
@@ -39,9 +40,16 @@ json series_json(const std::vector<video::TrackedSeries>& series) {
   json a = json::array();
   for (const auto& s : series) {
     json rows = json::array();
-    for (const auto& r : s.rows)
+    for (std::size_t i = 0; i < s.rows.size(); ++i) {
+      const video::TrackedRow& r = s.rows[i];
+      // An ellipse's orientation (centre to end A, counter-clockwise on the screen), deg; a
+      // point tracked by the path tracker has no angle of its own (null).
+      const double angle = s.kind == video::Target::Kind::ellipse && i < s.angle_rad.size() && !r.lost
+                               ? s.angle_rad[i] * 180 / std::numbers::pi : std::nan("");
       rows.push_back({{"frame", r.frame}, {"t", r.t}, {"x", r.x}, {"y", r.y}, {"x_px", r.x_px}, {"y_px", r.y_px},
+                      {"angle_deg", std::isfinite(angle) ? json(angle) : json(nullptr)},
                       {"score", r.score}, {"lost", r.lost}, {"manual", r.manual}});
+    }
     a.push_back({{"name", s.name},
                  {"kind", s.kind == video::Target::Kind::point ? "point" : "ellipse"},
                  {"rows", rows},

@@ -110,6 +110,7 @@ TEST_F(WorkbenchTest, ClickTracksSavesAndReopens) {
   double worst = 0;
   for (const json& r : rows) {
     ASSERT_FALSE(r["lost"].get<bool>()) << r.dump();
+    EXPECT_TRUE(r["angle_deg"].is_null());  // the path tracker's point has no angle of its own
     const cv::Point2d truth = mark_at(r["frame"].get<int>());
     worst = std::max(worst, std::hypot(r["x_px"].get<double>() - truth.x, r["y_px"].get<double>() - truth.y));
   }
@@ -475,7 +476,17 @@ TEST_F(WorkbenchFilmTest, ATurningBallsSpinComesFromRigidBody) {
   Workbench wb(root);
   wb.open(root / "ball.avi");
   wb.calibrate(calibration());
-  wb.track({"ball", "ellipse", 80, 120, 0, {}});
+  const json tracked = wb.track({"ball", "ellipse", 80, 120, 0, {}});
+  // The page plots the ellipse's orientation (angle_deg, counter-clockwise on the screen): it
+  // turns by kOmega per second, up to the half turn a symmetric ellipse cannot tell.
+  const json& rows = tracked["tracks"]["series"][0]["rows"];
+  ASSERT_EQ(tracked["tracks"]["series"][0]["name"], "ball");
+  for (const json& row : rows) {
+    ASSERT_TRUE(row["angle_deg"].is_number()) << row.dump();
+    const double truth = (0.3 + kOmega * row["t"].get<double>()) * 180 / std::numbers::pi;
+    EXPECT_NEAR(std::remainder(row["angle_deg"].get<double>() - truth, 180), 0, 1) << row.dump();
+  }
+  for (const json& row : tracked["tracks"]["series"][1]["rows"]) EXPECT_TRUE(row["angle_deg"].is_number());
   const json s = wb.analyze("track rigid-body", {{"track_a", "ball.A"}, {"track_b", "ball.B"}});
   const json& r = s["analysis"]["result"];
   ASSERT_TRUE(r["omega"].is_number()) << r.dump();

@@ -134,6 +134,16 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
 
     clicked_origin = calibrate_and_track()
     driver.save_screenshot(os.path.join(out, "studio_2_tracked.png"))
+    # The plot beside the frame: x, y of the ball and its ends, and the ball's orientation.
+    traces = driver.execute_script("return document.getElementById('plot').data.map((t) => t.name)")
+    if "ball angle" not in traces or "ball.A angle" in traces:
+        fail("the plot's traces are %s: the ball's angle (not its ends') belongs there" % traces)
+    # Play: every frame shown in turn to the last, then the button offers Play again.
+    driver.find_element(By.ID, "play").click()
+    wait.until(lambda d: canvas.get_attribute("data-frame") == str(max(truth)) and
+               d.find_element(By.ID, "play").text == "Play")
+    driver.execute_script("showFrame(0)")
+    wait.until(lambda d: canvas.get_attribute("data-frame") == "0")
     worst = 0
     for frame in sorted(truth):
         if frame > 0:
