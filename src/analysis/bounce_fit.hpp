@@ -65,6 +65,13 @@ struct BounceFitResult {
   std::vector<std::string> warnings;
   std::vector<BounceFitRow> rows;
   std::vector<std::string> free_parameters;
+  /// Rows (1-based) whose impact under the fitted law touches the floor again: their
+  /// predictions are whole impacts of several contacts (as every row's is the whole impact).
+  std::vector<std::size_t> touching_again;
+  /// Rows (1-based) left out of the fit: their predicted outcome jumps at the fitted law (a
+  /// touch of the floor that begins or ends at the apex, where the whole impact is cut), so
+  /// the fit's linearisation, and its sigmas, would not hold there. Predicted all the same.
+  std::vector<std::size_t> left_out;
 };
 
 /// Fits. Rows with sigmas (BounceRow::has_sigmas, all or none) are weighted by their own
@@ -75,15 +82,17 @@ struct BounceFitResult {
 /// parameters, or the fit cannot determine them (status not_identifiable / failed).
 BounceFitResult fit_bounces(const std::vector<BounceRow>& rows, const BounceFitOptions& options);
 
-/// Predicts one row's outgoing state with the given parameters (NaN when the contact fails).
+/// Predicts one row's outgoing state with the given parameters: the whole impact
+/// (bounce::simulate_impact, every contact until free flight), NaN when a contact fails or the
+/// ball does not leave the floor.
 BounceFitRow predict_bounce(const BounceRow& row, const bounce::Ball& ball,
                             const bounce::NormalLawSpec& law, const bounce::FrictionModel& friction,
                             double tolerance);
 
 /// The rows whose whole impact (bounce::simulate_impact: a second touch and more) under `law`
-/// differs from the first contact phase, which `fit_bounces` predicts and `synth_table` draws:
-/// `rows` (1-based) where max(|dvx|, |dvy|, b |domega|) exceeds `threshold` (m/s), `worst` the
-/// largest such difference, m/s (issue 27; docs/theory.md#bounce-fit).
+/// differs from its first contact phase: `rows` (1-based) where max(|dvx|, |dvy|, b |domega|)
+/// exceeds `threshold` (m/s), `worst` the largest such difference, m/s (issue 27;
+/// docs/theory.md#bounce-fit).
 struct WholeImpactDifference {
   std::vector<std::size_t> rows;
   double worst = 0;  ///< m/s

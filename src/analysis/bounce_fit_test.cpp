@@ -171,7 +171,38 @@ TEST(BounceFit, IntervalsCoverTheTruthWithOutliers) {
   for (int k = 0; k < 3; ++k) {
     EXPECT_GE(cover[0][k], need) << k;
     EXPECT_GT(z_sum[k] / runs, 0.5) << k;  // not grossly too wide
+    // Nor absurdly narrow in one table: a fit that ended on a jump of the whole impact gave
+    // sigma(log K) = 5e-7 for a 3 % error (|z| 5e4; mean |z| 1349 over the 40). A correct
+    // interval's mean |z| is ~0.8, its sd over 24-40 tables ~0.1.
+    EXPECT_LT(z_sum[k] / runs, 1.5) << k;
   }
+}
+
+// The whole impact is cut at the apex, so a row whose rebound touches the floor again just
+// after it has an outcome that jumps with the law (by ~1 m/s in vy at one K). The fit of table
+// seed 9011 (10 rows, 10 % outliers, n held) ended on such a jump in row 10: sigma(log K) 5e-7
+// for an error of 3 %. Such rows are found (a 1e-4 step of a parameter either way moves them
+// by more than the loss scale), left out with a warning naming them, and the rest refitted.
+TEST(BounceFit, RowsWhoseOutcomeJumpsAtTheFittedLawAreLeftOut) {
+  SynthTableOptions t;
+  t.rows = 10;
+  t.seed = 9011;
+  t.outlier_fraction = 0.1;
+  const auto rows = synth_table(t);
+  BounceFitOptions o;
+  o.fixed = {{"n", 1.51}};
+  o.K0 = 101054;
+  o.D0 = 60423;
+  o.mu0 = 0.5;
+  const auto r = fit_bounces(rows, o);
+  EXPECT_EQ(r.left_out, std::vector<std::size_t>{10});
+  ASSERT_EQ(r.rows.size(), rows.size());  // every row predicted, the left-out one too
+  bool said = false;
+  for (const auto& w : r.warnings) said |= w.rfind("1 of 10 rows (10) left out of the fit", 0) == 0;
+  EXPECT_TRUE(said) << (r.warnings.empty() ? "" : r.warnings.back());
+  EXPECT_LT(std::abs(std::log(r.K / 101054)) / r.fit.sigma[0], 3) << r.K << " +- " << r.sigma_K;
+  EXPECT_LT(std::abs(std::log(r.D / 60423)) / r.fit.sigma[2], 3) << r.D << " +- " << r.sigma_D;
+  EXPECT_EQ(r.fit.dof, 3 * 9 - 3);
 }
 
 // Rows weighted by their own uncertainties (issue 27): tables of 10 whole impacts whose
@@ -261,12 +292,13 @@ TEST(BounceFit, RowsWeightedByTheirOwnUncertaintiesCover) {
   }
 }
 
-TEST(BounceFit, WarnsOfRowsWhoseWholeImpactDiffersFromTheFirstContact) {
-  // Issue 27: the fit predicts the first contact phase only, while simulate, drop and the maps
-  // follow the whole impact. Rows of the seed's low-damping map (D = 6000, vy = -4 m/s, spin
-  // 30-50 rad/s, collision angle 100-170 deg: 127 of its 1491 cells touch again, all at
-  // 157-170 deg), exact first-phase outcomes: the fit finds the law back, and must say which rows
-  // touch the floor again with it.
+TEST(BounceFit, FitsTheWholeImpactIncludingASecondTouch) {
+  // Issue 27: a filmed bounce is the whole impact (every contact until the ball flies free),
+  // as simulate, drop and the maps report it. Rows of the seed's low-damping map (D = 6000,
+  // vy = -4 m/s, spin 30-50 rad/s, collision angle 100-170 deg: 127 of its 1491 cells touch
+  // again, all at 157-170 deg), exact whole-impact outcomes, 4 of the 15 touching again: the
+  // fit finds the law back exactly and names those rows. A fit of the first contact phase
+  // alone was pulled to D = 6028-6030 by them (docs/theory.md#bounce-fit).
   const bounce::Ball ball;
   bounce::NormalLawSpec truth;
   truth.D = 6000;
@@ -274,7 +306,7 @@ TEST(BounceFit, WarnsOfRowsWhoseWholeImpactDiffersFromTheFirstContact) {
   bounce::ImpactOptions io;
   io.contact = bounce::contact_options_with_tolerance(1e-10);
   std::vector<BounceRow> rows;
-  std::vector<std::size_t> again;  // 1-based rows the whole impact changes
+  std::vector<std::size_t> again;  // 1-based rows with a second contact
   for (double chi : {100.0, 130.0, 160.0, 165.0, 170.0})  // 160-170 deg at 38-45 rad/s: 4 cells touch again
     for (double omega : {30.0, 38.0, 45.0}) {
       bounce::BodyState s;
@@ -287,34 +319,29 @@ TEST(BounceFit, WarnsOfRowsWhoseWholeImpactDiffersFromTheFirstContact) {
       row.vy_in = -4;
       row.omega_in = omega;
       const bounce::ImpactResult r = bounce::simulate_impact(ball, truth, friction, s, io);
-      ASSERT_EQ(r.first.status, bounce::ContactStatus::separated);
-      row.vx_out = r.first.out.vx;
-      row.vy_out = r.first.out.vy;
-      row.omega_out = r.first.out.omega;
+      ASSERT_EQ(r.status, bounce::ImpactStatus::free_flight);
+      row.vx_out = r.whole.out.vx;
+      row.vy_out = r.whole.out.vy;
+      row.omega_out = r.whole.out.omega;
       rows.push_back(row);
-      // 1e-3 m/s: far above the exact fit's rms (checked below), far below the differences
-      // a second touch makes (0.40 m/s and more on this map, docs/theory.md#bounce-contact).
-      if (r.contacts > 1 && std::abs(r.whole.out.vy - r.first.out.vy) > 1e-3) again.push_back(rows.size());
+      // A second touch moves these rows by 0.40 m/s and more (docs/theory.md#bounce-contact).
+      if (r.contacts > 1) {
+        ASSERT_GT(std::abs(r.whole.out.vy - r.first.out.vy), 0.1);
+        again.push_back(rows.size());
+      }
     }
-  ASSERT_FALSE(again.empty());
-  ASSERT_LT(again.size(), rows.size());
+  ASSERT_EQ(again.size(), 4u);
   BounceFitOptions o;
   o.fixed = {{"K", truth.K}, {"n", truth.n}};
   o.tolerance = 1e-10;
-  o.D0 = 6000;
+  o.D0 = 5000;
   const auto r = fit_bounces(rows, o);
-  ASSERT_LT(r.rms, 1e-4) << r.D;  // the first-phase law found back: the rows are its own
-  std::string said;
-  for (const auto& w : r.warnings)
-    if (w.find("touch the floor again") != std::string::npos) said = w;
-  ASSERT_FALSE(said.empty());
-  EXPECT_EQ(said.rfind(std::to_string(again.size()) + " of " + std::to_string(rows.size()) + " rows (", 0), 0u) << said;
-  EXPECT_NE(said.find("(" + std::to_string(again.front())), std::string::npos) << said;
-  // The same table without those rows warns of nothing.
-  std::vector<BounceRow> once;
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    if (std::find(again.begin(), again.end(), i + 1) == again.end()) once.push_back(rows[i]);
-  for (const auto& w : fit_bounces(once, o).warnings) EXPECT_EQ(w.find("touch the floor again"), std::string::npos) << w;
+  EXPECT_NEAR(r.D, truth.D, 0.05) << r.rms;  // the first-phase fit: 6028-6030
+  EXPECT_NEAR(r.mu, friction.mu, 1e-5);
+  EXPECT_LT(r.rms, 1e-5);
+  EXPECT_EQ(r.touching_again, again);
+  EXPECT_TRUE(r.left_out.empty());
+  for (std::size_t k : again) EXPECT_LT(std::abs(r.rows[k - 1].r_vy), 1e-5) << "row " << k;
 }
 
 TEST(BounceFit, RejectsWhatTheDataCannotSupport) {

@@ -191,11 +191,14 @@ std::vector<BounceRow> synth_table(const SynthTableOptions& o) {
       ++no_approach;
       continue;
     }
-    const auto c = bounce::simulate_contact(o.ball, o.law, o.friction, s);
-    if (c.status != bounce::ContactStatus::separated) {
-      ++(c.status == bounce::ContactStatus::max_duration ? stuck : failed);
+    // The whole impact, as a film records it (a second touch included): what fit_bounces predicts.
+    const bounce::ImpactResult impact = bounce::simulate_impact(o.ball, o.law, o.friction, s);
+    if (impact.first.status != bounce::ContactStatus::separated || impact.status != bounce::ImpactStatus::free_flight) {
+      ++(impact.first.status == bounce::ContactStatus::max_duration || impact.status == bounce::ImpactStatus::rest ? stuck
+                                                                                                                  : failed);
       continue;
     }
+    const bounce::ContactResult& c = impact.whole;
     BounceRow r;
     r.theta_deg = to_deg(s.theta);
     r.vx_in = s.vx;

@@ -254,7 +254,8 @@ BounceFitResult bounce_fit(const BounceFitOptions& opts) {
   json j = {{"K", r.K}, {"sigma_K", r.sigma_K}, {"n", r.n}, {"sigma_n", r.sigma_n},
             {"D", json_number(r.D)}, {"sigma_D", json_number(r.sigma_D)}, {"mu", r.mu}, {"sigma_mu", r.sigma_mu},
             {"rms", r.rms}, {"n_rows", res.rows.size()}, {"dof", r.fit.dof},
-            {"iterations", r.fit.iterations}, {"free_parameters", r.free_parameters}};
+            {"iterations", r.fit.iterations}, {"free_parameters", r.free_parameters},
+            {"rows_touching_again", r.touching_again}, {"rows_left_out", r.left_out}};
   if (o.restitution_model) {
     j["e"] = r.e;
     j["sigma_e"] = r.sigma_e;
@@ -310,6 +311,8 @@ const ResultKeys& bounce_fit_result_keys() {
       {"residuals.vx_pred", "m/s", ""}, {"residuals.vy_pred", "m/s", ""}, {"residuals.omega_pred", "rad/s", ""},
       {"residuals.r_vx", "m/s", ""}, {"residuals.r_vy", "m/s", ""},
       {"residuals.r_b_omega", "m/s", "b times the omega residual"}, {"warnings", "", ""},
+      {"rows_touching_again", "", "rows whose impact under the fitted law has a second contact (predicted whole)"},
+      {"rows_left_out", "", "rows left out: their outcome jumps at the fitted law (a touch at the apex)"},
   };
   return k;
 }
