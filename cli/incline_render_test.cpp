@@ -91,7 +91,8 @@ TEST(InclineRenderCli, TruthAnalysedGivesTheLaunch) {
   // The true path itself (no tracking, no noise) through `incline analyze`: mu and v0 exactly
   // (to the fit's convergence), t0 the launch's time in the video's clock.
   const std::string dir = temp_dir("incline_render_truth");
-  const json j = run_json(kSmall + " --duration 1.2 --supersample 1 --out " + dir + "/run.avi --truth " + dir + "/truth.csv");
+  const json j = run_json("incline render --mu 0.45 --phi-deg 20 --v0 1.2 --size 320x240 --supersample 1 --out " + dir +
+                          "/run.avi --truth " + dir + "/truth.csv");  // to 0.3 s past the stop
   const json a = run_json("incline analyze " + dir + "/truth.csv --phi-deg 20 --no-model-a");
   EXPECT_NEAR(a["mu"].get<double>(), 0.45, 1e-6) << a.dump();
   EXPECT_NEAR(a["v0"].get<double>(), 1.2, 1e-6);

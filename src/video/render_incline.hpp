@@ -21,6 +21,7 @@ struct InclineFilmOptions {
   incline::Parameters launch;
   RenderOptions render;        ///< size, fps (default 240; `incline render` says 60), background, shutter, noise, seed
   double disc_radius = 0.02;   ///< m, e.g. 0.02 (a 4 cm puck)
+  std::optional<cv::Scalar> disc_colour;  ///< BGR; unset: contrasting_colour(the background)
   double scale_m_per_px = 0;   ///< m per px, e.g. 0.002; 0 = fit the whole path in view
   /// Launch point (the world origin) in the image, px (x right, y down); unset = laid out so the
   /// whole path is in view, centred.
