@@ -90,6 +90,10 @@ InclineFilm plan_incline_film(const InclineFilmOptions& o) {
       film.t_stop = *run.t_stop - phase;
       film.x_stop = run.x_stop;
       film.y_stop = run.y_stop;
+    } else if (stop.t_stop) {  // v0 = 0 on a slope that holds it: at rest from the start
+      film.t_stop = *stop.t_stop - phase;
+      film.x_stop = stop.x_stop;
+      film.y_stop = stop.y_stop;
     }
   }
 
