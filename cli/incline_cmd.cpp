@@ -10,6 +10,7 @@
 #include "report_option.hpp"
 
 #include "app/incline/incline_forward.hpp"
+#include "app/incline/incline_render.hpp"
 #include "app/incline/incline_stop.hpp"
 #include "app/common/result_keys.hpp"
 
@@ -57,6 +58,11 @@ void add_simulate(CLI::App* area) {
                        incline_simulate_result_keys(), incline_simulate, help::kInclineModels);
 }
 
+void add_render(CLI::App* area) {
+  add_declared_command(area, "render", "Film a disc launched across the incline (model B) to a video with its truth",
+                       incline_render_fields(), incline_render_result_keys(), incline_render);
+}
+
 void add_mu_from_stop(CLI::App* area) {
   add_declared_command(area, "mu-from-stop", "Friction coefficient from the stopping point alone (incline study, equation 10A (十A))",
                        incline_mu_from_stop_fields(), incline_mu_from_stop_result_keys(), incline_mu_from_stop,
@@ -75,6 +81,7 @@ void register_incline(CLI::App& root) {
   area->require_subcommand(1);
   add_predict(area);
   add_simulate(area);
+  add_render(area);
   add_mu_from_stop(area);
   add_families(area);
   add_incline_analysis_commands(area);

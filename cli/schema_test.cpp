@@ -94,6 +94,11 @@ const std::map<std::string, SampleRun>& sample_runs() {
        {[](const std::string& dir, auto&) {
           return "bounce render --size 160x120 --fps 100 --height 0.3 --after 0.05 --supersample 1 --out '" + dir + "/r.avi'";
         }}},
+      {"incline render",
+       {[](const std::string& dir, auto&) {
+          return "incline render --mu 0.45 --phi-deg 20 --v0 1.2 --size 160x120 --duration 0.2 --supersample 1 --out '" + dir +
+                 "/r.avi'";
+        }}},
       {"track video",
        {[](const std::string& dir, const json& film) {
           return fmt::format("track video '{}/v.avi' --ellipse ball={},{}@0 --scale {} --out '{}/t.csv'", dir,

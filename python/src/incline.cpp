@@ -5,6 +5,7 @@
 #include "app/incline/incline_analysis.hpp"
 #include "app/incline/incline_analyze.hpp"
 #include "app/incline/incline_forward.hpp"
+#include "app/incline/incline_render.hpp"
 #include "app/incline/incline_stop.hpp"
 
 namespace tribolab::python {
@@ -89,6 +90,15 @@ void bind_incline(py::module_& m) {
           },
           std::string("track_points: dict of arrays frame, t (s, file time), x, y (m, with noise); truth: dict of "
                       "arrays ") + kInclineStates + " (noise-free, at each point)");
+  }
+  {
+    Command<app::InclineRenderOptions> c(m, "render",
+        "A disc launched across the incline (model B) filmed face-on to a video with its true path "
+        "(`tribolab incline render`).");
+    c.declared(app::incline_render_fields());
+    c.def(&app::incline_render,
+          [](const app::InclineRenderResult& r, py::dict& d) { d["truth_track"] = point_columns(r.truth.tracks.front().points); },
+          "truth_track: dict of arrays frame, t (s, video time), x, y (m, origin at the launch point) of the disc's centre");
   }
   {
     Command<app::InclineAnalyzeOptions> c(m, "analyze",

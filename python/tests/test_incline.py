@@ -132,3 +132,16 @@ def test_normal_friction_test_equals_cli(cli, demo):
     c = cli("incline", "normal-friction-test", *files, "--phi-deg", ",".join(str(a) for a in angles))
     assert_same_as_cli(r, c)
     assert r["points"]["tan_phi"].shape == (len(runs),)
+
+
+def test_render_equals_cli(cli, tmp_path):
+    # `incline render` in Python (issue 25): the same keys and truth as the command line.
+    kw = ["--size", "160x120", "--duration", 0.2, "--supersample", 1]
+    r = tribolab.incline.render(mu=0.45, phi_deg=20.0, v0=1.2, size="160x120", duration=0.2, supersample=1,
+                                out=str(tmp_path / "py.avi"), truth=str(tmp_path / "py.csv"))
+    c = cli("incline", "render", "--mu", 0.45, "--phi-deg", 20, "--v0", 1.2, *kw, "--out", tmp_path / "cli.avi",
+            "--truth", tmp_path / "cli.csv")
+    skip = ("out", "truth_file")
+    assert {k: v for k, v in r.items() if k in c and k not in skip} == {k: v for k, v in c.items() if k not in skip}
+    assert (tmp_path / "py.csv").read_text() == (tmp_path / "cli.csv").read_text()
+    assert r["truth_track"]["x"].shape == (r["frames"],)

@@ -5,8 +5,9 @@
 #include "studio/workbench.hpp"
 
 #include "numerics/error.hpp"
-#include "incline/numeric.hpp"
+#include "incline/params.hpp"
 #include "video/render.hpp"
+#include "video/render_incline.hpp"
 
 #include <gtest/gtest.h>
 
@@ -394,28 +395,31 @@ class WorkbenchFilmTest : public ::testing::Test {
 };
 
 TEST_F(WorkbenchFilmTest, AnInclineRunIsAnalysedFromAClick) {
-  incline::Parameters p;
+  // The film of `incline render` (video/render_incline.hpp) laid out by hand: the launch point at
+  // (30, 30) px, 1 px = kMetresPerPx, a red disc of 9 px radius, launched at frame 0, 1 s long
+  // (the slide and 10 frames at rest), as this test drew it before the scene moved into the
+  // library. Measured: z(mu) = +2.5, z(v0) = +1.0; with the render's own dark red (40, 60, 170)
+  // z(mu) = +3.6, z(v0) = +2.3: on this small film the ellipse track's centre is biased by a few
+  // sigma of mu (on 640x480 films `incline render`'s is within 1, InclineRender.* and
+  // browser.studio.incline). Not investigated further.
+  video::InclineFilmOptions o;
+  incline::Parameters& p = o.launch;
   p.mu = 0.45;
   p.phi = 20 * std::numbers::pi / 180;
   p.v0 = 1.2;
   p.g = 9.8;
-  constexpr int kFrames = 60;  // 1 s: the slide and 10 frames at rest
-  std::vector<double> times;
-  for (int i = 0; i < kFrames; ++i) times.push_back(i / kFps);
-  const incline::NumericResult run = incline::simulate(p, times);
-  ASSERT_EQ(run.samples.size(), times.size());
-  ASSERT_TRUE(run.t_stop.has_value());
-  const double x0_px = 30, y0_px = 30;  // the launch point in the image (x right, y down)
-  const auto scene = [&](double t) {
-    const auto& s = run.samples.at(static_cast<std::size_t>(std::lround(t * kFps)));
-    video::ShapePose disc;
-    disc.cx_px = x0_px + s.x / kMetresPerPx;
-    disc.cy_px = y0_px - s.y / kMetresPerPx;  // y up the slope in the world, down the image
-    disc.a_px = disc.b_px = 9;
-    disc.colour = cv::Scalar(40, 40, 200);
-    return std::vector<video::ShapePose>{disc};
-  };
-  video::write_video((root / "incline.avi").string(), scene, kFrames, film_options());
+  o.render = film_options();
+  o.scale_m_per_px = kMetresPerPx;
+  o.disc_radius = 9 * kMetresPerPx;
+  o.disc_colour = cv::Scalar(40, 40, 200);
+  o.launch_px = cv::Point2d(30, 30);
+  o.duration = 1;
+  const video::InclineFilm film = video::plan_incline_film(o);
+  ASSERT_EQ(film.frames, 60);
+  ASSERT_TRUE(film.t_stop.has_value());
+  ASSERT_TRUE(film.disc_in_view);
+  const double x0_px = 30, y0_px = 30;
+  video::write_video((root / "incline.avi").string(), film.scene, film.frames, film.render);
   Workbench wb(root);
   wb.open(root / "incline.avi");
   wb.calibrate(calibration());

@@ -164,6 +164,11 @@ struct Placed {
 
 }  // namespace
 
+cv::Scalar contrasting_colour(const cv::Scalar& bg) {
+  const double luma = 0.114 * bg[0] + 0.587 * bg[1] + 0.299 * bg[2];
+  return luma > 110 ? cv::Scalar(40, 60, 170) : cv::Scalar(120, 210, 250);
+}
+
 std::string RenderOptions::validate() const {
   if (width < kMinSide || width > kMaxSide || height < kMinSide || height > kMaxSide) {
     return "size: width and height must lie in [" + std::to_string(kMinSide) + ", " + std::to_string(kMaxSide) +

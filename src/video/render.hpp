@@ -54,6 +54,21 @@ struct RenderOptions {
   std::string validate() const;
 };
 
+/// A camera looking square at a plane: world (m, y up) <-> image (px, x right, y down), the
+/// mapping `track video --scale --origin` inverts. Each film says where its world origin is.
+struct FilmView {
+  double scale_m_per_px = 0.002;  ///< m per px
+  double origin_x_px = 0;         ///< image x of the world origin, px
+  double origin_y_px = 0;         ///< image y of the world origin, px
+  cv::Point2d to_px(double x, double y) const {
+    return {origin_x_px + x / scale_m_per_px, origin_y_px - y / scale_m_per_px};
+  }
+};
+
+/// A body colour that stands out from `background` (BGR): dark red on a light background, pale
+/// yellow on a dark one (luma 0.299 R + 0.587 G + 0.114 B above or below 110).
+cv::Scalar contrasting_colour(const cv::Scalar& background);
+
 /// The image of `scene` for the frame at time t. The exposure is centred on t
 /// ([t - shutter/(2 fps), t + shutter/(2 fps)]), so a blurred object's mean position is its
 /// position at t: the frame's time stamp is the middle of its exposure.

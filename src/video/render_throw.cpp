@@ -14,8 +14,6 @@ namespace {
 // "field: message" -> InputError naming the field (numerics/error.hpp).
 [[noreturn]] void throw_invalid(const std::string& e) { throw input_error_of(e); }
 
-double luma(const cv::Scalar& bgr) { return 0.114 * bgr[0] + 0.587 * bgr[1] + 0.299 * bgr[2]; }
-
 }  // namespace
 
 std::string ThrowFilmOptions::validate() const {
@@ -71,7 +69,7 @@ ThrowFilm plan_throw_film(const ThrowFilmOptions& o) {
   if (o.floor_band) r.floor_y_px = v.origin_y_px;
 
   // The ball contrasts with the background: dark red on a light background, pale yellow on a dark one.
-  film.ball_colour = luma(r.background_colour) > 110 ? cv::Scalar(40, 60, 170) : cv::Scalar(120, 210, 250);
+  film.ball_colour = contrasting_colour(r.background_colour);
   const ThrowView view = v;
   const cv::Scalar colour = film.ball_colour;
   const double t0 = film.t0, s_px = 1 / v.scale_m_per_px;

@@ -27,14 +27,7 @@ struct ThrowFilmOptions {
 };
 
 /// World (m, y up, origin: the centre's release x on the floor) <-> image (px, y down).
-struct ThrowView {
-  double scale_m_per_px = 0.002;  ///< m per px
-  double origin_x_px = 0;         ///< image x of the world origin, px
-  double origin_y_px = 0;         ///< image y of the world origin (the floor line), px
-  cv::Point2d to_px(double x, double y) const {
-    return {origin_x_px + x / scale_m_per_px, origin_y_px - y / scale_m_per_px};
-  }
-};
+using ThrowView = FilmView;
 
 struct ThrowFilm {
   analysis::ThrowMotion motion;  ///< real time: release at t = 0

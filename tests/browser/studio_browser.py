@@ -1,7 +1,8 @@
-"""What the studio's browser tests share: a throw rendered by `bounce render` with its truth in
-image pixels, and `tribolab studio` served on a folder with headless Chromium on its page
-(offline: no host but 127.0.0.1 resolves). The tests (studio_e2e.py, studio_upload_e2e.py)
-import it from their own folder."""
+"""What the studio's browser tests share: a throw rendered by `bounce render` and a launch across
+the incline rendered by `incline render`, each with its truth in image pixels, and `tribolab
+studio` served on a folder with headless Chromium on its page (offline: no host but 127.0.0.1
+resolves). The tests (studio_e2e.py, studio_upload_e2e.py, studio_incline_e2e.py) import it
+from their own folder."""
 import contextlib
 import csv
 import json
@@ -26,6 +27,17 @@ def render_throw(tribolab, video, truth_csv, size):
         for row in csv.DictReader(f):
             if row["track"] == "ball":
                 truth[int(row["frame"])] = (ox + float(row["x"]) / scale, oy - float(row["y"]) / scale)
+    return render, truth
+
+
+def render_incline(tribolab, video, truth_csv, args):
+    """Renders a launch across the incline (`incline render ARGS`) into `video`; returns the
+    render's JSON and the disc's truth {frame: (x, y) in pixels} (the CSV's x_px, y_px)."""
+    render = json.loads(subprocess.run(
+        [tribolab, "incline", "render", *args, "--out", video, "--truth", truth_csv, "--json"],
+        check=True, capture_output=True, text=True).stdout)
+    with open(truth_csv) as f:
+        truth = {int(r["frame"]): (float(r["x_px"]), float(r["y_px"])) for r in csv.DictReader(f)}
     return render, truth
 
 

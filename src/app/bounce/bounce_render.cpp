@@ -1,6 +1,7 @@
 // `bounce render` (src/app/bounce/bounce_synth.hpp): film a simulated throw to a video with its truth
 #include "app/common/result_keys.hpp"
 
+#include "app/common/film_options.hpp"
 #include "app/common/output_paths.hpp"
 // (docs/cli.md#bounce-render, docs/theory.md#rendering).
 #include "app/bounce/bounce_synth.hpp"
@@ -25,30 +26,6 @@ namespace tribolab::app {
 namespace {
 
 using nlohmann::json;
-
-std::pair<int, int> parse_size(const std::string& text) {
-  const auto x = text.find_first_of("xX");
-  int w = 0, h = 0;
-  std::size_t used_w = 0, used_h = 0;
-  try {
-    if (x == std::string::npos) throw std::invalid_argument("no x");
-    w = std::stoi(text.substr(0, x), &used_w);
-    h = std::stoi(text.substr(x + 1), &used_h);
-  } catch (const std::exception&) {
-    throw InputError(field("size"), "expected WIDTHxHEIGHT in pixels (e.g. 640x480), got '" + text + "'");
-  }
-  if (used_w != x || used_h != text.size() - x - 1) {
-    throw InputError(field("size"), "expected WIDTHxHEIGHT in pixels (e.g. 640x480), got '" + text + "'");
-  }
-  return {w, h};
-}
-
-video::RenderOptions::Background parse_background(const std::string& name) {
-  if (name == "plain") return video::RenderOptions::Background::plain;
-  if (name == "gradient") return video::RenderOptions::Background::gradient;
-  if (name == "texture") return video::RenderOptions::Background::texture;
-  throw InputError(field("background"), "unknown background '" + name + "' (plain, gradient, texture)");
-}
 
 // The project Tracker opens with the rendered video: the clip is every frame, frame k at
 // k / fps, and the image coordinate system is the film's (origin on the floor line below the
@@ -90,12 +67,10 @@ video::ThrowFilmOptions film_options(const BounceRenderOptions& opts) {
   check_finite(r.fps, field("fps"));
   const double scale = opts.scale.value_or(0.0);  // 0: the core fits the throw in view
   check_finite(scale, field("scale"));
-  const auto [w, h] = parse_size(opts.size);
+  const auto [w, h] = parse_frame_size(opts.size);
   r.width = w;
   r.height = h;
-  r.background = parse_background(opts.background);
-  r.background_colour = r.background == video::RenderOptions::Background::texture ? cv::Scalar(180, 185, 190)
-                                                                                  : cv::Scalar(200, 200, 200);
+  apply_background(opts.background, r);
   r.seed = m.seed;
   o.scale_m_per_px = scale;
   o.floor_band = !opts.no_floor;

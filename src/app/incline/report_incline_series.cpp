@@ -27,7 +27,7 @@ using report::format_value;
 
 std::string opt_value(const std::optional<double>& v, int digits = 5) { return v ? format_value(*v, digits) : "—"; }
 
-Figure figure(std::string title, std::string x, std::string y, int height = 360) {
+Figure series_figure(std::string title, std::string x, std::string y, int height = 360) {
   return make_figure(std::move(title), std::move(x), std::move(y), height);
 }
 
@@ -57,7 +57,7 @@ void add_mean_rows(Table& t, const std::string& what, const analysis::WeightedMe
 Figure per_run_figure(const std::string& title, const std::string& y_title, const std::vector<double>& y,
                       const std::vector<double>& sy, const std::vector<bool>& outlier, const analysis::WeightedMean& m,
                       double band_lo, double band_hi, const std::string& band_name) {
-  Figure f = figure(title, "run", y_title, 380);
+  Figure f = series_figure(title, "run", y_title, 380);
   Series pts = named("runs"), out = named("outliers (|pull| > 3)");
   out.color = "#d62728";
   for (std::size_t i = 0; i < y.size(); ++i) {
@@ -121,7 +121,7 @@ int add_scaling(report::Section& s, const std::string& title, const analysis::In
   int n = 0;
   for (const auto& sc : sum.scaling) {
     const auto [xt, yt] = relation_axes(sc.relation);
-    Figure f = figure(title + ": " + relation_title(sc.relation), xt, yt, 360);
+    Figure f = series_figure(title + ": " + relation_title(sc.relation), xt, yt, 360);
     Series pts = named("runs");
     pts.x = sc.x;
     pts.y = sc.y;
