@@ -6,11 +6,14 @@
 // Each prints its table (docs/theory.md, "Coverage study" under the a_N diagnostic, keeps the figures
 // with the date and machine) and checks it against binomial / chi-square bounds, so a run of
 // the study also says whether the calibration still holds. The quick guards that do run in
-// `make test` are NormalAccelDiagnostic.NoisyModelBIsCalledPresentAtAboutTheTestSize and
+// `make test` are NormalAccelDiagnostic.NoisyModelBIsCalledPresentAtAboutTheTestSize,
+// NormalAccelDiagnostic.SixtyFpsModelBIsCalledPresentAtTheTestSizeNotLess,
+// InclineFit.NormalAccelSigmaWithTheFrameRotationFittedCoversTheTruth and
 // InclineFit.TurnedCameraFrameIsNotMistakenForNormalFriction.
 #include "analysis/incline_fit.hpp"
 #include "analysis/incline_synthetic.hpp"
 #include "incline/params.hpp"
+#include "numerics/coverage_test_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -77,18 +80,61 @@ TEST(InclineCoverageStudy, DISABLED_NormalAccelDiagnosticSizeOnModelB) {
   print_rate("all", all);
   for (const auto& [k, c] : by) print_rate(k, c);
   ASSERT_GE(all.runs, 1000);
-  // Never more false "present" than stated: the rate may not exceed 5 % by 2.58 binomial sd
-  // (~1.7 points at N ~ 1040). Measured 3 Dec 2026: 26 / 1040 = 2.5 % (1.7-3.6 %), i.e.
-  // conservative (docs/theory.md, "Coverage study"); a test that also failed below 5 % would
-  // demand an empirical shrink of the sigma, which we do not apply.
-  const double p = all.hits / double(all.runs), sd = std::sqrt(0.05 * 0.95 / all.runs);
-  EXPECT_LE(p, 0.05 + 2.58 * sd);
+  // At the stated size, neither more nor fewer false "present" than a 5 % test: the count
+  // within the exact binomial bounds at alpha = 1e-3 each side (32 to 75 of 1040). Measured
+  // 6 Dec 2026: 61 / 1040 = 5.9 % (4.5-7.5 %) with the truncation bias measured on the model's
+  // path and subtracted; 26 / 1040 = 2.5 % (1.6-3.6 %) with the former doubled estimate from
+  // cubic and quartic blocks, which fails the lower bound (docs/theory.md, "Coverage study").
+  EXPECT_GE(all.hits, binomial_floor(all.runs, 0.05));
+  EXPECT_LE(all.hits, binomial_ceiling(all.runs, 0.05));
+}
+
+TEST(InclineCoverageStudy, DISABLED_NormalAccelDiagnosticPowerWithModelA) {
+  // Power of the eq b diagnostic against f_N/m = 0.5 m/s^2 (intercept -0.5) in the default
+  // analysis (model A fitted: its launch, stop and rotation place the blocks): mu 0.634, phi 12,
+  // 20.96 and 28 deg, 60, 240 and 1000 fps, 0.2 and 0.5 mm, 6 seeds (108 runs). Measured 6 Dec
+  // 2026: present in 31 (28.7 %; 60 fps 14/36, 240 fps 14/36, 1000 fps 3/36), the truth outside
+  // the 95 % interval in 5 (4.6 %); with the former doubled truncation estimate 21 (19.4 %) and 3.
+  std::map<std::string, RateCount> by;
+  RateCount all, miss;
+  for (double phi : {12.0, 20.96, 28.0})
+    for (double fps : {60.0, 240.0, 1000.0})
+      for (double noise : {2e-4, 5e-4})
+        for (std::uint64_t seed = 0; seed < 6; ++seed) {
+          InclineSynthOptions s;
+          s.params.mu = 0.634;
+          s.params.phi = incline::deg_to_rad(phi);
+          s.params.v0 = 2.62;
+          s.params.normal_accel = 0.5;
+          s.fps = fps;
+          s.noise = noise;
+          s.seed = 700000 + seed + (noise > 3e-4 ? 1000 : 0);
+          InclineFitOptions o;
+          o.phi = s.params.phi;
+          const InclineAnalysis a = analyze_incline_run(synthesize_incline_run(s).track, o);
+          if (!a.a_n) continue;
+          const auto& d = *a.a_n;
+          for (RateCount* c : {&all, &by["fps " + std::to_string(int(fps))]}) {
+            ++c->runs;
+            c->hits += d.intercept_excludes_zero;
+          }
+          ++miss.runs;
+          miss.hits += !(d.intercept_ci_low <= -0.5 && -0.5 <= d.intercept_ci_high);
+        }
+  std::printf("a_N diagnostic against f_N/m = 0.5 m/s^2, model A fitted:\n");
+  print_rate("present (power)", all);
+  for (const auto& [k, c] : by) print_rate(k, c);
+  print_rate("truth outside the interval", miss);
+  EXPECT_LE(miss.hits, binomial_ceiling(miss.runs, 0.05));
 }
 
 TEST(InclineCoverageStudy, DISABLED_NormalAccelSigmaWithTheFrameRotationFitted) {
   // Model A with the camera frame's rotation fitted (the seed's figure 五 launch, 1 mm noise,
   // 80/120/240 fps; psi 0.5 deg): the pulls (f_N/m - truth) / sigma should have sd 1, and the
-  // 95 % intervals cover 95 %. Earlier 16 runs gave chi2 8.6 on 15 dof (sd ~0.76).
+  // 95 % intervals cover 95 %. Earlier 16 runs gave chi2 8.6 on 15 dof (sd ~0.76). At the
+  // demo's settings the same check runs in every `make test` with 150 runs
+  // (InclineFit.NormalAccelSigmaWithTheFrameRotationFittedCoversTheTruth; 1000 on demand with
+  // TRIBOLAB_COVERAGE_RUNS=1000).
   for (double truth : {0.0, 0.3}) {
     double sum2 = 0;
     RateCount cover;

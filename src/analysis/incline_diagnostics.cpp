@@ -19,15 +19,13 @@ numerics::PolyFit local_fit(const std::vector<double>& tau, const std::vector<do
 
 namespace {
 
-/// The eq b line from local fits of `degree` on non-overlapping blocks of `w` points of `sel`.
-std::optional<NormalAccelDiagnostic> a_n_line_of_degree(const std::vector<const track::TrackPoint*>& sel,
-                                                        int w, int degree) {
+/// The eq b line from local quadratics on non-overlapping blocks of `w` points of `sel`.
+std::optional<NormalAccelDiagnostic> a_n_line(const std::vector<const track::TrackPoint*>& sel, int w) {
   const int n = static_cast<int>(sel.size());
   const int blocks = n / w;
-  if (blocks < 3 || w < degree + 2) return std::nullopt;
+  if (blocks < 3 || w < 4) return std::nullopt;
   NormalAccelDiagnostic d;
   d.block = w;
-  d.degree = degree;
   for (int b = 0; b < blocks; ++b) {
     std::vector<double> tau(w), x(w), y(w);
     double tm = 0;
@@ -38,7 +36,7 @@ std::optional<NormalAccelDiagnostic> a_n_line_of_degree(const std::vector<const 
       x[i] = sel[b * w + i]->x;
       y[i] = sel[b * w + i]->y;
     }
-    const auto fx = local_fit(tau, x, degree), fy = local_fit(tau, y, degree);
+    const auto fx = local_fit(tau, x, 2), fy = local_fit(tau, y, 2);
     const double vx = fx.coef[1], vy = fy.coef[1], ax = 2 * fx.coef[2], ay = 2 * fy.coef[2];
     const double v = std::hypot(vx, vy);
     if (!(v > 0)) continue;
@@ -58,64 +56,51 @@ std::optional<NormalAccelDiagnostic> a_n_line_of_degree(const std::vector<const 
   return d;
 }
 
-/// Squared truncation bias of a coefficient, without the noise: for nested least-squares
-/// fits E (c_d - c_h)^2 = bias^2 + |var(c_h) - var(c_d)| (the same estimator as theta_c's).
-double bias2_of(double c, double sigma, double c_hi, double sigma_hi) {
-  const double diff = c - c_hi;
-  return diff * diff - std::abs(sigma_hi * sigma_hi - sigma * sigma);
+std::vector<const track::TrackPoint*> points_between(const track::Track& track, double t0, double t_end) {
+  std::vector<const track::TrackPoint*> sel;
+  for (const auto& p : track.points)
+    if (p.t > t0 && p.t <= t_end) sel.push_back(&p);
+  return sel;
 }
 
 }  // namespace
 
 std::optional<NormalAccelDiagnostic> normal_accel_diagnostic(const track::Track& track, double t0,
                                                              double t_end, double phi, double g,
-                                                             int block, double level) {
-  std::vector<const track::TrackPoint*> sel;
-  for (const auto& p : track.points)
-    if (p.t > t0 && p.t <= t_end) sel.push_back(&p);
+                                                             int block, double level,
+                                                             const NormalAccelReference* reference) {
+  const std::vector<const track::TrackPoint*> sel = points_between(track, t0, t_end);
   const int n = static_cast<int>(sel.size());
-  // Automatic block: about 8 blocks, of at least 5 points and at most 25 points or 25 ms,
+  // Automatic block: about 8 blocks, of at least 6 points and at most 25 points or 25 ms,
   // whichever is more (docs/theory.md#incline-analysis). The time bound keeps the blocks of
   // a fast camera long enough to see the acceleration: 25 frames at 50 kHz span 0.5 ms,
   // over which 10 um of noise gives a_N errors of ~1e3 m/s^2 (issue 26). Up to 1000 fps the
   // bound is the 25 points.
   const double span = n > 1 ? sel.back()->t - sel.front()->t : 0;
   const int per_25ms = span > 0 ? static_cast<int>(0.025 * (n - 1) / span) : 0;
-  const int w = block > 0 ? block : std::clamp(n / 8, 5, std::max(25, per_25ms));
-  std::optional<NormalAccelDiagnostic> best;
-  // docs/theory.md#incline-analysis, "a_N truncation": local quadratics, with the truncation
-  // error of the line's slope and intercept, estimated from the lines of blocks one and two
-  // degrees higher on the same blocks, added in quadrature (doubled, as for theta_c). A block
-  // needs degree + 4 points for that estimate; with a fixed `block` too small for it the line
-  // keeps the statistical sigma only. Quartic blocks were also tried, the smaller total sigma
-  // winning: that choice (the smaller of two noisy sigmas) raised the false-present rate over
-  // the noisy grid of the tests from 7.1 % to 10.3 %, so only quadratics are offered.
-  for (int deg : {2}) {
-    const int wd = block > 0 ? w : std::max(w, deg + 4);
-    std::optional<NormalAccelDiagnostic> r = a_n_line_of_degree(sel, wd, deg);
-    if (!r) continue;
-    double b2_i = 0, b2_s = 0;
-    bool estimated = false;
-    for (int dh : {deg + 1, deg + 2}) {
-      const std::optional<NormalAccelDiagnostic> hi = a_n_line_of_degree(sel, wd, dh);
-      if (!hi || hi->t.size() != r->t.size()) continue;
-      estimated = true;
-      b2_i = std::max(b2_i, bias2_of(r->intercept, r->sigma_intercept, hi->intercept, hi->sigma_intercept));
-      b2_s = std::max(b2_s, bias2_of(r->slope, r->sigma_slope, hi->slope, hi->sigma_slope));
-    }
-    if (!estimated && (best || deg != 2)) continue;
-    r->sigma_truncation_intercept = 2 * std::sqrt(b2_i);
-    r->sigma_truncation_slope = 2 * std::sqrt(b2_s);
-    r->sigma_intercept = std::hypot(r->sigma_intercept, r->sigma_truncation_intercept);
-    r->sigma_slope = std::hypot(r->sigma_slope, r->sigma_truncation_slope);
-    if (!best || r->sigma_intercept < best->sigma_intercept) best = r;
-  }
-  if (!best) return std::nullopt;
-  NormalAccelDiagnostic& d = *best;
+  const int w = block > 0 ? block : std::clamp(n / 8, 6, std::max(25, per_25ms));
+  std::optional<NormalAccelDiagnostic> result = a_n_line(sel, w);
+  if (!result) return std::nullopt;
+  NormalAccelDiagnostic& d = *result;
   d.slope_expected = g * std::sin(phi);
-  // Student t on the line's dof, applied to the total sigma.
-  const double t_q = d.line.sigma[0] > 0 ? d.line.ci_half_width(0, level) / d.line.sigma[0] : NAN;
-  const double h = std::isfinite(t_q) ? t_q * d.sigma_intercept : d.line.ci_half_width(0, level);
+  // docs/theory.md#incline-analysis, "a_N truncation": the local quadratics are biased by the
+  // path's higher derivatives, a smooth error the line's scatter does not see. The same blocks
+  // on the fitted model's noise-free path at the data's times measure that bias (the model's
+  // own line is exactly intercept -f_N/m, slope g sin(phi)), and it is subtracted.
+  if (reference) {
+    const std::vector<const track::TrackPoint*> ref_sel = points_between(reference->path, t0, t_end);
+    const std::optional<NormalAccelDiagnostic> r =
+        ref_sel.size() == sel.size() ? a_n_line(ref_sel, w) : std::nullopt;
+    if (r && r->t.size() == d.t.size()) {
+      d.truncation_intercept = r->intercept - reference->intercept;
+      d.truncation_slope = r->slope - d.slope_expected;
+      d.intercept -= d.truncation_intercept;
+      d.slope -= d.truncation_slope;
+      d.line.coef[0] = d.intercept;
+      d.line.coef[1] = d.slope;
+    }
+  }
+  const double h = d.line.ci_half_width(0, level);  // Student t on the line's n - 2 dof
   d.intercept_ci_low = d.intercept - h;
   d.intercept_ci_high = d.intercept + h;
   d.intercept_excludes_zero = d.intercept_ci_low > 0 || d.intercept_ci_high < 0;

@@ -31,24 +31,34 @@ struct NormalAccelDiagnostic {
   std::vector<double> t, sin_theta, a_n;  ///< one point per block: s, 1, m/s^2
   numerics::PolyFit line;                 ///< a_n = c0 + c1 sin_theta
   double slope = 0;            ///< m/s^2 (expected g sin(phi))
-  double sigma_slope = 0;      ///< m/s^2, statistical and truncation in quadrature
+  double sigma_slope = 0;      ///< m/s^2, from the line's scatter
   double slope_expected = 0;   ///< g sin(phi), m/s^2
   double intercept = 0;        ///< m/s^2 (expected 0 for model B, -f_N/m for model A)
-  double sigma_intercept = 0;  ///< m/s^2, statistical and truncation in quadrature
-  /// the local fits' truncation error (from fits one and two degrees higher), part of the sigmas, m/s^2
-  double sigma_truncation_intercept = 0, sigma_truncation_slope = 0;
+  double sigma_intercept = 0;  ///< m/s^2, from the line's scatter (Student t, n - 2 dof)
+  /// truncation bias of the local quadratics, measured on the model's noise-free path and
+  /// already subtracted from intercept and slope (0 without a reference), m/s^2 (~1e-3..1e-2)
+  double truncation_intercept = 0, truncation_slope = 0;
   double intercept_ci_low = 0, intercept_ci_high = 0;  ///< interval at `level`, m/s^2
   bool intercept_excludes_zero = false;
   int block = 0;               ///< points per block
   int degree = 2;              ///< degree of the local fits
 };
 
+/// A fitted model's noise-free path for the eq b diagnostic: the same blocks on it measure the
+/// local quadratics' truncation bias (docs/theory.md#incline-analysis, "a_N truncation").
+struct NormalAccelReference {
+  track::Track path;       ///< the model's points at the data's times, same frame, m
+  double intercept = 0;    ///< the model's own eq b intercept -f_N/m (0 for model B), m/s^2
+};
+
 /// Eq b over the points of `track` with t0 < t <= t_end (the moving part; choose t_end short
 /// of the stop, where theta is undefined). `block` = points per local fit (0 = automatic).
+/// With a `reference` the truncation bias is subtracted (without one it is not: raw use only).
 /// Returns empty when fewer than 3 blocks fit.
 std::optional<NormalAccelDiagnostic> normal_accel_diagnostic(const track::Track& track, double t0,
                                                              double t_end, double phi, double g,
-                                                             int block, double level);
+                                                             int block, double level,
+                                                             const NormalAccelReference* reference = nullptr);
 
 /// Eq c diagnostic of one run.
 struct ThetaC {

@@ -576,7 +576,30 @@ void add_diagnostics(InclineAnalysis& a, const track::Track& track, const Inclin
   }
   const double t_move_end = t_stop_d ? t0_d + 0.9 * (*t_stop_d - t0_d) : t.back();
   const track::Track incline_frame = derotate_track(track, psi_d, x0_d, y0_d);
-  a.a_n = normal_accel_diagnostic(incline_frame, t0_d, t_move_end, o.phi, o.g, o.diagnostic_block, o.level);
+  // The same model's noise-free path in the incline frame, at the data's times: the eq b line
+  // through it measures the local fits' truncation bias (docs/theory.md#incline-analysis).
+  std::optional<NormalAccelReference> ref(std::in_place);
+  ref->path = incline_frame;
+  try {
+    std::vector<double> times;
+    times.reserve(track.points.size());
+    for (const auto& q : track.points) times.push_back(q.t);
+    const std::vector<incline::State> states =
+        a.model_a ? model_a_states(launch(a.model_a->mu.value, o.phi, a.model_a->v0.value, o.g,
+                                          a.model_a->normal_accel.value),
+                                   t0_d, x0_d, y0_d, times, o.ode_tolerance, 0)
+                  : model_b_states(pb, t0_d, x0_d, y0_d, times, 0);
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      ref->path.points[i].x = states[i].x;
+      ref->path.points[i].y = states[i].y;
+    }
+    ref->intercept = a.model_a ? -a.model_a->normal_accel.value : 0.0;
+  } catch (const Error& e) {
+    a.notes.push_back(std::string("a_N truncation bias not subtracted: ") + e.what());
+    ref.reset();
+  }
+  a.a_n = normal_accel_diagnostic(incline_frame, t0_d, t_move_end, o.phi, o.g, o.diagnostic_block, o.level,
+                                  ref ? &*ref : nullptr);
   if (!a.a_n) a.notes.push_back("a_N diagnostic skipped: fewer than 3 blocks of moving points");
 
   // Eq c: the v_y extremum exists when the disc stops (k < 1); locate it from model B.
