@@ -444,7 +444,8 @@ BounceFitResult fit_rows(const std::vector<BounceRow>& rows, const BounceFitOpti
   // The robust loss takes residuals beyond its scale as outliers: it needs most of them within
   // it. When most are beyond, the law does not describe the table (outgoing speeds in another
   // unit or time scale, another ball), or the noise is larger than the scale says; either way
-  // the numbers above are not a measurement. (Honest tables with 10 % outliers: ~5 % beyond.)
+  // the numbers above are not a measurement. (Measured: `bounce synth-table --rows 20
+  // --outlier-fraction 0.1`, seeds 1-6, 4 to 10 of the 60 residuals beyond.)
   int beyond = 0;
   for (std::size_t i = 0; i < out.rows.size(); ++i) {
     const double r[3] = {out.rows[i].r_vx, out.rows[i].r_vy, out.rows[i].r_b_omega};
