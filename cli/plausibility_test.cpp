@@ -87,7 +87,10 @@ TEST(PlausibilityCli, BounceFitNamesAParameterStoppedAtItsBound) {
   }
   out.close();
   const json honest = run_json("bounce fit '" + table + "'");
-  EXPECT_TRUE(honest["warnings"].empty()) << honest["warnings"].dump();
+  // (Its rows that gain or lose a touch within the fit's interval may be named as left out:
+  // that is not a plausibility warning.)
+  EXPECT_FALSE(any_contains(honest["warnings"], "sits at its")) << honest["warnings"].dump();
+  EXPECT_FALSE(any_contains(honest["warnings"], "does not follow")) << honest["warnings"].dump();
   const json mismatched = run_json("bounce fit '" + table + "' --restitution");
   EXPECT_TRUE(any_contains(mismatched["warnings"], "residuals exceed the loss scale")) << mismatched["warnings"].dump();
   const json j = run_json("bounce fit '" + fast + "' --report '" + report + "'");

@@ -51,6 +51,7 @@ struct BounceFitOptions {
 struct BounceFitRow {
   double vx_pred = 0, vy_pred = 0, omega_pred = 0;  ///< m/s, m/s, rad/s
   double r_vx = 0, r_vy = 0, r_b_omega = 0;         ///< m/s (omega residual times b)
+  std::size_t contacts = 0;                         ///< contacts of the predicted impact (0: none predicted)
 };
 
 struct BounceFitResult {
