@@ -6,11 +6,12 @@ from their own folder."""
 import contextlib
 import csv
 import json
-import os
 import subprocess
 
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import Select, WebDriverWait
 
 
 def render_throw(tribolab, video, truth_csv, size):
@@ -39,6 +40,28 @@ def render_incline(tribolab, video, truth_csv, args):
     with open(truth_csv) as f:
         truth = {int(r["frame"]): (float(r["x_px"]), float(r["y_px"])) for r in csv.DictReader(f)}
     return render, truth
+
+
+def open_clip(driver, url, name, steps, width, zoom, fail):
+    """Loads the page at `url`, opens the folder's file `name` from the list, sets the zoom and
+    waits until its `steps` frames are offered and the canvas is `width` image pixels wide at
+    `zoom`; returns (wait, status, error, canvas): a 20 s WebDriverWait and readers of the
+    page's status and error lines."""
+    wait = WebDriverWait(driver, 20)
+    status = lambda: driver.find_element(By.ID, "status").text
+    error = lambda: driver.find_element(By.ID, "error").text
+    driver.get(url)
+    wait.until(lambda d: status() in ("ready", "failed"))
+    if status() != "ready":
+        fail("the page did not start: " + error())
+    driver.find_element(By.XPATH, "//ul[@id='files']/li[text()='%s']" % name).click()
+    wait.until(lambda d: d.find_element(By.ID, "slider").get_attribute("max") == str(steps - 1) or error())
+    if error():
+        fail("opening: " + error())
+    canvas = driver.find_element(By.ID, "canvas")
+    Select(driver.find_element(By.ID, "zoom")).select_by_visible_text(str(zoom))
+    wait.until(lambda d: canvas.get_attribute("width") == str(width * zoom))
+    return wait, status, error, canvas
 
 
 @contextlib.contextmanager

@@ -22,9 +22,9 @@ import sys
 
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
-from selenium.webdriver.support.ui import Select, WebDriverWait
+from selenium.webdriver.support.ui import Select
 
-from studio_browser import render_throw, studio_page
+from studio_browser import open_clip, render_throw, studio_page
 
 ZOOM = 1  # chosen in the page: one image pixel is one CSS pixel (the 640x480 film fits the window)
 
@@ -78,20 +78,7 @@ def main(tribolab, out):
 
 
 def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
-    wait = WebDriverWait(driver, 20)
-    status = lambda: driver.find_element(By.ID, "status").text
-    error = lambda: driver.find_element(By.ID, "error").text
-    driver.get(url)
-    wait.until(lambda d: status() in ("ready", "failed"))
-    if status() != "ready":
-        fail("the page did not start: " + error())
-    driver.find_element(By.XPATH, "//ul[@id='files']/li[text()='throw.avi']").click()
-    wait.until(lambda d: d.find_element(By.ID, "slider").get_attribute("max") == str(len(truth) - 1) or error())
-    if error():
-        fail("opening: " + error())
-    canvas = driver.find_element(By.ID, "canvas")
-    Select(driver.find_element(By.ID, "zoom")).select_by_visible_text(str(ZOOM))
-    wait.until(lambda d: canvas.get_attribute("width") == str(640 * ZOOM))
+    wait, status, error, canvas = open_clip(driver, url, "throw.avi", len(truth), 640, ZOOM, fail)
     driver.save_screenshot(os.path.join(out, "studio_1_opened.png"))
 
     def click_image(x, y):

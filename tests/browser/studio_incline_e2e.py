@@ -17,9 +17,9 @@ import time
 
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
-from selenium.webdriver.support.ui import Select, WebDriverWait
+from selenium.webdriver.support.ui import Select
 
-from studio_browser import render_incline, studio_page
+from studio_browser import open_clip, render_incline, studio_page
 
 T0 = time.monotonic()
 ZOOM = 1  # one image pixel is one CSS pixel (the 640x480 film fits the window)
@@ -67,22 +67,9 @@ def main(tribolab, out):
 
 
 def run_page(driver, url, out, render, truth):
-    wait = WebDriverWait(driver, 20)
-    status = lambda: driver.find_element(By.ID, "status").text
-    error = lambda: driver.find_element(By.ID, "error").text
+    wait, status, error, canvas = open_clip(driver, url, "incline.avi", len(truth), 640, ZOOM, fail)
     ended = lambda what: status() in (what + ": done", what + ": failed")
     scale = render["scale_m_per_px"]
-    driver.get(url)
-    wait.until(lambda d: status() in ("ready", "failed"))
-    if status() != "ready":
-        fail("the page did not start: " + error())
-    driver.find_element(By.XPATH, "//ul[@id='files']/li[text()='incline.avi']").click()
-    wait.until(lambda d: d.find_element(By.ID, "slider").get_attribute("max") == str(len(truth) - 1) or error())
-    if error():
-        fail("opening: " + error())
-    canvas = driver.find_element(By.ID, "canvas")
-    Select(driver.find_element(By.ID, "zoom")).select_by_visible_text(str(ZOOM))
-    wait.until(lambda d: canvas.get_attribute("width") == str(640 * ZOOM))
     driver.save_screenshot(os.path.join(out, "studio_incline_1_opened.png"))
     print("rendered and opened (%.1f s)" % (time.monotonic() - T0))
 
