@@ -64,6 +64,42 @@ def open_clip(driver, url, name, steps, width, zoom, fail):
     return wait, status, error, canvas
 
 
+def image_clicker(driver, canvas, zoom):
+    """A function clicking image pixel (x, y) of the page's canvas at `zoom`: Selenium offsets
+    from the element's centre, the canvas has a 1 px border, and image pixel x is drawn at CSS
+    (x + 0.5) * zoom inside it (page.html, draw())."""
+    from selenium.webdriver.common.action_chains import ActionChains
+
+    def click(x, y):
+        dx = round((x + 0.5) * zoom + 1 - canvas.size["width"] / 2)
+        dy = round((y + 0.5) * zoom + 1 - canvas.size["height"] / 2)
+        ActionChains(driver).move_to_element_with_offset(canvas, dx, dy).click().perform()
+    return click
+
+
+def calibrate(driver, click_image, stick, length_m, origin, wait, ended, error, fail):
+    """Calibrates by clicking, as a teacher does: the stick's two ends `stick` (x1, y1, x2, y2,
+    image px; at half pixels they are clicked exactly at zoom 1), its length typed, the origin
+    clicked, then "Apply calibration". Returns the origin as the page read it, px."""
+    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=stick]").click()
+    click_image(stick[0], stick[1])
+    click_image(stick[2], stick[3])
+    read = [float(v) for v in driver.find_element(By.ID, "stick-text").text.split(":")[1].split("px")[0].split(",")]
+    if max(abs(a - b) for a, b in zip(read, stick)) > 1e-6:
+        fail("the stick's ends were read at %s, clicked at %s" % (read, list(stick)))
+    length = driver.find_element(By.ID, "stick-length")
+    length.clear()
+    length.send_keys(repr(length_m))
+    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=origin]").click()
+    click_image(*origin)
+    clicked = [float(v) for v in driver.find_element(By.ID, "origin-text").text.split(":")[1].split("px")[0].split(",")]
+    driver.find_element(By.ID, "apply-calibration").click()
+    wait.until(lambda d: ended("calibrating"))
+    if error():
+        fail("calibration: " + error())
+    return clicked
+
+
 @contextlib.contextmanager
 def studio_page(tribolab, folder, fail):
     """`tribolab studio FOLDER` and a headless Chromium; yields (driver, url) and afterwards

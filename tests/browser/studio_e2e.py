@@ -24,7 +24,7 @@ from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
-from studio_browser import open_clip, render_throw, studio_page
+from studio_browser import calibrate, image_clicker, open_clip, render_throw, studio_page
 
 ZOOM = 1  # chosen in the page: one image pixel is one CSS pixel (the 640x480 film fits the window)
 
@@ -81,35 +81,16 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     wait, status, error, canvas = open_clip(driver, url, "throw.avi", len(truth), 640, ZOOM, fail)
     driver.save_screenshot(os.path.join(out, "studio_1_opened.png"))
 
-    def click_image(x, y):
-        # Selenium offsets from the element's centre; the canvas has a 1 px border, and image
-        # pixel x is drawn at CSS (x + 0.5) * ZOOM inside it (page.html, draw()).
-        dx = round((x + 0.5) * ZOOM + 1 - canvas.size["width"] / 2)
-        dy = round((y + 0.5) * ZOOM + 1 - canvas.size["height"] / 2)
-        ActionChains(driver).move_to_element_with_offset(canvas, dx, dy).click().perform()
+    click_image = image_clicker(driver, canvas, ZOOM)
 
     # (while an action runs the status shows its progress, "WHAT: frame N of M"; it ends "WHAT: done" or "WHAT: failed")
     ended = lambda what: status() in (what + ": done", what + ": failed")
 
     def calibrate_and_track():
-        # Calibration: a 400 px stick along the floor (its ends at half pixels: image x is CSS
-        # x - 0.5 at zoom 1, so they are clicked exactly), its length from the render's scale, and the origin.
-        driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=stick]").click()
-        click_image(80.5, 400.5)
-        click_image(480.5, 400.5)
-        stick = [float(v) for v in driver.find_element(By.ID, "stick-text").text.split(":")[1].split("px")[0].split(",")]
-        if max(abs(a - b) for a, b in zip(stick, [80.5, 400.5, 480.5, 400.5])) > 1e-6:
-            fail("the stick's ends were read at %s, clicked at 80.5,400.5,480.5,400.5" % stick)
-        length = driver.find_element(By.ID, "stick-length")
-        length.clear()
-        length.send_keys(repr(400 * scale))
-        driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=origin]").click()
-        click_image(round(origin_px[0]) + 0.5, round(origin_px[1]) + 0.5)  # the render's, to a pixel (only shifts x, y)
-        clicked = [float(v) for v in driver.find_element(By.ID, "origin-text").text.split(":")[1].split("px")[0].split(",")]
-        driver.find_element(By.ID, "apply-calibration").click()
-        wait.until(lambda d: ended("calibrating"))
-        if error():
-            fail("calibration: " + error())
+        # Calibration: a 400 px stick along the floor, its length from the render's scale, and the
+        # origin (the render's, to a pixel: that only shifts x, y).
+        clicked = calibrate(driver, click_image, (80.5, 400.5, 480.5, 400.5), 400 * scale,
+                            (round(origin_px[0]) + 0.5, round(origin_px[1]) + 0.5), wait, ended, error, fail)
         # Track: one click on the ball in frame 0.
         driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
         click_image(*ball_start)

@@ -15,11 +15,10 @@ import shutil
 import sys
 import time
 
-from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
-from studio_browser import open_clip, render_incline, studio_page
+from studio_browser import calibrate, image_clicker, open_clip, render_incline, studio_page
 
 T0 = time.monotonic()
 ZOOM = 1  # one image pixel is one CSS pixel (the 640x480 film fits the window)
@@ -73,33 +72,15 @@ def run_page(driver, url, out, render, truth):
     driver.save_screenshot(os.path.join(out, "studio_incline_1_opened.png"))
     print("rendered and opened (%.1f s)" % (time.monotonic() - T0))
 
-    def click_image(x, y):
-        # Selenium offsets from the element's centre; the canvas has a 1 px border, and image
-        # pixel x is drawn at CSS (x + 0.5) * ZOOM inside it (page.html, draw()).
-        dx = round((x + 0.5) * ZOOM + 1 - canvas.size["width"] / 2)
-        dy = round((y + 0.5) * ZOOM + 1 - canvas.size["height"] / 2)
-        ActionChains(driver).move_to_element_with_offset(canvas, dx, dy).click().perform()
+    click_image = image_clicker(driver, canvas, ZOOM)
 
     # Calibration as a teacher does it with a metre stick on the plate: a 400 px stick along the
     # image x axis (its ends at half pixels, clicked exactly at zoom 1), its length typed from the
     # render's scale, and the origin on the launch point (to a pixel: that only shifts x0, y0,
     # which the analysis fits).
-    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=stick]").click()
-    click_image(120.5, 460.5)
-    click_image(520.5, 460.5)
-    stick = [float(v) for v in driver.find_element(By.ID, "stick-text").text.split(":")[1].split("px")[0].split(",")]
-    if max(abs(a - b) for a, b in zip(stick, [120.5, 460.5, 520.5, 460.5])) > 1e-6:
-        fail("the stick's ends were read at %s, clicked at 120.5,460.5,520.5,460.5" % stick)
-    length = driver.find_element(By.ID, "stick-length")
-    length.clear()
-    length.send_keys(repr(400 * scale))
-    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=origin]").click()
     origin = render["origin_px"]
-    click_image(round(origin[0]) + 0.5, round(origin[1]) + 0.5)
-    driver.find_element(By.ID, "apply-calibration").click()
-    wait.until(lambda d: ended("calibrating"))
-    if error():
-        fail("calibration: " + error())
+    calibrate(driver, click_image, (120.5, 460.5, 520.5, 460.5), 400 * scale,
+              (round(origin[0]) + 0.5, round(origin[1]) + 0.5), wait, ended, error, fail)
 
     # Track: the name "disc", kind ball (ellipse), one click on the disc in frame 0.
     name = driver.find_element(By.ID, "track-name")
