@@ -451,6 +451,27 @@ json within_folder(json j, const std::string& root) {
   return j;
 }
 
+/// The unit of every number of an analysis's result, by its path in the result ("a.b", list
+/// entries by index: "runs.0.mu"), from the command's declared keys through the rules the
+/// command line's listing uses (app::find_result_key: sigma_X, X_ci95 and ci95.X take X's
+/// unit); a series' runs are each a one-run result and its summary has the summary's keys.
+void result_units(const json& v, const std::string& path, const std::string& key, const app::ResultKeys& keys,
+                  json& units) {
+  const auto join = [](const std::string& a, const std::string& b) { return a.empty() ? b : a + "." + b; };
+  if (v.is_object()) {
+    for (auto it = v.begin(); it != v.end(); ++it) result_units(*it, join(path, it.key()), join(key, it.key()), keys, units);
+    return;
+  }
+  if (v.is_array() && std::any_of(v.begin(), v.end(), [](const json& e) { return e.is_object(); })) {
+    for (std::size_t i = 0; i < v.size(); ++i) result_units(v[i], join(path, std::to_string(i)), key, keys, units);
+    return;
+  }
+  const app::ResultKey* k = app::find_result_key(keys, key);
+  for (const char* part : {"runs.", "summary."})
+    if (!k && key.rfind(part, 0) == 0) k = app::find_result_key(keys, key.substr(std::string(part).size()));
+  if (k && !k->unit.empty()) units[path] = k->unit;
+}
+
 json Workbench::analyze(const std::string& command, const json& values, const std::vector<fs::path>& series) {
   require_open();
   Action action(*this, "analysing");
@@ -485,8 +506,10 @@ json Workbench::analyze(const std::string& command, const json& values, const st
   }
   const AnalysisRun run = offered->run(values, csvs, [this](const char* suffix) { return beside(suffix).string(); });
   const auto written = [this](const std::string& path) { return path.empty() ? json(nullptr) : json(relative(path)); };
-  analysis_ = {{"command", command}, {"values", values}, {"series", series_names},
-               {"result", within_folder(app::plain_fields_json(run.result), root_.string())},
+  const json result = within_folder(app::plain_fields_json(run.result), root_.string());
+  json units = json::object();
+  result_units(result, "", "", offered->results(), units);
+  analysis_ = {{"command", command}, {"values", values}, {"series", series_names}, {"result", result}, {"units", units},
                {"out", written(run.out)}, {"report", written(run.report)},
                {"results", app::result_keys_schema(offered->results())}};
   autosave();

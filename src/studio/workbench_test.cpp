@@ -433,6 +433,13 @@ TEST_F(WorkbenchFilmTest, AnInclineRunIsAnalysedFromAClick) {
   EXPECT_NEAR(r["mu"].get<double>(), p.mu, 3 * r["sigma_mu"].get<double>()) << r.dump();
   EXPECT_NEAR(r["v0"].get<double>(), p.v0, 3 * r["sigma_v0"].get<double>()) << r.dump();
   EXPECT_TRUE(s["analysis"]["out"].is_null());  // incline analyze writes no file
+  // Every number's unit, from the declared keys by the command line's rules (the page shows them).
+  const json& units = s["analysis"]["units"];
+  EXPECT_EQ(units.value("v0", ""), "m/s");
+  EXPECT_EQ(units.value("sigma_v0", ""), "m/s");
+  EXPECT_EQ(units.value("ci95.v0", ""), "m/s");
+  EXPECT_EQ(units.value("gravity.g_ci95", ""), "m/s^2");
+  EXPECT_FALSE(units.contains("mu"));  // a pure number
   // A single number is a list of one.
   const json one = wb.analyze("incline analyze", {{"track", "disc"}, {"phi_deg", 20.0}, {"no_model_a", true}});
   EXPECT_EQ(one["analysis"]["result"]["mu"], r["mu"]);
@@ -456,6 +463,7 @@ TEST_F(WorkbenchFilmTest, AnInclineRunIsAnalysedFromAClick) {
   EXPECT_EQ(runs[1]["mu"], one["analysis"]["result"]["mu"]);
   EXPECT_EQ(runs[0]["mu"], one["analysis"]["result"]["mu"]);  // the same film
   EXPECT_EQ(s["analysis"]["result"]["summary"]["n_ok"], 2);
+  EXPECT_EQ(s["analysis"]["units"].value("runs.1.ci95.v0", ""), "m/s");
   EXPECT_EQ(s["analysis"]["series"], json({"incline.avi"}));
   EXPECT_EQ(s["analysis"]["report"], "again.avi.incline.html");
   EXPECT_NE(wb.report_html().find("again.avi.tracks.csv"), std::string::npos);
