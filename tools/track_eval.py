@@ -10,15 +10,88 @@ percentile distance to the human marks (px), the share of marked frames a user m
 that are confidently wrong (a position > 10 px from the mark). The figures come from
 `track video`'s own `vs_human` (src/video/track_video.cpp, compare_with_human).
 
-    tools/track_eval.py [--tribolab build/bin/tribolab] [--markdown] [PROJECT...] [-- OPTIONS]
+    tools/track_eval.py [--tribolab build/bin/tribolab] [--markdown] [--mark-every N] [--corrections]
+                        [PROJECT...] [-- OPTIONS]
+
+A user's corrections are measured with the human's own marks given as `--mark`:
+  --mark-every N   the marks of every Nth frame after the start given; "to correct" and "wrong"
+                   then count the frames between them (a marked frame lies on its mark);
+  --corrections    a user who corrects the first frame to correct, tracks again and goes on
+                   until none is left: "marks" is how many corrections that took (each with its
+                   re-tracking, as the studio does).
 """
 import argparse
 import glob
 import json
 import os
+import csv
+import math
+import re
 import subprocess
 import sys
 import tempfile
+import xml.etree.ElementTree as ET
+import zipfile
+
+
+# Tracker puts pixel (j, i)'s centre at (j + 0.5, i + 0.5), tribolab (OpenCV) at (j, i):
+# src/video/source.hpp, kTrackerPixelOffset.
+TRACKER_PIXEL_OFFSET = 0.5
+
+
+def human_marks(project, track):
+    """{frame: (x, y)} in tribolab's image px (as --mark takes them) of a track's marks in a
+    Tracker project (.trz or .trk)."""
+    if project.endswith(".trz"):
+        z = zipfile.ZipFile(project)
+        text = z.read([n for n in z.namelist() if n.endswith(".trk")][0])
+    else:
+        with open(project, "rb") as f:
+            text = f.read()
+    marks = {}
+    for obj in ET.fromstring(text).iter("object"):
+        names = [p for p in obj.findall("property") if p.get("name") == "name"]
+        if not names or names[0].text != track or "PointMass" not in (obj.get("class") or ""):
+            continue
+        for fd in obj.iter("property"):
+            m = re.fullmatch(r"\[(\d+)\]", fd.get("name") or "")
+            inner = fd.find("object")
+            if not m or inner is None or "FrameData" not in (inner.get("class") or ""):
+                continue
+            v = {p.get("name"): float(p.text) for p in inner.findall("property") if p.get("name") in ("x", "y")}
+            if "x" in v and "y" in v:
+                marks[int(m.group(1))] = (v["x"] - TRACKER_PIXEL_OFFSET, v["y"] - TRACKER_PIXEL_OFFSET)
+        break
+    return marks
+
+
+def mark_options(name, marks, frames):
+    out = []
+    for f in sorted(frames):
+        out += ["--mark", f"{name}@{f}={marks[f][0]:.3f},{marks[f][1]:.3f}"]
+    return out
+
+
+def distances(csv_path, name, marks, start, given):
+    """{frame: distance to the human's mark, px (None: no position)} over the marked frames
+    after the start that were not given."""
+    out = {}
+    with open(csv_path) as f:
+        for r in csv.DictReader(f):
+            k = int(r["frame"])
+            if r["track"] != name or k <= start or k not in marks or k in given:
+                continue
+            out[k] = math.hypot(float(r["x_px"]) - marks[k][0], float(r["y_px"]) - marks[k][1]) if r["x_px"] else None
+    return out
+
+
+def between_marks(d, correct_px, given):
+    """vs_human's figures over the frames between the given marks (distances d)."""
+    placed = sorted(v for v in d.values() if v is not None)
+    q = lambda p: placed[min(len(placed) - 1, int(p * len(placed)))] if placed else 0.0
+    return {"marks": len(d), "frames": len(placed), "median_px": q(0.5), "p90_px": q(0.9), "given": len(given),
+            "to_correct": sum(1 for v in d.values() if v is None or v > correct_px),
+            "confidently_wrong": sum(1 for v in placed if v > 10)}
 
 
 def run_json(cmd):
@@ -40,6 +113,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--tribolab", default=os.path.join(root, "build", "bin", "tribolab"))
     ap.add_argument("--markdown", action="store_true", help="print a Markdown table")
+    ap.add_argument("--mark-every", type=int, default=0, help="give the human's marks of every Nth frame")
+    ap.add_argument("--corrections", action="store_true", help="count a user's corrections until none is left")
     ap.add_argument("projects", nargs="*")
     a = ap.parse_args(argv)
     projects = a.projects or sorted(glob.glob(os.path.join(root, "..", "shared", "data", "tracker", "*.trz")))
@@ -54,14 +129,30 @@ def main():
             for name in imp["track_names"]:
                 if imp["tracks"][name]["points"] < 2:
                     continue
-                j, err = run_json([a.tribolab, "track", "video", proj, "--from-track", name, "--out", out, "--json"] + extra)
                 base = os.path.basename(proj)
+                cmd = [a.tribolab, "track", "video", proj, "--from-track", name, "--out", out, "--json"] + extra
+                marks = human_marks(proj, name) if a.mark_every or a.corrections else {}
+                start = min(marks) if marks else 0
+                given = [k for k in marks if k > start and (k - start) % a.mark_every == 0] if a.mark_every else []
+                j, err = run_json(cmd + mark_options(name, marks, given))
+                while a.corrections and j is not None:
+                    d = distances(out, name, marks, start, given)
+                    bad = sorted(k for k, v in d.items() if v is None or v > j["tracks"][name]["vs_human"]["correct_px"])
+                    if not bad:
+                        break
+                    given.append(bad[0])
+                    j, err = run_json(cmd + mark_options(name, marks, given))
+                if j is not None and (a.mark_every or a.corrections):
+                    # The given marks lie on the human's: the frames between them are what is measured.
+                    correct_px = j["tracks"][name]["vs_human"]["correct_px"]
+                    j["tracks"][name]["vs_human"] = between_marks(distances(out, name, marks, start, given), correct_px, given)
                 if j is None:
                     rows.append((base, name, None, err.splitlines()[-1] if err else "failed"))
                     continue
                 rows.append((base, name, j["tracks"][name]["vs_human"], ""))
     fmt = "| {} | {} | {} | {} | {} | {} | {} | {} |" if a.markdown else "{:28} {:12} {:>6} {:>8} {:>8} {:>8} {:>10} {:>6}"
-    print(fmt.format("project", "track", "marks", "tracked", "median", "p90", "to correct", "wrong"))
+    head = "marks given" if a.mark_every or a.corrections else "marks"
+    print(fmt.format("project", "track", head, "tracked", "median", "p90", "to correct", "wrong"))
     if a.markdown:
         print("|---|---|---|---|---|---|---|---|")
     worst = 0.0
@@ -70,12 +161,13 @@ def main():
             print(fmt.format(base, name, "-", "refused", "-", "-", "100 %", "-") + ("" if a.markdown else "  " + err))
             worst = 1.0
             continue
-        m = max(1, h["marks"])
+        m = max(1, h["marks"])  # frames measured (between the given marks)
         share = h["to_correct"] / m
         worst = max(worst, share)
         # No frame with a position: no distance to show (vs_human's 0 would read as exact).
         dist = (f"{h['median_px']:.2f}", f"{h['p90_px']:.2f}") if h["frames"] > 0 else ("-", "-")
-        print(fmt.format(base, name, h["marks"], f"{100 * h['frames'] / m:.0f} %", dist[0], dist[1],
+        first = f"{h['given']} of {h['marks'] + h['given']}" if "given" in h else h["marks"]
+        print(fmt.format(base, name, first, f"{100 * h['frames'] / m:.0f} %", dist[0], dist[1],
                          f"{100 * share:.1f} %", h["confidently_wrong"]))
     print(f"worst share to correct: {100 * worst:.1f} %", file=sys.stderr)
 

@@ -334,7 +334,7 @@ Response Handler::route(const Request& request, const Target& target) {
   }
   // One action at a time: another asked meanwhile is refused, not queued behind it.
   const bool action = path == "/api/open" || path == "/api/calibration" || path == "/api/track" ||
-                      path == "/api/mark" || path == "/api/analyze";
+                      path == "/api/mark" || path == "/api/retrack" || path == "/api/analyze";
   const ActionClaim running = action && request.method == "POST" ? claim_action() : ActionClaim();
   std::lock_guard lock(backend_mutex_);
   if (path == "/api/files") {
@@ -384,6 +384,10 @@ Response Handler::route(const Request& request, const Target& target) {
   if (path == "/api/mark") {
     need(post);
     return json_ok(backend_.mark(mark_from_json(object_body(request))));
+  }
+  if (path == "/api/retrack") {
+    need(post);
+    return json_ok(backend_.retrack());
   }
   if (path == "/api/analyze") {
     need(post);

@@ -76,6 +76,9 @@ class Backend {
   virtual nlohmann::json track(const TrackStart& start) = 0;
   /// Sets or removes a mark and re-tracks that track (the state, with the new track).
   virtual nlohmann::json mark(const MarkInput& mark) = 0;
+  /// Tracks every track again from the video, so that each mark's look is searched for in the
+  /// frames around it (a mark's quick re-tracking does not: the state's `looks_pending`).
+  virtual nlohmann::json retrack() = 0;
   virtual nlohmann::json forms() = 0;                                    ///< the analyses' declared fields
   /// Runs an offered analysis on the open file's tracks and, for a series, on those of the
   /// other files named (confined, existing files of the folder), in that order after it.

@@ -36,6 +36,8 @@ struct RecordingBackend : Backend {
   json track(const TrackStart& s) override { ++calls; return {{"name", s.name}}; }
   MarkInput marked;
   json mark(const MarkInput& m) override { ++calls; marked = m; return {{"track", m.track}}; }
+  int retracks = 0;
+  json retrack() override { ++calls; ++retracks; return {{"looks_pending", false}}; }
   json forms() override { ++calls; return json::object(); }
   json analyze(const std::string& command, const json&, const std::vector<fs::path>& others) override {
     ++calls;
@@ -254,7 +256,11 @@ TEST_F(HandlerTest, MarkRequestsAreCheckedBeforeTheBackend) {
     EXPECT_NE(error_of(a).find(message), std::string::npos) << body << " -> " << error_of(a);
   }
   EXPECT_EQ(handler->handle(good("GET", "/api/mark")).status, 405);
-  EXPECT_EQ(backend.calls, 2);
+  // The search for the marks' looks: an action of its own.
+  EXPECT_EQ(handler->handle(good("POST", "/api/retrack", "{}")).status, 200);
+  EXPECT_EQ(backend.retracks, 1);
+  EXPECT_EQ(handler->handle(good("GET", "/api/retrack")).status, 405);
+  EXPECT_EQ(backend.calls, 3);  // the two good marks and the search
 }
 
 TEST_F(HandlerTest, MoreRequestsThanTheRateAreAnswered429) {

@@ -31,6 +31,7 @@ struct EchoBackend : Backend {
   json calibrate(const CalibrationInput& c) override { return {{"length", c.stick_length_m}}; }
   json track(const TrackStart& s) override { return {{"name", s.name}, {"x", s.x_px}}; }
   json mark(const MarkInput& m) override { return {{"track", m.track}, {"frame", m.frame}}; }
+  json retrack() override { return {{"looks_pending", false}}; }
   json forms() override { return json::object(); }
   json analyze(const std::string& c, const json&, const std::vector<std::filesystem::path>&) override { return {{"command", c}}; }
   std::string report_html() override { return "<html>report</html>"; }

@@ -186,6 +186,8 @@ json Workbench::open(const fs::path& file) {
   video_["axes"] = {{"origin_px", {axes.origin_x, axes.origin_y}}, {"axes_deg", axes.angle_deg}};
   calibration_ = {};
   session_ = std::make_shared<video::TrackSession>();
+  looks_pending_ = false;
+  decoded_marks_.clear();
   starts_.clear();
   tracks_ = json::object();
   analysis_ = nullptr;
@@ -308,6 +310,23 @@ json Workbench::mark(const MarkInput& m) {
   return state();
 }
 
+json Workbench::retrack() {
+  require_open();
+  Action action(*this, "searching the frames around the marks");
+  if (!starts_.empty()) {
+    const std::shared_ptr<video::TrackSession> before = session_;
+    session_ = std::make_shared<video::TrackSession>();  // nothing to conclude from: decode
+    try {
+      run_tracks();
+    } catch (...) {
+      session_ = before;
+      throw;
+    }
+    autosave();
+  }
+  return state();
+}
+
 void Workbench::run_tracks() {
   app::TrackVideoOptions o;
   o.input = file_.string();
@@ -329,6 +348,9 @@ void Workbench::run_tracks() {
   o.session = session_;
   o.progress = [this](int done, int expected) { step(done, expected); };
   const app::TrackVideoResult r = app::track_video(o);
+  // A quick re-tracking with other marks than the last decoding's: their looks not searched for.
+  if (!r.from_session) decoded_marks_ = o.mark;
+  looks_pending_ = o.mark != decoded_marks_;
   tracks_ = {{"summary", app::plain_fields_json(r.json)}, {"series", series_json(r.series)}, {"csv", relative(o.out)}, {"trk", relative(o.write_trk)}};
   analysis_ = nullptr;  // it was of the tracks before
 }
@@ -540,6 +562,7 @@ json Workbench::state() {
           {"calibration", to_json(calibration_)},
           {"starts", starts},
           {"tracks", tracks_},
+          {"looks_pending", looks_pending_},
           {"analysis", analysis_},
           {"autosave", file_.empty() ? json(nullptr) : json(relative(beside(".studio.json")))}};
 }

@@ -34,6 +34,8 @@ class Workbench : public Backend {
   nlohmann::json track(const TrackStart& start) override;
   /// Sets or removes a mark of a track (on its start frame: moves the start) and re-tracks.
   nlohmann::json mark(const MarkInput& mark) override;
+  /// Tracks every track again from the video (a fresh session): each mark's look searched for.
+  nlohmann::json retrack() override;
   nlohmann::json forms() override;
   nlohmann::json analyze(const std::string& command, const nlohmann::json& values,
                          const std::vector<std::filesystem::path>& series = {}) override;
@@ -69,6 +71,10 @@ class Workbench : public Backend {
   /// The last tracking, kept so that a mark re-tracks a path-tracked point without decoding
   /// the video again (app::TrackVideoOptions::session).
   std::shared_ptr<video::TrackSession> session_;
+  /// The last tracking was a mark's quick one: a mark's look is not searched for yet (state's
+  /// `looks_pending`; retrack() searches).
+  bool looks_pending_ = false;
+  std::vector<std::string> decoded_marks_;  ///< the marks (as `--mark` values) of the last decoding
   // The action under way, read by progress() and cancel() from the server's other threads.
   std::atomic<bool> running_{false}, cancel_{false};
   std::atomic<int> done_{0}, expected_{0};

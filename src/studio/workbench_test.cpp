@@ -203,7 +203,13 @@ TEST_F(WorkbenchTest, AMarkRetracksIsSavedAndBadMarksAreClearErrors) {
   constexpr int kMarked = 6;
   const cv::Point2d m = mark_at(kMarked) + cv::Point2d(2.5, -1.5);
   json s = wb.mark({"patch", kMarked, false, m.x, m.y});
-  const json& rows = s["tracks"]["series"][0]["rows"];
+  // At once among the places already found; the mark's look is searched for by retrack(),
+  // which the page asks for next (decoding the clip again).
+  EXPECT_TRUE(s["looks_pending"].get<bool>());
+  const json searched = wb.retrack();
+  EXPECT_FALSE(searched["looks_pending"].get<bool>());
+  EXPECT_EQ(searched["starts"], s["starts"]);
+  const json& rows = searched["tracks"]["series"][0]["rows"];
   ASSERT_EQ(rows.size(), before.size());
   EXPECT_EQ(s["tracks"]["series"][0]["manual_frames"], json::array({kMarked}));
   EXPECT_EQ(s["tracks"]["summary"]["tracks"]["patch"]["manual_frames"], json::array({kMarked}));
@@ -252,8 +258,7 @@ TEST_F(WorkbenchTest, AMarkRetracksIsSavedAndBadMarksAreClearErrors) {
   r = again.calibrate(c);  // re-tracks every track from the saved clicks and marks
   EXPECT_EQ(r["tracks"]["series"][0]["manual_frames"], json::array({kMarked}));
   EXPECT_EQ(r["tracks"]["series"][0]["rows"][kMarked]["x_px"].get<double>(), m.x);
-  // The mark above re-tracked from the kept session (no decoding); tracking afresh gives the
-  // same pixels in every frame.
+  // Tracking afresh from the saved marks gives the pixels of the search above in every frame.
   for (std::size_t k = 0; k < rows.size(); ++k) {
     EXPECT_EQ(r["tracks"]["series"][0]["rows"][k]["x_px"], rows[k]["x_px"]) << k;
     EXPECT_EQ(r["tracks"]["series"][0]["rows"][k]["y_px"], rows[k]["y_px"]) << k;

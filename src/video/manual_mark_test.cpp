@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <vector>
 #include <unistd.h>
 
@@ -123,9 +124,11 @@ TEST(ManualMark, PathTrackerRetracksBothWaysFromAMarkAndLeavesFarFramesAlone) {
   EXPECT_GE(fixed, kMarkSceneFrames - 1 - kBounceFrame - 1 - 1);
 }
 
-TEST(ManualMark, PathTrackerRetracksWithoutTheFramesAsIfMarkedFromTheStart) {
-  // finish() again after set_marks (the studio's correction): the same answer as a tracker
-  // given the mark before the first frame, bit for bit, without a frame.
+TEST(ManualMark, PathTrackerChoosesThePathAgainAfterNewMarksWithoutTheFrames) {
+  // finish() again after set_marks: the path chosen anew among the candidates already found
+  // (the mark's frame is the mark, the frames around it follow it), and with the marks removed
+  // the track is as at first, bit for bit. (A fresh tracking with the mark searches around it
+  // as well: PathTrackerSearchesTheFramesAroundAMarkForItsLook.)
   const RenderOptions o = marked_scene_options();
   const Scene scene = marked_scene();
   PathTracker tracker;
@@ -135,25 +138,159 @@ TEST(ManualMark, PathTrackerRetracksWithoutTheFramesAsIfMarkedFromTheStart) {
   const ManualMark m{22, marked_scene_ours(22).x, marked_scene_ours(22).y};
   tracker.set_marks({m});
   const std::vector<Observation> again = tracker.finish();
-  const std::vector<Observation> fresh = path_track_marked_scene({m});
-  ASSERT_EQ(again.size(), fresh.size());
-  int changed = 0;
+  int changed = 0, right_after = 0;
   for (std::size_t k = 0; k < again.size(); ++k) {
-    EXPECT_EQ(again[k].lost, fresh[k].lost) << again[k].frame;
-    EXPECT_EQ(again[k].manual, fresh[k].manual) << again[k].frame;
-    if (!fresh[k].lost) {
-      EXPECT_EQ(again[k].x_px, fresh[k].x_px) << again[k].frame;
-      EXPECT_EQ(again[k].y_px, fresh[k].y_px) << again[k].frame;
-    }
+    EXPECT_EQ(again[k].manual, again[k].frame == m.frame) << again[k].frame;
     changed += again[k].lost != plain[k].lost;
+    right_after += again[k].frame > kBounceFrame && on_ours(again[k]);
   }
   EXPECT_GT(changed, 5);  // the mark did change the track
+  EXPECT_GE(right_after, kMarkSceneFrames - 1 - kBounceFrame - 2);
   tracker.set_marks({});  // and removed, the track is as at first
   const std::vector<Observation> removed = tracker.finish();
   for (std::size_t k = 0; k < removed.size(); ++k) {
     EXPECT_EQ(removed[k].lost, plain[k].lost) << removed[k].frame;
     EXPECT_EQ(removed[k].x_px, plain[k].x_px) << removed[k].frame;
   }
+}
+
+// The look-change scene: our object slides right at 4 px/frame over texture; until frame
+// kChangeFrame it is a round blue disc, from then on a dark bar standing across its path (what a
+// turning car or a ball whose sticker comes into view does to a template). The start's look
+// does not match the bar: the path tracker loses it after the change. A user's mark on the bar
+// shows the tracker its new look.
+constexpr int kChangeFrames = 31;
+constexpr int kChangeFrame = 12;
+
+cv::Point2d change_scene_at(int i) { return {30 + 4.0 * i, 70}; }
+
+Scene change_scene() {
+  return [](double t) {
+    const int i = static_cast<int>(std::lround(t * 30));
+    ShapePose s;
+    s.cx_px = change_scene_at(i).x;
+    s.cy_px = change_scene_at(i).y;
+    if (i < kChangeFrame) {
+      s.a_px = s.b_px = 7;
+    } else {
+      s.a_px = 3;
+      s.b_px = 10;
+      s.colour = {30, 30, 30};
+    }
+    return std::vector<ShapePose>{s};
+  };
+}
+
+std::vector<Observation> path_track_change_scene(std::optional<ManualMark> mark) {
+  const RenderOptions o = marked_scene_options();
+  const Scene scene = change_scene();
+  PathTracker tracker;
+  tracker.start(testing::rendered_frame(scene, 0, o), change_scene_at(0).x, change_scene_at(0).y, "ball");
+  if (mark) {
+    tracker.set_marks({*mark});
+    const Frame f = testing::rendered_frame(scene, mark->frame, o);
+    const cv::Rect r = PathTracker::look_crop(f.gray.size(), mark->x_px, mark->y_px);
+    tracker.add_look(mark->frame, f.gray(r), mark->x_px - r.x, mark->y_px - r.y);
+  }
+  for (int i = 1; i < kChangeFrames; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+  return tracker.finish();
+}
+
+TEST(ManualMark, PathTrackerSearchesTheFramesAroundAMarkForItsLook) {
+  auto on_object = [](const Observation& ob) {
+    const cv::Point2d t = change_scene_at(ob.frame);
+    return !ob.lost && std::hypot(ob.x_px - t.x, ob.y_px - t.y) < 1.5;
+  };
+  const std::vector<Observation> plain = path_track_change_scene(std::nullopt);
+  int before_change = 0, after_change = 0;
+  for (const Observation& ob : plain) {
+    before_change += ob.frame < kChangeFrame && on_object(ob);
+    after_change += ob.frame >= kChangeFrame && on_object(ob);
+    EXPECT_FALSE(!ob.lost && !on_object(ob)) << "frame " << ob.frame << " reported elsewhere";
+  }
+  std::printf("without a mark: %d of %d frames before the change, %d of %d after it on the object\n", before_change,
+              kChangeFrame - 1, after_change, kChangeFrames - kChangeFrame);
+  EXPECT_EQ(before_change, kChangeFrame - 1);
+  ASSERT_LE(after_change, 2) << "the start's look still matches the bar: the scene shows nothing";
+
+  constexpr int kMarkFrame = 22;
+  const cv::Point2d m = change_scene_at(kMarkFrame) + cv::Point2d(0.3, -0.4);  // a click is never exact
+  const std::vector<Observation> marked = path_track_change_scene(ManualMark{kMarkFrame, m.x, m.y});
+  int fixed = 0;
+  for (const Observation& ob : marked) {
+    if (ob.frame == kMarkFrame) {
+      EXPECT_TRUE(ob.manual);
+      continue;
+    }
+    EXPECT_FALSE(!ob.lost && !on_object(ob)) << "frame " << ob.frame << " reported elsewhere";
+    if (ob.frame < kChangeFrame) EXPECT_TRUE(on_object(ob)) << ob.frame;
+    fixed += ob.frame >= kChangeFrame && on_object(ob);
+  }
+  // Backward (12..21) and forward (23..30) from the mark: the bar is found in every frame.
+  std::printf("with a mark at frame %d: %d of %d frames after the change on the object\n", kMarkFrame, fixed,
+              kChangeFrames - kChangeFrame - 1);
+  EXPECT_EQ(fixed, kChangeFrames - kChangeFrame - 1);
+}
+
+TEST(ManualMark, PathTrackerKeepsTheFramesNextToAClickThatIsAFewPixelsOff) {
+  // A user's clicks scatter: marks 3 px off the object's point (640 px wide: within the 4 px
+  // correction distance, so none a user would correct) on every 5th frame of a ball rolling at
+  // 3 px/frame. Dropping the frame next to such a mark made the path's acceleration through it
+  // cheaper than keeping it (jmoljana with the human's marks: 44 of 120 frames lost); the
+  // acceleration through a mark now allows for the click's scatter (kClickPx): every frame kept.
+  RenderOptions o = marked_scene_options();
+  o.width = 640;
+  o.height = 240;
+  auto at = [](int i) { return cv::Point2d(60 + 3.0 * i, 120); };
+  const Scene scene = [&](double t) {
+    ShapePose s;
+    const cv::Point2d c = at(static_cast<int>(std::lround(t * 30)));
+    s.cx_px = c.x;
+    s.cy_px = c.y;
+    s.a_px = s.b_px = 8;
+    s.mark = true;
+    s.mark_size_px = 9;
+    return std::vector<ShapePose>{s};
+  };
+  constexpr int kFrames = 41;
+  std::vector<ManualMark> marks;
+  for (int k = 5; k < kFrames; k += 5) {
+    const double sx = (k / 5) % 2 == 0 ? 1 : -1, sy = (k / 5) % 3 == 0 ? 1 : -1;
+    marks.push_back({k, at(k).x + sx * 2.4, at(k).y + sy * 1.8});  // 3 px off
+  }
+  PathTracker tracker;
+  tracker.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
+  tracker.set_marks(marks);
+  for (int i = 1; i < kFrames; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+  int kept = 0, between = 0;
+  for (const Observation& ob : tracker.finish()) {
+    if (ob.manual) continue;
+    ++between;
+    const bool on = !ob.lost && std::hypot(ob.x_px - at(ob.frame).x, ob.y_px - at(ob.frame).y) < 1.5;
+    if (!on) std::printf("frame %d %s\n", ob.frame, ob.lost ? "lost" : "off the ball");
+    kept += on;
+  }
+  EXPECT_EQ(between, kFrames - 1 - static_cast<int>(marks.size()));
+  EXPECT_EQ(kept, between);
+}
+
+TEST(ManualMark, PathTrackerTakesALookOnlyAtAMarkNotYetTracked) {
+  const RenderOptions o = marked_scene_options();
+  const Scene scene = change_scene();
+  PathTracker tracker;
+  tracker.start(testing::rendered_frame(scene, 0, o), change_scene_at(0).x, change_scene_at(0).y, "ball");
+  const Frame f = testing::rendered_frame(scene, 5, o);
+  EXPECT_THROW(tracker.add_look(5, f.gray, 50, 70), InputError);  // no mark on frame 5
+  tracker.set_marks({{5, 50, 70}, {9, 66, 70}});
+  EXPECT_THROW(tracker.add_look(5, f.gray, -1, 70), InputError);  // the image does not hold the mark
+  tracker.add_look(5, f.gray, 50, 70);
+  tracker.update(testing::rendered_frame(scene, 1, o));
+  for (int i = 2; i <= 9; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+  EXPECT_THROW(tracker.add_look(9, testing::rendered_frame(scene, 9, o).gray, 66, 70), InputError);  // tracked already
+  const cv::Mat flat(40, 40, CV_8UC1, cv::Scalar(128));
+  tracker.set_marks({{12, 78, 70}});
+  tracker.add_look(12, flat, 20, 20);  // nothing to match: not used, not an error
+  EXPECT_EQ(tracker.finish().size(), 9u);
 }
 
 TEST(ManualMark, PathTrackerRefusesMarksItCannotHonour) {
@@ -300,7 +437,41 @@ TEST(ManualMark, EllipseTrackerFoundAgainBothWaysFromAMarkAfterAnOcclusion) {
   }
 }
 
-TEST(ManualMark, RetrackingASessionEqualsTrackingWithTheMarks) {
+TEST(ManualMark, TrackVideoShowsThePathTrackerEachMarksLookBeforeTheFramesAroundIt) {
+  // track_video reads the marked frames first (a decoding up to the last mark), so a mark's
+  // look is searched in the frames before it as well as after: as PathTracker given the look
+  // before its first frame.
+  const std::string dir = (std::filesystem::temp_directory_path() / ("manual_look_" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(dir);
+  const std::string video = dir + "/change.avi";
+  write_video(video, change_scene(), kChangeFrames, marked_scene_options());
+  TrackVideoOptions o;
+  Target t;
+  t.name = "ball";
+  t.x_px = change_scene_at(0).x;
+  t.y_px = change_scene_at(0).y;
+  constexpr int kMarkFrame = 22;
+  const cv::Point2d m = change_scene_at(kMarkFrame);
+  t.marks.push_back({kMarkFrame, m.x, m.y});
+  o.targets = {t};
+  const TrackVideoResult r = track_video(video, o);
+  int found = 0;
+  for (const TrackedRow& row : r.series[0].rows) {
+    const cv::Point2d at = change_scene_at(row.frame);
+    const bool on = !row.lost && std::hypot(row.x_px - at.x, row.y_px - at.y) < 1.5;
+    EXPECT_FALSE(!row.lost && !on) << "frame " << row.frame << " reported elsewhere";
+    found += on;
+  }
+  EXPECT_EQ(found, kChangeFrames) << "every frame on the object, the bar before the mark included";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ManualMark, RetrackingASessionChoosesThePathAmongTheCandidatesFound) {
+  // The studio's answer to a drag: the path chosen anew with the new marks among the
+  // candidates of the first tracking, without decoding; what PathTracker::finish gives after
+  // set_marks (PathTrackerChoosesThePathAgainAfterNewMarksWithoutTheFrames). Tracking afresh
+  // with the mark searches for its look as well: it reports on the ball every frame the
+  // re-tracking does (and may report more, from the look's own candidates).
   const std::string dir = (std::filesystem::temp_directory_path() / ("manual_retrack_" + std::to_string(::getpid()))).string();
   std::filesystem::create_directories(dir);
   const std::string video = dir + "/bounce.avi";
@@ -329,16 +500,17 @@ TEST(ManualMark, RetrackingASessionEqualsTrackingWithTheMarks) {
   for (std::size_t k = 0; k < fresh.series[0].rows.size(); ++k) {
     const TrackedRow& a = again->series[0].rows[k];
     const TrackedRow& b = fresh.series[0].rows[k];
-    EXPECT_EQ(a.lost, b.lost) << a.frame;
     EXPECT_EQ(a.manual, b.manual) << a.frame;
-    if (!b.lost) {
-      EXPECT_EQ(a.x_px, b.x_px) << a.frame;
-    }
+    auto on_ball = [](const TrackedRow& r) {
+      return !r.lost && std::hypot(r.x_px - marked_scene_ours(r.frame).x, r.y_px - marked_scene_ours(r.frame).y) < 1.5;
+    };
+    EXPECT_TRUE(a.lost || on_ball(a)) << "re-tracked frame " << a.frame << " off the ball";
+    EXPECT_TRUE(b.lost || on_ball(b)) << "freshly tracked frame " << b.frame << " off the ball";
+    if (!a.lost) EXPECT_FALSE(b.lost) << a.frame;
     differ_from_plain += a.lost != plain.series[0].rows[k].lost;
   }
   EXPECT_GT(differ_from_plain, 5);
   EXPECT_EQ(again->series[0].manual_frames, std::vector<int>{22});
-  EXPECT_EQ(again->warnings, fresh.warnings);
   EXPECT_EQ(again->thumbnails.size(), fresh.thumbnails.size());
   // A bad mark: refused, the session as it was.
   std::vector<Target> bad = marked;

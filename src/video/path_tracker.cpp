@@ -25,6 +25,8 @@ constexpr int kCandidates = 8;
 constexpr double kFlatSd = 3;
 // Peaks taken from each anchor's window (the candidates of a step come from up to five).
 constexpr int kPerWindow = 3;
+// Candidates kept per frame for each look of a mark searched there (add_look).
+constexpr int kCandidatesPerLook = 4;
 // A best candidate correlating this well is a confident sighting (the lead anchor).
 constexpr double kConfident = 0.9;
 constexpr double kCandidateFloor = 0.3;
@@ -67,6 +69,13 @@ constexpr double kFgShare = 0.15;
 // sharply (the user marks a bounce, or a point the tracker had wrong): that acceleration is
 // not gated but costs at most this (the gate's cost), and a mark has no reach limit.
 constexpr double kMarkAccCap = 0.5 * kAccGate * kAccGate;
+// A user's click scatters about the object's point by this, px per 640 px of image width (at
+// least 1 px): half the correction distance (4 px per 640), so that a click a user would not
+// correct lies within 2 sigma. The acceleration through a mark allows for it (PathSearch::accel),
+// so that a mark a few px off does not make its neighbours cheaper to drop than to keep
+// (jmoljana's human marks, on a 2.8 px grid, scatter 3-7 px: with every 5th given, 44 of the
+// 120 frames between were lost, the frames next to the marks first).
+constexpr double kClickPx = 2;
 // Ridge of a correlation peak (peak_ridge_px): the line through the peak along which the
 // correlation stays within kRidgeDrop of the peak, walked at most kRidgeMaxSteps map pixels
 // each way.
@@ -100,6 +109,14 @@ struct StepCandidates {
 struct Anchor {
   cv::Point2d at;
   int age;
+};
+
+// What the object looks like: a template (CV_32F) and its half-resolution copy (coarse search,
+// made when first needed), taken at the start or at a user's mark (`frame`).
+struct Look {
+  int frame = 0;
+  cv::Point2d at;  // where it was taken, px
+  cv::Mat templ, templ_half;
 };
 
 // The anchors' search windows (each within reach of its anchor, clipped to the image) and their union, px.
@@ -160,11 +177,13 @@ struct PathForeground {
 // holds one state per candidate of t - g.
 struct PathSearch {
   // The states of every step, and where the marks are.
-  PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius);
+  PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius,
+             double click_px);
   const std::vector<StepCandidates>& steps;  // a marked step holds its mark alone
   int T = 0;                                 // steps
   int G = 0;                                 // largest step between two path points
   double reach = 0, radius = 0;              // px (PathTracker::Impl's)
+  double click_px = 1;                       // a mark's scatter, px (kClickPx)
   std::vector<int> marks_before;             // marked steps among 0 .. t-1
   int last_mark = 0;                         // the last marked step (0: none)
   std::vector<std::vector<PathState>> S;
@@ -262,8 +281,8 @@ struct PathTracker::Impl {
   int p = 0, h = 0;        // template side and half side, px
   double radius = 0;       // object radius from scale selection, px
   double reach = 0;        // largest motion per frame, px
-  cv::Mat templ;           // CV_32F
-  cv::Mat templ_half;      // templ at half resolution (coarse search), made when first needed
+  Look start_look;         // the object at the click
+  std::vector<Look> looks;  // the object at the user's marks (add_look), by frame
   // The candidates found in every step, steps[0] the start (the click): they do not depend on
   // the marks, so that finish() can be run again with other marks without a frame.
   std::vector<StepCandidates> steps;
@@ -330,19 +349,42 @@ struct PathTracker::Impl {
   }
 
   void update(const Frame& f);
-  // Where the object can be in the next step: the anchors of its search windows.
-  std::vector<Anchor> find_anchors() const;
+  // The start's look correlates kConfident or more within max(2, radius) px of `at` in `gray`.
+  bool start_matches_near(const cv::Mat& gray, cv::Point2d at) const {
+    const int r = static_cast<int>(std::ceil(std::max(2.0, radius)));
+    const cv::Rect near = cv::Rect(static_cast<int>(std::lround(at.x)) - r - h, static_cast<int>(std::lround(at.y)) - r - h,
+                                   2 * r + p, 2 * r + p) &
+                          cv::Rect(0, 0, gray.cols, gray.rows);
+    if (near.width < p || near.height < p) return false;
+    cv::Mat w32, res;
+    gray(near).convertTo(w32, CV_32F);
+    cv::matchTemplate(w32, start_look.templ, res, cv::TM_CCOEFF_NORMED);
+    cv::patchNaNs(res, -1);
+    double best = -1;
+    cv::minMaxLoc(res, nullptr, &best);
+    return best >= kConfident;
+  }
+  // Where the object can be in the step of frame `index`: the anchors of its search windows.
+  std::vector<Anchor> find_anchors(int index) const;
+  // The looks searched in the frame `index`: the start's, then those of the nearest marks
+  // before and after it.
+  std::vector<Look*> looks_for(int index);
+  // The candidates of one look in the windows `w` of `gray`.
+  void find_peaks(const SearchWindows& w, const cv::Mat& gray, Look& look, bool other_look, int suppress,
+                  FoundPeaks& found);
   // The anchors' windows in `gray` and their union.
   SearchWindows search_windows(const std::vector<Anchor>& anchors, const cv::Mat& gray) const;
-  // The template's correlation over the windows' union (coarse for a large union; makes templ_half).
-  UnionCorrelation correlate_union(const SearchWindows& w, const cv::Mat& gray);
+  // A look's correlation over the windows' union (coarse for a large union; makes its templ_half).
+  UnionCorrelation correlate_union(const SearchWindows& w, const cv::Mat& gray, Look& look) const;
   // The best kPerWindow peaks of one window (`rrect` in the union's result) found coarse to fine.
-  std::vector<Peak> coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect, int suppress) const;
-  // Adds a window's peaks as candidates, a peak already found from another window once.
+  std::vector<Peak> coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect, int suppress,
+                                 const cv::Mat& templ) const;
+  // Adds a window's peaks as candidates, a peak already found from another window once (from
+  // another look: the better correlation kept).
   void add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray, int suppress,
-                        FoundPeaks& found) const;
-  // At most kCandidates of the found (every window's best first); updates the lead sightings (step n).
-  std::vector<Candidate> keep_best(FoundPeaks& found, int n);
+                        bool other_look, FoundPeaks& found) const;
+  // At most `n_keep` of the found (every window's best first); updates the lead sightings (step n).
+  std::vector<Candidate> keep_best(FoundPeaks& found, int n, int n_keep);
   std::vector<Observation> finish();
   // Each candidate's fg and unary cost (once: the background samples are complete at the first finish()).
   void compute_unary_costs();
@@ -433,8 +475,8 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
                                " grey levels, needs " + std::to_string(static_cast<int>(kFlatSd)) +
                                "): there is nothing to follow; start on the object");
   }
-  m.templ = templ;
-  m.templ_half.release();
+  m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, cv::Mat()};
+  m.looks.clear();
   m.steps.clear();
   m.marks.clear();
   m.fg_done = false;
@@ -475,6 +517,49 @@ void PathTracker::set_marks(std::vector<ManualMark> marks) {
     }
     if (!m.marks.emplace(k.frame, k).second) throw InputError(where, "two marks on one frame");
   }
+  // A look belongs to its mark: gone with it, or when it moved.
+  m.looks.erase(std::remove_if(m.looks.begin(), m.looks.end(),
+                               [&](const Look& l) {
+                                 const auto mk = m.marks.find(l.frame);
+                                 return mk == m.marks.end() || mk->second.x_px != l.at.x || mk->second.y_px != l.at.y;
+                               }),
+                m.looks.end());
+}
+
+cv::Rect PathTracker::look_crop(cv::Size image, double x_px, double y_px) {
+  // The template side is at most 2 (small side / 8) + 1 (start()).
+  const int r = std::min(image.width, image.height) / 8 + 2;
+  const int x = static_cast<int>(std::lround(x_px)), y = static_cast<int>(std::lround(y_px));
+  return cv::Rect(x - r, y - r, 2 * r + 1, 2 * r + 1) & cv::Rect(0, 0, image.width, image.height);
+}
+
+void PathTracker::add_look(int frame, const cv::Mat& gray, double x_px, double y_px) {
+  Impl& m = *impl_;
+  if (m.steps.empty()) throw InputError("path tracker: add_look() before start()");
+  const std::string where = m.name + " mark at frame " + std::to_string(frame);
+  if (m.marks.count(frame) == 0) throw InputError(where, "a look is taken at a mark (none on this frame)");
+  if (m.steps.back().index >= frame) throw InputError(where, "its look comes after the frame was tracked");
+  if (gray.type() != CV_8UC1 || !(x_px >= 0 && y_px >= 0 && x_px <= gray.cols - 1 && y_px <= gray.rows - 1)) {
+    throw InputError(where, "the look's image does not hold the mark");
+  }
+  const ManualMark& mk = m.marks.at(frame);
+  Look look{frame, cv::Point2d(mk.x_px, mk.y_px), cv::Mat(), cv::Mat()};
+  cv::getRectSubPix(gray, cv::Size(m.p, m.p), cv::Point2f(static_cast<float>(x_px), static_cast<float>(y_px)),
+                    look.templ, CV_32F);
+  cv::Scalar mean, sd;
+  cv::meanStdDev(look.templ, mean, sd);
+  if (sd[0] < kFlatSd) return;  // nothing to match: the mark still holds its own frame
+  // Where the object still looks as at the start (the start's look correlates kConfident or
+  // more within the object's radius of the mark), the start's candidates find it: a look
+  // centred on the click would add the click's own error (a mark 2.5 px off the object's
+  // point) to the frames around it, as rivals of the right candidates.
+  if (m.start_matches_near(gray, cv::Point2d(x_px, y_px))) return;
+  const auto at = std::find_if(m.looks.begin(), m.looks.end(), [&](const Look& l) { return l.frame >= frame; });
+  if (at != m.looks.end() && at->frame == frame) {
+    *at = std::move(look);
+  } else {
+    m.looks.insert(at, std::move(look));
+  }
 }
 
 void PathTracker::update(const Frame& frame) {
@@ -482,10 +567,17 @@ void PathTracker::update(const Frame& frame) {
   impl_->update(frame);
 }
 
-std::vector<Anchor> PathTracker::Impl::find_anchors() const {
+std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
   std::vector<Anchor> anchors;
   const int n = static_cast<int>(steps.size());
   for (int k = n - 1, used = 0; k >= 0 && used < 3; --k) {
+    // A marked step's only place is its mark (the path passes there).
+    const auto mk = k > 0 ? marks.find(steps[k].index) : marks.end();
+    if (mk != marks.end()) {
+      anchors.push_back({cv::Point2d(mk->second.x_px, mk->second.y_px), n - k});
+      ++used;
+      continue;
+    }
     if (steps[k].c.empty()) continue;
     std::vector<const Candidate*> best;
     for (const Candidate& c : steps[k].c) best.push_back(&c);
@@ -507,7 +599,23 @@ std::vector<Anchor> PathTracker::Impl::find_anchors() const {
     const cv::Point2d at = lead[1] + k * (lead[1] - lead[0]);
     if (at.x >= 0 && at.y >= 0 && at.x < size.width && at.y < size.height) anchors.push_back({at, 1});
   }
+  // And the next mark, when it is at most three steps ahead: the object is within reach of it.
+  const auto next = marks.upper_bound(index - 1);
+  if (next != marks.end() && n >= 1) {
+    const int step = n >= 2 ? std::max(1, steps[n - 1].index - steps[n - 2].index) : 1;
+    const int ahead = (next->first - index) / step;
+    if (ahead <= 3) anchors.push_back({cv::Point2d(next->second.x_px, next->second.y_px), ahead + 1});
+  }
   return anchors;
+}
+
+std::vector<Look*> PathTracker::Impl::looks_for(int index) {
+  std::vector<Look*> out{&start_look};
+  const auto after = std::upper_bound(looks.begin(), looks.end(), index,
+                                      [](int i, const Look& l) { return i < l.frame; });
+  if (after != looks.begin()) out.push_back(&*(after - 1));
+  if (after != looks.end()) out.push_back(&*after);
+  return out;
 }
 
 SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& anchors, const cv::Mat& gray) const {
@@ -524,7 +632,9 @@ SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& ancho
   return w;
 }
 
-UnionCorrelation PathTracker::Impl::correlate_union(const SearchWindows& w, const cv::Mat& gray) {
+UnionCorrelation PathTracker::Impl::correlate_union(const SearchWindows& w, const cv::Mat& gray, Look& look) const {
+  const cv::Mat& templ = look.templ;
+  cv::Mat& templ_half = look.templ_half;
   UnionCorrelation u;
   u.coarse = !w.wins.empty() && p >= kCoarseMinPatch && w.uni.area() > kCoarseMinArea;
   if (!w.wins.empty()) {
@@ -563,8 +673,8 @@ std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress) {
 
 }  // namespace
 
-std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect,
-                                                  int suppress) const {
+std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect, int suppress,
+                                                  const cv::Mat& templ) const {
   std::vector<Peak> peaks;
   const cv::Rect crect = cv::Rect(rrect.x / 2, rrect.y / 2, (rrect.width + 1) / 2, (rrect.height + 1) / 2) &
                          cv::Rect(0, 0, u.coarse_res.cols, u.coarse_res.rows);
@@ -608,7 +718,7 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, con
 }
 
 void PathTracker::Impl::add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray,
-                                         int suppress, FoundPeaks& found) const {
+                                         int suppress, bool other_look, FoundPeaks& found) const {
   for (std::size_t k = 0; k < peaks.size(); ++k) {
     const cv::Point at = peaks[k].at;
     const cv::Point2d off = peaks[k].off;
@@ -621,6 +731,10 @@ void PathTracker::Impl::add_window_peaks(const std::vector<Peak>& peaks, const c
     });
     if (same != found.c.end()) {
       if (k == 0) found.window_best.push_back(static_cast<std::size_t>(same - found.c.begin()));
+      if (other_look && std::min(1.0, fitted) > same->ncc) {
+        *same = make_candidate(gray, x, y, std::min(1.0, fitted));
+        same->spread = ridge;
+      }
       continue;
     }
     if (k == 0) found.window_best.push_back(found.c.size());
@@ -629,11 +743,11 @@ void PathTracker::Impl::add_window_peaks(const std::vector<Peak>& peaks, const c
   }
 }
 
-std::vector<Candidate> PathTracker::Impl::keep_best(FoundPeaks& found, int n) {
+std::vector<Candidate> PathTracker::Impl::keep_best(FoundPeaks& found, int n, int n_keep) {
   std::vector<bool> keep(found.c.size(), false);
   int kept = 0;
   for (std::size_t i : found.window_best) {
-    if (!keep[i] && kept < kCandidates) {
+    if (!keep[i] && kept < n_keep) {
       keep[i] = true;
       ++kept;
     }
@@ -642,7 +756,7 @@ std::vector<Candidate> PathTracker::Impl::keep_best(FoundPeaks& found, int n) {
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return found.c[a].ncc > found.c[b].ncc; });
   for (std::size_t i : order) {
-    if (!keep[i] && kept < kCandidates) {
+    if (!keep[i] && kept < n_keep) {
       keep[i] = true;
       ++kept;
     }
@@ -670,7 +784,7 @@ void PathTracker::Impl::update(const Frame& f) {
   // candidates of the last step that had any and of the best one of the two such steps
   // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
   // peaks far away never crowd out a blurred object near an anchor.
-  const std::vector<Anchor> anchors = find_anchors();
+  const std::vector<Anchor> anchors = find_anchors(f.index);
   const int n = static_cast<int>(steps.size());
   StepCandidates out;
   out.index = f.index;
@@ -680,19 +794,31 @@ void PathTracker::Impl::update(const Frame& f) {
   // correlation is computed once over their union, and each window reads its part of it
   // (the same values as correlating the window alone: the template inside the window).
   const SearchWindows w = search_windows(anchors, gray);
+  // Each look is searched in the windows: the start's, and the looks of the user's nearest
+  // marks before and after this frame (a corrected frame shows the tracker the object as it
+  // looks there, both ways). A candidate's correlation is its best look's.
+  const std::vector<Look*> searched = looks_for(f.index);
+  for (Look* look : searched) find_peaks(w, gray, *look, look != &start_look, suppress, found);
+  // At most kCandidates (and kCandidatesPerLook more per mark's look): every window's best,
+  // then the best of the rest.
+  const int n_keep = kCandidates + kCandidatesPerLook * static_cast<int>(searched.size() - 1);
+  out.c = keep_best(found, n, n_keep);
+  steps.push_back(std::move(out));
+}
+
+void PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, Look& look, bool other_look,
+                                   int suppress, FoundPeaks& found) {
   // A large union with a template that survives halving is searched coarse to fine: the
   // correlation at half resolution finds each window's peaks, each refined by the
   // full-resolution correlation within 3 px (a quarter of the work over the union).
-  const UnionCorrelation u = correlate_union(w, gray);
+  const UnionCorrelation u = correlate_union(w, gray, look);
   for (const cv::Rect& win : w.wins) {
     // The window in the union's result.
     const cv::Rect rrect(win.x - w.uni.x, win.y - w.uni.y, win.width - p + 1, win.height - p + 1);
-    const std::vector<Peak> peaks = u.coarse ? coarse_peaks(u, rrect, suppress) : fine_peaks(u.all(rrect), suppress);
-    add_window_peaks(peaks, win, gray, suppress, found);
+    const std::vector<Peak> peaks =
+        u.coarse ? coarse_peaks(u, rrect, suppress, look.templ) : fine_peaks(u.all(rrect), suppress);
+    add_window_peaks(peaks, win, gray, suppress, other_look, found);
   }
-  // At most kCandidates: every window's best, then the best of the rest.
-  out.c = keep_best(found, n);
-  steps.push_back(std::move(out));
 }
 
 
@@ -731,8 +857,10 @@ std::vector<StepCandidates> PathTracker::Impl::steps_with_marks() const {
 
 namespace {
 
-PathSearch::PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius)
-    : steps(steps), T(static_cast<int>(steps.size())), G(max_gap_frames + 1), reach(reach), radius(radius) {
+PathSearch::PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius,
+                       double click_px)
+    : steps(steps), T(static_cast<int>(steps.size())), G(max_gap_frames + 1), reach(reach), radius(radius),
+      click_px(click_px) {
   // Manual marks: the path passes through every one (no transition skips a marked step, the
   // path ends at or after the last).
   marks_before.assign(T + 1, 0);
@@ -786,7 +914,14 @@ double PathSearch::accel(int ta, int ka, int tb, int kb, int tc, int kc) const {
                                     : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
   const double sigma = kAccAbs + kAccRel * speed;
   if (manual(ta, ka) || manual(tb, kb) || manual(tc, kc)) {
-    const double z = std::hypot(a.x, a.y) / sigma;
+    // A mark is where the user clicked, within click_px of the object's point: its error
+    // enters the acceleration with the weight of its point (d a / d point).
+    const double h = 0.5 * (tc - ta), w_a = 1 / ((tb - ta) * h), w_c = 1 / ((tc - tb) * h), w_b = w_a + w_c;
+    double var = sigma * sigma;
+    if (manual(ta, ka)) var += std::pow(click_px * w_a, 2);
+    if (manual(tb, kb)) var += std::pow(click_px * w_b, 2);
+    if (manual(tc, kc)) var += std::pow(click_px * w_c, 2);
+    const double z = std::hypot(a.x, a.y) / std::sqrt(var);
     return std::min(0.5 * z * z, kMarkAccCap);
   }
   if (tc - tb > 1) {
@@ -1041,7 +1176,7 @@ std::vector<Observation> PathTracker::Impl::finish() {
   // The steps the path is chosen among: a marked step's only candidate is its mark (cost 0;
   // no fg: it takes no part in the background check below).
   const std::vector<StepCandidates> steps = steps_with_marks();
-  PathSearch search(steps, opt.max_gap_frames, reach, radius);
+  PathSearch search(steps, opt.max_gap_frames, reach, radius, std::max(1.0, kClickPx * size.width / 640.0));
   search.forward();
   search.backward();
   // The best path (forward and backward agree on its cost: F + B is the same along it).

@@ -42,9 +42,20 @@ class PathTracker {
   /// best path passes through every mark (reported manual, score 1), so the path re-tracks
   /// from a mark backward as well as forward. The candidates collected by update() do not
   /// depend on the marks: finish() may be called again after new marks (a correction), which
-  /// re-tracks without any frame. Throws InputError for a mark outside the image or not after
-  /// the start frame, or two on one frame.
+  /// re-tracks without any frame among the candidates already found (a new mark's look, add_look(),
+  /// needs the frames). Looks of marks removed or moved are dropped. Throws InputError for a mark outside the image or not after the start frame, or two
+  /// on one frame.
   void set_marks(std::vector<ManualMark> marks);
+  /// Shows the tracker the object as it looks at the mark of frame `frame` (set by set_marks()):
+  /// `gray` is that frame's grey image or the part of it given by look_crop(), the mark at
+  /// (x_px, y_px) in it. The frames from the nearest marks before to those after it are searched
+  /// for this look as well as the start's, so a correction helps the frames around it, not only its
+  /// own; to help frames before the mark it must be given before they are (track_video reads the
+  /// marked frames first). A flat look (nothing to match) is not used; a mark of another frame, or
+  /// after update() reached it, is an InputError.
+  void add_look(int frame, const cv::Mat& gray, double x_px, double y_px);
+  /// The part of an image of `image` size around a mark that holds every look add_look() may take.
+  static cv::Rect look_crop(cv::Size image, double x_px, double y_px);
   /// Collects the candidates of the next frame (nothing is decided yet).
   void update(const Frame& frame);
   /// The track: one observation per frame given to update(), in order. May be called again

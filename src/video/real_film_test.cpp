@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -141,6 +142,43 @@ TEST(RealFilm, PlainBlurredCarIsNeverConfidentlyWrongWithTheOptionsAUserTriesNex
                 h.confidently_wrong);
     EXPECT_EQ(h.confidently_wrong, 0) << v.what;
   }
+}
+
+TEST(RealFilm, TheHumansMarksOnEveryFifthFrameShowTheCarsLookToTheFramesBetween) {
+  // A user correcting the car: the human's own marks given on every 5th frame (10 of 52). A
+  // mark used to fix its own frame alone (the candidates came from the start's look, which the
+  // car never shows again: 42 of the 42 frames between to correct). Now each mark's look is
+  // searched in the frames from the mark before it to the mark after it. Measured 6 Dec 2026
+  // (docs/benchmarks.md#tracking-on-real-film): 16 of the 42 to correct, 4 of them placed 10-11
+  // px from the human's mark (scores 0.73-0.91: the blurred car's looks a frame apart). The
+  // bounds hold those figures: the test fails when they regress.
+  const std::string path = testing::tracker_project_path("CarInLoop.trz");
+  if (path.empty()) GTEST_SKIP() << "../shared/data/tracker/CarInLoop.trz not found";
+  const VideoInput in = open_input(path, {});
+  const auto human = std::find_if(in.marks_px.begin(), in.marks_px.end(), [](const track::Track& m) { return m.name == "masa A"; });
+  ASSERT_NE(human, in.marks_px.end());
+  TrackVideoOptions o;
+  Target t;
+  t.name = t.from_track = "masa A";
+  int marked = 0;
+  for (const track::TrackPoint& p : human->points) {
+    if (p.frame > 0 && p.frame % 5 == 0) {
+      t.marks.push_back({p.frame, p.x, p.y});
+      ++marked;
+    }
+  }
+  ASSERT_EQ(marked, 10);
+  o.targets.push_back(t);
+  o.thumbnails = 0;
+  const TrackVideoResult res = track_video(path, o);
+  const HumanComparison& h = res.series.at(0).vs_human.value();
+  const int between = h.marks - marked;
+  const int to_correct = h.to_correct;  // the marked frames lie on their marks: none to correct
+  std::printf("CarInLoop.trz masa A with %d of the human's marks: of the %d frames between, %d to correct, %d confidently wrong\n",
+              marked, between, to_correct, h.confidently_wrong);
+  EXPECT_EQ(between, 42);
+  EXPECT_LE(to_correct, 16);
+  EXPECT_LE(h.confidently_wrong, 4);
 }
 
 // Not yet met (issue 24 open), so disabled rather than loosened: the car is not followed (no

@@ -86,6 +86,9 @@ struct Follower {
   // re-tracked backward from it when it is reached; and the last frame they may reach back to.
   std::deque<Frame> recent;
   int reach_back_to = 0;
+  // PathTracker with marks: the grey image around each mark (PathTracker::look_crop) and the
+  // mark in it, read before the tracking (read_mark_looks) and given at the start (add_look).
+  std::vector<std::pair<ManualMark, cv::Mat>> looks;
 };
 
 /// Frames before a mark that a frame or ellipse tracker re-tracks backward from it (copies of
@@ -372,6 +375,34 @@ void track_backward(Follower& w, const Frame& marked, const ManualMark& mk, cons
   }
 }
 
+/// The path trackers' marks are read first (a decoding up to the last of them), so that each
+/// mark shows its tracker the object's look there in the frames before it as well as after
+/// (PathTracker::add_look): kept is the part of the marked frame's grey image around the mark.
+void read_mark_looks(std::vector<Follower>& followers, const VideoInput& in) {
+  int last = -1;
+  for (const Follower& w : followers) {
+    if (!std::holds_alternative<PathTracker>(w.tracker)) continue;
+    for (const ManualMark& m : w.target.marks) last = std::max(last, m.frame);
+  }
+  if (last < 0) return;
+  FrameReader reader(in);
+  Frame f;
+  while (reader.next(f) && f.index <= last) {
+    for (Follower& w : followers) {
+      if (!std::holds_alternative<PathTracker>(w.tracker)) continue;
+      for (const ManualMark& m : w.target.marks) {
+        if (m.frame != f.index) continue;
+        const cv::Rect r = PathTracker::look_crop(f.gray.size(), m.x_px, m.y_px);
+        if (r.area() == 0) continue;  // outside the image: check_marks' error comes at the start
+        ManualMark in_crop = m;
+        in_crop.x_px -= r.x;
+        in_crop.y_px -= r.y;
+        w.looks.emplace_back(in_crop, f.gray(r).clone());
+      }
+    }
+  }
+}
+
 /// Starts every target and streams the clip through its tracker (the rows of the frame
 /// trackers; the path trackers collect candidates).
 void stream(TrackSession::Impl& session, const std::string& input, const TrackVideoOptions& options) {
@@ -380,7 +411,7 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
   const VideoInput& in = result.input;
   std::vector<Follower> followers;
   for (const Target& t : options.targets) {
-    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}, {}, {}, 0};
+    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}, {}, {}, 0, {}};
     if (w.target.kind == Target::Kind::ellipse) {
       w.tracker = EllipseTracker(options.ellipse);
     } else if (options.offline_points) {
@@ -399,6 +430,7 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
     followers.push_back(std::move(w));
   }
 
+  read_mark_looks(followers, in);
   FrameReader reader(in);
   const int expected = reader.expected_steps();
   const std::set<int> thumb_steps = thumbnail_steps(options.thumbnails, expected);
@@ -416,7 +448,11 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
                                            [&](const ManualMark& m) { return m.frame == f.index; });
             if (!w.started) {
               record(w, f, in, result.series, tracker.start(f, w.start_x, w.start_y, w.target.name));
-              if constexpr (std::is_same_v<Tracker, PathTracker>) tracker.set_marks(w.target.marks);
+              if constexpr (std::is_same_v<Tracker, PathTracker>) {
+                tracker.set_marks(w.target.marks);
+                for (const auto& [mk, crop] : w.looks) tracker.add_look(mk.frame, crop, mk.x_px, mk.y_px);
+                w.looks.clear();
+              }
               w.started = true;
             } else if constexpr (std::is_same_v<Tracker, PathTracker>) {
               tracker.update(f);  // answers in finish(), after the last frame

@@ -135,11 +135,13 @@ TrackVideoResult track_video(const std::string& input, const TrackVideoOptions& 
                              TrackSession* keep = nullptr);
 
 /// The tracking of `session` again with `targets` (those tracked, in the same order, with the
-/// same starts) whose marks may differ: a path-tracked point's new marks choose its path anew
-/// among the candidates already found (PathTracker::finish), every other track is as it was;
-/// the same result as track_video() with these marks. nullopt when that is not possible (no
-/// session, other targets, or new marks of a frame-to-frame or ellipse track, which stream
-/// forward: track afresh). Throws InputError for a bad mark, the session unchanged.
+/// same starts) whose marks may differ, without decoding (the studio's answer to a drag): a
+/// path-tracked point's new marks choose its path anew among the candidates already found
+/// (PathTracker::finish), every other track is as it was. A new mark's look is not searched for
+/// (PathTracker::add_look needs the frames): where it would add candidates, track_video() with
+/// these marks finds more. nullopt when it is not possible (no session, other targets, or new
+/// marks of a frame-to-frame or ellipse track, which stream forward: track afresh). Throws
+/// InputError for a bad mark, the session unchanged.
 std::optional<TrackVideoResult> retrack(TrackSession& session, const std::vector<Target>& targets);
 
 /// The tracked positions as a TrackSet (lost rows left out), for the analyses and `write_trk`.

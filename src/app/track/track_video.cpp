@@ -278,6 +278,7 @@ TrackVideoResult track_video(const TrackVideoOptions& options) {
     again = video::retrack(*options.session, o.targets);
   }
   video::TrackVideoResult r;
+  const bool from_session = again.has_value();
   if (again) {
     r = std::move(*again);
   } else {
@@ -295,6 +296,7 @@ TrackVideoResult track_video(const TrackVideoOptions& options) {
   TrackVideoResult result;
   result.json = summary(r, options);
   result.series = std::move(r.series);
+  result.from_session = from_session;
   return result;
 }
 

@@ -105,6 +105,9 @@ struct TrackVideoResult {
   /// Per output track: name, kind and rows (frame, t (s), x, y (m, px uncalibrated), x_px,
   /// y_px (px), score, lost), the pattern/ellipse angle (rad), lost ranges.
   std::vector<video::TrackedSeries> series;
+  /// Concluded from `session` without decoding (video::retrack): a new mark's look was not
+  /// searched for (PathTracker::add_look); tracking afresh would.
+  bool from_session = false;
 };
 
 /// Parses and validates the options (InputError naming --start, --calibrate, --origin,
