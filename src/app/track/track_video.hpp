@@ -71,7 +71,8 @@ inline const Fields<TrackVideoOptions>& track_video_fields() {
           "Tracker project: follow this track from its first mark, and compare with its further marks; repeatable");
     d.add("mark", &O::mark, "",
           "correct a track: NAME@FRAME=X,Y in image pixels; the track passes there (reported manual, score 1) and "
-          "is re-tracked from it forward and backward; repeatable");
+          "is re-tracked from it forward and backward (a point's look there searched for in the frames around it); "
+          "repeatable");
     d.add("scale", &O::scale, "m/px", "plain video: metres per pixel");
     d.add("calibrate", &O::calibrate, "", "plain video: a stick of known length, X1,Y1,X2,Y2,LENGTH (px, px, px, px, m)");
     d.add("origin", &O::origin, "", "world origin in the image, X,Y px (when not given: the bottom-left pixel)");
