@@ -21,14 +21,20 @@ def render_throw(tribolab, video, truth_csv, size):
         [tribolab, "bounce", "render", "--size", size, "--fps", "100", "--height", "0.3", "--after", "0.05",
          "--background", "plain", "--no-floor", "--out", video, "--truth", truth_csv, "--json"],
         check=True, capture_output=True, text=True).stdout)
+    return render, throw_truth(render, truth_csv, "ball")
+
+
+def throw_truth(render, truth_csv, track):
+    """A throw's truth of `track` (ball: its centre; ball.A, ball.B: the ends of its major axis)
+    {frame: (x, y) in pixels}, from render_throw's render and truth CSV."""
     scale = render["scale_m_per_px"]
     ox, oy = render["origin_px"]
     truth = {}
     with open(truth_csv) as f:
         for row in csv.DictReader(f):
-            if row["track"] == "ball":
+            if row["track"] == track:
                 truth[int(row["frame"])] = (ox + float(row["x"]) / scale, oy - float(row["y"]) / scale)
-    return render, truth
+    return truth
 
 
 def render_incline(tribolab, video, truth_csv, args):

@@ -7,7 +7,8 @@ the render's, then drag the ball's point in one frame off by a few pixels
 (a correction), wait for the re-tracking, drag the axes' origin and turn the axes by 90 deg
 by their x-axis's ring (the tracks follow into the turned axes), and read the saved .trk back
 with `track import`: the dragged frame holds the dragged position in the turned axes, the
-others are still on the ball. Screenshots of
+others are still on the ball; then track a point on the ball's rim with the path tracker and
+correct it, which is answered at once and then searched for the mark's look. Screenshots of
 each step are left in OUT_DIR.
 
     /usr/bin/python3 tests/browser/studio_e2e.py TRIBOLAB OUT_DIR
@@ -24,7 +25,7 @@ from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
-from studio_browser import calibrate, image_clicker, open_clip, render_throw, studio_page
+from studio_browser import calibrate, image_clicker, open_clip, render_throw, studio_page, throw_truth
 
 ZOOM = 1  # chosen in the page: one image pixel is one CSS pixel (the 640x480 film fits the window)
 
@@ -43,10 +44,11 @@ def main(tribolab, out):
     render, truth = render_throw(tribolab, os.path.join(folder, "throw.avi"), os.path.join(folder, "truth.csv"),
                                  "640x480")
     shutil.copyfile(os.path.join(folder, "throw.avi"), os.path.join(folder, "throw2.avi"))  # a series' second run
+    rim = throw_truth(render, os.path.join(folder, "truth.csv"), "ball.A")
     scale = render["scale_m_per_px"]
     with studio_page(tribolab, folder, fail) as (driver, url, logs):
         dragged = run_page(driver, url, out, truth, scale, render["ball_start_px"], render["origin_px"],
-                           render["truth"]["e_velocity"])
+                           render["truth"]["e_velocity"], rim)
     errors = [e for e in logs if e["level"] == "SEVERE"]
     if errors:
         fail("script errors: " + json.dumps(errors))
@@ -77,7 +79,7 @@ def main(tribolab, out):
     print("ok studio")
 
 
-def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
+def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth, rim):
     wait, status, error, canvas = open_clip(driver, url, "throw.avi", len(truth), 640, ZOOM, fail)
     driver.save_screenshot(os.path.join(out, "studio_1_opened.png"))
 
@@ -323,6 +325,37 @@ def run_page(driver, url, out, truth, scale, ball_start, origin_px, e_truth):
     if worst > 1e-9:
         fail("after turning the axes by 90 deg a point's world position is %.3g m from its image offset turned" % worst)
     print("axes dragged and turned by 90 deg: world x, y are the turned image offsets (worst %.1g m)" % worst)
+
+    # A path-tracked point on the ball's rim (the end A of its major axis in frame 0: the plain
+    # ball's centre is flat) and its correction: the answer at once ("re-tracking spot: done"),
+    # then the page tracks the clip again so that the frames around the mark are searched for
+    # the object as it looks there ("searching the frames around the marks: done"), after which
+    # the state has no look pending and the mark stands.
+    driver.execute_script("showFrame(0)")
+    wait.until(lambda d: canvas.get_attribute("data-frame") == str(sorted(truth)[0]))
+    name = driver.find_element(By.ID, "track-name")
+    name.clear()
+    name.send_keys("spot")
+    Select(driver.find_element(By.ID, "track-kind")).select_by_value("point")
+    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
+    click_image(*rim[sorted(rim)[0]])
+    wait.until(lambda d: ended("tracking"))
+    if error():
+        fail("tracking a point: " + error())
+    SPOT = sorted(truth)[12]
+    driver.execute_script("showFrame(arguments[0])", 12)
+    wait.until(lambda d: canvas.get_attribute("data-frame") == str(SPOT))
+    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=mark]").click()
+    click_image(math.floor(rim[SPOT][0]) + 0.5, math.floor(rim[SPOT][1]) + 0.5)
+    wait.until(lambda d: ended("searching the frames around the marks") or status() == "re-tracking spot: failed")
+    if error() or not status().endswith("done"):
+        fail("correcting the point: " + (error() or status()))
+    state = driver.execute_async_script("const done = arguments[arguments.length - 1]; api('/api/state').then(done);")
+    spot = [s for s in state["starts"] if s["name"] == "spot"]
+    if state["looks_pending"] or not spot or [m["frame"] for m in spot[0]["marks"]] != [SPOT]:
+        fail("after the search the state is pending %s with the marks %s" % (state["looks_pending"], spot))
+    print("a point's correction: answered at once, then the frames around it searched for its look")
+    driver.find_element(By.CSS_SELECTOR, "input[name=mode][value=track]").click()
     return DRAG, after["x_px"], after["y_px"]
 
 
