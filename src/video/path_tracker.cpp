@@ -415,7 +415,8 @@ std::string PathTracker::Impl::main_loss_hint() const {
     return "the object matched its first look poorly in " + std::to_string(m.lost_score) +
            " frame(s) (blur, a lossy video, a turning or growing object): a lower " + field("min_score") +
            " (e.g. 0.4) or another " + field("patch") + "; for a mark that turns (on a wheel), " + field("point_tracker") +
-           " frame";
+           " frame; or " + field("mark") + " the object in one of those frames: the frames around a mark are searched "
+           "for its look there";
   }
   if (m.lost_end > m.lost_none - m.lost_end) {
     // The track ended: after its last point nothing within reach that resembles the object's
@@ -425,7 +426,8 @@ std::string PathTracker::Impl::main_loss_hint() const {
            " frame(s) left "
            "(the object left the view or was hidden, moved more than " + field("search") +
            " px per frame, or turned or changed its look): a larger " + field("search") + " or " + field("max_gap") +
-           "; for an object that turns, " + field("point_tracker") + " frame";
+           "; for an object that turns, " + field("point_tracker") + " frame; or " + field("mark") +
+           " the object in one of those frames: the frames around a mark are searched for its look there";
   }
   return "the object was not found in " + std::to_string(m.lost_none) +
          " frame(s) (hidden, out of view, or moving more than " + field("search") + " px per frame): a larger " +
