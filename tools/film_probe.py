@@ -41,33 +41,19 @@ import argparse
 import io
 import re
 import sys
-import xml.etree.ElementTree as ET
 import zipfile
 
 import numpy as np
+from track_eval import human_marks
 from PIL import Image
 from scipy import ndimage, signal
 
 
 def read_project(path, track):
-    """The image sequence (RGB, float) and {frame: (x, y)} of the track's marks."""
+    """The image sequence (RGB, float) and {frame: (x, y)} of the track's marks in image px
+    (pixel centres at whole numbers, as the images' indices and `track video` have them)."""
     z = zipfile.ZipFile(path)
-    trk = [n for n in z.namelist() if n.endswith(".trk")][0]
-    root = ET.fromstring(z.read(trk))
-    marks = {}
-    for obj in root.iter("object"):
-        names = [p for p in obj.findall("property") if p.get("name") == "name"]
-        if not names or names[0].text != track or "PointMass" not in (obj.get("class") or ""):
-            continue
-        for fd in obj.iter("property"):
-            m = re.fullmatch(r"\[(\d+)\]", fd.get("name") or "")
-            inner = fd.find("object")
-            if not m or inner is None or "FrameData" not in (inner.get("class") or ""):
-                continue
-            v = {p.get("name"): float(p.text) for p in inner.findall("property") if p.get("name") in ("x", "y")}
-            if "x" in v and "y" in v:
-                marks[int(m.group(1))] = (v["x"], v["y"])
-        break
+    marks = human_marks(path, track)
     images = sorted(n for n in z.namelist() if re.search(r"\d+\.(jpg|jpeg|png)$", n, re.I))
     if not images:
         sys.exit(f"{path}: no image sequence in the project (only image-sequence videos are read)")
