@@ -388,7 +388,9 @@ PointTracker& PointTracker::operator=(PointTracker&&) noexcept = default;
 Observation PointTracker::start(const Frame& first, double x_px, double y_px,
                                 const std::string& name) {
   Impl& m = *impl_;
-  const cv::Mat& gray = first.gray;
+  // This tracker reads the whole frame's grey image (its windows reach as far as the motion).
+  cv::Mat buf;
+  const cv::Mat gray = gray_region(first, cv::Rect(cv::Point(), frame_size(first)), buf);
   if (gray.empty() || gray.type() != CV_8UC1) {
     throw InputError(name, "no grey image in frame " + std::to_string(first.index));
   }
@@ -468,7 +470,8 @@ Observation PointTracker::update(const Frame& frame) {
 Observation PointTracker::mark(const Frame& frame, double x_px, double y_px) {
   if (!impl_ || impl_->big.empty()) throw InputError("point tracker: mark() before start()");
   Impl& m = *impl_;
-  const cv::Mat& gray = frame.gray;
+  cv::Mat buf;
+  const cv::Mat gray = gray_region(frame, cv::Rect(cv::Point(), frame_size(frame)), buf);
   if (gray.size() != m.image_size) {
     throw InputError(m.name, "frame " + std::to_string(frame.index) + " is not of the start frame's size");
   }
@@ -709,7 +712,8 @@ void PointTracker::Impl::accept(Observation& o, const MotionState& pred, bool re
 }
 
 Observation PointTracker::Impl::update(const Frame& frame) {
-  const cv::Mat& gray = frame.gray;
+  cv::Mat buf;
+  const cv::Mat gray = gray_region(frame, cv::Rect(cv::Point(), frame_size(frame)), buf);
   if (gray.size() != image_size || gray.type() != CV_8UC1) {
     throw InputError(name, "frame " + std::to_string(frame.index) + " has no grey image of the " +
                                "start frame's size");
