@@ -878,26 +878,43 @@ void PathSearch::forward() {
 }
 
 void PathSearch::backward() {
+  struct Successor {
+    double bound;  // its cost and B without the acceleration: no path through it costs less
+    int t3, k3, idx;
+  };
+  std::vector<Successor> next;
   for (int t = T - 1; t >= 0; --t) {
-    for (PathState& s : S[t]) {
-      double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
+    for (int k = 0; k < static_cast<int>(steps[t].c.size()); ++k) {
+      // The successors of a path point at candidate k of step t (the same for every state
+      // ending there), cheapest bound first: the acceleration cost is never negative and
+      // rounding is monotone, so the first whose bound is no better than the best so far
+      // ends the search with the same minimum as visiting them all.
+      next.clear();
       for (int g3 = 1; g3 <= G && t + g3 < T; ++g3) {
         const int t3 = t + g3;
         if (skips_mark(t, t3)) break;
         for (int k3 = 0; k3 < static_cast<int>(steps[t3].c.size()); ++k3) {
           const auto [a, b] = block(t3, k3, g3);
-          const int idx = a + s.k;  // the successor whose previous point is this state's
-          if (idx >= b || !gate(t, s.k, t3, k3)) continue;
-          const PathState& q = S[t3][idx];
+          const int idx = a + k;  // the successor whose previous point is this one
+          if (idx >= b || !gate(t, k, t3, k3)) continue;
           const double u = steps[t3].c[k3].cost + kMissCost * (g3 - 1);
-          // accel() >= 0 and rounding is monotone: no better than `best` without it, none with it.
-          if (!(u + q.B < best)) continue;
-          const double acc = t == 0 ? 0.0 : accel(t - s.g, s.j, t, s.k, t3, k3);
-          const double c = u + acc + q.B;
-          best = std::min(best, c);
+          next.push_back({u + S[t3][idx].B, t3, k3, idx});
         }
       }
-      s.B = static_cast<float>(best);
+      std::sort(next.begin(), next.end(), [](const Successor& x, const Successor& y) { return x.bound < y.bound; });
+      const auto [first, end] = std::pair<int, int>(off[t].empty() ? 0 : off[t][k * G], off[t].empty() ? 1 : off[t][k * G + G]);
+      for (int i = first; i < end; ++i) {
+        PathState& s = S[t][i];
+        double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
+        for (const Successor& n : next) {
+          if (!(n.bound < best)) break;
+          const int g3 = n.t3 - t;
+          const double u = steps[n.t3].c[n.k3].cost + kMissCost * (g3 - 1);
+          const double acc = t == 0 ? 0.0 : accel(t - s.g, s.j, t, s.k, n.t3, n.k3);
+          best = std::min(best, u + acc + S[n.t3][n.idx].B);
+        }
+        s.B = static_cast<float>(best);
+      }
     }
   }
 }
