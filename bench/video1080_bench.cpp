@@ -8,6 +8,7 @@
 #include "video/frame.hpp"
 #include "video/ellipse_tracker.hpp"
 #include "video/path_tracker.hpp"
+#include "video/point_tracker.hpp"
 #include "video/render.hpp"
 #include "video/render_throw.hpp"
 
@@ -17,6 +18,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace {
@@ -28,6 +30,25 @@ struct Clip1080 {
   cv::Point2d ball, sticker;  ///< px in frame 0
   int frames = 0;
   ~Clip1080() { std::filesystem::remove(path); }
+};
+
+/// CPU time of the whole process (every thread: FFmpeg decodes on threads of its own), s.
+double process_cpu_s() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+/// Reports the process CPU time per clip (all threads), ms: the load-independent measure of
+/// what decoding plus tracking costs, where real time depends on the other processes' load
+/// and the main thread's CPU time leaves out the decoder's threads.
+struct ProcessCpu {
+  benchmark::State& state;
+  double t0 = process_cpu_s();
+  ~ProcessCpu() {
+    state.counters["cpu_all_ms"] =
+        benchmark::Counter(1e3 * (process_cpu_s() - t0), benchmark::Counter::kAvgIterations);
+  }
 };
 
 const Clip1080& clip1080() {
@@ -62,6 +83,7 @@ const Clip1080& clip1080() {
 
 void BM_Decode1080pH264(benchmark::State& state) {
   const Clip1080& c = clip1080();
+  const ProcessCpu cpu{state};
   std::int64_t frames = 0;
   for (auto _ : state) {
     const auto cap = video::open_video_file(c.path);
@@ -79,6 +101,7 @@ BENCHMARK(BM_Decode1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
 /// trackers made only their windows' grey image: the reference for that cost).
 void BM_DecodeAndGray1080pH264(benchmark::State& state) {
   const Clip1080& c = clip1080();
+  const ProcessCpu cpu{state};
   std::int64_t frames = 0;
   for (auto _ : state) {
     const auto cap = video::open_video_file(c.path);
@@ -96,6 +119,7 @@ BENCHMARK(BM_DecodeAndGray1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime
 /// Decoding and the default point tracker (the path tracker) on the sticker.
 void BM_DecodeTrackPath1080pH264(benchmark::State& state) {
   const Clip1080& c = clip1080();
+  const ProcessCpu cpu{state};
   std::int64_t frames = 0;
   int lost = 0;
   for (auto _ : state) {
@@ -122,9 +146,39 @@ void BM_DecodeTrackPath1080pH264(benchmark::State& state) {
 }
 BENCHMARK(BM_DecodeTrackPath1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+/// Decoding and the frame-to-frame point tracker (`--point-tracker frame`) on the sticker.
+void BM_DecodeTrackFrame1080pH264(benchmark::State& state) {
+  const Clip1080& c = clip1080();
+  const ProcessCpu cpu{state};
+  std::int64_t frames = 0;
+  int lost = 0;
+  for (auto _ : state) {
+    const auto cap = video::open_video_file(c.path);
+    video::PointTracker tracker;
+    video::Frame f;
+    bool started = false;
+    lost = 0;
+    while (cap->read(f.bgr)) {
+      f.t = f.index / 240.0;
+      if (!started) {
+        benchmark::DoNotOptimize(tracker.start(f, c.sticker.x, c.sticker.y, "sticker"));
+        started = true;
+      } else {
+        lost += tracker.update(f).lost;
+      }
+      ++f.index;
+      ++frames;
+    }
+  }
+  state.SetItemsProcessed(frames);
+  state.counters["lost"] = lost;
+}
+BENCHMARK(BM_DecodeTrackFrame1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 /// Decoding and the ellipse tracker on the ball.
 void BM_DecodeTrackEllipse1080pH264(benchmark::State& state) {
   const Clip1080& c = clip1080();
+  const ProcessCpu cpu{state};
   std::int64_t frames = 0;
   int lost = 0;
   for (auto _ : state) {
