@@ -396,7 +396,7 @@ PointTracker& PointTracker::operator=(PointTracker&&) noexcept = default;
 Observation PointTracker::start(const Frame& first, double x_px, double y_px,
                                 const std::string& name) {
   Impl& m = *impl_;
-  // This tracker reads the whole frame's grey image (its windows reach as far as the motion).
+  // The start frame's grey image, whole (the reference patch and its surroundings; once per track).
   cv::Mat buf;
   const cv::Mat gray = gray_region(first, cv::Rect(cv::Point(), frame_size(first)), buf);
   if (gray.empty() || gray.type() != CV_8UC1) {
