@@ -30,7 +30,8 @@ TEST(Frame, GrayRegionIsTheSameAsTheWholeGrayImageThere) {
   Frame lazy;
   lazy.bgr = bgr;
   cv::Mat buf;
-  for (const cv::Rect r : {cv::Rect(0, 0, 53, 37), cv::Rect(3, 5, 31, 17), cv::Rect(50, 1, 3, 36), cv::Rect(7, 9, 1, 1)}) {
+  for (const cv::Rect r :
+       {cv::Rect(0, 0, 53, 37), cv::Rect(3, 5, 31, 17), cv::Rect(50, 1, 3, 36), cv::Rect(7, 9, 1, 1)}) {
     const cv::Mat g = gray_region(lazy, r, buf);
     ASSERT_EQ(g.size(), r.size());
     EXPECT_EQ(cv::norm(g, whole.gray(r), cv::NORM_INF), 0) << r;

@@ -539,7 +539,8 @@ SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& ancho
   SearchWindows w;
   const double speed = seen_speed(static_cast<int>(steps.size()));
   for (const Anchor& a : anchors) {
-    const double motion = speed < 0 ? reach * a.age : std::min(reach * a.age, reach + kWindowSpeeds * speed * (a.age - 1));
+    const double motion =
+        speed < 0 ? reach * a.age : std::min(reach * a.age, reach + kWindowSpeeds * speed * (a.age - 1));
     const double r = motion + h + 1;  // px
     const cv::Rect win = cv::Rect(static_cast<int>(std::floor(a.at.x - r)), static_cast<int>(std::floor(a.at.y - r)),
                                   static_cast<int>(std::ceil(2 * r)) + 1, static_cast<int>(std::ceil(2 * r)) + 1) &
@@ -902,7 +903,8 @@ void PathSearch::backward() {
         }
       }
       std::sort(next.begin(), next.end(), [](const Successor& x, const Successor& y) { return x.bound < y.bound; });
-      const auto [first, end] = std::pair<int, int>(off[t].empty() ? 0 : off[t][k * G], off[t].empty() ? 1 : off[t][k * G + G]);
+      // The states ending at candidate k (step 0: its one state).
+      const int first = t == 0 ? 0 : off[t][k * G], end = t == 0 ? 1 : off[t][k * G + G];
       for (int i = first; i < end; ++i) {
         PathState& s = S[t][i];
         double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark

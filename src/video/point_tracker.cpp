@@ -766,7 +766,8 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0);
   // Only the window's grey image is made, and h + kRefineSlackPx px around it for the refinement.
   const int margin = h + kRefineSlackPx;
-  const cv::Rect region = (win + cv::Point(-margin, -margin) + cv::Size(2 * margin, 2 * margin)) & cv::Rect(cv::Point(), image_size);
+  const cv::Rect region =
+      (win + cv::Point(-margin, -margin) + cv::Size(2 * margin, 2 * margin)) & cv::Rect(cv::Point(), image_size);
   const cv::Mat gray = gray_region(frame, region, region_gray);
   gray(win - region.tl()).convertTo(window, CV_32F);
 
