@@ -316,7 +316,8 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
         for (int k = 0; k < img.channels(); ++k) c2 += (bg[k] - obj[k]) * (bg[k] - obj[k]);
         s.colour = obj;
         s.contrast = std::sqrt(c2);
-        const double noise = noise_sd(first.gray.empty() ? img(roi) : first.gray(roi));
+        cv::Mat buf;
+        const double noise = noise_sd(gray_region(first, roi, buf));
         if (s.contrast < 20 || s.contrast < 8 * noise || cv::countNonZero(object) < 12) {
           if (whole) throw InputError(where, no_object);
         } else {

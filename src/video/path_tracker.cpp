@@ -38,6 +38,13 @@ constexpr int kCoarseMinArea = 400000;
 constexpr int kCoarseMinPatch = 15;
 constexpr double kCoarseFloor = 0.2;
 constexpr int kRefinePx = 3;
+// Older anchors' windows from the motion (PathTracker::Impl::seen_speed): while the object is
+// seen confidently (two confident sightings at most kWindowSpeedSteps steps apart, the later
+// within max_gap_frames + 1 steps), an anchor `age` steps back reaches `reach` for the first
+// step and kWindowSpeeds times the speed between those sightings for each further one (a
+// reversal at a bounce keeps the speed), never more than `reach` per step.
+constexpr int kWindowSpeedSteps = 2;
+constexpr double kWindowSpeeds = 2;
 // Background samples kept (grey frames spread over the clip, one per block of `stride`;
 // when full, every other one is dropped and the stride doubles): the temporal median of at
 // most 16 frames.
@@ -283,6 +290,7 @@ struct PathTracker::Impl {
   double reach = 0;        // largest motion per frame, px
   Look start_look;         // the object at the click
   std::vector<Look> looks;  // the object at the user's marks (add_look), by frame
+  cv::Mat region_buf;      // the grey image of a step's windows (reused from step to step)
   // The candidates found in every step, steps[0] the start (the click): they do not depend on
   // the marks, so that finish() can be run again with other marks without a frame.
   std::vector<StepCandidates> steps;
@@ -300,14 +308,16 @@ struct PathTracker::Impl {
   int lost_unlinked = 0;  // frames of a run reached only through doubtful points (finish())
   double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
 
-  void sample(const cv::Mat& gray) {
+  void sample(const Frame& f) {
     // One frame per block of `stride`, at a scrambled place in the block: a regular stride
     // aliases with a periodic motion (a pendulum of period 15 frames sampled every 15 frames
-    // puts the bob into the background median).
+    // puts the bob into the background median). Only a sampled frame's grey image is made whole.
     const unsigned block = static_cast<unsigned>(seen / stride);
     const int place = static_cast<int>(((block * 2654435761u) >> 8) % static_cast<unsigned>(stride));
     if (seen++ % stride != place) return;
-    samples.push_back(gray.clone());
+    cv::Mat own;
+    const cv::Mat g = gray_region(f, cv::Rect(cv::Point(), size), own);
+    samples.push_back(g.data == own.data ? own : g.clone());
     if (samples.size() >= kMaxSamples) {
       std::vector<cv::Mat> kept;
       for (std::size_t i = 0; i < samples.size(); i += 2) kept.push_back(samples[i]);
@@ -316,13 +326,15 @@ struct PathTracker::Impl {
     }
   }
 
-  Candidate make_candidate(const cv::Mat& gray, double x, double y, double ncc) const {
+  // A candidate at (x, y) px; `gray` is the grey image of a rectangle at `origin` holding its
+  // patch (or, where the patch leaves it, sharing that border with the image).
+  Candidate make_candidate(const cv::Mat& gray, cv::Point origin, double x, double y, double ncc) const {
     Candidate c;
     c.x = x;
     c.y = y;
     c.ncc = ncc;
     c.at = cv::Point(static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y)));
-    cv::getRectSubPix(gray, cv::Size(p, p), cv::Point2f(c.at), c.patch);
+    cv::getRectSubPix(gray, cv::Size(p, p), cv::Point2f(c.at - origin), c.patch);
     return c;
   }
 
@@ -366,23 +378,29 @@ struct PathTracker::Impl {
   }
   // Where the object can be in the step of frame `index`: the anchors of its search windows.
   std::vector<Anchor> find_anchors(int index) const;
+  // The object's speed between its last two confident sightings, px per step, while it
+  // bounds the older anchors' windows of step n (kWindowSpeeds); negative when it does not.
+  double seen_speed(int n) const;
   // The looks searched in the frame `index`: the start's, then those of the nearest marks
   // before and after it.
   std::vector<Look*> looks_for(int index);
-  // The candidates of one look in the windows `w` of `gray`.
-  void find_peaks(const SearchWindows& w, const cv::Mat& gray, Look& look, bool other_look, int suppress,
-                  FoundPeaks& found);
-  // The anchors' windows in `gray` and their union.
-  SearchWindows search_windows(const std::vector<Anchor>& anchors, const cv::Mat& gray) const;
-  // A look's correlation over the windows' union (coarse for a large union; makes its templ_half).
-  UnionCorrelation correlate_union(const SearchWindows& w, const cv::Mat& gray, Look& look) const;
+  // The candidates of one look in the windows `w`; `gray` is the grey image of a rectangle at
+  // `origin` holding the windows' union and a pixel around it.
+  void find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look, bool other_look,
+                  int suppress, FoundPeaks& found) const;
+  // The anchors' windows in the image and their union.
+  SearchWindows search_windows(const std::vector<Anchor>& anchors) const;
+  // A look's correlation over the windows' union, `gray` its grey image (coarse for a large
+  // union; makes the look's templ_half).
+  UnionCorrelation correlate_union(const cv::Mat& gray, Look& look) const;
   // The best kPerWindow peaks of one window (`rrect` in the union's result) found coarse to fine.
   std::vector<Peak> coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect, int suppress,
                                  const cv::Mat& templ) const;
   // Adds a window's peaks as candidates, a peak already found from another window once (from
-  // another look: the better correlation kept).
-  void add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray, int suppress,
-                        bool other_look, FoundPeaks& found) const;
+  // another look: the better correlation kept). `gray` is the grey image of a rectangle at
+  // `origin` holding the window and a pixel around it.
+  void add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray, cv::Point origin,
+                        int suppress, bool other_look, FoundPeaks& found) const;
   // At most `n_keep` of the found (every window's best first); updates the lead sightings (step n).
   std::vector<Candidate> keep_best(FoundPeaks& found, int n, int n_keep);
   std::vector<Observation> finish();
@@ -445,7 +463,9 @@ int PathTracker::patch_px() const { return impl_->p; }
 Observation PathTracker::start(const Frame& first, double x_px, double y_px, const std::string& name) {
   if (const auto e = impl_->opt.validate(); !e.empty()) throw InputError(name, e);
   Impl& m = *impl_;
-  const cv::Mat& gray = first.gray;
+  cv::Mat buf;  // the start frame's grey image, whole (scale selection, template, first sample)
+  const cv::Mat gray = gray_region(first, cv::Rect(cv::Point(), frame_size(first)), buf);
+  if (gray.empty()) throw InputError(name, "frame " + std::to_string(first.index) + " has no image");
   if (!(x_px >= 0 && y_px >= 0 && x_px <= gray.cols - 1 && y_px <= gray.rows - 1)) {
     throw InputError(name, "start point (" + std::to_string(x_px) + ", " + std::to_string(y_px) +
                                ") px lies outside the " + std::to_string(gray.cols) + "x" +
@@ -490,11 +510,11 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   m.lead_frames[1] = 0;
   StepCandidates s;
   s.index = first.index;
-  s.c.push_back(m.make_candidate(gray, x_px, y_px, 1));
+  s.c.push_back(m.make_candidate(gray, cv::Point(), x_px, y_px, 1));
   s.c.back().x = x_px;
   s.c.back().y = y_px;
   m.steps.push_back(std::move(s));
-  m.sample(gray);
+  m.sample(first);
   Observation o;
   o.frame = first.index;
   o.x_px = x_px;
@@ -620,13 +640,22 @@ std::vector<Look*> PathTracker::Impl::looks_for(int index) {
   return out;
 }
 
-SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& anchors, const cv::Mat& gray) const {
+double PathTracker::Impl::seen_speed(int n) const {
+  const int apart = lead_frames[1] - lead_frames[0];
+  if (lead_frames[0] < 0 || apart > kWindowSpeedSteps || n - lead_frames[1] > opt.max_gap_frames + 1) return -1;
+  return std::hypot(lead[1].x - lead[0].x, lead[1].y - lead[0].y) / apart;
+}
+
+SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& anchors) const {
   SearchWindows w;
+  const double speed = seen_speed(static_cast<int>(steps.size()));
   for (const Anchor& a : anchors) {
-    const double r = reach * a.age + h + 1;
+    const double motion =
+        speed < 0 ? reach * a.age : std::min(reach * a.age, reach + kWindowSpeeds * speed * (a.age - 1));
+    const double r = motion + h + 1;  // px
     const cv::Rect win = cv::Rect(static_cast<int>(std::floor(a.at.x - r)), static_cast<int>(std::floor(a.at.y - r)),
                                   static_cast<int>(std::ceil(2 * r)) + 1, static_cast<int>(std::ceil(2 * r)) + 1) &
-                         cv::Rect(0, 0, gray.cols, gray.rows);
+                         cv::Rect(cv::Point(), size);
     if (win.width <= p + 2 || win.height <= p + 2) continue;
     w.wins.push_back(win);
     w.uni = w.uni.area() == 0 ? win : (w.uni | win);
@@ -634,13 +663,13 @@ SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& ancho
   return w;
 }
 
-UnionCorrelation PathTracker::Impl::correlate_union(const SearchWindows& w, const cv::Mat& gray, Look& look) const {
+UnionCorrelation PathTracker::Impl::correlate_union(const cv::Mat& gray, Look& look) const {
   const cv::Mat& templ = look.templ;
   cv::Mat& templ_half = look.templ_half;
   UnionCorrelation u;
-  u.coarse = !w.wins.empty() && p >= kCoarseMinPatch && w.uni.area() > kCoarseMinArea;
-  if (!w.wins.empty()) {
-    gray(w.uni).convertTo(u.w32, CV_32F);
+  u.coarse = !gray.empty() && p >= kCoarseMinPatch && gray.rows * gray.cols > kCoarseMinArea;
+  if (!gray.empty()) {
+    gray.convertTo(u.w32, CV_32F);
     if (u.coarse) {
       if (templ_half.empty()) cv::pyrDown(templ, templ_half);
       cv::Mat half;
@@ -720,7 +749,7 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, con
 }
 
 void PathTracker::Impl::add_window_peaks(const std::vector<Peak>& peaks, const cv::Rect& win, const cv::Mat& gray,
-                                         int suppress, bool other_look, FoundPeaks& found) const {
+                                         cv::Point origin, int suppress, bool other_look, FoundPeaks& found) const {
   for (std::size_t k = 0; k < peaks.size(); ++k) {
     const cv::Point at = peaks[k].at;
     const cv::Point2d off = peaks[k].off;
@@ -734,13 +763,13 @@ void PathTracker::Impl::add_window_peaks(const std::vector<Peak>& peaks, const c
     if (same != found.c.end()) {
       if (k == 0) found.window_best.push_back(static_cast<std::size_t>(same - found.c.begin()));
       if (other_look && std::min(1.0, fitted) > same->ncc) {
-        *same = make_candidate(gray, x, y, std::min(1.0, fitted));
+        *same = make_candidate(gray, origin, x, y, std::min(1.0, fitted));
         same->spread = ridge;
       }
       continue;
     }
     if (k == 0) found.window_best.push_back(found.c.size());
-    found.c.push_back(make_candidate(gray, x, y, std::min(1.0, fitted)));
+    found.c.push_back(make_candidate(gray, origin, x, y, std::min(1.0, fitted)));
     found.c.back().spread = ridge;
   }
 }
@@ -777,11 +806,10 @@ std::vector<Candidate> PathTracker::Impl::keep_best(FoundPeaks& found, int n, in
 }
 
 void PathTracker::Impl::update(const Frame& f) {
-  const cv::Mat& gray = f.gray;
-  if (gray.size() != size || gray.type() != CV_8UC1) {
-    throw InputError(name, "frame " + std::to_string(f.index) + " has no grey image of the start frame's size");
+  if (frame_size(f) != size || (f.bgr.empty() && f.gray.type() != CV_8UC1)) {
+    throw InputError(name, "frame " + std::to_string(f.index) + " has no image of the start frame's size");
   }
-  sample(gray);
+  sample(f);
   // Where the object can be: within reach (times the frames elapsed) of the best three
   // candidates of the last step that had any and of the best one of the two such steps
   // before it (anchors). Each anchor's window gives its own best few peaks, so that junk
@@ -795,12 +823,18 @@ void PathTracker::Impl::update(const Frame& f) {
   // The anchors' windows overlap (the oldest anchor's covers most of the image): the
   // correlation is computed once over their union, and each window reads its part of it
   // (the same values as correlating the window alone: the template inside the window).
-  const SearchWindows w = search_windows(anchors, gray);
+  const SearchWindows w = search_windows(anchors);
+  // Only the union's grey image is made, with a 2 px ring for the candidates' patches (a
+  // sub-pixel peak rounds to at most a pixel outside its window).
+  const cv::Rect region = (w.uni + cv::Point(-2, -2) + cv::Size(4, 4)) & cv::Rect(cv::Point(), size);
+  const cv::Mat gray = w.wins.empty() ? cv::Mat() : gray_region(f, region, region_buf);
   // Each look is searched in the windows: the start's, and the looks of the user's nearest
   // marks before and after this frame (a corrected frame shows the tracker the object as it
   // looks there, both ways). A candidate's correlation is its best look's.
   const std::vector<Look*> searched = looks_for(f.index);
-  for (Look* look : searched) find_peaks(w, gray, *look, look != &start_look, suppress, found);
+  if (!w.wins.empty()) {
+    for (Look* look : searched) find_peaks(w, gray, region.tl(), *look, look != &start_look, suppress, found);
+  }
   // At most kCandidates (and kCandidatesPerLook more per mark's look): every window's best,
   // then the best of the rest.
   const int n_keep = kCandidates + kCandidatesPerLook * static_cast<int>(searched.size() - 1);
@@ -808,18 +842,18 @@ void PathTracker::Impl::update(const Frame& f) {
   steps.push_back(std::move(out));
 }
 
-void PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, Look& look, bool other_look,
-                                   int suppress, FoundPeaks& found) {
+void PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look,
+                                   bool other_look, int suppress, FoundPeaks& found) const {
   // A large union with a template that survives halving is searched coarse to fine: the
   // correlation at half resolution finds each window's peaks, each refined by the
   // full-resolution correlation within 3 px (a quarter of the work over the union).
-  const UnionCorrelation u = correlate_union(w, gray, look);
+  const UnionCorrelation u = correlate_union(gray(w.uni - origin), look);
   for (const cv::Rect& win : w.wins) {
     // The window in the union's result.
     const cv::Rect rrect(win.x - w.uni.x, win.y - w.uni.y, win.width - p + 1, win.height - p + 1);
     const std::vector<Peak> peaks =
         u.coarse ? coarse_peaks(u, rrect, suppress, look.templ) : fine_peaks(u.all(rrect), suppress);
-    add_window_peaks(peaks, win, gray, suppress, other_look, found);
+    add_window_peaks(peaks, win, gray, origin, suppress, other_look, found);
   }
 }
 
@@ -937,7 +971,20 @@ double PathSearch::accel(int ta, int ka, int tb, int kb, int tc, int kc) const {
 }
 
 void PathSearch::forward() {
+  // Per step, the states of each candidate's blocks (k, 1..G) by forward cost, cheapest first
+  // (ties by index): made once the step's costs are final.
+  std::vector<std::vector<int>> cheapest(T);
   for (int t = 1; t < T; ++t) {
+    if (t >= 2) {
+      std::vector<int>& order = cheapest[t - 1];
+      order.resize(S[t - 1].size());
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+      const int K = static_cast<int>(steps[t - 1].c.size());
+      for (int k = 0; k < K; ++k) {
+        std::stable_sort(order.begin() + off[t - 1][k * G], order.begin() + off[t - 1][k * G + G],
+                         [&](int a, int b) { return S[t - 1][a].F < S[t - 1][b].F; });
+      }
+    }
     for (PathState& s : S[t]) {
       const int tp = t - s.g;
       if (skips_mark(tp, t) || !gate(tp, s.j, t, s.k)) continue;
@@ -947,18 +994,20 @@ void PathSearch::forward() {
         s.back = 0;
         continue;
       }
+      // The predecessors (the states of tp ending at candidate j), cheapest first: accel() >= 0,
+      // so the first costing more than the best so far ends the search. The same choice as
+      // taking them in index order: of equal costs, the lowest index.
       double best = kInf;
       int arg = -1;
-      for (int g2 = 1; g2 <= G && tp - g2 >= 0; ++g2) {
-        const auto [a, b] = block(tp, s.j, g2);
-        for (int i = a; i < b; ++i) {
-          const PathState& q = S[tp][i];
-          if (!(q.F < kInf)) continue;
-          const double c = q.F + accel(tp - g2, q.j, tp, s.j, t, s.k);
-          if (c < best) {
-            best = c;
-            arg = i;
-          }
+      const std::vector<int>& order = cheapest[tp];
+      for (int x = off[tp][s.j * G]; x < off[tp][s.j * G + G]; ++x) {
+        const int i = order[x];
+        const PathState& q = S[tp][i];
+        if (!(q.F < kInf) || q.F > best) break;
+        const double c = q.F + accel(tp - q.g, q.j, tp, s.j, t, s.k);
+        if (c < best || (c == best && i < arg)) {
+          best = c;
+          arg = i;
         }
       }
       if (arg >= 0) {
@@ -970,23 +1019,44 @@ void PathSearch::forward() {
 }
 
 void PathSearch::backward() {
+  struct Successor {
+    double bound;  // its cost and B without the acceleration: no path through it costs less
+    int t3, k3, idx;
+  };
+  std::vector<Successor> next;
   for (int t = T - 1; t >= 0; --t) {
-    for (PathState& s : S[t]) {
-      double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
+    for (int k = 0; k < static_cast<int>(steps[t].c.size()); ++k) {
+      // The successors of a path point at candidate k of step t (the same for every state
+      // ending there), cheapest bound first: the acceleration cost is never negative and
+      // rounding is monotone, so the first whose bound is no better than the best so far
+      // ends the search with the same minimum as visiting them all.
+      next.clear();
       for (int g3 = 1; g3 <= G && t + g3 < T; ++g3) {
         const int t3 = t + g3;
         if (skips_mark(t, t3)) break;
         for (int k3 = 0; k3 < static_cast<int>(steps[t3].c.size()); ++k3) {
           const auto [a, b] = block(t3, k3, g3);
-          const int idx = a + s.k;  // the successor whose previous point is this state's
-          if (idx >= b || !gate(t, s.k, t3, k3)) continue;
-          const PathState& q = S[t3][idx];
-          const double acc = t == 0 ? 0.0 : accel(t - s.g, s.j, t, s.k, t3, k3);
-          const double c = steps[t3].c[k3].cost + kMissCost * (g3 - 1) + acc + q.B;
-          best = std::min(best, c);
+          const int idx = a + k;  // the successor whose previous point is this one
+          if (idx >= b || !gate(t, k, t3, k3)) continue;
+          const double u = steps[t3].c[k3].cost + kMissCost * (g3 - 1);
+          next.push_back({u + S[t3][idx].B, t3, k3, idx});
         }
       }
-      s.B = static_cast<float>(best);
+      std::sort(next.begin(), next.end(), [](const Successor& x, const Successor& y) { return x.bound < y.bound; });
+      // The states ending at candidate k (step 0: its one state).
+      const int first = t == 0 ? 0 : off[t][k * G], end = t == 0 ? 1 : off[t][k * G + G];
+      for (int i = first; i < end; ++i) {
+        PathState& s = S[t][i];
+        double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
+        for (const Successor& n : next) {
+          if (!(n.bound < best)) break;
+          const int g3 = n.t3 - t;
+          const double u = steps[n.t3].c[n.k3].cost + kMissCost * (g3 - 1);
+          const double acc = t == 0 ? 0.0 : accel(t - s.g, s.j, t, s.k, n.t3, n.k3);
+          best = std::min(best, u + acc + S[n.t3][n.idx].B);
+        }
+        s.B = static_cast<float>(best);
+      }
     }
   }
 }

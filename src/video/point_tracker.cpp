@@ -27,6 +27,11 @@ constexpr double kMaxScoreDrop = 0.3;
 // Least score of the first match after the start (measured 0.97-0.99 on rendered scenes,
 // 0.994 on Tracker's BallToss).
 constexpr double kFirstMatchScore = 0.9;
+// The refinement's (patch + 4) px squares lie within the window and h + kRefineSlackPx px
+// around it: the first centre within a pixel of a window position (sub-pixel offset), then
+// two moves of at most 3 px each (the 5x5 map's peak, +-2, and its sub-pixel offset), half a
+// square h + 2 and a pixel for the bilinear sampling (1 + 6 + 2 + 1 = 10, and 2 to spare).
+constexpr int kRefineSlackPx = 12;
 // A search half-width above this many patch sides goes coarse to fine (the first step's
 // quarter of the image, a long gap); below it the direct correlation is cheap enough.
 constexpr int kCoarseFromPatches = 2;
@@ -180,7 +185,7 @@ struct PointTracker::Impl {
   std::deque<double> innovation_rad;  // same for the angle
   std::deque<double> recent_scores;   // scores of the last accepted frames
   // Buffers reused from frame to frame.
-  cv::Mat window, templ;
+  cv::Mat window, templ, region_gray;
   std::vector<cv::Mat> results;
   cv::Mat best_map, scratch, local, small_result, smeared, kernel;
   cv::Mat window_coarse, coarse_templ, coarse_scratch, coarse_best, part;
@@ -309,8 +314,11 @@ struct PointTracker::Impl {
   void correlate(const std::vector<double>& angles, int half_width);
   // The peak nearest the prediction, unless a rival makes it doubtful.
   PeakChoice choose_peak(const MotionState& pred, const cv::Rect& win, bool reacquire, int first_search);
-  // Sub-pixel position and angle (and the exposure fraction, learned) around peak `at` of window `win`.
-  Refined refine(const cv::Mat& gray, const cv::Rect& win, cv::Point at, const AngleSearch& as, cv::Point2d dv);
+  // Sub-pixel position and angle (and the exposure fraction, learned) around peak `at` of window
+  // `win`; `gray` is the grey image of a rectangle at `origin` holding the window and
+  // h + kRefineSlackPx px around it (or sharing its border with the image).
+  Refined refine(const cv::Mat& gray, cv::Point origin, const cv::Rect& win, cv::Point at, const AngleSearch& as,
+                 cv::Point2d dv);
   // The score passes min_score, the first match's bar and the drop check (kept among the recent scores).
   bool score_accepted(double score);
   // Takes the accepted observation into the motion model (o.refound set on re-acquisition).
@@ -388,7 +396,9 @@ PointTracker& PointTracker::operator=(PointTracker&&) noexcept = default;
 Observation PointTracker::start(const Frame& first, double x_px, double y_px,
                                 const std::string& name) {
   Impl& m = *impl_;
-  const cv::Mat& gray = first.gray;
+  // The start frame's grey image, whole (the reference patch and its surroundings; once per track).
+  cv::Mat buf;
+  const cv::Mat gray = gray_region(first, cv::Rect(cv::Point(), frame_size(first)), buf);
   if (gray.empty() || gray.type() != CV_8UC1) {
     throw InputError(name, "no grey image in frame " + std::to_string(first.index));
   }
@@ -468,7 +478,8 @@ Observation PointTracker::update(const Frame& frame) {
 Observation PointTracker::mark(const Frame& frame, double x_px, double y_px) {
   if (!impl_ || impl_->big.empty()) throw InputError("point tracker: mark() before start()");
   Impl& m = *impl_;
-  const cv::Mat& gray = frame.gray;
+  cv::Mat buf;
+  const cv::Mat gray = gray_region(frame, cv::Rect(cv::Point(), frame_size(frame)), buf);
   if (gray.size() != m.image_size) {
     throw InputError(m.name, "frame " + std::to_string(frame.index) + " is not of the start frame's size");
   }
@@ -612,8 +623,8 @@ PointTracker::Impl::PeakChoice PointTracker::Impl::choose_peak(const MotionState
   return {true, peaks[0].at, peaks[0].score};
 }
 
-PointTracker::Impl::Refined PointTracker::Impl::refine(const cv::Mat& gray, const cv::Rect& win, cv::Point at,
-                                                       const AngleSearch& as, cv::Point2d dv) {
+PointTracker::Impl::Refined PointTracker::Impl::refine(const cv::Mat& gray, cv::Point origin, const cv::Rect& win,
+                                                       cv::Point at, const AngleSearch& as, cv::Point2d dv) {
   const int p = opt.patch_px, h = half();
   const std::vector<double>& angles = as.angles;
   std::size_t kb = 0;
@@ -636,7 +647,8 @@ PointTracker::Impl::Refined PointTracker::Impl::refine(const cv::Mat& gray, cons
   double score = 0;
   double hstep = as.search ? 0.5 * as.spacing : 0;
   for (int pass = 0; pass < 2; ++pass, hstep /= 2) {
-    cv::getRectSubPix(gray, cv::Size(p + 4, p + 4), cv::Point2f(centre), local, CV_32F);
+    // (The float centre less the integer origin, exactly: the same bilinear weights as in the whole image.)
+    cv::getRectSubPix(gray, cv::Size(p + 4, p + 4), cv::Point2f(centre) - cv::Point2f(origin), local, CV_32F);
     if (hstep > 0) {
       const double f0 = peak_value(angle, nullptr);
       const double fm = peak_value(angle - hstep, nullptr), fp = peak_value(angle + hstep, nullptr);
@@ -709,8 +721,7 @@ void PointTracker::Impl::accept(Observation& o, const MotionState& pred, bool re
 }
 
 Observation PointTracker::Impl::update(const Frame& frame) {
-  const cv::Mat& gray = frame.gray;
-  if (gray.size() != image_size || gray.type() != CV_8UC1) {
+  if (frame_size(frame) != image_size || (frame.bgr.empty() && frame.gray.type() != CV_8UC1)) {
     throw InputError(name, "frame " + std::to_string(frame.index) + " has no grey image of the " +
                                "start frame's size");
   }
@@ -751,9 +762,14 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   // Window in the image around the prediction (clipped); too small: the point left the view.
   const int cx = static_cast<int>(std::lround(pred.x_px)), cy = static_cast<int>(std::lround(pred.y_px));
   const cv::Rect want(cx - si - h, cy - si - h, 2 * (si + h) + 1, 2 * (si + h) + 1);
-  const cv::Rect win = want & cv::Rect(0, 0, gray.cols, gray.rows);
+  const cv::Rect win = want & cv::Rect(cv::Point(), image_size);
   if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0);
-  gray(win).convertTo(window, CV_32F);
+  // Only the window's grey image is made, and h + kRefineSlackPx px around it for the refinement.
+  const int margin = h + kRefineSlackPx;
+  const cv::Rect region =
+      (win + cv::Point(-margin, -margin) + cv::Size(2 * margin, 2 * margin)) & cv::Rect(cv::Point(), image_size);
+  const cv::Mat gray = gray_region(frame, region, region_gray);
+  gray(win - region.tl()).convertTo(window, CV_32F);
 
   // Correlation maps for every angle and their upper envelope: directly for a narrow
   // window, coarse to fine for a wide one (the first step, a long gap).
@@ -774,7 +790,7 @@ Observation PointTracker::Impl::update(const Frame& frame) {
   // vertex of a parabola through the fitted peak values at the current angle and half a
   // step either side; the position moves to the quadratic peak at that angle. Twice, the
   // second time with half the angle step.
-  const Refined r = refine(gray, win, peak.at, as, dv);
+  const Refined r = refine(gray, region.tl(), win, peak.at, as, dv);
   Observation o;
   o.frame = frame.index;
   o.x_px = r.centre.x;

@@ -536,8 +536,7 @@ bool FrameReader::next(Frame& frame) {
   ++m.steps_done;
   frame.index = target;
   frame.t = m.last_t = m.frame_time(target);
-  frame.gray = cv::Mat();
-  make_gray(frame);
+  frame.gray = cv::Mat();  // each tracker converts the windows it reads (gray_region)
   return true;
 }
 

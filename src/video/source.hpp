@@ -119,7 +119,8 @@ class FrameReader {
   ~FrameReader();
   FrameReader(const FrameReader&) = delete;
   FrameReader& operator=(const FrameReader&) = delete;
-  /// The next frame of the clip (bgr, gray, index, t); false after the last one.
+  /// The next frame of the clip (bgr, index, t; gray left empty: gray_region converts the
+  /// rectangles a tracker reads); false after the last one.
   bool next(Frame& frame);
   /// Steps the clip holds (an estimate from the container when step_count is 0).
   int expected_steps() const;

@@ -392,12 +392,13 @@ void read_mark_looks(std::vector<Follower>& followers, const VideoInput& in) {
       if (!std::holds_alternative<PathTracker>(w.tracker)) continue;
       for (const ManualMark& m : w.target.marks) {
         if (m.frame != f.index) continue;
-        const cv::Rect r = PathTracker::look_crop(f.gray.size(), m.x_px, m.y_px);
+        const cv::Rect r = PathTracker::look_crop(frame_size(f), m.x_px, m.y_px);
         if (r.area() == 0) continue;  // outside the image: check_marks' error comes at the start
         ManualMark in_crop = m;
         in_crop.x_px -= r.x;
         in_crop.y_px -= r.y;
-        w.looks.emplace_back(in_crop, f.gray(r).clone());
+        cv::Mat buf;
+        w.looks.emplace_back(in_crop, gray_region(f, r, buf).clone());
       }
     }
   }
