@@ -25,6 +25,7 @@ struct AnsweringBackend : Backend {
   json calibrate(const CalibrationInput& c) override { return to_json(c); }
   json track(const TrackStart& s) override { return to_json(s); }
   json mark(const MarkInput& m) override { return {{"track", m.track}, {"frame", m.frame}, {"remove", m.remove}}; }
+  json retrack() override { return {{"looks_pending", false}}; }
   json forms() override { return json::object(); }
   json analyze(const std::string& c, const json& v, const std::vector<std::filesystem::path>&) override { return {{"command", c}, {"values", v}}; }
   std::string report_html() override { return "<html></html>"; }
