@@ -146,25 +146,27 @@ void BM_DecodeTrackPath1080pH264(benchmark::State& state) {
 }
 BENCHMARK(BM_DecodeTrackPath1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// Decoding and the frame-to-frame point tracker (`--point-tracker frame`) on the sticker.
-void BM_DecodeTrackFrame1080pH264(benchmark::State& state) {
+/// Decoding and a streaming tracker (answering each frame) started at `at` in frame 0;
+/// `lost` reads its answer.
+template <class Tracker, class Lost>
+void decode_and_track(benchmark::State& state, cv::Point2d at, const char* name, Lost lost_of) {
   const Clip1080& c = clip1080();
   const ProcessCpu cpu{state};
   std::int64_t frames = 0;
   int lost = 0;
   for (auto _ : state) {
     const auto cap = video::open_video_file(c.path);
-    video::PointTracker tracker;
+    Tracker tracker;
     video::Frame f;
     bool started = false;
     lost = 0;
     while (cap->read(f.bgr)) {
       f.t = f.index / 240.0;
       if (!started) {
-        benchmark::DoNotOptimize(tracker.start(f, c.sticker.x, c.sticker.y, "sticker"));
+        benchmark::DoNotOptimize(tracker.start(f, at.x, at.y, name));
         started = true;
       } else {
-        lost += tracker.update(f).lost;
+        lost += lost_of(tracker.update(f));
       }
       ++f.index;
       ++frames;
@@ -173,34 +175,18 @@ void BM_DecodeTrackFrame1080pH264(benchmark::State& state) {
   state.SetItemsProcessed(frames);
   state.counters["lost"] = lost;
 }
+
+/// Decoding and the frame-to-frame point tracker (`--point-tracker frame`) on the sticker.
+void BM_DecodeTrackFrame1080pH264(benchmark::State& state) {
+  decode_and_track<video::PointTracker>(state, clip1080().sticker, "sticker",
+                                        [](const video::Observation& o) { return o.lost; });
+}
 BENCHMARK(BM_DecodeTrackFrame1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// Decoding and the ellipse tracker on the ball.
 void BM_DecodeTrackEllipse1080pH264(benchmark::State& state) {
-  const Clip1080& c = clip1080();
-  const ProcessCpu cpu{state};
-  std::int64_t frames = 0;
-  int lost = 0;
-  for (auto _ : state) {
-    const auto cap = video::open_video_file(c.path);
-    video::EllipseTracker tracker;
-    video::Frame f;
-    bool started = false;
-    lost = 0;
-    while (cap->read(f.bgr)) {
-      f.t = f.index / 240.0;
-      if (!started) {
-        benchmark::DoNotOptimize(tracker.start(f, c.ball.x, c.ball.y, "ball"));
-        started = true;
-      } else {
-        lost += tracker.update(f).centre.lost;
-      }
-      ++f.index;
-      ++frames;
-    }
-  }
-  state.SetItemsProcessed(frames);
-  state.counters["lost"] = lost;
+  decode_and_track<video::EllipseTracker>(state, clip1080().ball, "ball",
+                                          [](const video::EllipseObservation& o) { return o.centre.lost; });
 }
 BENCHMARK(BM_DecodeTrackEllipse1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
 

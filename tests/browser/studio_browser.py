@@ -48,18 +48,25 @@ def render_incline(tribolab, video, truth_csv, args):
     return render, truth
 
 
-def open_clip(driver, url, name, steps, width, zoom, fail):
-    """Loads the page at `url`, opens the folder's file `name` from the list, sets the zoom and
-    waits until its `steps` frames are offered and the canvas is `width` image pixels wide at
-    `zoom`; returns (wait, status, error, canvas): a 20 s WebDriverWait and readers of the
-    page's status and error lines."""
-    wait = WebDriverWait(driver, 20)
+def start_page(driver, url, fail, timeout):
+    """Loads the page at `url` and waits until it is ready; returns (wait, status, error): a
+    WebDriverWait of `timeout` s and readers of the page's status and error lines."""
+    wait = WebDriverWait(driver, timeout)
     status = lambda: driver.find_element(By.ID, "status").text
     error = lambda: driver.find_element(By.ID, "error").text
     driver.get(url)
     wait.until(lambda d: status() in ("ready", "failed"))
     if status() != "ready":
         fail("the page did not start: " + error())
+    return wait, status, error
+
+
+def open_clip(driver, url, name, steps, width, zoom, fail):
+    """Loads the page at `url`, opens the folder's file `name` from the list, sets the zoom and
+    waits until its `steps` frames are offered and the canvas is `width` image pixels wide at
+    `zoom`; returns (wait, status, error, canvas): a 20 s WebDriverWait and readers of the
+    page's status and error lines."""
+    wait, status, error = start_page(driver, url, fail, 20)
     driver.find_element(By.XPATH, "//ul[@id='files']/li[text()='%s']" % name).click()
     wait.until(lambda d: d.find_element(By.ID, "slider").get_attribute("max") == str(steps - 1) or error())
     if error():

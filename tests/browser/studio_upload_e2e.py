@@ -18,9 +18,9 @@ import sys
 
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
-from selenium.webdriver.support.ui import Select, WebDriverWait
+from selenium.webdriver.support.ui import Select
 
-from studio_browser import render_throw, studio_page
+from studio_browser import render_throw, start_page, studio_page
 
 
 def fail(message):
@@ -63,13 +63,7 @@ def listed_files(driver):
 
 
 def run_page(driver, url, out, video, truth, ball_start):
-    wait = WebDriverWait(driver, 30)
-    status = lambda: driver.find_element(By.ID, "status").text
-    error = lambda: driver.find_element(By.ID, "error").text
-    driver.get(url)
-    wait.until(lambda d: status() in ("ready", "failed"))
-    if status() != "ready":
-        fail("the page did not start: " + error())
+    wait, status, error = start_page(driver, url, fail, 30)
     if driver.find_elements(By.CSS_SELECTOR, "#files li"):
         fail("the empty folder lists files")
 
