@@ -20,6 +20,7 @@
 #include <string>
 #include <sys/resource.h>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -145,6 +146,41 @@ void BM_DecodeTrackPath1080pH264(benchmark::State& state) {
   state.counters["lost"] = lost;
 }
 BENCHMARK(BM_DecodeTrackPath1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// The path tracker alone on the clip's frames decoded beforehand (held in memory): its own
+/// cost per clip, to set against BM_Decode1080pH264's, without the decoder's threads sharing
+/// the cores.
+void BM_TrackPathDecoded1080p(benchmark::State& state) {
+  const Clip1080& c = clip1080();
+  static const std::vector<cv::Mat> decoded = [&] {
+    std::vector<cv::Mat> v;
+    const auto cap = video::open_video_file(c.path);
+    cv::Mat m;
+    while (cap->read(m)) v.push_back(m.clone());
+    return v;
+  }();
+  const ProcessCpu cpu{state};
+  int lost = 0;
+  for (auto _ : state) {
+    video::PathTracker tracker;
+    for (std::size_t k = 0; k < decoded.size(); ++k) {
+      video::Frame f;
+      f.bgr = decoded[k];
+      f.index = static_cast<int>(k);
+      f.t = f.index / 240.0;
+      if (k == 0) {
+        benchmark::DoNotOptimize(tracker.start(f, c.sticker.x, c.sticker.y, "sticker"));
+      } else {
+        tracker.update(f);
+      }
+    }
+    lost = 0;
+    for (const auto& o : tracker.finish()) lost += o.lost;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(decoded.size()));
+  state.counters["lost"] = lost;
+}
+BENCHMARK(BM_TrackPathDecoded1080p)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// Decoding and a streaming tracker (answering each frame) started at `at` in frame 0;
 /// `lost` reads its answer.

@@ -4,12 +4,14 @@
 // fps, textured background, noise 2, shutter 0.5; a checker sticker on the ball for the point
 // tracker), written once to a temporary .avi (MJPG).
 #include "video/codec.hpp"
+#include "video/correlation.hpp"
 #include "video/frame.hpp"
 #include "video/ellipse_tracker.hpp"
 #include "video/point_tracker.hpp"
 #include "video/render_throw.hpp"
 
 #include <benchmark/benchmark.h>
+#include <opencv2/imgproc.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -168,6 +170,35 @@ void BM_RenderFrame640x480(benchmark::State& state) {
   state.SetItemsProcessed(frames);
 }
 BENCHMARK(BM_RenderFrame640x480)->Unit(benchmark::kMillisecond);
+
+/// The trackers' correlation (video::normed_correlation) against OpenCV's matchTemplate
+/// (TM_CCOEFF_NORMED) on one core: range(0) x range(0) placements (a search window's union, or
+/// a refinement's few) of a template of range(1) px in a textured image; range(2) 0 is OpenCV,
+/// 1 ours.
+void BM_NormedCorrelation(benchmark::State& state) {
+  const int t = static_cast<int>(state.range(1)), side = static_cast<int>(state.range(0)) + t - 1;
+  cv::Mat img(side, side, CV_32F);
+  cv::RNG rng(1);
+  rng.fill(img, cv::RNG::UNIFORM, 0, 255);
+  cv::GaussianBlur(img, img, cv::Size(0, 0), 1.5);
+  const cv::Mat templ = img(cv::Rect((side - t) / 2, (side - t) / 2, t, t)).clone();
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  cv::Mat r;
+  for (auto _ : state) {
+    if (state.range(2) == 0) {
+      cv::matchTemplate(img, templ, r, cv::TM_CCOEFF_NORMED);
+    } else {
+      video::normed_correlation(img, templ, r);
+    }
+    benchmark::DoNotOptimize(r.data);
+  }
+  cv::setNumThreads(threads);
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(r.total()));  // placements per second
+}
+BENCHMARK(BM_NormedCorrelation)
+    ->ArgsProduct({{7, 60, 140, 480}, {7, 13, 25}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

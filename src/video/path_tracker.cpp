@@ -3,6 +3,7 @@
 #include "video/path_tracker.hpp"
 
 #include "numerics/error.hpp"
+#include "video/correlation.hpp"
 #include "video/correlation_peak.hpp"
 #include "numerics/statistics.hpp"
 
@@ -370,8 +371,7 @@ struct PathTracker::Impl {
     if (near.width < p || near.height < p) return false;
     cv::Mat w32, res;
     gray(near).convertTo(w32, CV_32F);
-    cv::matchTemplate(w32, start_look.templ, res, cv::TM_CCOEFF_NORMED);
-    cv::patchNaNs(res, -1);
+    normed_correlation(w32, start_look.templ, res);
     double best = -1;
     cv::minMaxLoc(res, nullptr, &best);
     return best >= kConfident;
@@ -674,11 +674,9 @@ UnionCorrelation PathTracker::Impl::correlate_union(const cv::Mat& gray, Look& l
       if (templ_half.empty()) cv::pyrDown(templ, templ_half);
       cv::Mat half;
       cv::pyrDown(u.w32, half);
-      cv::matchTemplate(half, templ_half, u.coarse_res, cv::TM_CCOEFF_NORMED);
-      cv::patchNaNs(u.coarse_res, -1);
+      normed_correlation(half, templ_half, u.coarse_res);
     } else {
-      cv::matchTemplate(u.w32, templ, u.all, cv::TM_CCOEFF_NORMED);
-      cv::patchNaNs(u.all, -1);
+      normed_correlation(u.w32, templ, u.all);
     }
   }
   return u;
@@ -725,9 +723,8 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, con
                           cv::Rect(0, 0, rrect.width, rrect.height);
     if (near.width < 1 || near.height < 1) continue;
     cv::Mat fine;
-    cv::matchTemplate(u.w32(cv::Rect(rrect.x + near.x, rrect.y + near.y, near.width + p - 1, near.height + p - 1)),
-                      templ, fine, cv::TM_CCOEFF_NORMED);
-    cv::patchNaNs(fine, -1);
+    normed_correlation(u.w32(cv::Rect(rrect.x + near.x, rrect.y + near.y, near.width + p - 1, near.height + p - 1)),
+                      templ, fine);
     Peak pk;
     cv::Point in;
     cv::minMaxLoc(fine, nullptr, &pk.v, nullptr, &in);

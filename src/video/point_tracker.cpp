@@ -6,6 +6,7 @@
 
 #include "numerics/error.hpp"
 #include "numerics/message_number.hpp"
+#include "video/correlation.hpp"
 #include "video/correlation_peak.hpp"
 #include "numerics/units.hpp"
 #include "video/motion_model.hpp"
@@ -67,46 +68,6 @@ double weakest_gradient_energy(const cv::Mat& patch) {
 double best_vertex(double fm, double f0, double fp) {
   if (fm - 2 * f0 + fp < 0) return parabola_vertex(fm, f0, fp);
   return fm > f0 && fm >= fp ? -1.0 : fp > f0 && fp > fm ? 1.0 : 0.0;
-}
-
-// Normalised cross-correlation of template t over every placement in img (both CV_32F), as
-// cv::matchTemplate's TM_CCOEFF_NORMED, by direct sums: for the few placements of the
-// refinement this is several times cheaper than OpenCV's transform-based path.
-void ncc_direct(const cv::Mat& img, const cv::Mat& t, cv::Mat& r) {
-  const int tw = t.cols, th = t.rows, n = tw * th;
-  r.create(img.rows - th + 1, img.cols - tw + 1, CV_32F);
-  const double tmean = cv::mean(t)[0];
-  double tnorm2 = 0;
-  thread_local std::vector<float> tz;
-  tz.resize(n);
-  for (int y = 0; y < th; ++y) {
-    for (int x = 0; x < tw; ++x) {
-      const double v = t.at<float>(y, x) - tmean;
-      tz[y * tw + x] = static_cast<float>(v);
-      tnorm2 += v * v;
-    }
-  }
-  for (int v = 0; v < r.rows; ++v) {
-    for (int u = 0; u < r.cols; ++u) {
-      double sum = 0, sum2 = 0, cross = 0;
-      for (int y = 0; y < th; ++y) {
-        const float* row = img.ptr<float>(v + y) + u;
-        const float* tr = tz.data() + y * tw;
-        float s1 = 0, s2 = 0, sc = 0;
-        for (int x = 0; x < tw; ++x) {
-          s1 += row[x];
-          s2 += row[x] * row[x];
-          sc += row[x] * tr[x];
-        }
-        sum += s1;
-        sum2 += s2;
-        cross += sc;
-      }
-      const double var = sum2 - sum * sum / n;
-      const double den = std::sqrt(std::max(0.0, var) * tnorm2);
-      r.at<float>(v, u) = den > 1e-9 ? static_cast<float>(cross / den) : 0.0f;
-    }
-  }
 }
 
 }  // namespace
@@ -343,9 +304,7 @@ void PointTracker::Impl::coarse_to_fine(const std::vector<double>& angles, doubl
   const int tc = 2 * hc + 1;
   if (window_coarse.cols < tc || window_coarse.rows < tc) return;
   for (std::size_t j = 0; j < coarse_of.size(); ++j) {
-    cv::matchTemplate(window_coarse, make_coarse_template(angles[coarse_of[j]]), coarse_results[j],
-                      cv::TM_CCOEFF_NORMED);
-    cv::patchNaNs(coarse_results[j], -1);
+    normed_correlation(window_coarse, make_coarse_template(angles[coarse_of[j]]), coarse_results[j]);
     if (j == 0) {
       coarse_results[0].copyTo(coarse_best);
     } else {
@@ -376,8 +335,7 @@ void PointTracker::Impl::coarse_to_fine(const std::vector<double>& angles, doubl
     const std::size_t mid = coarse_of[jb];
     const std::size_t lo = mid >= 2 ? mid - 2 : 0, hi = std::min(angles.size() - 1, mid + 2);
     for (std::size_t i = lo; i <= hi; ++i) {
-      cv::matchTemplate(img, make_template(angles[i]), part, cv::TM_CCOEFF_NORMED);
-      cv::patchNaNs(part, -1);
+      normed_correlation(img, make_template(angles[i]), part);
       part.copyTo(results[i](region));
       cv::Mat env = best_map(region);
       cv::max(env, part, env);
@@ -447,7 +405,7 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
     const cv::Mat t0 = m.make_template(0).clone();
     for (double a : {m.angle_step(), 3 * m.angle_step()}) {
       cv::Mat c;
-      cv::matchTemplate(t0, m.make_template(a), c, cv::TM_CCOEFF_NORMED);
+      normed_correlation(t0, m.make_template(a), c);
       if (!(c.at<float>(0, 0) >= 0.97f)) m.turns = true;
     }
   }
@@ -584,8 +542,7 @@ void PointTracker::Impl::correlate(const std::vector<double>& angles, int half_w
     coarse_to_fine(angles, opt.min_score);
   } else {
     for (std::size_t i = 0; i < angles.size(); ++i) {
-      cv::matchTemplate(window, make_template(angles[i]), results[i], cv::TM_CCOEFF_NORMED);
-      cv::patchNaNs(results[i], -1);
+      normed_correlation(window, make_template(angles[i]), results[i]);
       if (i == 0) {
         results[0].copyTo(best_map);
       } else {
@@ -636,7 +593,7 @@ PointTracker::Impl::Refined PointTracker::Impl::refine(const cv::Mat& gray, cv::
   cv::Point2d centre(win.x + at.x + off.x + h, win.y + at.y + off.y + h);
   const cv::Point mid(2, 2);
   auto peak_value = [&](double a, cv::Point2d* shift) {
-    ncc_direct(local, make_template(a), small_result);
+    normed_correlation(local, make_template(a), small_result);
     cv::Point loc;
     cv::minMaxLoc(small_result, nullptr, nullptr, nullptr, &loc);
     double v;
