@@ -11,10 +11,29 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <new>
+#include <ostream>
+#include <string_view>
 
 namespace tribolab::cli {
+
+bool secondary_mpi_rank() {
+  // The launchers name each process's rank in its environment: Open MPI, MPICH (Hydra), PMIx.
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"}) {
+    const char* rank = std::getenv(name);
+    if (rank != nullptr && *rank != '\0') return std::string_view(rank) != "0";
+  }
+  return false;
+}
+
+std::ostream& diagnostics() {
+  // Under `mpirun -np N` every rank runs the same command line and meets the same error (or
+  // warning): rank 0 alone says it, once; the others exit with the same status, silently.
+  static std::ostream discard(nullptr);
+  return secondary_mpi_rank() ? discard : std::cerr;
+}
 
 nlohmann::json spelled_for_cli(const nlohmann::json& j) { return app::spelled_json(j, flag_of); }
 
@@ -23,7 +42,7 @@ void print_result(const nlohmann::json& raw, bool as_json, const app::ResultKeys
   // Data that contradict the physics are said on stderr too, whatever the output format.
   if (result.is_object() && result.contains("warnings") && result["warnings"].is_array()) {
     for (const auto& w : result["warnings"]) {
-      if (w.is_string()) std::cerr << "tribolab: warning: " << one_line(w.get<std::string>()) << '\n';
+      if (w.is_string()) diagnostics() << "tribolab: warning: " << one_line(w.get<std::string>()) << '\n';
     }
   }
   if (as_json) {
@@ -75,22 +94,22 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const UsageError& e) {
-    std::cerr << "tribolab: error: " << one_line(e.what()) << '\n';
+    diagnostics() << "tribolab: error: " << one_line(e.what()) << '\n';
     return 2;
   } catch (const CLI::ParseError& e) {
-    std::cerr << "tribolab: error: " << one_line(e.what()) << " (see --help)\n";
+    diagnostics() << "tribolab: error: " << one_line(e.what()) << " (see --help)\n";
     return 2;
   } catch (const MissingOptionError& e) {  // a required option missing: a malformed command line
-    std::cerr << "tribolab: error: " << one_line(e.message(flag_of)) << '\n';
+    diagnostics() << "tribolab: error: " << one_line(e.message(flag_of)) << '\n';
     return 2;
   } catch (const Error& e) {  // InputError, SolverError: the core's fields spelled as flags
-    std::cerr << "tribolab: error: " << one_line(e.message(flag_of)) << '\n';
+    diagnostics() << "tribolab: error: " << one_line(e.message(flag_of)) << '\n';
     return 1;
   } catch (const std::bad_alloc&) {
-    std::cerr << "tribolab: error: out of memory\n";
+    diagnostics() << "tribolab: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "tribolab: error: " << one_line(e.what()) << '\n';
+    diagnostics() << "tribolab: error: " << one_line(e.what()) << '\n';
     return 1;
   }
   return 0;

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -46,6 +47,10 @@ void add_json_flag(CLI::App& cmd, bool& flag);
 
 /// How the command line spells a field the core names (field("time_scale") in
 /// numerics/error.hpp): "--time-scale".
+/// Where the program's "tribolab: error:" and "tribolab: warning:" lines go: stderr, except
+/// in an MPI rank other than 0 (the rank read from the launcher's environment), where they are
+/// dropped so that `mpirun -np N` says each once.
+std::ostream& diagnostics();
 std::string flag_of(std::string_view field);
 
 /// Runs the program; returns the process exit code. Exposed for in-process tests.

@@ -58,11 +58,11 @@ void print_series(const nlohmann::json& raw_rows, const nlohmann::json& raw_summ
     if (row.is_object() && row.contains("warnings") && row["warnings"].is_array())
       for (const auto& w : row["warnings"])
         if (w.is_string())
-          std::cerr << "tribolab: warning: " << row.value("file", "") << ": " << one_line(w.get<std::string>()) << '\n';
+          diagnostics() << "tribolab: warning: " << row.value("file", "") << ": " << one_line(w.get<std::string>()) << '\n';
   if (as_json) {
     if (summary.is_object() && summary.contains("warnings") && summary["warnings"].is_array())
       for (const auto& w : summary["warnings"])
-        if (w.is_string()) std::cerr << "tribolab: warning: " << one_line(w.get<std::string>()) << '\n';
+        if (w.is_string()) diagnostics() << "tribolab: warning: " << one_line(w.get<std::string>()) << '\n';
     std::cout << nlohmann::json{{"runs", rows}, {"summary", summary}}.dump() << '\n';
     return;
   }

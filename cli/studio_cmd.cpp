@@ -47,7 +47,7 @@ void register_studio(CLI::App& root) {
     if (opt->open) {
       // The URL holds digits, hex and punctuation only: nothing the shell would interpret.
       const std::string command = "xdg-open '" + url + "' >/dev/null 2>&1 &";
-      if (std::system(command.c_str()) != 0) std::cerr << "tribolab: warning: could not start a browser; open the URL above\n";
+      if (std::system(command.c_str()) != 0) diagnostics() << "tribolab: warning: could not start a browser; open the URL above\n";
     }
     server.run();
   });

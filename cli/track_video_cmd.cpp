@@ -75,7 +75,7 @@ void register_track_video(CLI::App& track_area) {
                  track_video_series_result_keys());
     // Field marks in the messages spelled as flags (--from-track), as for one video.
     for (const auto& row : spelled_for_cli(series.rows))
-      if (row.contains("error")) std::cerr << "tribolab: error: " << row["error"].get<std::string>() << '\n';
+      if (row.contains("error")) diagnostics() << "tribolab: error: " << row["error"].get<std::string>() << '\n';
     std::vector<std::string> errors;
     for (const auto& e : spelled_for_cli(nlohmann::json(series.errors))) errors.push_back(e.get<std::string>());
     finish_series(inputs->size(), errors);
