@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -34,9 +35,12 @@ constexpr double kCandidateFloor = 0.3;
 // Coarse to fine (PathTracker::Impl::correlate_union, coarse_peaks): a union of windows larger
 // than this, px², with a template of at least kCoarseMinPatch px, is correlated at half
 // resolution first (floor kCoarseFloor there: halving blurs a peak), each peak refined within
-// kRefinePx at full resolution.
+// kRefinePx at each finer level down to full resolution. A template of kQuarterMinPatch px or
+// more is searched at quarter resolution, where it still has 13 px or more (a 7 px quarter of
+// the 1080p benchmark's 25 px sticker lost 8 more frames).
 constexpr int kCoarseMinArea = 400000;
 constexpr int kCoarseMinPatch = 15;
+constexpr int kQuarterMinPatch = 49;
 constexpr double kCoarseFloor = 0.2;
 constexpr int kRefinePx = 3;
 // Older anchors' windows from the motion (PathTracker::Impl::seen_speed): while the object is
@@ -119,12 +123,13 @@ struct Anchor {
   int age;
 };
 
-// What the object looks like: a template (CV_32F) and its half-resolution copy (coarse search,
-// made when first needed), taken at the start or at a user's mark (`frame`).
+// What the object looks like: a template (CV_32F) and its coarse copies (`coarse[l - 1]` at
+// 1/2^l resolution, made when first needed), taken at the start or at a user's mark (`frame`).
 struct Look {
   int frame = 0;
   cv::Point2d at;  // where it was taken, px
-  cv::Mat templ, templ_half;
+  cv::Mat templ;
+  std::vector<cv::Mat> coarse;
 };
 
 // The anchors' search windows (each within reach of its anchor, clipped to the image) and their union, px.
@@ -133,11 +138,23 @@ struct SearchWindows {
   cv::Rect uni;
 };
 
-// The correlation over the windows' union: at full resolution (`all`), or at half resolution
-// (`coarse_res`) with the union's grey levels (`w32`) kept for the refinement.
+// The correlation over the windows' union: at full resolution (`all`), or at the coarse level
+// `level` (`coarse_res`, 1/2^level resolution) with the union's grey levels at every level
+// (`pyramid[0]` full resolution) and the look's templates kept for the refinement.
 struct UnionCorrelation {
   bool coarse = false;
-  cv::Mat w32, all, coarse_res;
+  int level = 0;
+  std::vector<cv::Mat> pyramid, templ;
+  cv::Mat all, coarse_res;
+  // The full-resolution refinements made, by their placements (x, y, width, height in the
+  // union's result): the windows overlap, and a coarse peak seen from several is refined once.
+  // Each holds the best placement (in the union's result), its value, fitted value and offset.
+  struct Refined {
+    cv::Point at;
+    double v, fitted;
+    cv::Point2d off;
+  };
+  std::map<std::array<int, 4>, Refined> refined;
 };
 
 // A correlation peak in one window.
@@ -340,25 +357,28 @@ struct PathTracker::Impl {
   }
 
   // Mean absolute difference of the object's central square from the background median there.
-  double foreground(const Candidate& c) const {
+  // `median` holds the samples' per-pixel median where `known` is set, and is filled as
+  // needed: a clip's candidates overlap, so each pixel's median is taken once.
+  double foreground(const Candidate& c, cv::Mat& median, cv::Mat& known) const {
     const int r = std::clamp(static_cast<int>(std::ceil(radius)), 1, h);
-    const cv::Rect in(h - r, h - r, 2 * r + 1, 2 * r + 1);
-    std::vector<cv::Mat> bg;
-    for (const cv::Mat& s : samples) {
-      cv::Mat b;
-      cv::getRectSubPix(s, cv::Size(p, p), cv::Point2f(c.at), b);
-      bg.push_back(b(in));
-    }
+    std::vector<unsigned char> v(samples.size());
     double sum = 0;
-    std::vector<unsigned char> v(bg.size());
-    for (int y = 0; y < in.height; ++y) {
-      for (int x = 0; x < in.width; ++x) {
-        for (std::size_t k = 0; k < bg.size(); ++k) v[k] = bg[k].at<unsigned char>(y, x);
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        sum += std::abs(c.patch.at<unsigned char>(in.y + y, in.x + x) - v[v.size() / 2]);
+    for (int y = -r; y <= r; ++y) {
+      // A patch's pixel outside the image is its nearest inside (getRectSubPix replicates the
+      // border), in the candidate's patch and the samples alike.
+      const int iy = std::clamp(c.at.y + y, 0, size.height - 1);
+      for (int x = -r; x <= r; ++x) {
+        const int ix = std::clamp(c.at.x + x, 0, size.width - 1);
+        if (known.at<unsigned char>(iy, ix) == 0) {
+          for (std::size_t k = 0; k < samples.size(); ++k) v[k] = samples[k].at<unsigned char>(iy, ix);
+          std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+          median.at<unsigned char>(iy, ix) = v[v.size() / 2];
+          known.at<unsigned char>(iy, ix) = 1;
+        }
+        sum += std::abs(c.patch.at<unsigned char>(h + y, h + x) - median.at<unsigned char>(iy, ix));
       }
     }
-    return sum / in.area();
+    return sum / ((2 * r + 1) * (2 * r + 1));
   }
 
   void update(const Frame& f);
@@ -391,11 +411,10 @@ struct PathTracker::Impl {
   // The anchors' windows in the image and their union.
   SearchWindows search_windows(const std::vector<Anchor>& anchors) const;
   // A look's correlation over the windows' union, `gray` its grey image (coarse for a large
-  // union; makes the look's templ_half).
+  // union; makes the look's coarse templates).
   UnionCorrelation correlate_union(const cv::Mat& gray, Look& look) const;
   // The best kPerWindow peaks of one window (`rrect` in the union's result) found coarse to fine.
-  std::vector<Peak> coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect, int suppress,
-                                 const cv::Mat& templ) const;
+  std::vector<Peak> coarse_peaks(UnionCorrelation& u, const cv::Rect& rrect, int suppress) const;
   // Adds a window's peaks as candidates, a peak already found from another window once (from
   // another look: the better correlation kept). `gray` is the grey image of a rectangle at
   // `origin` holding the window and a pixel around it.
@@ -497,7 +516,7 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
                                " grey levels, needs " + std::to_string(static_cast<int>(kFlatSd)) +
                                "): there is nothing to follow; start on the object");
   }
-  m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, cv::Mat()};
+  m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, {}};
   m.looks.clear();
   m.steps.clear();
   m.marks.clear();
@@ -565,7 +584,7 @@ void PathTracker::add_look(int frame, const cv::Mat& gray, double x_px, double y
     throw InputError(where, "the look's image does not hold the mark");
   }
   const ManualMark& mk = m.marks.at(frame);
-  Look look{frame, cv::Point2d(mk.x_px, mk.y_px), cv::Mat(), cv::Mat()};
+  Look look{frame, cv::Point2d(mk.x_px, mk.y_px), cv::Mat(), {}};
   cv::getRectSubPix(gray, cv::Size(m.p, m.p), cv::Point2f(static_cast<float>(x_px), static_cast<float>(y_px)),
                     look.templ, CV_32F);
   cv::Scalar mean, sd;
@@ -664,19 +683,26 @@ SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& ancho
 }
 
 UnionCorrelation PathTracker::Impl::correlate_union(const cv::Mat& gray, Look& look) const {
-  const cv::Mat& templ = look.templ;
-  cv::Mat& templ_half = look.templ_half;
   UnionCorrelation u;
   u.coarse = !gray.empty() && p >= kCoarseMinPatch && gray.rows * gray.cols > kCoarseMinArea;
   if (!gray.empty()) {
-    gray.convertTo(u.w32, CV_32F);
+    u.pyramid.resize(1);
+    gray.convertTo(u.pyramid[0], CV_32F);
     if (u.coarse) {
-      if (templ_half.empty()) cv::pyrDown(templ, templ_half);
-      cv::Mat half;
-      cv::pyrDown(u.w32, half);
-      normed_correlation(half, templ_half, u.coarse_res);
+      u.level = p >= kQuarterMinPatch ? 2 : 1;
+      while (static_cast<int>(look.coarse.size()) < u.level) {
+        look.coarse.emplace_back();
+        cv::pyrDown(look.coarse.size() == 1 ? look.templ : look.coarse[look.coarse.size() - 2], look.coarse.back());
+      }
+      u.templ.push_back(look.templ);
+      for (int l = 1; l <= u.level; ++l) {
+        u.pyramid.emplace_back();
+        cv::pyrDown(u.pyramid[l - 1], u.pyramid[l]);
+        u.templ.push_back(look.coarse[l - 1]);
+      }
+      normed_correlation(u.pyramid[u.level], u.templ[u.level], u.coarse_res);
     } else {
-      normed_correlation(u.w32, templ, u.all);
+      normed_correlation(u.pyramid[0], look.templ, u.all);
     }
   }
   return u;
@@ -702,10 +728,10 @@ std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress) {
 
 }  // namespace
 
-std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, const cv::Rect& rrect, int suppress,
-                                                  const cv::Mat& templ) const {
+std::vector<Peak> PathTracker::Impl::coarse_peaks(UnionCorrelation& u, const cv::Rect& rrect, int suppress) const {
   std::vector<Peak> peaks;
-  const cv::Rect crect = cv::Rect(rrect.x / 2, rrect.y / 2, (rrect.width + 1) / 2, (rrect.height + 1) / 2) &
+  const int f = 1 << u.level;
+  const cv::Rect crect = cv::Rect(rrect.x / f, rrect.y / f, (rrect.width + f - 1) / f, (rrect.height + f - 1) / f) &
                          cv::Rect(0, 0, u.coarse_res.cols, u.coarse_res.rows);
   if (crect.width < 1 || crect.height < 1) return peaks;
   cv::Mat scratch = u.coarse_res(crect).clone();
@@ -715,22 +741,47 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(const UnionCorrelation& u, con
     cv::Point c;
     cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
     if (v < kCoarseFloor) break;
-    cv::circle(scratch, c, std::max(1, suppress / 2), cv::Scalar(-1), cv::FILLED);
-    const double ridge = peak_ridge_px(u.coarse_res, crect.tl() + c, v, 2);
-    // Refine: the full-resolution correlation within kRefinePx of the coarse peak.
-    const cv::Point tl(2 * (crect.x + c.x) - rrect.x, 2 * (crect.y + c.y) - rrect.y);  // in the window's result
+    cv::circle(scratch, c, std::max(1, suppress / f), cv::Scalar(-1), cv::FILLED);
+    const double ridge = peak_ridge_px(u.coarse_res, crect.tl() + c, v, f);
+    // Refine at each finer level: the correlation within kRefinePx of twice the coarser
+    // level's best place (in the union's result at that level); at full resolution, within
+    // the window.
+    cv::Point at = crect.tl() + c;
+    for (int l = u.level - 1; l >= 1; --l) {
+      const cv::Mat& img = u.pyramid[l];
+      const cv::Mat& t = u.templ[l];
+      const cv::Rect near = cv::Rect(2 * at.x - kRefinePx, 2 * at.y - kRefinePx, 2 * kRefinePx + 1, 2 * kRefinePx + 1) &
+                            cv::Rect(0, 0, img.cols - t.cols + 1, img.rows - t.rows + 1);
+      if (near.width < 1 || near.height < 1) break;
+      cv::Mat r;
+      normed_correlation(img(cv::Rect(near.tl(), near.size() + t.size() - cv::Size(1, 1))), t, r);
+      cv::Point in;
+      cv::minMaxLoc(r, nullptr, nullptr, nullptr, &in);
+      at = near.tl() + in;
+    }
+    const cv::Point tl(2 * at.x - rrect.x, 2 * at.y - rrect.y);  // in the window's result
     const cv::Rect near = cv::Rect(tl.x - kRefinePx, tl.y - kRefinePx, 2 * kRefinePx + 1, 2 * kRefinePx + 1) &
                           cv::Rect(0, 0, rrect.width, rrect.height);
     if (near.width < 1 || near.height < 1) continue;
-    cv::Mat fine;
-    normed_correlation(u.w32(cv::Rect(rrect.x + near.x, rrect.y + near.y, near.width + p - 1, near.height + p - 1)),
-                      templ, fine);
+    const std::array<int, 4> key{rrect.x + near.x, rrect.y + near.y, near.width, near.height};
+    auto done = u.refined.find(key);
+    if (done == u.refined.end()) {
+      cv::Mat fine;
+      normed_correlation(u.pyramid[0](cv::Rect(key[0], key[1], near.width + p - 1, near.height + p - 1)), u.templ[0],
+                         fine);
+      UnionCorrelation::Refined r;
+      cv::Point in;
+      cv::minMaxLoc(fine, nullptr, &r.v, nullptr, &in);
+      r.fitted = r.v;
+      r.off = subpixel_peak(fine, in, &r.fitted);
+      r.at = cv::Point(key[0], key[1]) + in;
+      done = u.refined.emplace(key, r).first;
+    }
     Peak pk;
-    cv::Point in;
-    cv::minMaxLoc(fine, nullptr, &pk.v, nullptr, &in);
-    pk.fitted = pk.v;
-    pk.off = subpixel_peak(fine, in, &pk.fitted);
-    pk.at = near.tl() + in;
+    pk.v = done->second.v;
+    pk.fitted = done->second.fitted;
+    pk.off = done->second.off;
+    pk.at = done->second.at - rrect.tl();
     pk.ridge = ridge;
     refined.push_back(pk);
   }
@@ -842,14 +893,15 @@ void PathTracker::Impl::update(const Frame& f) {
 void PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look,
                                    bool other_look, int suppress, FoundPeaks& found) const {
   // A large union with a template that survives halving is searched coarse to fine: the
-  // correlation at half resolution finds each window's peaks, each refined by the
-  // full-resolution correlation within 3 px (a quarter of the work over the union).
-  const UnionCorrelation u = correlate_union(gray(w.uni - origin), look);
+  // correlation at half (a large template: quarter) resolution finds each window's peaks, each
+  // refined within 3 px at every finer level (a quarter, or a sixteenth, of the work over the
+  // union; a peak seen from several windows is refined once).
+  UnionCorrelation u = correlate_union(gray(w.uni - origin), look);
   for (const cv::Rect& win : w.wins) {
     // The window in the union's result.
     const cv::Rect rrect(win.x - w.uni.x, win.y - w.uni.y, win.width - p + 1, win.height - p + 1);
     const std::vector<Peak> peaks =
-        u.coarse ? coarse_peaks(u, rrect, suppress, look.templ) : fine_peaks(u.all(rrect), suppress);
+        u.coarse ? coarse_peaks(u, rrect, suppress) : fine_peaks(u.all(rrect), suppress);
     add_window_peaks(peaks, win, gray, origin, suppress, other_look, found);
   }
 }
@@ -862,9 +914,10 @@ std::vector<Observation> PathTracker::finish() {
 
 void PathTracker::Impl::compute_unary_costs() {
   if (fg_done) return;
+  cv::Mat median(size, CV_8U), known = cv::Mat::zeros(size, CV_8U);
   for (int t = 1; t < static_cast<int>(this->steps.size()); ++t) {
     for (Candidate& c : this->steps[t].c) {
-      c.fg = foreground(c);
+      c.fg = foreground(c, median, known);
       c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
     }
   }
