@@ -292,6 +292,38 @@ TEST(PathTracker, CoarseToFineSearchAt720pNeverTakesTheCrossingLookAlike) {
   EXPECT_LE(r.lost, 6);
 }
 
+TEST(PathTracker, QuarterResolutionSearchOfALargeTemplateFollowsADiscToAFractionOfAPixel) {
+  // A disc of radius 18 takes a template of 55 px (49 or more): the union is searched at
+  // quarter resolution (a 14 px template there) and each peak refined at half, then full
+  // resolution. The motion of the test above, faster.
+  const RenderOptions o = textured_video(1280, 720);
+  auto at = [](int i) { return cv::Point2d(200 + 20.0 * i, 150 + 3.0 * i + 0.4 * i * i); };
+  const Scene scene = [&](double t) {
+    return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 18)};
+  };
+  PathTracker probe;
+  probe.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
+  ASSERT_GE(probe.patch_px(), 49);  // the quarter-resolution search's condition holds
+  const Result r = track_path(scene, o, 24, at);
+  EXPECT_EQ(r.lost, 0);
+  EXPECT_LT(r.median_px, 0.3);
+  EXPECT_LT(r.worst_px, 1.0);
+}
+
+TEST(PathTracker, QuarterResolutionSearchNeverTakesTheCrossingLookAlike) {
+  // The crossing above with discs of radius 18 (templates of 55 px: quarter resolution).
+  const RenderOptions o = textured_video(1280, 720);
+  auto ours = [](int i) { return cv::Point2d(300 + 14.0 * i, 360); };
+  auto other = [](int i) { return cv::Point2d(510, 150 + 14.0 * i); };
+  const Scene scene = [&](double t) {
+    const int i = static_cast<int>(std::lround(t * 30));
+    return std::vector<ShapePose>{disc(other(i), 18), disc(ours(i), 18)};
+  };
+  const Result r = track_path(scene, o, 30, ours);
+  EXPECT_LT(r.worst_px, 1.5);
+  EXPECT_LE(r.lost, 6);
+}
+
 TEST(PathTracker, RefusesAStartOutsideTheImage) {
   const RenderOptions o = textured_video();
   const Scene scene = [](double) { return std::vector<ShapePose>{}; };
