@@ -29,6 +29,13 @@ constexpr int kPerWindow = 3;
 constexpr int kCandidatesPerLook = 4;
 // A best candidate correlating this well is a confident sighting (the lead anchor).
 constexpr double kConfident = 0.9;
+// A template that turns (PathTracker::Impl::update, docs/theory.md#tracking-on-real-film): where
+// no look's best peak in a step correlates kConfident, each look is also correlated turned by
+// +-kTurnStep and +-2 kTurnStep degrees about its point from its heading, around the step's
+// candidates. A turn becomes the look's heading (searched in full from the next step on) where
+// it matches a candidate at least kTurnGain better than the look did and at least min_score.
+constexpr int kTurnStep = 15;
+constexpr double kTurnGain = 0.05;
 constexpr double kCandidateFloor = 0.3;
 // Coarse to fine (PathTracker::Impl::correlate_union, coarse_peaks): a union of windows larger
 // than this, px², with a template of at least kCoarseMinPatch px, is correlated at half
@@ -124,7 +131,40 @@ struct Look {
   int frame = 0;
   cv::Point2d at;  // where it was taken, px
   cv::Mat templ, templ_half;
+  cv::Mat source;           // CV_32F square about `at`, wide enough for the template turned any way
+  int deg = 0;              // a turned copy's turn from the look, degrees
+  int heading = 0;          // the turn the object was last seen at (kTurnGain), degrees
+  std::vector<Look> turns;  // the turned copies made so far (turned())
 };
+
+// The side of a look's source square for a template of side p: its diagonal and a pixel.
+int turn_source_side(int p) { return 2 * static_cast<int>(std::ceil((p / 2) * std::sqrt(2.0))) + 3; }
+
+// `look` turned by `deg` degrees about its point (itself for 0; made once, kept in look.turns);
+// nullptr when the look has no source or the turned template is flat.
+Look* turned(Look& look, int deg, int p) {
+  deg = ((deg % 360) + 540) % 360 - 180;  // (-180, 180]
+  if (deg == -180) deg = 180;
+  if (deg == 0) return &look;
+  if (look.source.empty()) return nullptr;
+  for (Look& t : look.turns) {
+    if (t.deg == deg) return t.templ.empty() ? nullptr : &t;
+  }
+  Look t;
+  t.frame = look.frame;
+  t.at = look.at;
+  t.deg = deg;
+  const float c = static_cast<float>(look.source.cols - 1) / 2;
+  cv::Mat rotated;
+  cv::warpAffine(look.source, rotated, cv::getRotationMatrix2D(cv::Point2f(c, c), deg, 1), look.source.size(),
+                 cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  cv::getRectSubPix(rotated, cv::Size(p, p), cv::Point2f(c, c), t.templ);
+  cv::Scalar mean, sd;
+  cv::meanStdDev(t.templ, mean, sd);
+  if (sd[0] < kFlatSd) t.templ.release();  // flat: nothing to match
+  look.turns.push_back(std::move(t));
+  return look.turns.back().templ.empty() ? nullptr : &look.turns.back();
+}
 
 // The anchors' search windows (each within reach of its anchor, clipped to the image) and their union, px.
 struct SearchWindows {
@@ -156,6 +196,15 @@ struct FoundPeaks {
 
 // The best kPerWindow peaks of a window's full-resolution correlation `res`.
 std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress);
+
+// The best correlation among the windows' peaks (-1: none).
+double best_peak(const std::vector<std::vector<Peak>>& peaks) {
+  double best = -1;
+  for (const std::vector<Peak>& in_window : peaks) {
+    for (const Peak& pk : in_window) best = std::max(best, pk.v);
+  }
+  return best;
+}
 
 // One state of the path search: the path's last two points (step t, candidate k; back step g,
 // candidate j of step t - g), enough for its acceleration at the next one.
@@ -386,8 +435,16 @@ struct PathTracker::Impl {
   std::vector<Look*> looks_for(int index);
   // The candidates of one look in the windows `w`; `gray` is the grey image of a rectangle at
   // `origin` holding the windows' union and a pixel around it.
-  void find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look, bool other_look,
-                  int suppress, FoundPeaks& found) const;
+  // Returns the best peak's correlation (-1: none).
+  double find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look, bool other_look,
+                    int suppress, FoundPeaks& found) const;
+  // The peaks of one look in each of the windows `w` (find_peaks without adding them).
+  std::vector<std::vector<Peak>> window_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin,
+                                              Look& look, int suppress) const;
+  // The correlation of `templ` around candidate `c` (within kRefinePx of it; `gray` the grey
+  // image of a rectangle at `origin`). With `take`, where it is better than c's, c moves to its
+  // peak and takes it. Returns that correlation (-1: none).
+  double rescore(const cv::Mat& gray, cv::Point origin, const cv::Mat& templ, Candidate& c, bool take) const;
   // The anchors' windows in the image and their union.
   SearchWindows search_windows(const std::vector<Anchor>& anchors) const;
   // A look's correlation over the windows' union, `gray` its grey image (coarse for a large
@@ -497,7 +554,9 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
                                " grey levels, needs " + std::to_string(static_cast<int>(kFlatSd)) +
                                "): there is nothing to follow; start on the object");
   }
-  m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, cv::Mat()};
+  m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, cv::Mat(), cv::Mat(), 0, 0, {}};
+  const int side = turn_source_side(m.p);
+  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), m.start_look.source, CV_32F);
   m.looks.clear();
   m.steps.clear();
   m.marks.clear();
@@ -565,7 +624,7 @@ void PathTracker::add_look(int frame, const cv::Mat& gray, double x_px, double y
     throw InputError(where, "the look's image does not hold the mark");
   }
   const ManualMark& mk = m.marks.at(frame);
-  Look look{frame, cv::Point2d(mk.x_px, mk.y_px), cv::Mat(), cv::Mat()};
+  Look look{frame, cv::Point2d(mk.x_px, mk.y_px), cv::Mat(), cv::Mat(), cv::Mat(), 0, 0, {}};
   cv::getRectSubPix(gray, cv::Size(m.p, m.p), cv::Point2f(static_cast<float>(x_px), static_cast<float>(y_px)),
                     look.templ, CV_32F);
   cv::Scalar mean, sd;
@@ -576,6 +635,9 @@ void PathTracker::add_look(int frame, const cv::Mat& gray, double x_px, double y
   // centred on the click would add the click's own error (a mark 2.5 px off the object's
   // point) to the frames around it, as rivals of the right candidates.
   if (m.start_matches_near(gray, cv::Point2d(x_px, y_px))) return;
+  const int side = turn_source_side(m.p);
+  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(static_cast<float>(x_px), static_cast<float>(y_px)),
+                    look.source, CV_32F);
   const auto at = std::find_if(m.looks.begin(), m.looks.end(), [&](const Look& l) { return l.frame >= frame; });
   if (at != m.looks.end() && at->frame == frame) {
     *at = std::move(look);
@@ -832,29 +894,131 @@ void PathTracker::Impl::update(const Frame& f) {
   // marks before and after this frame (a corrected frame shows the tracker the object as it
   // looks there, both ways). A candidate's correlation is its best look's.
   const std::vector<Look*> searched = looks_for(f.index);
+  // Each look as taken and, where it has turned (its heading), turned so: an object that does
+  // not turn has one search per look, and a heading gone wrong loses nothing.
+  double best = -1;
+  std::vector<double> primary;  // each look's best, as taken or at its heading
+  FoundPeaks at_heading;        // the peaks of the looks turned to their headings
+  int heading_searches = 0;
   if (!w.wins.empty()) {
-    for (Look* look : searched) find_peaks(w, gray, region.tl(), *look, look != &start_look, suppress, found);
+    for (Look* look : searched) {
+      primary.push_back(find_peaks(w, gray, region.tl(), *look, look != &start_look, suppress, found));
+      if (Look* at = look->heading != 0 ? turned(*look, look->heading, p) : nullptr; at != nullptr) {
+        const double v = find_peaks(w, gray, region.tl(), *at, true, suppress, at_heading);
+        ++heading_searches;
+        primary.back() = std::max(primary.back(), v);
+      }
+      best = std::max(best, primary.back());
+    }
   }
   // At most kCandidates (and kCandidatesPerLook more per mark's look): every window's best,
   // then the best of the rest.
   const int n_keep = kCandidates + kCandidatesPerLook * static_cast<int>(searched.size() - 1);
   out.c = keep_best(found, n, n_keep);
+  // And the best kCandidatesPerLook of each turned search's peaks on top: those the looks as
+  // taken found are all kept (a heading gone wrong crowds none of them out); a peak at one of
+  // them gives it its correlation where better.
+  std::sort(at_heading.c.begin(), at_heading.c.end(), [](const Candidate& a, const Candidate& b) { return a.ncc > b.ncc; });
+  for (int added = 0, i = 0; i < static_cast<int>(at_heading.c.size()) && added < kCandidatesPerLook * heading_searches; ++i) {
+    Candidate& c = at_heading.c[static_cast<std::size_t>(i)];
+    const auto same = std::find_if(out.c.begin(), out.c.end(), [&](const Candidate& q) {
+      return std::hypot(q.x - c.x, q.y - c.y) < suppress;
+    });
+    if (same == out.c.end()) {
+      out.c.push_back(std::move(c));
+      ++added;
+    } else if (c.ncc > same->ncc) {
+      *same = std::move(c);
+    }
+  }
+  // A template that turns: where no look is found confidently, each is correlated turned a
+  // little and a little more either way from its heading around each candidate kept (within
+  // kRefinePx): a candidate takes a turn's correlation (and its place) where it is better. No
+  // candidate is added or dropped here (a turned look finds the same object a few px along
+  // itself, a rival of the right candidate, and turned texture elsewhere). A turn that matches
+  // a candidate better than the look at its heading becomes the heading, searched in full from
+  // the next step on (the car going round a loop).
+  if (!w.wins.empty() && best < kConfident) {
+    // Only candidates that stand out from the background seen so far (kFgHalf) take part: a
+    // turned look matches some texture better than the look did (a heading turned by it moved
+    // the windows and the costs, and a look-alike's path became certain).
+    std::vector<Candidate*> moving;
+    for (Candidate& c : out.c) {
+      if (foreground(c) >= kFgHalf) moving.push_back(&c);
+    }
+    for (std::size_t l = 0; l < searched.size() && !moving.empty(); ++l) {
+      Look* look = searched[l];
+      int best_deg = look->heading;  // (a turned copy's address changes as more are made)
+      double look_best = primary[l];
+      for (const int d : {-kTurnStep, kTurnStep, -2 * kTurnStep, 2 * kTurnStep}) {
+        Look* t = turned(*look, look->heading + d, p);
+        if (t == nullptr) continue;
+        for (Candidate* c : moving) {
+          const double v = rescore(gray, region.tl(), t->templ, *c, false);
+          if (v > look_best) {
+            look_best = v;
+            best_deg = t->deg;
+          }
+        }
+      }
+      // Only a turn that matches a candidate clearly better than the look did (kTurnGain) and well
+      // enough to be reported (min_score) is taken, and only it gives the candidates its
+      // correlation: the best of several turns at every candidate would favour texture that
+      // some turn happens to match (a look-alike's path made cheaper than the object's).
+      if (best_deg != look->heading && look_best >= std::max(primary[l] + kTurnGain, opt.min_score)) {
+        look->heading = best_deg;
+        const Look* t = turned(*look, best_deg, p);
+        for (Candidate* c : moving) rescore(gray, region.tl(), t->templ, *c, true);
+      }
+    }
+  }
   steps.push_back(std::move(out));
 }
 
-void PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look,
-                                   bool other_look, int suppress, FoundPeaks& found) const {
+std::vector<std::vector<Peak>> PathTracker::Impl::window_peaks(const SearchWindows& w, const cv::Mat& gray,
+                                                              cv::Point origin, Look& look, int suppress) const {
   // A large union with a template that survives halving is searched coarse to fine: the
   // correlation at half resolution finds each window's peaks, each refined by the
   // full-resolution correlation within 3 px (a quarter of the work over the union).
   const UnionCorrelation u = correlate_union(gray(w.uni - origin), look);
+  std::vector<std::vector<Peak>> out;
   for (const cv::Rect& win : w.wins) {
     // The window in the union's result.
     const cv::Rect rrect(win.x - w.uni.x, win.y - w.uni.y, win.width - p + 1, win.height - p + 1);
-    const std::vector<Peak> peaks =
-        u.coarse ? coarse_peaks(u, rrect, suppress, look.templ) : fine_peaks(u.all(rrect), suppress);
-    add_window_peaks(peaks, win, gray, origin, suppress, other_look, found);
+    out.push_back(u.coarse ? coarse_peaks(u, rrect, suppress, look.templ) : fine_peaks(u.all(rrect), suppress));
   }
+  return out;
+}
+
+double PathTracker::Impl::rescore(const cv::Mat& gray, cv::Point origin, const cv::Mat& templ, Candidate& c,
+                                  bool take) const {
+  const cv::Point at = c.at - origin;
+  const cv::Rect near = cv::Rect(at.x - h - kRefinePx, at.y - h - kRefinePx, p + 2 * kRefinePx, p + 2 * kRefinePx) &
+                        cv::Rect(0, 0, gray.cols, gray.rows);
+  if (near.width < p || near.height < p) return -1;
+  cv::Mat w32, res;
+  gray(near).convertTo(w32, CV_32F);
+  cv::matchTemplate(w32, templ, res, cv::TM_CCOEFF_NORMED);
+  cv::patchNaNs(res, -1);
+  double v;
+  cv::Point in;
+  cv::minMaxLoc(res, nullptr, &v, nullptr, &in);
+  double fitted = v;
+  const cv::Point2d off = subpixel_peak(res, in, &fitted);
+  if (take && std::min(1.0, fitted) > c.ncc) {
+    const double spread = c.spread;
+    c = make_candidate(gray, origin, origin.x + near.x + in.x + off.x + h, origin.y + near.y + in.y + off.y + h,
+                       std::min(1.0, fitted));
+    c.spread = spread;
+  }
+  return v;
+}
+
+double PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look,
+                                     bool other_look, int suppress, FoundPeaks& found) const {
+  const std::vector<std::vector<Peak>> peaks = window_peaks(w, gray, origin, look, suppress);
+  for (std::size_t i = 0; i < w.wins.size(); ++i) add_window_peaks(peaks[i], w.wins[i], gray, origin, suppress, other_look, found);
+  return best_peak(peaks);
 }
 
 
