@@ -387,8 +387,9 @@ struct PathTracker::Impl {
     return c;
   }
 
-  // Mean absolute difference of the object's central square from the background median there.
-  double foreground(const Candidate& c) const {
+  // Mean absolute difference of the object's central square from the background median there
+  // (every `stride`-th pixel of it each way: 1 for the unary cost; a quick look with more).
+  double foreground(const Candidate& c, int stride = 1) const {
     const int r = std::clamp(static_cast<int>(std::ceil(radius)), 1, h);
     const cv::Rect in(h - r, h - r, 2 * r + 1, 2 * r + 1);
     std::vector<cv::Mat> bg;
@@ -398,15 +399,17 @@ struct PathTracker::Impl {
       bg.push_back(b(in));
     }
     double sum = 0;
+    int n = 0;
     std::vector<unsigned char> v(bg.size());
-    for (int y = 0; y < in.height; ++y) {
-      for (int x = 0; x < in.width; ++x) {
+    for (int y = 0; y < in.height; y += stride) {
+      for (int x = 0; x < in.width; x += stride) {
         for (std::size_t k = 0; k < bg.size(); ++k) v[k] = bg[k].at<unsigned char>(y, x);
         std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
         sum += std::abs(c.patch.at<unsigned char>(in.y + y, in.x + x) - v[v.size() / 2]);
+        ++n;
       }
     }
-    return sum / in.area();
+    return sum / n;
   }
 
   void update(const Frame& f);
@@ -894,8 +897,17 @@ void PathTracker::Impl::update(const Frame& f) {
   // marks before and after this frame (a corrected frame shows the tracker the object as it
   // looks there, both ways). A candidate's correlation is its best look's.
   const std::vector<Look*> searched = looks_for(f.index);
-  // Each look as taken and, where it has turned (its heading), turned so: an object that does
-  // not turn has one search per look, and a heading gone wrong loses nothing.
+  // Each look as taken and, where it has turned (its heading) and is not found confidently as
+  // taken, turned so: an object that does not turn has one search per look, and a heading gone
+  // wrong loses nothing.
+  // A turned look is searched in the windows of the newest anchors only (a step's worth of
+  // motion from the last step's candidates, not the older anchors' wide windows): a turning
+  // object is one followed from step to step, and this bounds the search's cost.
+  std::vector<Anchor> newest;
+  for (const Anchor& a : anchors) {
+    if (a.age <= 1) newest.push_back(a);
+  }
+  const SearchWindows near = search_windows(newest);
   double best = -1;
   std::vector<double> primary;  // each look's best, as taken or at its heading
   FoundPeaks at_heading;        // the peaks of the looks turned to their headings
@@ -903,8 +915,10 @@ void PathTracker::Impl::update(const Frame& f) {
   if (!w.wins.empty()) {
     for (Look* look : searched) {
       primary.push_back(find_peaks(w, gray, region.tl(), *look, look != &start_look, suppress, found));
-      if (Look* at = look->heading != 0 ? turned(*look, look->heading, p) : nullptr; at != nullptr) {
-        const double v = find_peaks(w, gray, region.tl(), *at, true, suppress, at_heading);
+      // (Where the look as taken is found confidently, its heading is not searched.)
+      Look* at = look->heading != 0 && primary.back() < kConfident ? turned(*look, look->heading, p) : nullptr;
+      if (at != nullptr && !near.wins.empty()) {
+        const double v = find_peaks(near, gray, region.tl(), *at, true, suppress, at_heading);
         ++heading_searches;
         primary.back() = std::max(primary.back(), v);
       }
@@ -932,44 +946,47 @@ void PathTracker::Impl::update(const Frame& f) {
     }
   }
   // A template that turns: where no look is found confidently, each is correlated turned a
-  // little and a little more either way from its heading around each candidate kept (within
-  // kRefinePx): a candidate takes a turn's correlation (and its place) where it is better. No
-  // candidate is added or dropped here (a turned look finds the same object a few px along
-  // itself, a rival of the right candidate, and turned texture elsewhere). A turn that matches
-  // a candidate better than the look at its heading becomes the heading, searched in full from
-  // the next step on (the car going round a loop).
+  // little and a little more either way from its heading (+-kTurnStep, +-2 kTurnStep) around
+  // each candidate kept (within kRefinePx). The best turn that matches a candidate kTurnGain
+  // better than the look did becomes the look's heading (searched from the next step on: the
+  // car going round a loop), and the candidates take its correlation (and its place) where it
+  // is better. No candidate is added or dropped here (a turned look finds the same object a few
+  // px along itself, a rival of the right candidate, and turned texture elsewhere).
   if (!w.wins.empty() && best < kConfident) {
-    // Only candidates that stand out from the background seen so far (kFgHalf) take part: a
-    // turned look matches some texture better than the look did (a heading turned by it moved
-    // the windows and the costs, and a look-alike's path became certain).
-    std::vector<Candidate*> moving;
-    for (Candidate& c : out.c) {
-      if (foreground(c) >= kFgHalf) moving.push_back(&c);
+    // Only candidates that stand out from the background seen so far (kFgHalf, judged on about
+    // 8 x 8 pixels of the object's square: a quick look) take part: a turned look matches some
+    // texture better than the look did (a heading turned by it moved the windows and the costs,
+    // and a look-alike's path became certain).
+    const int stride = std::max(1, static_cast<int>(std::ceil(radius)) / 4);
+    std::vector<std::size_t> moving;
+    for (std::size_t i = 0; i < out.c.size(); ++i) {
+      if (foreground(out.c[i], stride) >= kFgHalf) moving.push_back(i);
     }
+    struct Match {
+      double v;
+      int deg;
+      bool found;
+    };
     for (std::size_t l = 0; l < searched.size() && !moving.empty(); ++l) {
       Look* look = searched[l];
-      int best_deg = look->heading;  // (a turned copy's address changes as more are made)
-      double look_best = primary[l];
+      // Only a turn that matches a candidate clearly better than the look did (kTurnGain) and
+      // well enough to be reported (min_score) is taken, the best such.
+      const double bar = std::max(primary[l] + kTurnGain, opt.min_score);
+      Match taken{bar, 0, false};
       for (const int d : {-kTurnStep, kTurnStep, -2 * kTurnStep, 2 * kTurnStep}) {
         Look* t = turned(*look, look->heading + d, p);
         if (t == nullptr) continue;
-        for (Candidate* c : moving) {
-          const double v = rescore(gray, region.tl(), t->templ, *c, false);
-          if (v > look_best) {
-            look_best = v;
-            best_deg = t->deg;
-          }
+        for (std::size_t i : moving) {
+          const double v = rescore(gray, region.tl(), t->templ, out.c[i], false);
+          if (v > taken.v || (v == taken.v && !taken.found)) taken = {v, t->deg, true};
         }
       }
-      // Only a turn that matches a candidate clearly better than the look did (kTurnGain) and well
-      // enough to be reported (min_score) is taken, and only it gives the candidates its
-      // correlation: the best of several turns at every candidate would favour texture that
-      // some turn happens to match (a look-alike's path made cheaper than the object's).
-      if (best_deg != look->heading && look_best >= std::max(primary[l] + kTurnGain, opt.min_score)) {
-        look->heading = best_deg;
-        const Look* t = turned(*look, best_deg, p);
-        for (Candidate* c : moving) rescore(gray, region.tl(), t->templ, *c, true);
-      }
+      if (!taken.found) continue;
+      // Only that turn gives the candidates its correlation: the best of several turns at every
+      // candidate would favour texture that some turn happens to match.
+      look->heading = taken.deg;
+      const Look* t = turned(*look, taken.deg, p);  // (a turned copy's address changes as more are made)
+      for (std::size_t i : moving) rescore(gray, region.tl(), t->templ, out.c[i], true);
     }
   }
   steps.push_back(std::move(out));
