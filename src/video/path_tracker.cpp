@@ -611,8 +611,9 @@ void PathTracker::set_marks(std::vector<ManualMark> marks) {
 }
 
 cv::Rect PathTracker::look_crop(cv::Size image, double x_px, double y_px) {
-  // The template side is at most 2 (small side / 8) + 1 (start()).
-  const int r = std::min(image.width, image.height) / 8 + 2;
+  // The template side is at most 2 (small side / 8) + 1 (start()); the look's source square for
+  // turning it (turn_source_side) is its diagonal and a pixel more.
+  const int r = turn_source_side(2 * (std::min(image.width, image.height) / 8) + 1) / 2 + 2;
   const int x = static_cast<int>(std::lround(x_px)), y = static_cast<int>(std::lround(y_px));
   return cv::Rect(x - r, y - r, 2 * r + 1, 2 * r + 1) & cv::Rect(0, 0, image.width, image.height);
 }
