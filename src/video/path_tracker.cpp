@@ -933,9 +933,11 @@ void PathTracker::Impl::update(const Frame& f) {
   // And the best kCandidatesPerLook of each turned search's peaks on top: those the looks as
   // taken found are all kept (a heading gone wrong crowds none of them out); a peak at one of
   // them gives it its correlation where better.
-  std::sort(at_heading.c.begin(), at_heading.c.end(), [](const Candidate& a, const Candidate& b) { return a.ncc > b.ncc; });
-  for (int added = 0, i = 0; i < static_cast<int>(at_heading.c.size()) && added < kCandidatesPerLook * heading_searches; ++i) {
-    Candidate& c = at_heading.c[static_cast<std::size_t>(i)];
+  std::sort(at_heading.c.begin(), at_heading.c.end(),
+            [](const Candidate& a, const Candidate& b) { return a.ncc > b.ncc; });
+  const int n_turned = kCandidatesPerLook * heading_searches;
+  for (std::size_t i = 0, added = 0; i < at_heading.c.size() && static_cast<int>(added) < n_turned; ++i) {
+    Candidate& c = at_heading.c[i];
     const auto same = std::find_if(out.c.begin(), out.c.end(), [&](const Candidate& q) {
       return std::hypot(q.x - c.x, q.y - c.y) < suppress;
     });
@@ -1035,7 +1037,9 @@ double PathTracker::Impl::rescore(const cv::Mat& gray, cv::Point origin, const c
 double PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look,
                                      bool other_look, int suppress, FoundPeaks& found) const {
   const std::vector<std::vector<Peak>> peaks = window_peaks(w, gray, origin, look, suppress);
-  for (std::size_t i = 0; i < w.wins.size(); ++i) add_window_peaks(peaks[i], w.wins[i], gray, origin, suppress, other_look, found);
+  for (std::size_t i = 0; i < w.wins.size(); ++i) {
+    add_window_peaks(peaks[i], w.wins[i], gray, origin, suppress, other_look, found);
+  }
   return best_peak(peaks);
 }
 
