@@ -31,6 +31,13 @@ constexpr int kPerWindow = 3;
 constexpr int kCandidatesPerLook = 4;
 // A best candidate correlating this well is a confident sighting (the lead anchor).
 constexpr double kConfident = 0.9;
+// A template that turns (PathTracker::Impl::update, docs/theory.md#tracking-on-real-film): where
+// no look's best peak in a step correlates kConfident, each look is also correlated turned by
+// +-kTurnStep and +-2 kTurnStep degrees about its point from its heading, around the step's
+// candidates. A turn becomes the look's heading (searched in full from the next step on) where
+// it matches a candidate at least kTurnGain better than the look did and at least min_score.
+constexpr int kTurnStep = 15;
+constexpr double kTurnGain = 0.05;
 constexpr double kCandidateFloor = 0.3;
 // Coarse to fine (PathTracker::Impl::correlate_union, coarse_peaks): a union of windows larger
 // than this, px², with a template of at least kCoarseMinPatch px, is correlated at half
@@ -130,7 +137,40 @@ struct Look {
   cv::Point2d at;  // where it was taken, px
   cv::Mat templ;
   std::vector<cv::Mat> coarse;
+  cv::Mat source;           // CV_32F square about `at`, wide enough for the template turned any way
+  int deg = 0;              // a turned copy's turn from the look, degrees
+  int heading = 0;          // the turn the object was last seen at (kTurnGain), degrees
+  std::vector<Look> turns;  // the turned copies made so far (turned())
 };
+
+// The side of a look's source square for a template of side p: its diagonal and a pixel.
+int turn_source_side(int p) { return 2 * static_cast<int>(std::ceil((p / 2) * std::sqrt(2.0))) + 3; }
+
+// `look` turned by `deg` degrees about its point (itself for 0; made once, kept in look.turns);
+// nullptr when the look has no source or the turned template is flat.
+Look* turned(Look& look, int deg, int p) {
+  deg = ((deg % 360) + 540) % 360 - 180;  // (-180, 180]
+  if (deg == -180) deg = 180;
+  if (deg == 0) return &look;
+  if (look.source.empty()) return nullptr;
+  for (Look& t : look.turns) {
+    if (t.deg == deg) return t.templ.empty() ? nullptr : &t;
+  }
+  Look t;
+  t.frame = look.frame;
+  t.at = look.at;
+  t.deg = deg;
+  const float c = static_cast<float>(look.source.cols - 1) / 2;
+  cv::Mat rotated;
+  cv::warpAffine(look.source, rotated, cv::getRotationMatrix2D(cv::Point2f(c, c), deg, 1), look.source.size(),
+                 cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  cv::getRectSubPix(rotated, cv::Size(p, p), cv::Point2f(c, c), t.templ);
+  cv::Scalar mean, sd;
+  cv::meanStdDev(t.templ, mean, sd);
+  if (sd[0] < kFlatSd) t.templ.release();  // flat: nothing to match
+  look.turns.push_back(std::move(t));
+  return look.turns.back().templ.empty() ? nullptr : &look.turns.back();
+}
 
 // The anchors' search windows (each within reach of its anchor, clipped to the image) and their union, px.
 struct SearchWindows {
@@ -174,6 +214,15 @@ struct FoundPeaks {
 
 // The best kPerWindow peaks of a window's full-resolution correlation `res`.
 std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress);
+
+// The best correlation among the windows' peaks (-1: none).
+double best_peak(const std::vector<std::vector<Peak>>& peaks) {
+  double best = -1;
+  for (const std::vector<Peak>& in_window : peaks) {
+    for (const Peak& pk : in_window) best = std::max(best, pk.v);
+  }
+  return best;
+}
 
 // One state of the path search: the path's last two points (step t, candidate k; back step g,
 // candidate j of step t - g), enough for its acceleration at the next one.
@@ -356,29 +405,39 @@ struct PathTracker::Impl {
     return c;
   }
 
-  // Mean absolute difference of the object's central square from the background median there.
-  // `median` holds the samples' per-pixel median where `known` is set, and is filled as
-  // needed: a clip's candidates overlap, so each pixel's median is taken once.
-  double foreground(const Candidate& c, cv::Mat& median, cv::Mat& known) const {
+  // Mean absolute difference of the object's central square from the background median there
+  // (every `stride`-th pixel of it each way: 1 for the unary cost; a quick look with more).
+  // With `median` and `known`, the samples' per-pixel median is kept where `known` is set and
+  // filled as needed: a clip's candidates overlap, so each pixel's median is taken once (for
+  // samples that no longer change: finish()).
+  double foreground(const Candidate& c, int stride = 1, cv::Mat* median = nullptr, cv::Mat* known = nullptr) const {
     const int r = std::clamp(static_cast<int>(std::ceil(radius)), 1, h);
     std::vector<unsigned char> v(samples.size());
     double sum = 0;
-    for (int y = -r; y <= r; ++y) {
+    int n = 0;
+    for (int y = -r; y <= r; y += stride) {
       // A patch's pixel outside the image is its nearest inside (getRectSubPix replicates the
       // border), in the candidate's patch and the samples alike.
       const int iy = std::clamp(c.at.y + y, 0, size.height - 1);
-      for (int x = -r; x <= r; ++x) {
+      for (int x = -r; x <= r; x += stride) {
         const int ix = std::clamp(c.at.x + x, 0, size.width - 1);
-        if (known.at<unsigned char>(iy, ix) == 0) {
+        unsigned char bg = 0;
+        if (median != nullptr && known->at<unsigned char>(iy, ix) != 0) {
+          bg = median->at<unsigned char>(iy, ix);
+        } else {
           for (std::size_t k = 0; k < samples.size(); ++k) v[k] = samples[k].at<unsigned char>(iy, ix);
           std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-          median.at<unsigned char>(iy, ix) = v[v.size() / 2];
-          known.at<unsigned char>(iy, ix) = 1;
+          bg = v[v.size() / 2];
+          if (median != nullptr) {
+            median->at<unsigned char>(iy, ix) = bg;
+            known->at<unsigned char>(iy, ix) = 1;
+          }
         }
-        sum += std::abs(c.patch.at<unsigned char>(h + y, h + x) - median.at<unsigned char>(iy, ix));
+        sum += std::abs(c.patch.at<unsigned char>(h + y, h + x) - bg);
+        ++n;
       }
     }
-    return sum / ((2 * r + 1) * (2 * r + 1));
+    return sum / n;
   }
 
   void update(const Frame& f);
@@ -406,8 +465,16 @@ struct PathTracker::Impl {
   std::vector<Look*> looks_for(int index);
   // The candidates of one look in the windows `w`; `gray` is the grey image of a rectangle at
   // `origin` holding the windows' union and a pixel around it.
-  void find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look, bool other_look,
-                  int suppress, FoundPeaks& found) const;
+  // Returns the best peak's correlation (-1: none).
+  double find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look, bool other_look,
+                    int suppress, FoundPeaks& found) const;
+  // The peaks of one look in each of the windows `w` (find_peaks without adding them).
+  std::vector<std::vector<Peak>> window_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin,
+                                              Look& look, int suppress) const;
+  // The correlation of `templ` around candidate `c` (within kRefinePx of it; `gray` the grey
+  // image of a rectangle at `origin`). With `take`, where it is better than c's, c moves to its
+  // peak and takes it. Returns that correlation (-1: none).
+  double rescore(const cv::Mat& gray, cv::Point origin, const cv::Mat& templ, Candidate& c, bool take) const;
   // The anchors' windows in the image and their union.
   SearchWindows search_windows(const std::vector<Anchor>& anchors) const;
   // A look's correlation over the windows' union, `gray` its grey image (coarse for a large
@@ -516,7 +583,9 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
                                " grey levels, needs " + std::to_string(static_cast<int>(kFlatSd)) +
                                "): there is nothing to follow; start on the object");
   }
-  m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, {}};
+  m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, {}, cv::Mat(), 0, 0, {}};
+  const int side = turn_source_side(m.p);
+  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), m.start_look.source, CV_32F);
   m.looks.clear();
   m.steps.clear();
   m.marks.clear();
@@ -568,8 +637,9 @@ void PathTracker::set_marks(std::vector<ManualMark> marks) {
 }
 
 cv::Rect PathTracker::look_crop(cv::Size image, double x_px, double y_px) {
-  // The template side is at most 2 (small side / 8) + 1 (start()).
-  const int r = std::min(image.width, image.height) / 8 + 2;
+  // The template side is at most 2 (small side / 8) + 1 (start()); the look's source square for
+  // turning it (turn_source_side) is its diagonal and a pixel more.
+  const int r = turn_source_side(2 * (std::min(image.width, image.height) / 8) + 1) / 2 + 2;
   const int x = static_cast<int>(std::lround(x_px)), y = static_cast<int>(std::lround(y_px));
   return cv::Rect(x - r, y - r, 2 * r + 1, 2 * r + 1) & cv::Rect(0, 0, image.width, image.height);
 }
@@ -584,7 +654,7 @@ void PathTracker::add_look(int frame, const cv::Mat& gray, double x_px, double y
     throw InputError(where, "the look's image does not hold the mark");
   }
   const ManualMark& mk = m.marks.at(frame);
-  Look look{frame, cv::Point2d(mk.x_px, mk.y_px), cv::Mat(), {}};
+  Look look{frame, cv::Point2d(mk.x_px, mk.y_px), cv::Mat(), {}, cv::Mat(), 0, 0, {}};
   cv::getRectSubPix(gray, cv::Size(m.p, m.p), cv::Point2f(static_cast<float>(x_px), static_cast<float>(y_px)),
                     look.templ, CV_32F);
   cv::Scalar mean, sd;
@@ -595,6 +665,9 @@ void PathTracker::add_look(int frame, const cv::Mat& gray, double x_px, double y
   // centred on the click would add the click's own error (a mark 2.5 px off the object's
   // point) to the frames around it, as rivals of the right candidates.
   if (m.start_matches_near(gray, cv::Point2d(x_px, y_px))) return;
+  const int side = turn_source_side(m.p);
+  cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(static_cast<float>(x_px), static_cast<float>(y_px)),
+                    look.source, CV_32F);
   const auto at = std::find_if(m.looks.begin(), m.looks.end(), [&](const Look& l) { return l.frame >= frame; });
   if (at != m.looks.end() && at->frame == frame) {
     *at = std::move(look);
@@ -880,30 +953,149 @@ void PathTracker::Impl::update(const Frame& f) {
   // marks before and after this frame (a corrected frame shows the tracker the object as it
   // looks there, both ways). A candidate's correlation is its best look's.
   const std::vector<Look*> searched = looks_for(f.index);
+  // Each look as taken and, where it has turned (its heading) and is not found confidently as
+  // taken, turned so: an object that does not turn has one search per look, and a heading gone
+  // wrong loses nothing.
+  // A turned look is searched in the windows of the newest anchors only (a step's worth of
+  // motion from the last step's candidates, not the older anchors' wide windows): a turning
+  // object is one followed from step to step, and this bounds the search's cost.
+  std::vector<Anchor> newest;
+  for (const Anchor& a : anchors) {
+    if (a.age <= 1) newest.push_back(a);
+  }
+  const SearchWindows near = search_windows(newest);
+  double best = -1;
+  std::vector<double> primary;  // each look's best, as taken or at its heading
+  FoundPeaks at_heading;        // the peaks of the looks turned to their headings
+  int heading_searches = 0;
   if (!w.wins.empty()) {
-    for (Look* look : searched) find_peaks(w, gray, region.tl(), *look, look != &start_look, suppress, found);
+    for (Look* look : searched) {
+      primary.push_back(find_peaks(w, gray, region.tl(), *look, look != &start_look, suppress, found));
+      // (Where the look as taken is found confidently, its heading is not searched.)
+      Look* at = look->heading != 0 && primary.back() < kConfident ? turned(*look, look->heading, p) : nullptr;
+      if (at != nullptr && !near.wins.empty()) {
+        const double v = find_peaks(near, gray, region.tl(), *at, true, suppress, at_heading);
+        ++heading_searches;
+        primary.back() = std::max(primary.back(), v);
+      }
+      best = std::max(best, primary.back());
+    }
   }
   // At most kCandidates (and kCandidatesPerLook more per mark's look): every window's best,
   // then the best of the rest.
   const int n_keep = kCandidates + kCandidatesPerLook * static_cast<int>(searched.size() - 1);
   out.c = keep_best(found, n, n_keep);
+  // And the best kCandidatesPerLook of each turned search's peaks on top: those the looks as
+  // taken found are all kept (a heading gone wrong crowds none of them out); a peak at one of
+  // them gives it its correlation where better.
+  std::sort(at_heading.c.begin(), at_heading.c.end(),
+            [](const Candidate& a, const Candidate& b) { return a.ncc > b.ncc; });
+  const int n_turned = kCandidatesPerLook * heading_searches;
+  for (std::size_t i = 0, added = 0; i < at_heading.c.size() && static_cast<int>(added) < n_turned; ++i) {
+    Candidate& c = at_heading.c[i];
+    const auto same = std::find_if(out.c.begin(), out.c.end(), [&](const Candidate& q) {
+      return std::hypot(q.x - c.x, q.y - c.y) < suppress;
+    });
+    if (same == out.c.end()) {
+      out.c.push_back(std::move(c));
+      ++added;
+    } else if (c.ncc > same->ncc) {
+      *same = std::move(c);
+    }
+  }
+  // A template that turns: where no look is found confidently, each is correlated turned a
+  // little and a little more either way from its heading (+-kTurnStep, +-2 kTurnStep) around
+  // each candidate kept (within kRefinePx). The best turn that matches a candidate kTurnGain
+  // better than the look did becomes the look's heading (searched from the next step on: the
+  // car going round a loop), and the candidates take its correlation (and its place) where it
+  // is better. No candidate is added or dropped here (a turned look finds the same object a few
+  // px along itself, a rival of the right candidate, and turned texture elsewhere).
+  if (!w.wins.empty() && best < kConfident) {
+    // Only candidates that stand out from the background seen so far (kFgHalf, judged on about
+    // 8 x 8 pixels of the object's square: a quick look) take part: a turned look matches some
+    // texture better than the look did (a heading turned by it moved the windows and the costs,
+    // and a look-alike's path became certain).
+    const int stride = std::max(1, static_cast<int>(std::ceil(radius)) / 4);
+    std::vector<std::size_t> moving;
+    for (std::size_t i = 0; i < out.c.size(); ++i) {
+      if (foreground(out.c[i], stride) >= kFgHalf) moving.push_back(i);
+    }
+    struct Match {
+      double v;
+      int deg;
+      bool found;
+    };
+    for (std::size_t l = 0; l < searched.size() && !moving.empty(); ++l) {
+      Look* look = searched[l];
+      // Only a turn that matches a candidate clearly better than the look did (kTurnGain) and
+      // well enough to be reported (min_score) is taken, the best such.
+      const double bar = std::max(primary[l] + kTurnGain, opt.min_score);
+      Match taken{bar, 0, false};
+      for (const int d : {-kTurnStep, kTurnStep, -2 * kTurnStep, 2 * kTurnStep}) {
+        Look* t = turned(*look, look->heading + d, p);
+        if (t == nullptr) continue;
+        for (std::size_t i : moving) {
+          const double v = rescore(gray, region.tl(), t->templ, out.c[i], false);
+          if (v > taken.v || (v == taken.v && !taken.found)) taken = {v, t->deg, true};
+        }
+      }
+      if (!taken.found) continue;
+      // Only that turn gives the candidates its correlation: the best of several turns at every
+      // candidate would favour texture that some turn happens to match.
+      look->heading = taken.deg;
+      const Look* t = turned(*look, taken.deg, p);  // (a turned copy's address changes as more are made)
+      for (std::size_t i : moving) rescore(gray, region.tl(), t->templ, out.c[i], true);
+    }
+  }
   steps.push_back(std::move(out));
 }
 
-void PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look,
-                                   bool other_look, int suppress, FoundPeaks& found) const {
+std::vector<std::vector<Peak>> PathTracker::Impl::window_peaks(const SearchWindows& w, const cv::Mat& gray,
+                                                              cv::Point origin, Look& look, int suppress) const {
   // A large union with a template that survives halving is searched coarse to fine: the
   // correlation at half (a large template: quarter) resolution finds each window's peaks, each
   // refined within 3 px at every finer level (a quarter, or a sixteenth, of the work over the
   // union; a peak seen from several windows is refined once).
   UnionCorrelation u = correlate_union(gray(w.uni - origin), look);
+  std::vector<std::vector<Peak>> out;
   for (const cv::Rect& win : w.wins) {
     // The window in the union's result.
     const cv::Rect rrect(win.x - w.uni.x, win.y - w.uni.y, win.width - p + 1, win.height - p + 1);
-    const std::vector<Peak> peaks =
-        u.coarse ? coarse_peaks(u, rrect, suppress) : fine_peaks(u.all(rrect), suppress);
-    add_window_peaks(peaks, win, gray, origin, suppress, other_look, found);
+    out.push_back(u.coarse ? coarse_peaks(u, rrect, suppress) : fine_peaks(u.all(rrect), suppress));
   }
+  return out;
+}
+
+double PathTracker::Impl::rescore(const cv::Mat& gray, cv::Point origin, const cv::Mat& templ, Candidate& c,
+                                  bool take) const {
+  const cv::Point at = c.at - origin;
+  const cv::Rect near = cv::Rect(at.x - h - kRefinePx, at.y - h - kRefinePx, p + 2 * kRefinePx, p + 2 * kRefinePx) &
+                        cv::Rect(0, 0, gray.cols, gray.rows);
+  if (near.width < p || near.height < p) return -1;
+  cv::Mat w32, res;
+  gray(near).convertTo(w32, CV_32F);
+  normed_correlation(w32, templ, res);
+  double v;
+  cv::Point in;
+  cv::minMaxLoc(res, nullptr, &v, nullptr, &in);
+  double fitted = v;
+  const cv::Point2d off = subpixel_peak(res, in, &fitted);
+  if (take && std::min(1.0, fitted) > c.ncc) {
+    const double spread = c.spread;
+    c = make_candidate(gray, origin, origin.x + near.x + in.x + off.x + h, origin.y + near.y + in.y + off.y + h,
+                       std::min(1.0, fitted));
+    c.spread = spread;
+  }
+  return v;
+}
+
+double PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look,
+                                     bool other_look, int suppress, FoundPeaks& found) const {
+  const std::vector<std::vector<Peak>> peaks = window_peaks(w, gray, origin, look, suppress);
+  for (std::size_t i = 0; i < w.wins.size(); ++i) {
+    add_window_peaks(peaks[i], w.wins[i], gray, origin, suppress, other_look, found);
+  }
+  return best_peak(peaks);
 }
 
 
@@ -917,7 +1109,7 @@ void PathTracker::Impl::compute_unary_costs() {
   cv::Mat median(size, CV_8U), known = cv::Mat::zeros(size, CV_8U);
   for (int t = 1; t < static_cast<int>(this->steps.size()); ++t) {
     for (Candidate& c : this->steps[t].c) {
-      c.fg = foreground(c, median, known);
+      c.fg = foreground(c, 1, &median, &known);
       c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
     }
   }

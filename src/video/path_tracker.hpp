@@ -54,7 +54,8 @@ class PathTracker {
   /// marked frames first). A flat look (nothing to match) is not used; a mark of another frame, or
   /// after update() reached it, is an InputError.
   void add_look(int frame, const cv::Mat& gray, double x_px, double y_px);
-  /// The part of an image of `image` size around a mark that holds every look add_look() may take.
+  /// The part of an image of `image` size around a mark that holds every look add_look() may take
+  /// (and the square it turns that look in).
   static cv::Rect look_crop(cv::Size image, double x_px, double y_px);
   /// Collects the candidates of the next frame (nothing is decided yet).
   void update(const Frame& frame);
