@@ -12,7 +12,8 @@
 #include "numerics/units.hpp"
 
 namespace tribolab::sweep {
-namespace {
+// Named, not anonymous: MapTracer::State, a member of a class of the header, holds them.
+namespace detail {
 
 
 /// theta_deg and the spin axis are always the last two axes (canonical order); the
@@ -108,7 +109,12 @@ class EdgeRefiner {
 
 bool inside(double f) { return f >= 0; }
 
-}  // namespace
+}  // namespace detail
+
+using detail::Edge;
+using detail::EdgeRefiner;
+using detail::inside;
+using detail::Layout;
 
 std::string ContourOptions::validate() const {
   if (output.empty()) return "contour output name is empty";

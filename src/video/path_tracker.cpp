@@ -5,6 +5,7 @@
 #include "numerics/error.hpp"
 #include "video/correlation.hpp"
 #include "video/correlation_peak.hpp"
+#include "video/path_search.hpp"
 #include "numerics/statistics.hpp"
 
 #include <opencv2/imgproc.hpp>
@@ -19,7 +20,14 @@
 namespace tribolab::video {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using detail::BestPath;
+using detail::Candidate;
+using detail::PathForeground;
+using detail::PathSearch;
+using detail::StepCandidates;
+using detail::kInf;
+using detail::kRivalMargin;
+
 // Candidates kept per frame (correlation peaks, best first) and the least correlation a
 // candidate may have (below it nothing in the window resembles the object).
 constexpr int kCandidates = 8;
@@ -63,31 +71,14 @@ constexpr double kWindowSpeeds = 2;
 constexpr std::size_t kMaxSamples = 16;
 // Cost of a candidate: (1 - correlation) / kNccScale + kFgWeight * (1 - fg / (fg + kFgHalf)),
 // fg the mean absolute difference from the background over the object, grey levels. A
-// frame without the object costs kMissCost: a candidate correlating 0.7 with the object and
+// frame without the object costs kMissCost (video/path_search.hpp): a candidate correlating 0.7 with the object and
 // as different from the background as the object's typical 8+ grey levels costs 3 + 1.
 constexpr double kNccScale = 0.1;
 constexpr double kFgWeight = 2;
 constexpr double kFgHalf = 8;
-constexpr double kMissCost = 4;
-// Motion prior: the acceleration a (px/frame^2) of three successive path points costs
-// |a|^2 / (2 sigma^2), sigma = kAccAbs + kAccRel * speed (the mean of
-// the two; across a gap the slower); beyond kAccGate sigma it is
-// impossible. kAccAbs: marks scatter ~0.5 px, so a still object's acceleration ~1 px;
-// kAccRel: a toss at 15 fps turns its 70 px/frame by 9 px/frame^2 (0.13), a car in a loop
-// of radius 150 px at 20 px/frame by 2.7 (0.13).
-constexpr double kAccAbs = 1.5;
-constexpr double kAccRel = 0.3;
-constexpr double kAccGate = 5;
-// A frame is doubtful when a path through a candidate farther than the rival distance from
-// the chosen one costs less than kRivalMargin more than the best path.
-constexpr double kRivalMargin = 3;
 // A run of consecutive path points differing from the background by less than this share of
 // the path's median difference (medians over the run and over the path) is background (when that median is well above noise, 2 kFgHalf).
 constexpr double kFgShare = 0.15;
-// Where a manual mark is one of the three points of an acceleration, the path may turn
-// sharply (the user marks a bounce, or a point the tracker had wrong): that acceleration is
-// not gated but costs at most this (the gate's cost), and a mark has no reach limit.
-constexpr double kMarkAccCap = 0.5 * kAccGate * kAccGate;
 // A user's click scatters about the object's point by this, px per 640 px of image width (at
 // least 1 px): half the correction distance (4 px per 640), so that a click a user would not
 // correct lies within 2 sigma. The acceleration through a mark allows for it (PathSearch::accel),
@@ -106,22 +97,6 @@ constexpr double kRidgeMinPx = 4;
 // A run of reported path points shorter than this between lost frames is unconfirmed (finish()).
 constexpr int kMinRun = 3;
 
-struct Candidate {
-  double x = 0, y = 0;  // px
-  double ncc = 0;       // correlation with the first frame's template
-  double cost = 0;      // unary cost
-  double fg = 0;        // difference from the background, grey levels
-  cv::Mat patch;        // CV_8U, template-sized grey patch at the rounded position
-  cv::Point at;         // the patch's centre, px
-  bool manual = false;  // the user's mark: the step's only candidate
-  double spread = 0;    // half-length of the correlation ridge through the peak, px (peak_ridge_px)
-};
-
-struct StepCandidates {
-  int index = 0;
-  std::vector<Candidate> c;
-};
-
 // update()'s steps and their results.
 // A place the object can be: a recent candidate (or where the confident sightings lead) and
 // the steps since it, px.
@@ -129,6 +104,11 @@ struct Anchor {
   cv::Point2d at;
   int age;
 };
+
+}  // namespace
+
+// Named, not anonymous: PathTracker::Impl, a member of a class of the header, holds looks.
+namespace detail {
 
 // What the object looks like: a template (CV_32F) and its coarse copies (`coarse[l - 1]` at
 // 1/2^l resolution, made when first needed), taken at the start or at a user's mark (`frame`).
@@ -171,6 +151,14 @@ Look* turned(Look& look, int deg, int p) {
   look.turns.push_back(std::move(t));
   return look.turns.back().templ.empty() ? nullptr : &look.turns.back();
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::Look;
+using detail::turn_source_side;
+using detail::turned;
 
 // The anchors' search windows (each within reach of its anchor, clipped to the image) and their union, px.
 struct SearchWindows {
@@ -223,73 +211,6 @@ double best_peak(const std::vector<std::vector<Peak>>& peaks) {
   }
   return best;
 }
-
-// One state of the path search: the path's last two points (step t, candidate k; back step g,
-// candidate j of step t - g), enough for its acceleration at the next one.
-struct PathState {
-  float F = kInf, B = kInf;  // best cost up to and including this state / after it
-  int back = -1;             // the predecessor's index in step t - g
-  short k = 0, g = 0, j = 0;
-};
-
-// The best path: its cost, its last step and each step's chosen candidate (-1: none).
-struct BestPath {
-  double total = 0;
-  int end = 0;
-  std::vector<int> chosen;
-};
-
-// The path points' difference from the background (grey levels): the path's median, and per
-// step the median over its run of consecutive path points.
-struct PathForeground {
-  double typical = 0;
-  std::vector<double> run;
-};
-
-// The best path by dynamic programming over the steps' candidates under the motion prior
-// (finish()). off[t][k * G + g - 1] is the first state of the block (k, g) of S[t]; the block
-// holds one state per candidate of t - g.
-struct PathSearch {
-  // The states of every step, and where the marks are.
-  PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius,
-             double click_px);
-  const std::vector<StepCandidates>& steps;  // a marked step holds its mark alone
-  int T = 0;                                 // steps
-  int G = 0;                                 // largest step between two path points
-  double reach = 0, radius = 0;              // px (PathTracker::Impl's)
-  double click_px = 1;                       // a mark's scatter, px (kClickPx)
-  std::vector<int> marks_before;             // marked steps among 0 .. t-1
-  int last_mark = 0;                         // the last marked step (0: none)
-  std::vector<std::vector<PathState>> S;
-  std::vector<std::vector<int>> off;
-
-  // A mark in (t0, t1).
-  bool skips_mark(int t0, int t1) const { return marks_before[t1] - marks_before[t0 + 1] > 0; }
-  // Candidate k of step t is the user's mark.
-  bool manual(int t, int k) const { return steps[t].c[k].manual; }
-  // Candidate k of step t, px.
-  cv::Point2d pos(int t, int k) const { return cv::Point2d(steps[t].c[k].x, steps[t].c[k].y); }
-  // The states [first, end) of the block (k, g) of step t.
-  std::pair<int, int> block(int t, int k, int g) const {
-    return std::pair<int, int>(off[t][k * G + g - 1], off[t][k * G + g]);
-  }
-  // Candidate k1 of step t1 lies within reach of candidate k0 of step t0.
-  bool gate(int t0, int k0, int t1, int k1) const;
-  // Cost of the acceleration at b of the path points a, b, c (steps ta < tb < tc).
-  double accel(int ta, int ka, int tb, int kb, int tc, int kc) const;
-  // Forward: each state's best cost up to and including it (F) and its predecessor.
-  void forward();
-  // Backward: the best cost after a state, ending anywhere (the frames left cost kMissCost).
-  void backward();
-  // The best path from the forward costs.
-  BestPath best_path() const;
-  // Candidate k of step t has a rival: a candidate farther than rival_px whose best full
-  // path costs less than kRivalMargin more than `total`.
-  bool has_rival(int t, int k, double total, double rival_px) const;
-};
-
-// The chosen path points' difference from the background, over the path and over each run.
-PathForeground path_foreground(const std::vector<StepCandidates>& steps, const std::vector<int>& chosen);
 
 // Scale-normalised Laplacian-of-Gaussian magnitude sigma^2 |LoG| at `p`, maximised over
 // scale (Lindeberg's automatic scale selection): the blob radius is sigma * sqrt(2).
@@ -1098,7 +1019,6 @@ double PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray
   return best_peak(peaks);
 }
 
-
 std::vector<Observation> PathTracker::finish() {
   if (!impl_ || impl_->steps.empty()) throw InputError("path tracker: finish() before start()");
   return impl_->finish();
@@ -1132,246 +1052,6 @@ std::vector<StepCandidates> PathTracker::Impl::steps_with_marks() const {
   }
   return out;
 }
-
-namespace {
-
-PathSearch::PathSearch(const std::vector<StepCandidates>& steps, int max_gap_frames, double reach, double radius,
-                       double click_px)
-    : steps(steps), T(static_cast<int>(steps.size())), G(max_gap_frames + 1), reach(reach), radius(radius),
-      click_px(click_px) {
-  // Manual marks: the path passes through every one (no transition skips a marked step, the
-  // path ends at or after the last).
-  marks_before.assign(T + 1, 0);
-  for (int t = 0; t < T; ++t) {
-    const bool marked = t > 0 && !steps[t].c.empty() && steps[t].c.front().manual;
-    marks_before[t + 1] = marks_before[t] + (marked ? 1 : 0);
-    if (marked) last_mark = t;
-  }
-  // The states of every step, in blocks (k, g) of one state per candidate of t - g.
-  S.resize(T);
-  off.resize(T);
-  S[0].push_back(PathState{0, kInf, -1, 0, 0, 0});
-  for (int t = 1; t < T; ++t) {
-    const int K = static_cast<int>(steps[t].c.size());
-    off[t].assign(K * G + 1, 0);
-    int n = 0;
-    for (int k = 0; k < K; ++k) {
-      for (int g = 1; g <= G; ++g) {
-        off[t][k * G + g - 1] = n;
-        if (t - g >= 0) {
-          for (int j = 0; j < static_cast<int>(steps[t - g].c.size()); ++j) {
-            PathState st;
-            st.k = static_cast<short>(k);
-            st.g = static_cast<short>(g);
-            st.j = static_cast<short>(j);
-            S[t].push_back(st);
-            ++n;
-          }
-        }
-      }
-    }
-    off[t][K * G] = n;
-  }
-}
-
-bool PathSearch::gate(int t0, int k0, int t1, int k1) const {
-  const cv::Point2d d = pos(t1, k1) - pos(t0, k0);
-  // From the start (no velocity known) a gap does not widen the reach: the object was
-  // clicked where it is, and something far away found frames later is something else.
-  if (manual(t0, k0) || manual(t1, k1)) return true;  // the user's mark: anywhere
-  return std::hypot(d.x, d.y) <= reach * (t0 == 0 ? 1 : t1 - t0);
-}
-
-double PathSearch::accel(int ta, int ka, int tb, int kb, int tc, int kc) const {
-  const cv::Point2d v1 = (pos(tb, kb) - pos(ta, ka)) / (tb - ta), v2 = (pos(tc, kc) - pos(tb, kb)) / (tc - tb);
-  const cv::Point2d a = (v2 - v1) / (0.5 * (tc - ta));
-  // The mean speed; across a gap the slower of the two, so that a jump to something far
-  // away does not widen its own tolerance (an oscillation, slow at its turning points, needs
-  // the mean).
-  const double speed = tc - ta == 2 ? 0.5 * std::hypot(v1.x + v2.x, v1.y + v2.y)
-                                    : std::min(std::hypot(v1.x, v1.y), std::hypot(v2.x, v2.y));
-  const double sigma = kAccAbs + kAccRel * speed;
-  if (manual(ta, ka) || manual(tb, kb) || manual(tc, kc)) {
-    // A mark is where the user clicked, within click_px of the object's point: its error
-    // enters the acceleration with the weight of its point (d a / d point).
-    const double h = 0.5 * (tc - ta), w_a = 1 / ((tb - ta) * h), w_c = 1 / ((tc - tb) * h), w_b = w_a + w_c;
-    double var = sigma * sigma;
-    if (manual(ta, ka)) var += std::pow(click_px * w_a, 2);
-    if (manual(tb, kb)) var += std::pow(click_px * w_b, 2);
-    if (manual(tc, kc)) var += std::pow(click_px * w_c, 2);
-    const double z = std::hypot(a.x, a.y) / std::sqrt(var);
-    return std::min(0.5 * z * z, kMarkAccCap);
-  }
-  if (tc - tb > 1) {
-    // Found again after a gap: within reach of where the motion before it leads (linear
-    // extrapolation), else something else has been found.
-    const cv::Point2d d = pos(tc, kc) - (pos(tb, kb) + v1 * (tc - tb));
-    if (std::hypot(d.x, d.y) > 2 * radius + kAccRel * std::hypot(v1.x, v1.y) * (tc - tb)) return kInf;
-  }
-  const double z = std::hypot(a.x, a.y) / sigma;
-  return z > kAccGate ? kInf : 0.5 * z * z;
-}
-
-void PathSearch::forward() {
-  // Per step, the states of each candidate's blocks (k, 1..G) by forward cost, cheapest first
-  // (ties by index): made once the step's costs are final.
-  std::vector<std::vector<int>> cheapest(T);
-  for (int t = 1; t < T; ++t) {
-    if (t >= 2) {
-      std::vector<int>& order = cheapest[t - 1];
-      order.resize(S[t - 1].size());
-      for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-      const int K = static_cast<int>(steps[t - 1].c.size());
-      for (int k = 0; k < K; ++k) {
-        std::stable_sort(order.begin() + off[t - 1][k * G], order.begin() + off[t - 1][k * G + G],
-                         [&](int a, int b) { return S[t - 1][a].F < S[t - 1][b].F; });
-      }
-    }
-    for (PathState& s : S[t]) {
-      const int tp = t - s.g;
-      if (skips_mark(tp, t) || !gate(tp, s.j, t, s.k)) continue;
-      const double u = steps[t].c[s.k].cost + kMissCost * (s.g - 1);
-      if (tp == 0) {
-        s.F = static_cast<float>(u);
-        s.back = 0;
-        continue;
-      }
-      // The predecessors (the states of tp ending at candidate j), cheapest first: accel() >= 0,
-      // so the first costing more than the best so far ends the search. The same choice as
-      // taking them in index order: of equal costs, the lowest index.
-      double best = kInf;
-      int arg = -1;
-      const std::vector<int>& order = cheapest[tp];
-      for (int x = off[tp][s.j * G]; x < off[tp][s.j * G + G]; ++x) {
-        const int i = order[x];
-        const PathState& q = S[tp][i];
-        if (!(q.F < kInf) || q.F > best) break;
-        const double c = q.F + accel(tp - q.g, q.j, tp, s.j, t, s.k);
-        if (c < best || (c == best && i < arg)) {
-          best = c;
-          arg = i;
-        }
-      }
-      if (arg >= 0) {
-        s.F = static_cast<float>(u + best);
-        s.back = arg;
-      }
-    }
-  }
-}
-
-void PathSearch::backward() {
-  struct Successor {
-    double bound;  // its cost and B without the acceleration: no path through it costs less
-    int t3, k3, idx;
-  };
-  std::vector<Successor> next;
-  for (int t = T - 1; t >= 0; --t) {
-    for (int k = 0; k < static_cast<int>(steps[t].c.size()); ++k) {
-      // The successors of a path point at candidate k of step t (the same for every state
-      // ending there), cheapest bound first: the acceleration cost is never negative and
-      // rounding is monotone, so the first whose bound is no better than the best so far
-      // ends the search with the same minimum as visiting them all.
-      next.clear();
-      for (int g3 = 1; g3 <= G && t + g3 < T; ++g3) {
-        const int t3 = t + g3;
-        if (skips_mark(t, t3)) break;
-        for (int k3 = 0; k3 < static_cast<int>(steps[t3].c.size()); ++k3) {
-          const auto [a, b] = block(t3, k3, g3);
-          const int idx = a + k;  // the successor whose previous point is this one
-          if (idx >= b || !gate(t, k, t3, k3)) continue;
-          const double u = steps[t3].c[k3].cost + kMissCost * (g3 - 1);
-          next.push_back({u + S[t3][idx].B, t3, k3, idx});
-        }
-      }
-      std::sort(next.begin(), next.end(), [](const Successor& x, const Successor& y) { return x.bound < y.bound; });
-      // The states ending at candidate k (step 0: its one state).
-      const int first = t == 0 ? 0 : off[t][k * G], end = t == 0 ? 1 : off[t][k * G + G];
-      for (int i = first; i < end; ++i) {
-        PathState& s = S[t][i];
-        double best = t >= last_mark ? kMissCost * (T - 1 - t) : kInf;  // ends after the last mark
-        for (const Successor& n : next) {
-          if (!(n.bound < best)) break;
-          const int g3 = n.t3 - t;
-          const double u = steps[n.t3].c[n.k3].cost + kMissCost * (g3 - 1);
-          const double acc = t == 0 ? 0.0 : accel(t - s.g, s.j, t, s.k, n.t3, n.k3);
-          best = std::min(best, u + acc + S[n.t3][n.idx].B);
-        }
-        s.B = static_cast<float>(best);
-      }
-    }
-  }
-}
-
-BestPath PathSearch::best_path() const {
-  // (The optimum is also S[0][0].B, the backward pass's best from the start.)
-  BestPath p;
-  p.total = last_mark == 0 ? kMissCost * (T - 1) : kInf;  // the start alone, every further frame lost
-  int bs = 0;
-  for (int t = std::max(1, last_mark); t < T; ++t) {
-    for (int i = 0; i < static_cast<int>(S[t].size()); ++i) {
-      const double c = S[t][i].F + kMissCost * (T - 1 - t);
-      if (c < p.total) {
-        p.total = c;
-        p.end = t;
-        bs = i;
-      }
-    }
-  }
-  p.chosen.assign(T, -1);
-  for (int t = p.end, i = bs; t > 0;) {
-    const PathState& s = S[t][i];
-    p.chosen[t] = s.k;
-    i = s.back;
-    t -= s.g;
-  }
-  return p;
-}
-
-bool PathSearch::has_rival(int t, int k, double total, double rival_px) const {
-  const Candidate& c = steps[t].c[k];
-  bool rival = false;
-  for (int r = 0; r < static_cast<int>(steps[t].c.size()) && !rival; ++r) {
-    const Candidate& q = steps[t].c[r];
-    if (r == k || std::hypot(q.x - c.x, q.y - c.y) <= rival_px) continue;
-    double m = kInf;
-    for (int i = off[t][r * G]; i < off[t][r * G + G]; ++i) m = std::min<double>(m, S[t][i].F + S[t][i].B);
-    rival = m < total + kRivalMargin;
-  }
-  return rival;
-}
-
-PathForeground path_foreground(const std::vector<StepCandidates>& steps, const std::vector<int>& chosen) {
-  const int T = static_cast<int>(steps.size());
-  PathForeground out;
-  std::vector<double> path_fg;
-  for (int t = 1; t < T; ++t) {
-    if (chosen[t] >= 0 && !steps[t].c[chosen[t]].manual) path_fg.push_back(steps[t].c[chosen[t]].fg);
-  }
-  if (!path_fg.empty()) out.typical = upper_median(std::move(path_fg));
-  // Per run of consecutive path frames, its median difference (an object slowing down at the
-  // turning point of a swing sits in the background median for a frame or two; a run of
-  // still texture after a gap does throughout).
-  out.run.assign(T, 0);
-  for (int t = 1; t < T;) {
-    if (chosen[t] < 0) {
-      ++t;
-      continue;
-    }
-    int e = t;
-    std::vector<double> v;
-    for (; e < T && chosen[e] >= 0; ++e) {
-      if (!steps[e].c[chosen[e]].manual) v.push_back(steps[e].c[chosen[e]].fg);
-    }
-    double run = out.typical;  // a run of marks alone is not background
-    if (!v.empty()) run = upper_median(std::move(v));
-    for (int i = t; i < e; ++i) out.run[i] = run;
-    t = e;
-  }
-  return out;
-}
-
-}  // namespace
 
 std::vector<Observation> PathTracker::Impl::observe_path(const PathSearch& search, const BestPath& best,
                                                          const PathForeground& fg) {

@@ -71,7 +71,8 @@ std::string TrackVideoOptions::validate() const {
   return "";
 }
 
-namespace {
+// Named, not anonymous: TrackSession::Impl, a member of a class of the header, holds them.
+namespace detail {
 
 /// One target being followed: its tracker, where it starts, and the series it fills.
 struct Follower {
@@ -90,6 +91,12 @@ struct Follower {
   // mark in it, read before the tracking (read_mark_looks) and given at the start (add_look).
   std::vector<std::pair<ManualMark, cv::Mat>> looks;
 };
+
+}  // namespace detail
+
+namespace {
+
+using detail::Follower;
 
 /// Frames before a mark that a frame or ellipse tracker re-tracks backward from it (copies of
 /// them are held while the mark approaches: 16 frames of 1080p are 130 MB).
