@@ -114,7 +114,9 @@ Table tracks_table(const TrackVideoResult& r) {
   t.header = {"track", "kind", "frames", "tracked", "lost frames", "median score", "from the human marks (px)"};
   for (const TrackedSeries& s : r.series) {
     std::string human = "—";
-    if (s.vs_human) {
+    if (s.vs_human && s.vs_human->frames == 0) {
+      human = "no marked frame tracked (" + std::to_string(s.vs_human->marks) + " marks)";
+    } else if (s.vs_human) {
       human = "median " + format_value(s.vs_human->median_px, 3) + ", largest " + format_value(s.vs_human->max_px, 3) +
               " over " + std::to_string(s.vs_human->frames) + " frames";
     }

@@ -159,6 +159,14 @@ TEST(TrackVideoReport, TracksTableHasLostRangesScoresAndHumanDistance) {
   EXPECT_EQ(cell(*t, "ball.B", 1), "ellipse: end B of the major axis");
   EXPECT_EQ(cell(*t, "ball.A", 4), "none");
   EXPECT_EQ(cell(*t, "ball.A", 6), "—");
+  // A track none of whose marked frames has a position has no distance to state.
+  auto lost = hand_made(true);
+  lost.series[0].vs_human = video::HumanComparison{};
+  lost.series[0].vs_human->marks = 23;
+  const auto lost_rep = track_video_report(lost);
+  const auto* none = table_in(lost_rep, "Tracks");
+  ASSERT_NE(none, nullptr);
+  EXPECT_EQ(cell(*none, "mark", 6), "no marked frame tracked (23 marks)");
 }
 
 TEST(TrackVideoReport, WarningsOfTheInputAndTheTrackingAreListed) {

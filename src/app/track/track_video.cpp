@@ -206,11 +206,13 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
                         {"manual_frames", s.manual_frames},
                         {"median_score", s.median_score}};
     if (s.vs_human) {
+      // No marked frame with a position: no distance to state (0 px would read as a perfect track).
+      const auto px = [&](double v) { return s.vs_human->frames > 0 ? nlohmann::json(v) : nlohmann::json(nullptr); };
       t["vs_human"] = {{"frames", s.vs_human->frames},
-                       {"median_px", s.vs_human->median_px},
-                       {"max_px", s.vs_human->max_px},
+                       {"median_px", px(s.vs_human->median_px)},
+                       {"max_px", px(s.vs_human->max_px)},
                        {"marks", s.vs_human->marks},
-                       {"p90_px", s.vs_human->p90_px},
+                       {"p90_px", px(s.vs_human->p90_px)},
                        {"correct_px", s.vs_human->correct_px},
                        {"to_correct", s.vs_human->to_correct},
                        {"confidently_wrong", s.vs_human->confidently_wrong}};
@@ -467,7 +469,9 @@ const ResultKeys& track_video_result_keys() {
       {"tracks.*.tracked", "", ""}, {"tracks.*.lost", "", ""}, {"tracks.*.lost_ranges", "", "[first, last] frames"},
       {"tracks.*.refound_frames", "", ""}, {"tracks.*.manual_frames", "", "frames of the --mark corrections"}, {"tracks.*.median_score", "", ""},
       {"tracks.*.vs_human.frames", "", ""}, {"tracks.*.vs_human.median_px", "px", ""},
-      {"tracks.*.vs_human.max_px", "px", ""}, {"tracks.*.vs_human", "", "null without human marks"},
+      {"tracks.*.vs_human.max_px", "px", ""}, {"tracks.*.vs_human.p90_px", "px", ""},
+      {"tracks.*.vs_human.correct_px", "px", "a user corrects a point farther than this"},
+      {"tracks.*.vs_human", "", "null without human marks"},
       {"warnings", "", ""}, {"out", "", ""}, {"write_trk", "", ""}, {"report", "", ""},
       {"file", "", "a run of several videos"}, {"error", "", "why the video failed"},
   };

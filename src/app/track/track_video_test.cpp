@@ -8,6 +8,7 @@
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 #include "video/render.hpp"
+#include "video/test_videos.hpp"
 
 #include <gtest/gtest.h>
 
@@ -78,6 +79,25 @@ TEST(TrackVideo, RowsBesideTheJsonEqualTheCsv) {
     // on this sharp, nearly noise-free clip)
     EXPECT_NEAR(row.x_px, 30 + 5 * row.frame, 0.5) << line;
   }
+}
+
+TEST(TrackVideo, ATrackWithNoMarkedFrameTrackedStatesNoDistanceFromTheMarks) {
+  // CarInLoop's car from its first mark: no later frame is placed (docs/benchmarks.md#tracking-
+  // on-real-film). Its distances from the human's marks are null, not 0 px (a perfect track).
+  const std::string path = video::testing::tracker_project_path("CarInLoop.trz");
+  if (path.empty()) GTEST_SKIP() << "../shared/data/tracker/CarInLoop.trz not found";
+  TrackVideoOptions o;
+  o.input = path;
+  o.out = testing::temp_dir("video_car") + "/t.csv";
+  o.from_track = {"masa A"};
+  const auto r = track_video(o);
+  const auto& h = r.json["tracks"]["masa A"]["vs_human"];
+  ASSERT_EQ(h["frames"], 0) << "the car is placed in some frames now: choose another case";
+  EXPECT_EQ(h["marks"], 52);
+  EXPECT_EQ(h["to_correct"], 52);
+  EXPECT_TRUE(h["median_px"].is_null());
+  EXPECT_TRUE(h["p90_px"].is_null());
+  EXPECT_TRUE(h["max_px"].is_null());
 }
 
 TEST(TrackVideo, BadOptionTextThrowsBeforeAnyOutput) {
