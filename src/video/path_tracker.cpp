@@ -46,6 +46,9 @@ constexpr double kConfident = 0.9;
 // it matches a candidate at least kTurnGain better than the look did and at least min_score.
 constexpr int kTurnStep = 15;
 constexpr double kTurnGain = 0.05;
+// A look that correlates less than this with itself turned by 2 kTurnStep degrees changes with
+// a turn (a checker sticker: ~0.2; a plain disc: ~1): a lost track names the frame tracker.
+constexpr double kTurnSensitive = 0.8;
 constexpr double kCandidateFloor = 0.3;
 // Coarse to fine (PathTracker::Impl::correlate_union, coarse_peaks): a union of windows larger
 // than this, px², with a template of at least kCoarseMinPatch px, is correlated at half
@@ -293,6 +296,8 @@ struct PathTracker::Impl {
   // Of lost_none, the frames after the path's last point (the track ended) and that point's frame.
   int lost_end = 0, end_frame = -1;
   int lost_alone = 0;      // frames of a short run between lost frames, unconfirmed (finish())
+  int turned_deg = 0, turned_frame = -1;  // the largest turn a look was seen at, and where (update())
+  double turn_ncc = 1;  // the start's look against itself turned by 2 kTurnStep degrees (start())
   int lost_unlinked = 0;  // frames of a run reached only through doubtful points (finish())
   double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
 
@@ -507,6 +512,12 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, {}, cv::Mat(), 0, 0, {}};
   const int side = turn_source_side(m.p);
   cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), m.start_look.source, CV_32F);
+  m.turn_ncc = 1;
+  if (const Look* t = turned(m.start_look, 2 * kTurnStep, m.p)) {
+    cv::Mat r;
+    normed_correlation(templ, t->templ, r);
+    m.turn_ncc = r.at<float>(0, 0);
+  }
   m.looks.clear();
   m.steps.clear();
   m.marks.clear();
@@ -514,6 +525,8 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   m.samples.clear();
   m.stride = 1;
   m.seen = 0;
+  m.turned_deg = 0;
+  m.turned_frame = -1;
   m.lead[1] = cv::Point2d(x_px, y_px);
   m.lead_frames[0] = -1;
   m.lead_frames[1] = 0;
@@ -964,6 +977,10 @@ void PathTracker::Impl::update(const Frame& f) {
       // Only that turn gives the candidates its correlation: the best of several turns at every
       // candidate would favour texture that some turn happens to match.
       look->heading = taken.deg;
+      if (std::abs(taken.deg) > std::abs(turned_deg)) {
+        turned_deg = taken.deg;
+        turned_frame = f.index;
+      }
       const Look* t = turned(*look, taken.deg, p);  // (a turned copy's address changes as more are made)
       for (std::size_t i : moving) rescore(gray, region.tl(), t->templ, out.c[i], true);
     }
@@ -1196,26 +1213,42 @@ std::vector<Observation> PathTracker::Impl::finish() {
 std::string PathTracker::loss_hint() const {
   const Impl& m = *impl_;
   std::string hint = m.main_loss_hint();
+  const auto add = [&](const std::string& part) { hint += (hint.empty() ? "" : "; ") + part; };
   if (m.lost_alone > 0) {
-    hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_alone) +
-            " frame(s) found alone between lost frames were not confirmed by their neighbours' motion: " +
-            field("mark") + " one of them if it is right";
+    add(std::to_string(m.lost_alone) + " frame(s) found alone between lost frames were not confirmed by their "
+        "neighbours' motion: " + field("mark") + " one of them if it is right");
   }
   if (m.lost_unlinked > 0) {
-    hint += std::string(hint.empty() ? "" : "; ") + std::to_string(m.lost_unlinked) +
-            " frame(s) were reached only across more than " + field("max_gap") +
-            " frames without a reported point, so what was found there may be something else: " + field("mark") +
-            " one of them if it is right";
+    add(std::to_string(m.lost_unlinked) + " frame(s) were reached only across more than " + field("max_gap") +
+        " frames without a reported point, so what was found there may be something else: " + field("mark") +
+        " one of them if it is right");
   }
-  if (m.lost_ridge == 0) return hint;
-  char bar[32];
-  std::snprintf(bar, sizeof bar, "%.0f", m.ridge_max_px);
-  const std::string ridge = "in " + std::to_string(m.lost_ridge) +
-                            " frame(s) the template matched all along a streak (motion blur, or a plain edge): the position "
-                            "along it was uncertain by more than " + std::string(bar) +
-                            " px; a shorter exposure when filming helps, or mark those frames (" + field("mark") +
-                            " NAME@FRAME=X,Y)";
-  return hint.empty() ? ridge : hint + "; " + ridge;
+  if (m.lost_ridge > 0) {
+    char bar[32];
+    std::snprintf(bar, sizeof bar, "%.0f", m.ridge_max_px);
+    add("in " + std::to_string(m.lost_ridge) +
+        " frame(s) the template matched all along a streak (motion blur, or a plain edge): the position along it was "
+        "uncertain by more than " + std::string(bar) + " px; a shorter exposure when filming helps, or mark those "
+        "frames (" + field("mark") + " NAME@FRAME=X,Y)");
+  }
+  // Frames were lost and the object was seen turned (a look matched best turned), or its look
+  // changes with a turn: the frame tracker searches every turn from frame to frame (a sticker
+  // on a ball spinning 20-40 degrees per frame, which the path tracker's turns of 15 and 30
+  // degrees about its heading miss: docs/benchmarks.md#tracking-over-a-grid-of-throws).
+  if (!hint.empty() && hint.find(field("point_tracker")) == std::string::npos) {
+    if (m.turned_deg != 0) {
+      add("the object turns (its look matched best turned by " + std::to_string(m.turned_deg) + " degrees at frame " +
+          std::to_string(m.turned_frame) + "): " + field("point_tracker") + " frame searches every turn from frame "
+          "to frame");
+    } else if (m.turn_ncc < kTurnSensitive) {
+      char ncc[32];
+      std::snprintf(ncc, sizeof ncc, "%.2f", m.turn_ncc);
+      add("if the object turns (a mark on a spinning ball or a wheel), " + field("point_tracker") +
+          " frame searches every turn from frame to frame (this look turned by " + std::to_string(2 * kTurnStep) +
+          " degrees correlates " + ncc + " with itself)");
+    }
+  }
+  return hint;
 }
 
 }  // namespace tribolab::video

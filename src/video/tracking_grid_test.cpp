@@ -1,0 +1,145 @@
+// Tracking over a grid of ordinary throws (docs/benchmarks.md#tracking-over-a-grid-of-throws):
+// not chosen cases but every throw of a seeded grid of releases, frame rates and sizes, each
+// rendered on texture with a checker sticker, the sticker and the ball's centre followed by
+// the default point tracker (the path tracker) from their true places in the first frame.
+#include "numerics/error.hpp"
+#include "video/path_tracker.hpp"
+#include "video/point_tracker.hpp"
+#include "video/render.hpp"
+#include "video/render_throw.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace tribolab::video {
+namespace {
+
+struct GridRun {
+  int frames = 0, lost = 0, wrong = 0;  // wrong: reported farther than 10 px per 640 px of width
+  double worst_px = 0;
+  std::string hint;  // the tracker's loss hint
+};
+
+// Follows one point (`point` gives its truth per frame) over the film's frames.
+GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const std::vector<cv::Point2d>& truth) {
+  std::vector<Observation> obs;
+  std::string hint;
+  int patch = 0;
+  if (std::getenv("GRID_FRAME")) {
+    PointTracker tracker;
+    try {
+      tracker.start(frames[0], truth[0].x, truth[0].y, "point");
+      for (std::size_t k = 1; k < frames.size(); ++k) obs.push_back(tracker.update(frames[k]));
+    } catch (const std::exception& e) {
+      hint = e.what();
+      for (std::size_t k = obs.size() + 1; k < frames.size(); ++k) {
+        Observation o;
+        o.frame = static_cast<int>(k);
+        o.lost = true;
+        obs.push_back(o);
+      }
+    }
+  } else {
+    PathTracker tracker;
+    tracker.start(frames[0], truth[0].x, truth[0].y, "point");
+    for (std::size_t k = 1; k < frames.size(); ++k) tracker.update(frames[k]);
+    obs = tracker.finish();
+    hint = tracker.loss_hint();
+    patch = tracker.patch_px();
+  }
+  GridRun r;
+  const double wrong_px = 10.0 * film.render.width / 640.0;
+  for (const Observation& o : obs) {
+    ++r.frames;
+    if (o.lost) {
+      ++r.lost;
+      continue;
+    }
+    const cv::Point2d t = truth[static_cast<std::size_t>(o.frame)];
+    const double d = std::hypot(o.x_px - t.x, o.y_px - t.y);
+    r.worst_px = std::max(r.worst_px, d);
+    if (d > wrong_px) ++r.wrong;
+  }
+  if (r.lost * 2 > r.frames) std::printf("  hint: %s (patch %d px)\n", plain_fields(hint).c_str(), patch);
+  r.hint = hint;
+  return r;
+}
+
+// 12 throws: heights 0.5-1.2 m, release angles +-60 deg, spins up to 50 rad/s either way,
+// 0.5-2.5 m/s across, at 60, 120 and 240 fps, 480x360 px. Measured 6 Dec 2026 with the path
+// tracker: no frame confidently wrong (farther than 10 px per 640 px of width); lost 38.0 % of
+// the sticker's frames (349 of 918: it spins 20-45 degrees per frame at 60 fps, beyond the
+// turns the path tracker searches) and 62.2 % of the centre's (571 of 918: a 91 px template of
+// a plain turning ellipse, the ellipse tracker's case). The frame tracker (GRID_FRAME=1, for
+// the comparison in docs/benchmarks.md) loses 3.9 % of the sticker's frames but places 3 of
+// them 70 px off. The lost shares below are regression bounds, not goals.
+TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
+  std::mt19937 rng(20261206);
+  std::uniform_real_distribution<double> height(0.5, 1.2), theta(-60, 60), omega(-50, 50), vx(0.5, 2.5);
+  const int fps_choice[] = {60, 120, 240};
+  int frames[2] = {0, 0}, lost[2] = {0, 0}, wrong = 0;
+  const int n = std::getenv("GRID_N") ? std::atoi(std::getenv("GRID_N")) : 12;
+  for (int i = 0; i < n; ++i) {
+    ThrowFilmOptions o;
+    o.motion.height = height(rng);
+    o.motion.theta_deg = theta(rng);
+    o.motion.omega = omega(rng);
+    o.motion.vx = vx(rng);
+    o.motion.after = 0.15;
+    o.motion.seed = static_cast<std::uint64_t>(i + 1);
+    o.render.fps = fps_choice[i % 3];
+    o.render.width = 480;
+    o.render.height = 360;
+    o.render.background = RenderOptions::Background::texture;
+    o.render.supersample = 2;
+    o.render.seed = static_cast<std::uint64_t>(i + 1);
+    o.sticker = true;
+    const ThrowFilm film = plan_throw_film(o);
+    std::vector<Frame> clip;
+    std::vector<cv::Point2d> sticker, centre;
+    for (int k = 0; k < film.frames; ++k) {
+      Frame f;
+      f.index = k;
+      f.t = k / o.render.fps;
+      f.bgr = render_frame(film.scene, f.t, film.render, k);
+      clip.push_back(f);
+      const ShapePose s = film.scene(f.t).front();
+      centre.push_back({s.cx_px, s.cy_px});
+      sticker.push_back({s.cx_px + s.mark_u_px * std::cos(s.angle_rad), s.cy_px - s.mark_u_px * std::sin(s.angle_rad)});
+    }
+    for (const int which : {0, 1}) {
+      const GridRun r = follow(film, clip, which == 0 ? sticker : centre);
+      std::printf("throw %2d (%3.0f fps, h %.2f m, theta %5.1f deg, omega %5.1f rad/s, vx %.2f m/s) %s: %d frames, lost %d, wrong %d, worst %.2f px\n",
+                  i, o.render.fps, o.motion.height, o.motion.theta_deg, o.motion.omega, o.motion.vx,
+                  which == 0 ? "sticker" : "centre", r.frames, r.lost, r.wrong, r.worst_px);
+      frames[which] += r.frames;
+      lost[which] += r.lost;
+      wrong += r.wrong;
+      if (!std::getenv("GRID_FRAME")) {
+        EXPECT_EQ(r.wrong, 0) << "throw " << i << (which == 0 ? " sticker" : " centre");
+        // A spinning sticker lost in most frames: the hint names the tracker that follows it.
+        if (which == 0 && r.lost * 2 > r.frames) {
+          EXPECT_NE(plain_fields(r.hint).find("point_tracker frame"), std::string::npos) << plain_fields(r.hint);
+        }
+      }
+    }
+  }
+  const double sticker_lost = double(lost[0]) / frames[0], centre_lost = double(lost[1]) / frames[1];
+  std::printf("%d throws: sticker lost %d of %d (%.1f %%), centre lost %d of %d (%.1f %%), wrong %d\n", n, lost[0],
+              frames[0], 100 * sticker_lost, lost[1], frames[1], 100 * centre_lost, wrong);
+  if (n == 12 && !std::getenv("GRID_FRAME")) {
+    EXPECT_LE(sticker_lost, 0.42);
+    EXPECT_LE(centre_lost, 0.66);
+  }
+}
+
+}  // namespace
+}  // namespace tribolab::video
