@@ -280,37 +280,48 @@ TEST(PathTracker, AfterAHidingLongerThanTheMaxGapNothingIsReportedUntilAMark) {
   EXPECT_GE(marked.first, 10);  // frames 29-39
 }
 
+// A disc of radius `r` on texture at 1280x720 (30 fps) following `at`, tracked from its
+// first place over `frames` frames; the start's template is at least `min_patch` px (the
+// search level under test).
+Result disc_at_720p(double r, const std::function<cv::Point2d(int)>& at, int frames, int min_patch) {
+  const RenderOptions o = textured_video(1280, 720);
+  const Scene scene = [&](double t) {
+    return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), r)};
+  };
+  PathTracker probe;
+  probe.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
+  EXPECT_GE(probe.patch_px(), min_patch);
+  return track_path(scene, o, frames, at);
+}
+
+// The crossing of DoesNotJumpToALookAlikeThatCrossesIt at 1280x720 with discs of radius `r`,
+// each moving `step` px per frame, crossing at frame 15.
+Result crossing_at_720p(double r, double step) {
+  const RenderOptions o = textured_video(1280, 720);
+  auto ours = [=](int i) { return cv::Point2d(300 + step * i, 360); };
+  auto other = [=](int i) { return cv::Point2d(300 + 15 * step, 360 - 15 * step + step * i); };
+  const Scene scene = [&](double t) {
+    const int i = static_cast<int>(std::lround(t * 30));
+    return std::vector<ShapePose>{disc(other(i), r), disc(ours(i), r)};
+  };
+  return track_path(scene, o, 30, ours);
+}
+
 TEST(PathTracker, CoarseToFineSearchAt720pFollowsADiscAsTheFullSearchDid) {
   // 1280x720: the anchors' windows cover over 400 000 px² and the disc's template is 37 px,
   // so every step is searched at half resolution first and refined within 3 px. The disc
   // (radius 12, on texture) moves 14 px/frame and accelerates down: every frame on it, to a
   // fraction of a pixel (the full search gave the same on the smaller videos above).
-  const RenderOptions o = textured_video(1280, 720);
-  auto at = [](int i) { return cv::Point2d(200 + 14.0 * i, 150 + 2.0 * i + 0.3 * i * i); };
-  const Scene scene = [&](double t) {
-    return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 12)};
-  };
-  PathTrackerOptions opt;
-  PathTracker probe(opt);
-  probe.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
-  ASSERT_GE(probe.patch_px(), 15);  // the coarse search's condition holds
-  const Result r = track_path(scene, o, 24, at, opt);
+  const Result r =
+      disc_at_720p(12, [](int i) { return cv::Point2d(200 + 14.0 * i, 150 + 2.0 * i + 0.3 * i * i); }, 24, 15);
   EXPECT_EQ(r.lost, 0);
   EXPECT_LT(r.median_px, 0.3);
   EXPECT_LT(r.worst_px, 1.0);
 }
 
 TEST(PathTracker, CoarseToFineSearchAt720pNeverTakesTheCrossingLookAlike) {
-  // The crossing of DoesNotJumpToALookAlikeThatCrossesIt at 1280x720, discs of radius 12:
-  // the coarse search finds both, the rival check keeps the look-alike out.
-  const RenderOptions o = textured_video(1280, 720);
-  auto ours = [](int i) { return cv::Point2d(300 + 12.0 * i, 360); };
-  auto other = [](int i) { return cv::Point2d(480, 180 + 12.0 * i); };
-  const Scene scene = [&](double t) {
-    const int i = static_cast<int>(std::lround(t * 30));
-    return std::vector<ShapePose>{disc(other(i), 12), disc(ours(i), 12)};
-  };
-  const Result r = track_path(scene, o, 30, ours);
+  // Discs of radius 12: the coarse search finds both, the rival check keeps the look-alike out.
+  const Result r = crossing_at_720p(12, 12);
   EXPECT_LT(r.worst_px, 1.5);
   EXPECT_LE(r.lost, 6);
 }
@@ -319,30 +330,16 @@ TEST(PathTracker, QuarterResolutionSearchOfALargeTemplateFollowsADiscToAFraction
   // A disc of radius 18 takes a template of 55 px (49 or more): the union is searched at
   // quarter resolution (a 14 px template there) and each peak refined at half, then full
   // resolution. The motion of the test above, faster.
-  const RenderOptions o = textured_video(1280, 720);
-  auto at = [](int i) { return cv::Point2d(200 + 20.0 * i, 150 + 3.0 * i + 0.4 * i * i); };
-  const Scene scene = [&](double t) {
-    return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 18)};
-  };
-  PathTracker probe;
-  probe.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
-  ASSERT_GE(probe.patch_px(), 49);  // the quarter-resolution search's condition holds
-  const Result r = track_path(scene, o, 24, at);
+  const Result r =
+      disc_at_720p(18, [](int i) { return cv::Point2d(200 + 20.0 * i, 150 + 3.0 * i + 0.4 * i * i); }, 24, 49);
   EXPECT_EQ(r.lost, 0);
   EXPECT_LT(r.median_px, 0.3);
   EXPECT_LT(r.worst_px, 1.0);
 }
 
 TEST(PathTracker, QuarterResolutionSearchNeverTakesTheCrossingLookAlike) {
-  // The crossing above with discs of radius 18 (templates of 55 px: quarter resolution).
-  const RenderOptions o = textured_video(1280, 720);
-  auto ours = [](int i) { return cv::Point2d(300 + 14.0 * i, 360); };
-  auto other = [](int i) { return cv::Point2d(510, 150 + 14.0 * i); };
-  const Scene scene = [&](double t) {
-    const int i = static_cast<int>(std::lround(t * 30));
-    return std::vector<ShapePose>{disc(other(i), 18), disc(ours(i), 18)};
-  };
-  const Result r = track_path(scene, o, 30, ours);
+  // The crossing with discs of radius 18 (templates of 55 px: quarter resolution).
+  const Result r = crossing_at_720p(18, 14);
   EXPECT_LT(r.worst_px, 1.5);
   EXPECT_LE(r.lost, 6);
 }
