@@ -18,6 +18,7 @@
 #include <string_view>
 
 namespace tribolab::cli {
+namespace {
 
 bool secondary_mpi_rank() {
   // The launchers name each process's rank in its environment: Open MPI, MPICH (Hydra), PMIx.
@@ -27,6 +28,8 @@ bool secondary_mpi_rank() {
   }
   return false;
 }
+
+}  // namespace
 
 std::ostream& diagnostics() {
   // Under `mpirun -np N` every rank runs the same command line and meets the same error (or

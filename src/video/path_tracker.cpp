@@ -296,10 +296,10 @@ struct PathTracker::Impl {
   // Of lost_none, the frames after the path's last point (the track ended) and that point's frame.
   int lost_end = 0, end_frame = -1;
   int lost_alone = 0;      // frames of a short run between lost frames, unconfirmed (finish())
-  int turned_deg = 0, turned_frame = -1;  // the largest turn a look was seen at, and where (update())
-  double turn_ncc = 1;  // the start's look against itself turned by 2 kTurnStep degrees (start())
   int lost_unlinked = 0;  // frames of a run reached only through doubtful points (finish())
   double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
+  int turned_deg = 0, turned_frame = -1;  // the largest turn a look was seen at, and where (update())
+  double turn_ncc = 1;  // the start's look against itself turned by 2 kTurnStep degrees (start())
 
   void sample(const Frame& f) {
     // One frame per block of `stride`, at a scrambled place in the block: a regular stride
@@ -509,7 +509,10 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
                                " grey levels, needs " + std::to_string(static_cast<int>(kFlatSd)) +
                                "): there is nothing to follow; start on the object");
   }
-  m.start_look = Look{first.index, cv::Point2d(x_px, y_px), templ, {}, cv::Mat(), 0, 0, {}};
+  m.start_look = Look();
+  m.start_look.frame = first.index;
+  m.start_look.at = cv::Point2d(x_px, y_px);
+  m.start_look.templ = templ;
   const int side = turn_source_side(m.p);
   cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), m.start_look.source, CV_32F);
   m.turn_ncc = 1;
@@ -588,7 +591,9 @@ void PathTracker::add_look(int frame, const cv::Mat& gray, double x_px, double y
     throw InputError(where, "the look's image does not hold the mark");
   }
   const ManualMark& mk = m.marks.at(frame);
-  Look look{frame, cv::Point2d(mk.x_px, mk.y_px), cv::Mat(), {}, cv::Mat(), 0, 0, {}};
+  Look look;
+  look.frame = frame;
+  look.at = cv::Point2d(mk.x_px, mk.y_px);
   cv::getRectSubPix(gray, cv::Size(m.p, m.p), cv::Point2f(static_cast<float>(x_px), static_cast<float>(y_px)),
                     look.templ, CV_32F);
   cv::Scalar mean, sd;
