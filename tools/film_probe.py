@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Why a marked point on real film is not followed: eight probes held against the human's marks.
+"""Why a marked point on real film is not followed: ten probes held against the human's marks.
 
 issue 24, docs/benchmarks.md#tracking-on-real-film. For one track of a Tracker project whose
 video is an image sequence inside the .trz (CarInLoop.trz's `masa A`), each probe places the
@@ -32,7 +32,16 @@ with that help rules its method out for this clip:
               35 grey levels) of the first frame's colours (8 levels per channel, those 1.5 times as
               frequent near the click as elsewhere in the foreground; ratio above 0.6), the region with
               most pixels within 100 px of the human's mark: the mark is its centroid plus the
-              first frame's offset turned with the region's principal axis.
+              first frame's offset turned with the region's principal axis;
+  grow        the path tracker's template grown about the click (sides 51 to 181 px): for each
+              side, the start look's own correlation ridge in the first frame (peak_ridge_px,
+              src/video/path_tracker.cpp: the half-length of the line through the peak along
+              which the correlation stays within 0.05 of it) and the best placement within 40 px
+              of each mark with its ridge; the side a "grow until the start's ridge is at most
+              8 px" rule would choose is marked;
+  masked      the first frame's template (--patch) with its background pixels left out (those
+              within 20 grey levels of the per-pixel median of every third frame: the loop's
+              pillar beside the click), masked normalised correlation, best within 40 px of each mark.
 
 Needs Debian's python3-numpy, python3-scipy and python3-pil (run with /usr/bin/python3):
     tools/film_probe.py [--track 'masa A'] [--mid 20] [--probes rotate,chain] ../shared/data/tracker/CarInLoop.trz
@@ -80,6 +89,35 @@ def ncc_map(win, t):
     s1 = signal.correlate(win, ones, mode="valid")
     s2 = signal.correlate(win * win, ones, mode="valid")
     return num / np.sqrt(np.maximum(s2 - s1 * s1 / t.size, 1e-9) * (t * t).sum())
+
+
+def masked_ncc_map(win, t, w):
+    """TM_CCOEFF_NORMED of template t over window win with pixel weights w (0 or 1): the
+    template's and each placement's mean and norm over the weighted pixels only."""
+    n = w.sum()
+    tz = (t - (t * w).sum() / n) * w
+    num = signal.correlate(win, tz, mode="valid")
+    s1 = signal.correlate(win, w, mode="valid")
+    s2 = signal.correlate(win * win, w, mode="valid")
+    return num / np.sqrt(np.maximum(s2 - s1 * s1 / n, 1e-9) * (tz * tz).sum())
+
+
+def ridge_px(m, i, drop=0.05, steps=64):
+    """peak_ridge_px (src/video/path_tracker.cpp) of the correlation map m at its peak i (row, col)."""
+    v = m[i]
+    longest = 0.0
+    for dy, dx in ((0, 1), (1, 0), (1, 1), (-1, 1)):
+        total = 0
+        for sign in (-1, 1):
+            k = 1
+            while k <= steps:
+                r, c = i[0] + sign * k * dy, i[1] + sign * k * dx
+                if r < 0 or c < 0 or r >= m.shape[0] or c >= m.shape[1] or m[r, c] < v - drop:
+                    break
+                k += 1
+            total += k - 1
+        longest = max(longest, 0.5 * total * np.hypot(dx, dy))
+    return longest
 
 
 def best_in(img, t, x, y, w):
@@ -266,12 +304,56 @@ def probe_blob(rgb, marks, f0):
     return out
 
 
-def report(name, placed, marks, bar):
+def probe_grow(g, marks, f0, sides, bound):
+    """{side: (own ridge, {frame: (x, y, ncc, ridge)})} and the side the rule chooses."""
+    out, chosen = {}, None
+    for p in sides:
+        h = p // 2
+        t = patch(g[f0], *marks[f0], h)
+        win = patch(g[f0], *marks[f0], h + 30)
+        if t is None or win is None:
+            continue
+        m = ncc_map(win, t)
+        own = ridge_px(m, (30, 30))
+        if chosen is None and own <= bound:
+            chosen = p
+        placed = {}
+        for f in sorted(marks):
+            win = patch(g[f], *marks[f], h + 40) if f != f0 else None
+            if win is None:
+                continue
+            m = ncc_map(win, t)
+            i = np.unravel_index(np.argmax(m), m.shape)
+            placed[f] = (round(marks[f][0]) + i[1] - 40, round(marks[f][1]) + i[0] - 40, m[i], ridge_px(m, i))
+        out[p] = (own, placed)
+    return out, chosen
+
+
+def probe_masked(g, marks, p, f0, level=20.0):
+    h = p // 2
+    bg = np.median(g[::3], axis=0)
+    t = patch(g[f0], *marks[f0], h)
+    w = (np.abs(t - patch(bg, *marks[f0], h)) > level).astype(float)
+    print(f"masked: {100 * w.mean():.0f} % of the {p} px template differs from the background by more than {level:.0f}")
+    out = {}
+    for f in sorted(marks):
+        win = patch(g[f], *marks[f], h + 40) if f != f0 else None
+        if win is None:
+            continue
+        m = masked_ncc_map(win, t, w)
+        i = np.unravel_index(np.argmax(m), m.shape)
+        out[f] = (round(marks[f][0]) + i[1] - 40, round(marks[f][1]) + i[0] - 40, m[i], ridge_px(m, i))
+    return out
+
+
+def report(name, placed, marks, bar, tag="fb"):
+    """Per frame: distance to the mark and (tag) the placement's fourth figure: fb the
+    forward-backward error, r the ridge, px."""
     d = {f: np.hypot(placed[f][0] - marks[f][0], placed[f][1] - marks[f][1]) for f in placed}
     within = sum(v <= bar for v in d.values())
     print(f"{name}: {within} of {len(d)} frames within {bar:.0f} px of the human's mark, "
           f"median {np.median(list(d.values())):.1f} px")
-    print("  " + " ".join(f"{f}:{d[f]:.0f}" + (f"/fb{placed[f][3]:.0f}" if len(placed[f]) > 3 else "")
+    print("  " + " ".join(f"{f}:{d[f]:.0f}" + (f"/{tag}{placed[f][3]:.0f}" if len(placed[f]) > 3 else "")
                           for f in sorted(d)))
 
 
@@ -281,7 +363,7 @@ def main():
     ap.add_argument("--track", default="masa A")
     ap.add_argument("--patch", type=int, default=51, help="template side, px (the path tracker chose 51 on CarInLoop)")
     ap.add_argument("--mid", type=int, default=20, help="the frame chain-mid starts from")
-    ap.add_argument("--probes", default="rotate,deblur,chain,chain-mid,mark-look,reblur,edge,blob")
+    ap.add_argument("--probes", default="rotate,deblur,chain,chain-mid,mark-look,reblur,edge,blob,grow,masked")
     a = ap.parse_args()
     rgb, marks = read_project(a.project, a.track)
     marks = {f: xy for f, xy in marks.items() if f < len(rgb)}
@@ -314,6 +396,16 @@ def main():
         probe_edge(rgb, marks)
     if "blob" in probes:
         report("blob", probe_blob(rgb, marks, f0), marks, bar)
+    if "grow" in probes:
+        grown, chosen = probe_grow(g, marks, f0, (51, 81, 111, 141, 181), bar)
+        for p, (own, placed) in grown.items():
+            ridges = [v[3] for v in placed.values()]
+            rule = f" (the side a start ridge <= {bar:.0f} px rule chooses)" if p == chosen else ""
+            print(f"grow {p} px: the start's own ridge {own:.1f} px, the placements' median ridge "
+                  f"{np.median(ridges):.1f} px{rule}")
+            report(f"grow {p} px", placed, marks, bar, tag="r")
+    if "masked" in probes:
+        report(f"masked ({a.patch} px)", probe_masked(g, marks, a.patch, f0), marks, bar, tag="r")
 
 
 if __name__ == "__main__":

@@ -185,8 +185,9 @@ TEST(RealFilm, TheHumansMarksOnEveryFifthFrameShowTheCarsLookToTheFramesBetween)
 // frame placed, with the turning template as before it). tools/film_probe.py measured why: from
 // the blurred click no template of the start (turned, or matched to each frame's blur), no
 // frame-to-frame chain (it slides 45-66 px along the streak in frames 1-6) and no foreground blob
-// places a marked frame within 8 px, even searched next to the human's marks
-// (docs/benchmarks.md#tracking-on-real-film).
+// places a marked frame within 8 px, even searched next to the human's marks; nor does a template
+// grown about the click (51-181 px: frame 1 peaks 23-26 px behind the mark at every side) or one
+// without its background pixels (docs/benchmarks.md#tracking-on-real-film).
 // Run with --gtest_also_run_disabled_tests.
 TEST(RealFilm, DISABLED_PlainCarInAnImageSequenceIsFollowed) { check({"CarInLoop.trz", "masa A"}); }
 
