@@ -1,5 +1,6 @@
 #include "video/correlation.hpp"
 
+#include <opencv2/core/hal/intrin.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -16,7 +17,7 @@ constexpr int kFilterDirectArea = 130;
 // sums per placement (normed_correlation_sums) are cheapest up to this many products
 // (placements x template px): bench/video_bench.cpp, BM_NormedCorrelation.
 constexpr int kBandsMinPlacements = 256;
-constexpr int kSumsMaxProducts = 16384;
+constexpr int kSumsMaxProducts = 49152;
 
 // The coefficient from the cross sum `num` (zero-mean template) and the product `den` of the
 // template's and the placement's norms, as matchTemplate finishes it: within float rounding
@@ -87,8 +88,18 @@ void normed_correlation_sums(const cv::Mat& img, const cv::Mat& templ, cv::Mat& 
       for (int y = 0; y < th; ++y) {
         const float* row = img.ptr<float>(v + y) + u;
         const float* tr = t.ptr<float>(y);
-        float s1 = 0, s2 = 0, sc = 0;
-        for (int x = 0; x < tw; ++x) {
+        // OpenCV's universal intrinsics: a vector of floats per partial sum (a float sum in
+        // order is not vectorised by the compiler).
+        cv::v_float32 a1 = cv::vx_setzero_f32(), a2 = cv::vx_setzero_f32(), ac = cv::vx_setzero_f32();
+        int x = 0;
+        for (; x + cv::v_float32::nlanes <= tw; x += cv::v_float32::nlanes) {
+          const cv::v_float32 a = cv::vx_load(row + x);
+          a1 += a;
+          a2 = cv::v_fma(a, a, a2);
+          ac = cv::v_fma(a, cv::vx_load(tr + x), ac);
+        }
+        float s1 = cv::v_reduce_sum(a1), s2 = cv::v_reduce_sum(a2), sc = cv::v_reduce_sum(ac);
+        for (; x < tw; ++x) {
           s1 += row[x];
           s2 += row[x] * row[x];
           sc += row[x] * tr[x];
