@@ -102,6 +102,10 @@ TEST(RealFilm, PlainBlurredCarInAnImageSequenceIsNeverConfidentlyWrong) {
               h.max_px, h.confidently_wrong);
   EXPECT_EQ(h.marks, 52);
   EXPECT_EQ(h.confidently_wrong, 0);
+  // An image sequence states no frame rate of its own (FFmpeg's image reader said 25): the
+  // project's 240 fps is the clip's.
+  EXPECT_EQ(res.input.info.fps, 0);
+  EXPECT_NEAR(1 / res.input.time.frame_duration_s, 240, 1e-9);
   // The warning names the streak and the remedy.
   bool streak = false;
   for (const std::string& w : res.warnings) streak = streak || w.find("streak") != std::string::npos;

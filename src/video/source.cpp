@@ -406,6 +406,9 @@ VideoInput open_trz(const std::string& path, const SourceOptions& o) {
     in.video_file = beside;
   } else if (auto [pattern, dir] = extract_image_sequence(path, entry, z.entries); dir) {
     in.info = probe_video(pattern, path + ":" + entry);
+    // An image sequence has no frame rate of its own (FFmpeg's image reader says 25 whatever
+    // was filmed): the project's frame duration is the clip's.
+    in.info.fps = 0;
     in.temp_owner = dir;
   } else {
     auto temp = make_temp_file(lower_extension(entry));

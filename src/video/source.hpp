@@ -23,7 +23,7 @@ struct VideoInfo {
   int width = 0;         ///< px
   int height = 0;        ///< px
   int frame_count = 0;   ///< frames the container reports (may be approximate), e.g. 13
-  double fps = 0;        ///< frames per second the container reports (0 when unknown)
+  double fps = 0;        ///< frames per second the container reports (0 when unknown: an image sequence)
   std::string codec;     ///< FourCC, e.g. "avc1"
 };
 

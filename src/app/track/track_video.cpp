@@ -168,7 +168,7 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
                 {"width", in.info.width},
                 {"height", in.info.height},
                 {"frame_count", in.info.frame_count},
-                {"fps", json_number(in.info.fps)},
+                {"fps", in.info.fps > 0 ? json_number(in.info.fps) : nlohmann::json(nullptr)},
                 {"codec", in.info.codec}};
   j["clip"] = {{"start_frame", in.clip.start_frame},
                {"step_size", in.clip.step_size},
