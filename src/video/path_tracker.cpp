@@ -123,6 +123,37 @@ struct Look {
   cv::Mat source;           // CV_32F square about `at`, wide enough for the template turned any way
   int deg = 0;              // a turned copy's turn from the look, degrees
   int heading = 0;          // the turn the object was last seen at (kTurnGain), degrees
+  int heading_step = -1;    // the step it was seen at (-1: not yet; the start's look: 0)
+  // A spinning object: the last turn chosen (a heading that changed), its step (-1: none yet;
+  // the start's look: 0), the way it turned then (-1, 0, 1), and the turn per step since the
+  // one before, degrees.
+  int changed_to = 0, changed_step = -1, turn_sign = 0;
+  double turn_rate = 0;
+  // The turn expected at step n: the heading carried on at the turn rate, in whole `step`s.
+  int expected(int n, int step) const {
+    if (heading_step < 0) return heading;
+    return heading + step * static_cast<int>(std::lround(turn_rate * (n - heading_step) / step));
+  }
+  // The object seen turned by `deg` at step n: the expected turn confirmed, or (`chosen`) a
+  // turn chosen among others, which gives the rate since the turn chosen before.
+  void seen_at(int deg, int n, bool chosen) {
+    if (chosen && changed_step >= 0 && n > changed_step) {
+      const int turn = ((deg - changed_to) % 360 + 540) % 360 - 180;  // (-180, 180)
+      // A single kTurnStep is within what a look matches best by chance a little turned: it
+      // gives a rate only after a turn the same way (a rate from it alone would spin the
+      // heading of a ball that hardly turns).
+      const int sign = (turn > 0) - (turn < 0);
+      const bool spins = std::abs(turn) >= 2 * kTurnStep || (sign != 0 && sign == turn_sign);
+      turn_rate = spins ? std::clamp(static_cast<double>(turn) / (n - changed_step), -90.0, 90.0) : 0;
+      turn_sign = sign;
+    }
+    if (chosen) {
+      changed_to = deg;
+      changed_step = n;
+    }
+    heading = deg;
+    heading_step = n;
+  }
   std::vector<Look> turns;  // the turned copies made so far (turned())
 };
 
@@ -513,6 +544,7 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   m.start_look.frame = first.index;
   m.start_look.at = cv::Point2d(x_px, y_px);
   m.start_look.templ = templ;
+  m.start_look.heading_step = m.start_look.changed_step = 0;  // seen as taken at the start (step 0)
   const int side = turn_source_side(m.p);
   cv::getRectSubPix(gray, cv::Size(side, side), cv::Point2f(x_px, y_px), m.start_look.source, CV_32F);
   m.turn_ncc = 1;
@@ -911,11 +943,14 @@ void PathTracker::Impl::update(const Frame& f) {
     for (Look* look : searched) {
       primary.push_back(find_peaks(w, gray, region.tl(), *look, look != &start_look, suppress, found));
       // (Where the look as taken is found confidently, its heading is not searched.)
-      Look* at = look->heading != 0 && primary.back() < kConfident ? turned(*look, look->heading, p) : nullptr;
+      // (A spinning object's heading is carried on at its turn rate: Look::expected.)
+      const int expected = look->expected(n, kTurnStep);
+      Look* at = expected % 360 != 0 && primary.back() < kConfident ? turned(*look, expected, p) : nullptr;
       if (at != nullptr && !near.wins.empty()) {
         const double v = find_peaks(near, gray, region.tl(), *at, true, suppress, at_heading);
         ++heading_searches;
         primary.back() = std::max(primary.back(), v);
+        if (v >= kConfident) look->seen_at(at->deg, n, false);  // the expected turn confirmed
       }
       best = std::max(best, primary.back());
     }
@@ -971,7 +1006,7 @@ void PathTracker::Impl::update(const Frame& f) {
       const double bar = std::max(primary[l] + kTurnGain, opt.min_score);
       Match taken{bar, 0, false};
       for (const int d : {-kTurnStep, kTurnStep, -2 * kTurnStep, 2 * kTurnStep}) {
-        Look* t = turned(*look, look->heading + d, p);
+        Look* t = turned(*look, look->expected(n, kTurnStep) + d, p);
         if (t == nullptr) continue;
         for (std::size_t i : moving) {
           const double v = rescore(gray, region.tl(), t->templ, out.c[i], false);
@@ -981,7 +1016,7 @@ void PathTracker::Impl::update(const Frame& f) {
       if (!taken.found) continue;
       // Only that turn gives the candidates its correlation: the best of several turns at every
       // candidate would favour texture that some turn happens to match.
-      look->heading = taken.deg;
+      look->seen_at(taken.deg, n, true);
       if (std::abs(taken.deg) > std::abs(turned_deg)) {
         turned_deg = taken.deg;
         turned_frame = f.index;

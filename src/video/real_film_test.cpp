@@ -155,7 +155,10 @@ TEST(RealFilm, TheHumansMarksOnEveryFifthFrameShowTheCarsLookToTheFramesBetween)
   // (docs/benchmarks.md#tracking-on-real-film): 14 of the 42 to correct (15 before the turning
   // template), 2 of them placed 10-11 px from the human's mark (3 before; inside the car's blur,
   // where the human's marks shift with it). The bounds hold those figures: the test fails when
-  // they regress.
+  // they regress. With a spinning look's turn rate (Look::expected, same night) 15 of 42: one
+  // frame more, traded knowingly for the grid of throws (TrackingGrid: the spinning sticker's
+  // lost frames 349 -> 180 of 918, the centre's 571 -> 252, none wrong).
+  // docs/benchmarks.md#a-spinning-looks-turn-rate.
   const std::string path = testing::tracker_project_path("CarInLoop.trz");
   if (path.empty()) GTEST_SKIP() << "../shared/data/tracker/CarInLoop.trz not found";
   const VideoInput in = open_input(path, {});
@@ -181,7 +184,7 @@ TEST(RealFilm, TheHumansMarksOnEveryFifthFrameShowTheCarsLookToTheFramesBetween)
   std::printf("CarInLoop.trz masa A with %d of the human's marks: of the %d frames between, %d to correct, %d confidently wrong\n",
               marked, between, to_correct, h.confidently_wrong);
   EXPECT_EQ(between, 42);
-  EXPECT_LE(to_correct, 14);
+  EXPECT_LE(to_correct, 15);
   EXPECT_LE(h.confidently_wrong, 2);
 }
 

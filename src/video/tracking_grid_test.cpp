@@ -80,7 +80,12 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // turns the path tracker searches) and 62.2 % of the centre's (571 of 918: a 91 px template of
 // a plain turning ellipse, the ellipse tracker's case). The frame tracker (GRID_FRAME=1, for
 // the comparison in docs/benchmarks.md) loses 3.9 % of the sticker's frames but places 3 of
-// them 70 px off. The lost shares below are regression bounds, not goals.
+// them 70 px off. With a spinning look's turn rate (Look::expected, the same night): lost
+// 19.6 % of the sticker's frames (180 of 918; the 60 fps throws, 20-45 degrees per frame, still
+// mostly lost) and 27.5 % of the centre's (252), none wrong; throw 4's sticker is lost in all 61
+// frames (16 before: the turned look's candidates make the path doubt). The lost shares below
+// are regression bounds, not goals. GRID_ONLY=i runs throw i alone (the same throw: its
+// parameters are drawn all the same).
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   std::mt19937 rng(20261206);
   std::uniform_real_distribution<double> height(0.5, 1.2), theta(-60, 60), omega(-50, 50), vx(0.5, 2.5);
@@ -93,6 +98,7 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
     o.motion.theta_deg = theta(rng);
     o.motion.omega = omega(rng);
     o.motion.vx = vx(rng);
+    if (std::getenv("GRID_ONLY") && i != std::atoi(std::getenv("GRID_ONLY"))) continue;
     o.motion.after = 0.15;
     o.motion.seed = static_cast<std::uint64_t>(i + 1);
     o.render.fps = fps_choice[i % 3];
@@ -136,8 +142,8 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   std::printf("%d throws: sticker lost %d of %d (%.1f %%), centre lost %d of %d (%.1f %%), wrong %d\n", n, lost[0],
               frames[0], 100 * sticker_lost, lost[1], frames[1], 100 * centre_lost, wrong);
   if (n == 12 && !std::getenv("GRID_FRAME")) {
-    EXPECT_LE(sticker_lost, 0.42);
-    EXPECT_LE(centre_lost, 0.66);
+    EXPECT_LE(sticker_lost, 0.22);
+    EXPECT_LE(centre_lost, 0.30);
   }
 }
 
