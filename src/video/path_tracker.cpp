@@ -1273,8 +1273,9 @@ std::string PathTracker::loss_hint() const {
   }
   // Frames were lost and the object was seen turned (a look matched best turned), or its look
   // changes with a turn: the frame tracker searches every turn from frame to frame (a sticker
-  // on a ball spinning 20-40 degrees per frame, which the path tracker's turns of 15 and 30
-  // degrees about its heading miss: docs/benchmarks.md#tracking-over-a-grid-of-throws).
+  // on a ball spinning 20-45 degrees per frame at 60 fps, which the path tracker's turns of 15
+  // and 30 degrees about its heading carried on at its turn rate still miss:
+  // docs/benchmarks.md#a-spinning-looks-turn-rate).
   if (!hint.empty() && hint.find(field("point_tracker")) == std::string::npos) {
     if (m.turned_deg != 0) {
       add("the object turns (its look matched best turned by " + std::to_string(m.turned_deg) + " degrees at frame " +
