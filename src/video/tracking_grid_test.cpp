@@ -82,8 +82,8 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // the comparison in docs/benchmarks.md) loses 3.9 % of the sticker's frames but places 3 of
 // them 70 px off. With a spinning look's turn rate (Look::expected, the same night): lost
 // 19.6 % of the sticker's frames (180 of 918; the 60 fps throws, 20-45 degrees per frame, still
-// mostly lost) and 27.5 % of the centre's (252), none wrong; throw 4's sticker is lost in all 61
-// frames (16 before: the turned look's candidates make the path doubt). The lost shares below
+// mostly lost, and throw 4's 11 px sticker in all 61 frames, as before) and 27.5 % of the
+// centre's (252), none wrong. The lost shares below
 // are regression bounds, not goals. GRID_ONLY=i runs throw i alone (the same throw: its
 // parameters are drawn all the same).
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
