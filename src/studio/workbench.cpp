@@ -178,7 +178,9 @@ json Workbench::open(const fs::path& file) {
   frames_ = std::move(frames);
   width_ = input.info.width;
   height_ = input.info.height;
-  video_ = {{"width", input.info.width}, {"height", input.info.height}, {"fps", input.info.fps > 0 ? nlohmann::json(input.info.fps) : nlohmann::json(nullptr)},
+  // (An image sequence states no frame rate: null.)
+  const json fps = input.info.fps > 0 ? json(input.info.fps) : json(nullptr);
+  video_ = {{"width", input.info.width}, {"height", input.info.height}, {"fps", fps},
             {"codec", input.info.codec}, {"calibrated", input.calibration.calibrated}};
   // The coordinate system the file brings (a Tracker project's, or a plain video's default:
   // origin at the bottom-left pixel, x right, y up), drawn by the page until one is set.

@@ -83,9 +83,9 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // them 70 px off. With a spinning look's turn rate (Look::expected, the same night): lost
 // 19.6 % of the sticker's frames (180 of 918; the 60 fps throws, 20-45 degrees per frame, still
 // mostly lost, and throw 4's 11 px sticker in all 61 frames, as before) and 27.5 % of the
-// centre's (252), none wrong. The lost shares below
-// are regression bounds, not goals. GRID_ONLY=i runs throw i alone (the same throw: its
-// parameters are drawn all the same).
+// centre's (252), none wrong. The lost shares below are regression bounds, not goals.
+// GRID_ONLY=i runs throw i alone (the same throw: its parameters are drawn all the same; the
+// bounds are not checked then).
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   std::mt19937 rng(20261206);
   std::uniform_real_distribution<double> height(0.5, 1.2), theta(-60, 60), omega(-50, 50), vx(0.5, 2.5);
@@ -141,7 +141,7 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   const double sticker_lost = double(lost[0]) / frames[0], centre_lost = double(lost[1]) / frames[1];
   std::printf("%d throws: sticker lost %d of %d (%.1f %%), centre lost %d of %d (%.1f %%), wrong %d\n", n, lost[0],
               frames[0], 100 * sticker_lost, lost[1], frames[1], 100 * centre_lost, wrong);
-  if (n == 12 && !std::getenv("GRID_FRAME")) {
+  if (n == 12 && !std::getenv("GRID_FRAME") && !std::getenv("GRID_ONLY")) {
     EXPECT_LE(sticker_lost, 0.22);
     EXPECT_LE(centre_lost, 0.30);
   }
