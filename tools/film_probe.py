@@ -304,6 +304,20 @@ def probe_blob(rgb, marks, f0):
     return out
 
 
+def placed_near_marks(g, marks, f0, h, corr, w=40):
+    """{frame: (x, y, correlation, ridge)}: the best placement of a template of half side h within
+    w px of each mark but the first frame's, `corr(window)` its correlation map there."""
+    out = {}
+    for f in sorted(marks):
+        win = patch(g[f], *marks[f], h + w) if f != f0 else None
+        if win is None:
+            continue
+        m = corr(win)
+        i = np.unravel_index(np.argmax(m), m.shape)
+        out[f] = (round(marks[f][0]) + i[1] - w, round(marks[f][1]) + i[0] - w, m[i], ridge_px(m, i))
+    return out
+
+
 def probe_grow(g, marks, f0, sides, bound):
     """{side: (own ridge, {frame: (x, y, ncc, ridge)})} and the side the rule chooses."""
     out, chosen = {}, None
@@ -317,15 +331,7 @@ def probe_grow(g, marks, f0, sides, bound):
         own = ridge_px(m, (30, 30))
         if chosen is None and own <= bound:
             chosen = p
-        placed = {}
-        for f in sorted(marks):
-            win = patch(g[f], *marks[f], h + 40) if f != f0 else None
-            if win is None:
-                continue
-            m = ncc_map(win, t)
-            i = np.unravel_index(np.argmax(m), m.shape)
-            placed[f] = (round(marks[f][0]) + i[1] - 40, round(marks[f][1]) + i[0] - 40, m[i], ridge_px(m, i))
-        out[p] = (own, placed)
+        out[p] = (own, placed_near_marks(g, marks, f0, h, lambda win, t=t: ncc_map(win, t)))
     return out, chosen
 
 
@@ -335,15 +341,7 @@ def probe_masked(g, marks, p, f0, level=20.0):
     t = patch(g[f0], *marks[f0], h)
     w = (np.abs(t - patch(bg, *marks[f0], h)) > level).astype(float)
     print(f"masked: {100 * w.mean():.0f} % of the {p} px template differs from the background by more than {level:.0f}")
-    out = {}
-    for f in sorted(marks):
-        win = patch(g[f], *marks[f], h + 40) if f != f0 else None
-        if win is None:
-            continue
-        m = masked_ncc_map(win, t, w)
-        i = np.unravel_index(np.argmax(m), m.shape)
-        out[f] = (round(marks[f][0]) + i[1] - 40, round(marks[f][1]) + i[0] - 40, m[i], ridge_px(m, i))
-    return out
+    return placed_near_marks(g, marks, f0, h, lambda win: masked_ncc_map(win, t, w))
 
 
 def report(name, placed, marks, bar, tag="fb"):

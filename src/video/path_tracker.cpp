@@ -137,17 +137,17 @@ struct Look {
   // The object seen turned by `deg` at step n: the expected turn confirmed, or (`chosen`) a
   // turn chosen among others, which gives the rate since the turn chosen before.
   void seen_at(int deg, int n, bool chosen) {
-    if (chosen && changed_step >= 0 && n > changed_step) {
-      const int turn = ((deg - changed_to) % 360 + 540) % 360 - 180;  // (-180, 180)
-      // A single kTurnStep is within what a look matches best by chance a little turned: it
-      // gives a rate only after a turn the same way (a rate from it alone would spin the
-      // heading of a ball that hardly turns).
-      const int sign = (turn > 0) - (turn < 0);
-      const bool spins = std::abs(turn) >= 2 * kTurnStep || (sign != 0 && sign == turn_sign);
-      turn_rate = spins ? std::clamp(static_cast<double>(turn) / (n - changed_step), -90.0, 90.0) : 0;
-      turn_sign = sign;
-    }
     if (chosen) {
+      if (changed_step >= 0 && n > changed_step) {
+        const int turn = ((deg - changed_to) % 360 + 540) % 360 - 180;  // (-180, 180)
+        // A single kTurnStep is within what a look matches best by chance a little turned: it
+        // gives a rate only after a turn the same way (a rate from it alone would spin the
+        // heading of a ball that hardly turns).
+        const int sign = (turn > 0) - (turn < 0);
+        const bool spins = std::abs(turn) >= 2 * kTurnStep || (sign != 0 && sign == turn_sign);
+        turn_rate = spins ? std::clamp(static_cast<double>(turn) / (n - changed_step), -90.0, 90.0) : 0;
+        turn_sign = sign;
+      }
       changed_to = deg;
       changed_step = n;
     }
