@@ -134,7 +134,9 @@ void BM_DecodeTrackPath1080pH264(benchmark::State& state) {
   int lost = 0;
   for (auto _ : state) {
     const auto cap = video::open_video_file(c.path);
-    video::PathTracker tracker;
+    video::PathTrackerOptions po;
+    po.step_s = 1 / 240.0;  // as track video gives it, from the clip's time base
+    video::PathTracker tracker(po);
     video::Frame f;
     bool started = false;
     while (cap->read(f.bgr)) {
@@ -172,7 +174,9 @@ void BM_TrackPathDecoded1080p(benchmark::State& state) {
   int lost = 0;
   double worst = 0;
   for (auto _ : state) {
-    video::PathTracker tracker;
+    video::PathTrackerOptions po;
+    po.step_s = 1 / 240.0;  // as track video gives it, from the clip's time base
+    video::PathTracker tracker(po);
     for (std::size_t k = 0; k < decoded.size(); ++k) {
       video::Frame f;
       f.bgr = decoded[k];

@@ -68,6 +68,9 @@ constexpr int kRefinePx = 3;
 // reversal at a bounce keeps the speed), never more than `reach` per step.
 constexpr int kWindowSpeedSteps = 2;
 constexpr double kWindowSpeeds = 2;
+// The automatic reach is a quarter of the image's smaller side per this much real time, s:
+// per frame at 30 fps (PathTrackerOptions::step_s).
+constexpr double kReachPeriodS = 1.0 / 30;
 // Background samples kept (grey frames spread over the clip, one per block of `stride`;
 // when full, every other one is dropped and the stride doubles): the temporal median of at
 // most 16 frames.
@@ -300,6 +303,7 @@ std::string PathTrackerOptions::validate() const {
   if (search_px < 0) return "search_px must be >= 0, got " + std::to_string(search_px);
   if (!(min_score > 0 && min_score < 1)) return "min_score must lie in (0, 1), got " + std::to_string(min_score);
   if (max_gap_frames < 0) return "max_gap_frames must be >= 0, got " + std::to_string(max_gap_frames);
+  if (!(step_s >= 0 && std::isfinite(step_s))) return "step_s must be >= 0 (0: unknown), got " + std::to_string(step_s);
   return {};
 }
 
@@ -458,7 +462,17 @@ struct PathTracker::Impl {
   // Reports as lost a run reached only across more than G steps without a reported point (lost_unlinked).
   void drop_unlinked_runs(std::vector<Observation>& obs, int G);
   std::string main_loss_hint() const;  // the likeliest cause but a streak (loss_hint)
+  std::string reach_said() const;      // the reach per frame, for the hints
 };
+
+std::string PathTracker::Impl::reach_said() const {
+  // The reach as the user can set it (--search), with where the automatic one came from.
+  std::string said = std::to_string(static_cast<long>(std::lround(reach))) + " px per frame (" + field("search");
+  if (opt.search_px == 0 && opt.step_s > 0 && opt.step_s < kReachPeriodS) {
+    said += "; automatic at " + std::to_string(static_cast<long>(std::lround(1 / opt.step_s))) + " frames per second";
+  }
+  return said + ")";
+}
 
 std::string PathTracker::Impl::main_loss_hint() const {
   const Impl& m = *this;
@@ -485,13 +499,13 @@ std::string PathTracker::Impl::main_loss_hint() const {
     return "after frame " + std::to_string(m.end_frame) + " (the path's last point) nothing within reach that " +
            "resembled the object's first look continued its motion in the " + std::to_string(m.lost_end) +
            " frame(s) left "
-           "(the object left the view or was hidden, moved more than " + field("search") +
-           " px per frame, or turned or changed its look): a larger " + field("search") + " or " + field("max_gap") +
+           "(the object left the view or was hidden, moved more than " + reach_said() +
+           ", or turned or changed its look): a larger " + field("search") + " or " + field("max_gap") +
            "; for an object that turns, " + field("point_tracker") + " frame; or " + field("mark") +
            " the object in one of those frames: the frames around a mark are searched for its look there";
   }
   return "the object was not found in " + std::to_string(m.lost_none) +
-         " frame(s) (hidden, out of view, or moving more than " + field("search") + " px per frame): a larger " +
+         " frame(s) (hidden, out of view, or moving more than " + reach_said() + "): a larger " +
          field("search") + " or " + field("max_gap");
 }
 
@@ -525,9 +539,13 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   p = std::min(p, 2 * (small_side / 8) + 1);
   m.p = std::max(p, 7);
   m.h = m.p / 2;
-  // Reach: a quarter of the image's smaller side per frame (Tracker's BallToss, filmed at
-  // 15 fps, moves 100 px of 480 in its last frame), at least two templates.
-  m.reach = m.opt.search_px > 0 ? m.opt.search_px : std::max(2.0 * m.p, small_side / 4.0);
+  // Reach: a quarter of the image's smaller side per 1/30 s of real time, per frame at 30 fps
+  // or fewer (Tracker's BallToss, filmed at 15 fps, moves 100 px of 480 in its last frame), at
+  // least two templates. A speed, not a per-frame step: at 240 fps an object covers an eighth
+  // of what it covers in a frame at 30 fps, and so do the search windows and the path's gate
+  // (an unknown time base keeps it per frame).
+  const double frame_share = m.opt.step_s > 0 ? std::min(1.0, m.opt.step_s / kReachPeriodS) : 1.0;
+  m.reach = m.opt.search_px > 0 ? m.opt.search_px : std::max(2.0 * m.p, small_side / 4.0 * frame_share);
   cv::Mat templ;
   cv::getRectSubPix(gray, cv::Size(m.p, m.p), cv::Point2f(x_px, y_px), templ, CV_32F);
   // Only a flat patch is refused (sensor noise alone: standard deviation ~2 grey levels): a
@@ -683,6 +701,16 @@ std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
     const double k = double(n - lead_frames[1]) / (lead_frames[1] - lead_frames[0]);
     const cv::Point2d at = lead[1] + k * (lead[1] - lead[0]);
     if (at.x >= 0 && at.y >= 0 && at.x < size.width && at.y < size.height) anchors.push_back({at, 1});
+  }
+  // And the last confident sighting itself, as far back as a path may skip (max_gap + 1 steps),
+  // with its age: the object lost since (turning, bouncing) is within reach of it for every
+  // step since, as the path's gate allows. One seen up to 3 steps back is an anchor above (the
+  // best candidate of its step).
+  if (lead_frames[1] >= 0 && n - lead_frames[1] > 3 && n - lead_frames[1] <= opt.max_gap_frames + 1) {
+    const bool near = std::any_of(anchors.begin(), anchors.end(), [&](const Anchor& a) {
+      return std::hypot(a.at.x - lead[1].x, a.at.y - lead[1].y) < p;
+    });
+    if (!near) anchors.push_back({lead[1], n - lead_frames[1]});
   }
   // And the next mark, when it is at most three steps ahead: the object is within reach of it.
   const auto next = marks.upper_bound(index - 1);
@@ -1084,9 +1112,11 @@ std::vector<Observation> PathTracker::finish() {
 void PathTracker::Impl::compute_unary_costs() {
   if (fg_done) return;
   cv::Mat median(size, CV_8U), known = cv::Mat::zeros(size, CV_8U);
-  for (int t = 1; t < static_cast<int>(this->steps.size()); ++t) {
+  // The start's too: the object's own difference from the background, where the user clicked it.
+  for (int t = 0; t < static_cast<int>(this->steps.size()); ++t) {
     for (Candidate& c : this->steps[t].c) {
       c.fg = foreground(c, 1, &median, &known);
+      if (t == 0) continue;
       c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
     }
   }

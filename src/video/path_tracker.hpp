@@ -25,6 +25,9 @@ struct PathTrackerOptions {
   int search_px = 0;          ///< largest motion between two tracked frames, px (0: automatic)
   double min_score = 0.6;     ///< a path point whose correlation is below this is lost
   int max_gap_frames = 8;     ///< frames the path may skip (an object hidden by a hand)
+  /// Real time between two tracked frames, s (0: unknown). The automatic reach is a speed: a
+  /// quarter of the image's smaller side per 1/30 s, per frame at 30 fps or fewer.
+  double step_s = 0;
   std::string validate() const;
 };
 

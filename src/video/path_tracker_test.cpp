@@ -237,6 +237,50 @@ TEST(PathTracker, AnObjectThatLeavesTheViewEndsThePathAndTheHintSaysWhere) {
   EXPECT_NE(hint.find("a larger " + field("search") + " or " + field("max_gap")), std::string::npos) << hint;
 }
 
+TEST(PathTracker, TheAutomaticReachIsASpeedFromTheClipsTimeBase) {
+  // A 6 px disc crossing 30 px per frame of a 480 px wide textured picture. Filmed at 30 fps
+  // that is within the automatic reach (a quarter of the smaller side per 1/30 s: 80 px per
+  // frame); the same frames said to be 240 fps are 7200 px/s, beyond the reach of 80 px per
+  // 1/30 s (10 px per frame, at least two templates: 22 px): lost, never placed elsewhere, and
+  // the hint names the reach and where it came from. A larger --search follows it again.
+  const RenderOptions o = textured_video(480, 320);
+  auto at = [](int i) { return cv::Point2d(20 + 30.0 * i, 150 + 0.5 * i); };
+  const Scene scene = [&](double t) { return std::vector<ShapePose>{disc(at(static_cast<int>(std::lround(t * 30))), 3)}; };
+  const auto run = [&](double step_s, int search_px, std::string* hint) {
+    PathTrackerOptions options;
+    options.step_s = step_s;
+    options.search_px = search_px;
+    PathTracker tracker(options);
+    tracker.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
+    for (int i = 1; i < 15; ++i) tracker.update(testing::rendered_frame(scene, i, o));
+    Result r;
+    for (const Observation& ob : tracker.finish()) {
+      ++r.frames;
+      if (ob.lost) {
+        ++r.lost;
+        continue;
+      }
+      r.worst_px = std::max(r.worst_px, std::hypot(ob.x_px - at(ob.frame).x, ob.y_px - at(ob.frame).y));
+    }
+    if (hint != nullptr) *hint = tracker.loss_hint();
+    std::printf("step %.4f s, search %d: lost %d of %d, worst %.2f px\n", step_s, search_px, r.lost, r.frames, r.worst_px);
+    return r;
+  };
+  const Result at30 = run(1 / 30.0, 0, nullptr);
+  EXPECT_LE(at30.lost, 1);
+  EXPECT_LT(at30.worst_px, 1.5);
+  std::string hint;
+  const Result at240 = run(1 / 240.0, 0, &hint);
+  std::printf("%s\n", plain_fields(hint).c_str());
+  EXPECT_GE(at240.lost, 12);       // too fast for the reach at 240 fps
+  EXPECT_LT(at240.worst_px, 1.5);  // and nothing else taken for it
+  EXPECT_NE(hint.find("automatic at 240 frames per second"), std::string::npos) << hint;
+  EXPECT_NE(hint.find("a larger " + field("search")), std::string::npos) << hint;
+  const Result told = run(1 / 240.0, 40, nullptr);
+  EXPECT_LE(told.lost, 1);
+  EXPECT_LT(told.worst_px, 1.5);
+}
+
 TEST(PathTracker, AfterAHidingLongerThanTheMaxGapNothingIsReportedUntilAMark) {
   // The ball passes behind a wide hand for 13 frames (more than max_gap 8): the path cannot
   // bridge it, ends before the hand and the hint names max_gap; nothing after the hiding is

@@ -423,7 +423,11 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
     if (w.target.kind == Target::Kind::ellipse) {
       w.tracker = EllipseTracker(options.ellipse);
     } else if (options.offline_points) {
-      w.tracker = PathTracker(options.path);
+      // The path tracker's reach is a speed: it needs the real time between two tracked frames
+      // (a slow-motion clip's time scale included; 0 when the time base is unknown).
+      PathTrackerOptions path = options.path;
+      if (path.step_s == 0) path.step_s = in.clip.step_size * in.time.frame_duration_s * in.time.time_scale;
+      w.tracker = PathTracker(path);
     }
     resolve_start(w, in);
     check_marks(w.target, w.start_frame, in);

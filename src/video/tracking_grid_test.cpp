@@ -48,7 +48,9 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
       }
     }
   } else {
-    PathTracker tracker;
+    PathTrackerOptions po;
+    po.step_s = 1 / film.render.fps;  // as track video gives it, from the clip's time base
+    PathTracker tracker(po);
     tracker.start(frames[0], truth[0].x, truth[0].y, "point");
     for (std::size_t k = 1; k < frames.size(); ++k) tracker.update(frames[k]);
     obs = tracker.finish();
@@ -83,7 +85,13 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // them 70 px off. With a spinning look's turn rate (Look::expected, the same night): lost
 // 19.6 % of the sticker's frames (180 of 918; the 60 fps throws, 20-45 degrees per frame, still
 // mostly lost, and throw 4's 11 px sticker in all 61 frames, as before) and 27.5 % of the
-// centre's (252), none wrong. The lost shares below are regression bounds, not goals.
+// centre's (252), none wrong. With the reach a speed (given the clip's time base, as track
+// video gives it), the last confident sighting searched while the object is lost, and the
+// background check measured against the object where it was clicked (a path of 34 still
+// texture points after 26 on the sticker had made the path's median the texture's: throw 4):
+// lost 12.5 % of the sticker's frames (115; throws 0 and 6 at 60 fps 28 -> 3 and 27 -> 17,
+// throw 4 61 -> 36), the centre's as before, none wrong. The lost shares below are regression
+// bounds, not goals.
 // GRID_ONLY=i runs throw i alone (the same throw: its parameters are drawn all the same; the
 // bounds are not checked then).
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
@@ -142,7 +150,7 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   std::printf("%d throws: sticker lost %d of %d (%.1f %%), centre lost %d of %d (%.1f %%), wrong %d\n", n, lost[0],
               frames[0], 100 * sticker_lost, lost[1], frames[1], 100 * centre_lost, wrong);
   if (n == 12 && !std::getenv("GRID_FRAME") && !std::getenv("GRID_ONLY")) {
-    EXPECT_LE(sticker_lost, 0.22);
+    EXPECT_LE(sticker_lost, 0.15);
     EXPECT_LE(centre_lost, 0.30);
   }
 }
