@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 
 namespace tribolab::video {
 namespace {
@@ -50,13 +51,17 @@ constexpr double kTurnGain = 0.05;
 // a turn (a checker sticker: ~0.2; a plain disc: ~1): a lost track names the frame tracker.
 constexpr double kTurnSensitive = 0.8;
 constexpr double kCandidateFloor = 0.3;
-// Coarse to fine (PathTracker::Impl::correlate_union, coarse_peaks): a union of windows larger
-// than this, px², with a template of at least kCoarseMinPatch px, is correlated at half
-// resolution first (floor kCoarseFloor there: halving blurs a peak), each peak refined within
-// kRefinePx at each finer level down to full resolution. A template of kQuarterMinPatch px or
-// more is searched at quarter resolution, where it still has 13 px or more (a 7 px quarter of
-// the 1080p benchmark's 25 px sticker lost 8 more frames).
+// Coarse to fine (PathTracker::Impl::correlate_union, coarse_peaks): with a template of at
+// least kCoarseMinPatch px, a union of windows larger than kCoarseMinArea px², or any union in
+// an image of kCoarseImageArea px² or more (HD: its objects keep their detail at half
+// resolution; in a smaller image halving lost frames: docs/benchmarks.md#tracking-at-1080p), is
+// correlated at half resolution first (floor kCoarseFloor there: halving blurs a peak), each
+// peak refined within kRefinePx at each finer level down to full resolution, where its ridge is
+// measured (full_ridge_px). A template of kQuarterMinPatch px or more is searched at quarter
+// resolution, where it still has 13 px or more (a 7 px quarter of the 1080p benchmark's 25 px
+// sticker lost 8 more frames).
 constexpr int kCoarseMinArea = 400000;
+constexpr int kCoarseImageArea = 1280 * 720;
 constexpr int kCoarseMinPatch = 15;
 constexpr int kQuarterMinPatch = 49;
 constexpr double kCoarseFloor = 0.2;
@@ -203,6 +208,17 @@ struct SearchWindows {
   cv::Rect uni;
 };
 
+// A template with its mean taken out, for ncc_at: the correlation's numerator is then the
+// image's plain dot product with it.
+struct ZeroMeanTemplate {
+  cv::Mat t;          // CV_32F
+  double norm2 = 0;   // sum of its squares
+  explicit ZeroMeanTemplate(const cv::Mat& templ) {
+    t = templ - cv::mean(templ)[0];
+    norm2 = t.dot(t);
+  }
+};
+
 // The correlation over the windows' union: at full resolution (`all`), or at the coarse level
 // `level` (`coarse_res`, 1/2^level resolution) with the union's grey levels at every level
 // (`pyramid[0]` full resolution) and the look's templates kept for the refinement.
@@ -217,9 +233,11 @@ struct UnionCorrelation {
   struct Refined {
     cv::Point at;
     double v, fitted;
+    double ridge = -1;  // at full resolution (full_ridge_px; -1: not measured yet)
     cv::Point2d off;
   };
   std::map<std::array<int, 4>, Refined> refined;
+  std::optional<ZeroMeanTemplate> zero_mean;  // the full-resolution template's, for the ridges
 };
 
 // A correlation peak in one window.
@@ -270,28 +288,54 @@ double blob_radius(const cv::Mat& gray, cv::Point2d p) {
   return radius;
 }
 
-// Half-length, px, of the longest straight line through the peak `at` of the correlation map
-// `res` along which the correlation stays within kRidgeDrop of the peak's value `v` (over four
-// axes, each walked both ways, at most kRidgeMaxSteps steps), times `scale` (2 for a
-// half-resolution map). A sharp match drops within a pixel or two every way; a motion-blurred
+// Half-length, px, of the longest straight line through a correlation peak at `at` along
+// which the correlation stays within kRidgeDrop of the peak's value (over four axes, each
+// walked both ways, at most kRidgeMaxSteps steps; `high(q)`: the correlation at q is inside the
+// map and that high). A sharp match drops within a pixel or two every way; a motion-blurred
 // streak or a plain edge matches all along itself: its position along the ridge is unknown.
-double peak_ridge_px(const cv::Mat& res, cv::Point at, double v, double scale) {
+template <class High>
+double ridge_px(cv::Point at, const High& high) {
   static const cv::Point kAxes[4] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
-  const float floor = static_cast<float>(v - kRidgeDrop);
   double longest = 0;
   for (const cv::Point& d : kAxes) {
     int total = 0;
     for (int sign = -1; sign <= 1; sign += 2) {
       int s = 1;
-      for (; s <= kRidgeMaxSteps; ++s) {
-        const cv::Point q = at + sign * s * d;
-        if (q.x < 0 || q.y < 0 || q.x >= res.cols || q.y >= res.rows || res.at<float>(q) < floor) break;
-      }
+      while (s <= kRidgeMaxSteps && high(at + sign * s * d)) ++s;
       total += s - 1;
     }
     longest = std::max(longest, 0.5 * total * std::hypot(d.x, d.y));
   }
-  return scale * longest;
+  return longest;
+}
+
+// The ridge through the peak `at` (value `v`) of the correlation map `res`.
+double peak_ridge_px(const cv::Mat& res, cv::Point at, double v) {
+  const float floor = static_cast<float>(v - kRidgeDrop);
+  return ridge_px(at, [&](cv::Point q) {
+    return q.x >= 0 && q.y >= 0 && q.x < res.cols && q.y < res.rows && res.at<float>(q) >= floor;
+  });
+}
+
+// The correlation coefficient of the template placed with its top-left corner at `at` in `img`
+// (CV_32F), as normed_correlation computes it (0 where the image or the template is flat).
+double ncc_at(const cv::Mat& img, const ZeroMeanTemplate& zt, cv::Point at) {
+  const cv::Mat roi = img(cv::Rect(at, zt.t.size()));
+  const double n = double(zt.t.total()), s = cv::sum(roi)[0], vi = roi.dot(roi) - s * s / n;
+  if (!(vi > 1e-9 * n * (s / n) * (s / n) && vi > 0 && zt.norm2 > 0)) return 0;
+  return roi.dot(zt.t) / std::sqrt(vi * zt.norm2);
+}
+
+// The ridge through the placement `at` (correlating `v`) of the template in `img`, at full
+// resolution without the map: the correlation is taken along the four axes only. A coarse
+// peak's ridge measured on the half-resolution map is blurred by the pyramid: a streak's ridge
+// came out shorter there than at full resolution, and was reported.
+double full_ridge_px(const cv::Mat& img, const ZeroMeanTemplate& zt, cv::Point at, double v) {
+  const double floor = v - kRidgeDrop;
+  return ridge_px(at, [&](cv::Point q) {
+    return q.x >= 0 && q.y >= 0 && q.x <= img.cols - zt.t.cols && q.y <= img.rows - zt.t.rows &&
+           ncc_at(img, zt, q) >= floor;
+  });
 }
 
 }  // namespace
@@ -756,7 +800,8 @@ SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& ancho
 
 UnionCorrelation PathTracker::Impl::correlate_union(const cv::Mat& gray, Look& look) const {
   UnionCorrelation u;
-  u.coarse = !gray.empty() && p >= kCoarseMinPatch && gray.rows * gray.cols > kCoarseMinArea;
+  u.coarse = !gray.empty() && p >= kCoarseMinPatch &&
+             (gray.rows * gray.cols > kCoarseMinArea || size.area() >= kCoarseImageArea);
   if (!gray.empty()) {
     u.pyramid.resize(1);
     gray.convertTo(u.pyramid[0], CV_32F);
@@ -792,7 +837,7 @@ std::vector<Peak> fine_peaks(const cv::Mat& res, int suppress) {
     cv::circle(scratch, pk.at, suppress, cv::Scalar(-1), cv::FILLED);
     pk.fitted = pk.v;
     pk.off = subpixel_peak(res, pk.at, &pk.fitted);
-    pk.ridge = peak_ridge_px(res, pk.at, pk.v, 1);
+    pk.ridge = peak_ridge_px(res, pk.at, pk.v);
     peaks.push_back(pk);
   }
   return peaks;
@@ -807,14 +852,13 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(UnionCorrelation& u, const cv:
                          cv::Rect(0, 0, u.coarse_res.cols, u.coarse_res.rows);
   if (crect.width < 1 || crect.height < 1) return peaks;
   cv::Mat scratch = u.coarse_res(crect).clone();
-  std::vector<Peak> refined;
+  std::vector<std::pair<Peak, UnionCorrelation::Refined*>> refined;
   for (int k = 0; k < 2 * kPerWindow; ++k) {
     double v;
     cv::Point c;
     cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
     if (v < kCoarseFloor) break;
     cv::circle(scratch, c, std::max(1, suppress / f), cv::Scalar(-1), cv::FILLED);
-    const double ridge = peak_ridge_px(u.coarse_res, crect.tl() + c, v, f);
     // Refine at each finer level: the correlation within kRefinePx of twice the coarser
     // level's best place (in the union's result at that level); at full resolution, within
     // the window.
@@ -854,16 +898,23 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(UnionCorrelation& u, const cv:
     pk.fitted = done->second.fitted;
     pk.off = done->second.off;
     pk.at = done->second.at - rrect.tl();
-    pk.ridge = ridge;
-    refined.push_back(pk);
+    refined.push_back({pk, &done->second});
   }
-  std::sort(refined.begin(), refined.end(), [](const Peak& a, const Peak& b) { return a.v > b.v; });
-  for (const Peak& pk : refined) {
+  std::sort(refined.begin(), refined.end(), [](const auto& a, const auto& b) { return a.first.v > b.first.v; });
+  for (auto& [pk, r] : refined) {
     if (static_cast<int>(peaks.size()) >= kPerWindow || pk.v < kCandidateFloor) break;
     const bool dup = std::any_of(peaks.begin(), peaks.end(), [&](const Peak& q) {
       return std::hypot(q.at.x - pk.at.x, q.at.y - pk.at.y) <= suppress;
     });
-    if (!dup) peaks.push_back(pk);
+    if (dup) continue;
+    // The ridge at full resolution, measured once for a peak kept (the walk costs a few
+    // placements' correlations).
+    if (r->ridge < 0) {
+      if (!u.zero_mean) u.zero_mean.emplace(u.templ[0]);
+      r->ridge = full_ridge_px(u.pyramid[0], *u.zero_mean, r->at, r->v);
+    }
+    pk.ridge = r->ridge;
+    peaks.push_back(pk);
   }
   return peaks;
 }
