@@ -234,6 +234,8 @@ struct UnionCorrelation {
     cv::Point at;
     double v, fitted;
     double ridge = -1;  // at full resolution (full_ridge_px; -1: not measured yet)
+    cv::Mat map;        // the correlation around it (placements from `map_at`), for the ridge
+    cv::Point map_at;
     cv::Point2d off;
   };
   std::map<std::array<int, 4>, Refined> refined;
@@ -327,12 +329,16 @@ double ncc_at(const cv::Mat& img, const ZeroMeanTemplate& zt, cv::Point at) {
 }
 
 // The ridge through the placement `at` (correlating `v`) of the template in `img`, at full
-// resolution without the map: the correlation is taken along the four axes only. A coarse
-// peak's ridge measured on the half-resolution map is blurred by the pyramid: a streak's ridge
-// came out shorter there than at full resolution, and was reported.
-double full_ridge_px(const cv::Mat& img, const ZeroMeanTemplate& zt, cv::Point at, double v) {
-  const double floor = v - kRidgeDrop;
+// resolution: read from `map` (the correlation at the placements `map_at` + its pixels: the
+// refinement's) where it holds the placement, else taken there alone (ncc_at), along the four
+// axes only. A coarse peak's ridge measured on the half-resolution map is blurred by the
+// pyramid: a streak's ridge came out shorter there than at full resolution, and was reported.
+double full_ridge_px(const cv::Mat& img, const ZeroMeanTemplate& zt, const cv::Mat& map, cv::Point map_at,
+                     cv::Point at, double v) {
+  const float floor = static_cast<float>(v - kRidgeDrop);
+  const cv::Rect in_map(map_at, map.size());
   return ridge_px(at, [&](cv::Point q) {
+    if (in_map.contains(q)) return map.at<float>(q - map_at) >= floor;
     return q.x >= 0 && q.y >= 0 && q.x <= img.cols - zt.t.cols && q.y <= img.rows - zt.t.rows &&
            ncc_at(img, zt, q) >= floor;
   });
@@ -894,6 +900,8 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(UnionCorrelation& u, const cv:
       r.fitted = r.v;
       r.off = subpixel_peak(fine, in, &r.fitted);
       r.at = cv::Point(key[0], key[1]) + in;
+      r.map = fine;
+      r.map_at = cv::Point(key[0], key[1]);
       done = u.refined.emplace(key, r).first;
     }
     Peak pk;
@@ -914,7 +922,7 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(UnionCorrelation& u, const cv:
     // placements' correlations).
     if (r->ridge < 0) {
       if (!u.zero_mean) u.zero_mean.emplace(u.templ[0]);
-      r->ridge = full_ridge_px(u.pyramid[0], *u.zero_mean, r->at, r->v);
+      r->ridge = full_ridge_px(u.pyramid[0], *u.zero_mean, r->map, r->map_at, r->at, r->v);
     }
     pk.ridge = r->ridge;
     peaks.push_back(pk);
