@@ -175,6 +175,52 @@ TEST(TrackVideo, PointAndEllipseInOnePassFromTheirOwnStartFrames) {
   EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
 }
 
+TEST(TrackVideo, ThePathTrackersReachFollowsTheClipsTimeBase) {
+  // A disc crossing 50 px per frame of a 480 px textured picture. The container says 240 fps:
+  // that is 12 000 px/s, beyond the automatic reach (a quarter of the smaller side per 1/30 s),
+  // so it is lost and the warning names the reach and its frame rate. Told the clip is 30 fps
+  // (a slow-motion clip stored at the wrong rate is one case; --fps), the same frames are followed.
+  const std::string dir = temp_dir("reach");
+  RenderOptions film;
+  film.width = 480;
+  film.height = 320;
+  film.fps = 240;
+  film.shutter_fraction = 0;
+  film.background = RenderOptions::Background::texture;
+  film.noise_sigma = 1;
+  const auto at = [](int i) { return cv::Point2d(40 + 50.0 * i, 160); };
+  const Scene scene = [&](double t) {
+    ShapePose disc;
+    const cv::Point2d c = at(static_cast<int>(std::lround(t * 240)));
+    disc.cx_px = c.x;
+    disc.cy_px = c.y;
+    disc.a_px = disc.b_px = 6;
+    disc.colour = cv::Scalar(40, 40, 200);
+    return std::vector<ShapePose>{disc};
+  };
+  const int frames = 8;
+  write_video(dir + "/fast.avi", scene, frames, film);
+  TrackVideoOptions o;
+  o.targets = {point("disc", at(0))};
+  const auto run = [&](std::string* warning) {
+    const TrackVideoResult r = track_video(dir + "/fast.avi", o);
+    int n = 0;
+    for (const TrackedRow& row : r.series[0].rows) {
+      if (row.lost || row.frame == 0) continue;
+      EXPECT_LT(std::hypot(row.x_px - at(row.frame).x, row.y_px - at(row.frame).y), 1.5) << row.frame;
+      ++n;
+    }
+    for (const auto& w : r.warnings) *warning += w;
+    return n;
+  };
+  std::string at240, at30;
+  EXPECT_EQ(run(&at240), 0) << at240;
+  EXPECT_NE(at240.find("automatic at 240 frames per second"), std::string::npos) << at240;
+  o.source.fps = 30;
+  EXPECT_EQ(run(&at30), frames - 1) << at30;
+  fs::remove_all(dir);
+}
+
 TEST(TrackVideo, ThumbnailsAreEvenlySpacedSmallJpegs) {
   const std::string dir = temp_dir("thumbs");
   const Scenery s;
