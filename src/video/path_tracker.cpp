@@ -65,6 +65,10 @@ constexpr int kCoarseImageArea = 1280 * 720;
 constexpr int kCoarseMinPatch = 15;
 constexpr int kQuarterMinPatch = 49;
 constexpr double kCoarseFloor = 0.2;
+// Coarse peaks refined per window, of which the best kPerWindow are kept (6 before: the same
+// tracks of the four real projects, with and without the human's marks, and of the grid, in
+// 92 ms instead of 99 per 1080p clip; docs/benchmarks.md#tracking-at-1080p).
+constexpr int kCoarsePeaks = kPerWindow + 1;
 constexpr int kRefinePx = 3;
 // Older anchors' windows from the motion (PathTracker::Impl::seen_speed): while the object is
 // seen confidently (two confident sightings at most kWindowSpeedSteps steps apart, the later
@@ -862,7 +866,7 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(UnionCorrelation& u, const cv:
   if (crect.width < 1 || crect.height < 1) return peaks;
   cv::Mat scratch = u.coarse_res(crect).clone();
   std::vector<std::pair<Peak, UnionCorrelation::Refined*>> refined;
-  for (int k = 0; k < 2 * kPerWindow; ++k) {
+  for (int k = 0; k < kCoarsePeaks; ++k) {
     double v;
     cv::Point c;
     cv::minMaxLoc(scratch, nullptr, &v, nullptr, &c);
