@@ -45,7 +45,7 @@ struct Result {
 
 // Tracks `frames` frames of `scene` from the truth's first position; errors against `truth`.
 Result track_path(const Scene& scene, const RenderOptions& o, int frames, const std::function<cv::Point2d(int)>& truth,
-             const PathTrackerOptions& options = {}) {
+             const PathTrackerOptions& options = {}, std::string* hint = nullptr) {
   PathTracker tracker(options);
   const cv::Point2d p0 = truth(0);
   tracker.start(testing::rendered_frame(scene, 0, o), p0.x, p0.y, "ball");
@@ -67,6 +67,7 @@ Result track_path(const Scene& scene, const RenderOptions& o, int frames, const 
     r.median_px = e[e.size() / 2];
   }
   std::printf("frames %d, lost %d, error median %.3f px, worst %.3f px\n", r.frames, r.lost, r.median_px, r.worst_px);
+  if (hint != nullptr) *hint = tracker.loss_hint();
   return r;
 }
 
@@ -250,21 +251,7 @@ TEST(PathTracker, TheAutomaticReachIsASpeedFromTheClipsTimeBase) {
     PathTrackerOptions options;
     options.step_s = step_s;
     options.search_px = search_px;
-    PathTracker tracker(options);
-    tracker.start(testing::rendered_frame(scene, 0, o), at(0).x, at(0).y, "ball");
-    for (int i = 1; i < 15; ++i) tracker.update(testing::rendered_frame(scene, i, o));
-    Result r;
-    for (const Observation& ob : tracker.finish()) {
-      ++r.frames;
-      if (ob.lost) {
-        ++r.lost;
-        continue;
-      }
-      r.worst_px = std::max(r.worst_px, std::hypot(ob.x_px - at(ob.frame).x, ob.y_px - at(ob.frame).y));
-    }
-    if (hint != nullptr) *hint = tracker.loss_hint();
-    std::printf("step %.4f s, search %d: lost %d of %d, worst %.2f px\n", step_s, search_px, r.lost, r.frames, r.worst_px);
-    return r;
+    return track_path(scene, o, 15, at, options, hint);
   };
   const Result at30 = run(1 / 30.0, 0, nullptr);
   EXPECT_LE(at30.lost, 1);
