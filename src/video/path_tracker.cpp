@@ -916,7 +916,10 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(UnionCorrelation& u, const cv:
     refined.push_back({pk, &done->second});
   }
   std::sort(refined.begin(), refined.end(), [](const auto& a, const auto& b) { return a.first.v > b.first.v; });
-  for (auto& [pk, r] : refined) {
+  for (auto& item : refined) {
+    // (Not a structured binding: clang 14, the sanitizer build's compiler, cannot capture one.)
+    Peak& pk = item.first;
+    UnionCorrelation::Refined* r = item.second;
     if (static_cast<int>(peaks.size()) >= kPerWindow || pk.v < kCandidateFloor) break;
     const bool dup = std::any_of(peaks.begin(), peaks.end(), [&](const Peak& q) {
       return std::hypot(q.at.x - pk.at.x, q.at.y - pk.at.y) <= suppress;
