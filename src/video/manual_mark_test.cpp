@@ -223,7 +223,9 @@ TEST(ManualMark, PathTrackerSearchesTheFramesAroundAMarkForItsLook) {
       continue;
     }
     EXPECT_FALSE(!ob.lost && !on_object(ob)) << "frame " << ob.frame << " reported elsewhere";
-    if (ob.frame < kChangeFrame) EXPECT_TRUE(on_object(ob)) << ob.frame;
+    if (ob.frame < kChangeFrame) {
+      EXPECT_TRUE(on_object(ob)) << ob.frame;
+    }
     fixed += ob.frame >= kChangeFrame && on_object(ob);
   }
   // Backward (12..21) and forward (23..30) from the mark: the bar is found in every frame.
@@ -506,7 +508,9 @@ TEST(ManualMark, RetrackingASessionChoosesThePathAmongTheCandidatesFound) {
     };
     EXPECT_TRUE(a.lost || on_ball(a)) << "re-tracked frame " << a.frame << " off the ball";
     EXPECT_TRUE(b.lost || on_ball(b)) << "freshly tracked frame " << b.frame << " off the ball";
-    if (!a.lost) EXPECT_FALSE(b.lost) << a.frame;
+    if (!a.lost) {
+      EXPECT_FALSE(b.lost) << a.frame;
+    }
     differ_from_plain += a.lost != plain.series[0].rows[k].lost;
   }
   EXPECT_GT(differ_from_plain, 5);

@@ -227,7 +227,7 @@ PathForeground path_foreground(const std::vector<StepCandidates>& steps, const s
   if (!path_fg.empty()) out.typical = upper_median(std::move(path_fg));
   // The object where the user clicked it is the object: a path that spends most of its points
   // on a still patch (reached across a gap) does not lower what the object's difference is.
-  if (T > 0 && !steps[0].c.empty() && std::isfinite(steps[0].c[0].fg)) out.typical = std::max(out.typical, steps[0].c[0].fg);
+  if (T > 0 && !steps[0].c.empty()) out.typical = std::max(out.typical, steps[0].c[0].fg);
   // Per run of consecutive path frames, its median difference (an object slowing down at the
   // turning point of a swing sits in the background median for a frame or two; a run of
   // still texture after a gap does throughout).

@@ -16,7 +16,6 @@
 #include <cstdio>
 #include <limits>
 #include <map>
-#include <optional>
 
 namespace tribolab::video {
 namespace {
@@ -212,17 +211,6 @@ struct SearchWindows {
   cv::Rect uni;
 };
 
-// A template with its mean taken out, for ncc_at: the correlation's numerator is then the
-// image's plain dot product with it.
-struct ZeroMeanTemplate {
-  cv::Mat t;          // CV_32F
-  double norm2 = 0;   // sum of its squares
-  explicit ZeroMeanTemplate(const cv::Mat& templ) {
-    t = templ - cv::mean(templ)[0];
-    norm2 = t.dot(t);
-  }
-};
-
 // The correlation over the windows' union: at full resolution (`all`), or at the coarse level
 // `level` (`coarse_res`, 1/2^level resolution) with the union's grey levels at every level
 // (`pyramid[0]` full resolution) and the look's templates kept for the refinement.
@@ -243,7 +231,6 @@ struct UnionCorrelation {
     cv::Point2d off;
   };
   std::map<std::array<int, 4>, Refined> refined;
-  std::optional<ZeroMeanTemplate> zero_mean;  // the full-resolution template's, for the ridges
 };
 
 // A correlation peak in one window.
@@ -323,28 +310,21 @@ double peak_ridge_px(const cv::Mat& res, cv::Point at, double v) {
   });
 }
 
-// The correlation coefficient of the template placed with its top-left corner at `at` in `img`
-// (CV_32F), as normed_correlation computes it (0 where the image or the template is flat).
-double ncc_at(const cv::Mat& img, const ZeroMeanTemplate& zt, cv::Point at) {
-  const cv::Mat roi = img(cv::Rect(at, zt.t.size()));
-  const double n = double(zt.t.total()), s = cv::sum(roi)[0], vi = roi.dot(roi) - s * s / n;
-  if (!(vi > 1e-9 * n * (s / n) * (s / n) && vi > 0 && zt.norm2 > 0)) return 0;
-  return roi.dot(zt.t) / std::sqrt(vi * zt.norm2);
-}
-
-// The ridge through the placement `at` (correlating `v`) of the template in `img`, at full
-// resolution: read from `map` (the correlation at the placements `map_at` + its pixels: the
-// refinement's) where it holds the placement, else taken there alone (ncc_at), along the four
-// axes only. A coarse peak's ridge measured on the half-resolution map is blurred by the
-// pyramid: a streak's ridge came out shorter there than at full resolution, and was reported.
-double full_ridge_px(const cv::Mat& img, const ZeroMeanTemplate& zt, const cv::Mat& map, cv::Point map_at,
-                     cv::Point at, double v) {
+// The ridge through the placement `at` (correlating `v`) of the template `templ` in `img`, at
+// full resolution: read from `map` (the correlation at the placements `map_at` + its pixels: the
+// refinement's) where it holds the placement, else correlated there alone, along the four axes
+// only. A coarse peak's ridge measured on the half-resolution map is blurred by the pyramid: a
+// streak's ridge came out shorter there than at full resolution, and was reported.
+double full_ridge_px(const cv::Mat& img, const cv::Mat& templ, const cv::Mat& map, cv::Point map_at, cv::Point at,
+                     double v) {
   const float floor = static_cast<float>(v - kRidgeDrop);
   const cv::Rect in_map(map_at, map.size());
+  cv::Mat one;
   return ridge_px(at, [&](cv::Point q) {
     if (in_map.contains(q)) return map.at<float>(q - map_at) >= floor;
-    return q.x >= 0 && q.y >= 0 && q.x <= img.cols - zt.t.cols && q.y <= img.rows - zt.t.rows &&
-           ncc_at(img, zt, q) >= floor;
+    if (q.x < 0 || q.y < 0 || q.x > img.cols - templ.cols || q.y > img.rows - templ.rows) return false;
+    normed_correlation_sums(img(cv::Rect(q, templ.size())), templ, one);
+    return one.at<float>(0, 0) >= floor;
   });
 }
 
@@ -730,6 +710,13 @@ void PathTracker::update(const Frame& frame) {
 std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
   std::vector<Anchor> anchors;
   const int n = static_cast<int>(steps.size());
+  // A place within a template of an anchor already taken adds nothing.
+  const auto add_unless_near = [&](cv::Point2d at, int age) {
+    const bool near = std::any_of(anchors.begin(), anchors.end(), [&](const Anchor& a) {
+      return std::hypot(a.at.x - at.x, a.at.y - at.y) < p;
+    });
+    if (!near) anchors.push_back({at, age});
+  };
   for (int k = n - 1, used = 0; k >= 0 && used < 3; --k) {
     // A marked step's only place is its mark (the path passes there).
     const auto mk = k > 0 ? marks.find(steps[k].index) : marks.end();
@@ -743,13 +730,7 @@ std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
     for (const Candidate& c : steps[k].c) best.push_back(&c);
     std::sort(best.begin(), best.end(), [](const Candidate* a, const Candidate* b) { return a->ncc > b->ncc; });
     const std::size_t take = used == 0 ? 3 : 1;
-    for (std::size_t i = 0; i < best.size() && i < take; ++i) {
-      const cv::Point2d at(best[i]->x, best[i]->y);
-      const bool near = std::any_of(anchors.begin(), anchors.end(), [&](const Anchor& a) {
-        return std::hypot(a.at.x - at.x, a.at.y - at.y) < p;
-      });
-      if (!near) anchors.push_back({at, n - k});
-    }
+    for (std::size_t i = 0; i < best.size() && i < take; ++i) add_unless_near({best[i]->x, best[i]->y}, n - k);
     ++used;
   }
   // And where the last two confident sightings (best candidate correlating 0.9 or more)
@@ -764,10 +745,7 @@ std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
   // step since, as the path's gate allows. One seen up to 3 steps back is an anchor above (the
   // best candidate of its step).
   if (lead_frames[1] >= 0 && n - lead_frames[1] > 3 && n - lead_frames[1] <= opt.max_gap_frames + 1) {
-    const bool near = std::any_of(anchors.begin(), anchors.end(), [&](const Anchor& a) {
-      return std::hypot(a.at.x - lead[1].x, a.at.y - lead[1].y) < p;
-    });
-    if (!near) anchors.push_back({lead[1], n - lead_frames[1]});
+    add_unless_near(lead[1], n - lead_frames[1]);
   }
   // And the next mark, when it is at most three steps ahead: the object is within reach of it.
   const auto next = marks.upper_bound(index - 1);
@@ -927,10 +905,7 @@ std::vector<Peak> PathTracker::Impl::coarse_peaks(UnionCorrelation& u, const cv:
     if (dup) continue;
     // The ridge at full resolution, measured once for a peak kept (the walk costs a few
     // placements' correlations).
-    if (r->ridge < 0) {
-      if (!u.zero_mean) u.zero_mean.emplace(u.templ[0]);
-      r->ridge = full_ridge_px(u.pyramid[0], *u.zero_mean, r->map, r->map_at, r->at, r->v);
-    }
+    if (r->ridge < 0) r->ridge = full_ridge_px(u.pyramid[0], u.templ[0], r->map, r->map_at, r->at, r->v);
     pk.ridge = r->ridge;
     peaks.push_back(pk);
   }

@@ -454,7 +454,7 @@ struct FrameReader::Impl {
     if (!input.frame_times_from_timestamps) return nominal;
     const double ms = cap->get(cv::CAP_PROP_POS_MSEC);
     const double stamp = (input.time.start_time_s + ms / 1000) * input.time.time_scale;
-    const double tol = 0.25 * input.time.frame_duration_s * input.time.time_scale;
+    const double tol = 0.25 * input.time.real_frame_s();
     if (!std::isfinite(ms) || !(stamp > last_t)) return nominal;
     if (timestamped == 0 && !(std::abs(stamp - nominal) > tol)) return nominal;
     if (timestamped++ == 0) {

@@ -43,6 +43,8 @@ struct TimeBase {
   double frame_duration_s = 0;  ///< s per frame as filmed or as Tracker says (delta_t / 1000)
   double time_scale = 1;        ///< real seconds per video second (slow motion 240->30: 0.125)
   double t(int frame) const;
+  /// Real seconds between two consecutive frames (0 when unknown).
+  double real_frame_s() const { return frame_duration_s * time_scale; }
 };
 
 /// Tracker's image position of a point minus OpenCV's (docs/theory.md#video-input-and-the-track-video-workflow):

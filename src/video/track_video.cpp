@@ -426,7 +426,7 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
       // The path tracker's reach is a speed: it needs the real time between two tracked frames
       // (a slow-motion clip's time scale included; 0 when the time base is unknown).
       PathTrackerOptions path = options.path;
-      if (path.step_s == 0) path.step_s = in.clip.step_size * in.time.frame_duration_s * in.time.time_scale;
+      if (path.step_s == 0) path.step_s = in.clip.step_size * in.time.real_frame_s();
       w.tracker = PathTracker(path);
     }
     resolve_start(w, in);

@@ -51,7 +51,7 @@ io::TrkWriteSpec trk_spec(const TrackVideoResult& result, const std::string& trk
   spec.step_count = in.clip.step_count > 0 ? in.clip.step_count : result.frames;
   // Tracker's frame duration holds any slow-motion factor: real seconds per frame
   spec.start_time_ms = in.time.start_time_s * in.time.time_scale * 1000;
-  spec.frame_duration_ms = in.time.frame_duration_s * in.time.time_scale * 1000;
+  spec.frame_duration_ms = in.time.real_frame_s() * 1000;
   spec.video_frame_count = in.info.frame_count;
   if (in.video_file.empty()) {
     warnings.push_back(trk_path + ": the video lives inside " + in.input +
