@@ -113,6 +113,55 @@ void normed_correlation_sums(const cv::Mat& img, const cv::Mat& templ, cv::Mat& 
   }
 }
 
+void half_resolution(const cv::Mat& src, cv::Mat& dst) {
+  CV_Assert(src.type() == CV_32FC1 && !src.empty());
+  const int w = src.cols, h = src.rows, dw = (w + 1) / 2, dh = (h + 1) / 2;
+  // BORDER_REFLECT_101 (for an image of one pixel, that pixel).
+  const auto reflect = [](int i, int n) { return n == 1 ? 0 : cv::borderInterpolate(i, n, cv::BORDER_REFLECT_101); };
+  constexpr int kLanes = cv::v_float32::nlanes;
+  const cv::v_float32 six = cv::vx_setall_f32(6), four = cv::vx_setall_f32(4), scale = cv::vx_setall_f32(1.0f / 256);
+  // Each output row: the five source rows about twice its index summed down (weights 1 4 6 4 1),
+  // then across at every other column (OpenCV's universal intrinsics, even and odd columns
+  // loaded apart), scaled by 1/256 at the end as pyrDown does.
+  thread_local std::vector<float> down;
+  down.resize(static_cast<std::size_t>(w));
+  dst.create(dh, dw, CV_32F);
+  for (int y = 0; y < dh; ++y) {
+    const int c = 2 * y;
+    const float* r0 = src.ptr<float>(reflect(c - 2, h));
+    const float* r1 = src.ptr<float>(reflect(c - 1, h));
+    const float* r2 = src.ptr<float>(reflect(c, h));
+    const float* r3 = src.ptr<float>(reflect(c + 1, h));
+    const float* r4 = src.ptr<float>(reflect(c + 2, h));
+    float* v = down.data();
+    int x = 0;
+    for (; x + kLanes <= w; x += kLanes) {
+      const cv::v_float32 mid = cv::vx_load(r1 + x) + cv::vx_load(r3 + x);
+      cv::v_store(v + x, cv::v_fma(cv::vx_load(r2 + x), six, cv::v_fma(mid, four, cv::vx_load(r0 + x) + cv::vx_load(r4 + x))));
+    }
+    for (; x < w; ++x) v[x] = r2[x] * 6 + (r1[x] + r3[x]) * 4 + r0[x] + r4[x];
+    float* d = dst.ptr<float>(y);
+    const auto across = [&](int i) {
+      const int k = 2 * i;
+      return (v[reflect(k, w)] * 6 + (v[reflect(k - 1, w)] + v[reflect(k + 1, w)]) * 4 + v[reflect(k - 2, w)] +
+              v[reflect(k + 2, w)]) *
+             (1.0f / 256);
+    };
+    // Output column 0 reflects; from column 1 on, kLanes columns at a time read
+    // v[2x - 2 .. 2x + 2 kLanes + 1], inside while 2x + 2 kLanes + 1 <= w - 1.
+    int i = 0;
+    for (; i < std::min(1, dw); ++i) d[i] = across(i);
+    for (; 2 * i + 2 * kLanes + 1 <= w - 1; i += kLanes) {
+      cv::v_float32 a, b, e, f, g, unused;
+      cv::v_load_deinterleave(v + 2 * i - 2, a, b);  // v[2x - 2], v[2x - 1]
+      cv::v_load_deinterleave(v + 2 * i, e, f);      // v[2x], v[2x + 1]
+      cv::v_load_deinterleave(v + 2 * i + 2, g, unused);  // v[2x + 2]
+      cv::v_store(d + i, cv::v_fma(e, six, cv::v_fma(b + f, four, a + g)) * scale);
+    }
+    for (; i < dw; ++i) d[i] = across(i);
+  }
+}
+
 void normed_correlation(const cv::Mat& img, const cv::Mat& templ, cv::Mat& result) {
   CV_Assert(img.type() == CV_32FC1 && templ.type() == CV_32FC1 && img.cols >= templ.cols && img.rows >= templ.rows);
   const int area = templ.cols * templ.rows;

@@ -21,6 +21,15 @@ void normed_correlation(const cv::Mat& img, const cv::Mat& templ, cv::Mat& resul
 /// The same by direct sums over each placement (cheapest for few placements: a refinement).
 void normed_correlation_sums(const cv::Mat& img, const cv::Mat& templ, cv::Mat& result);
 
+/// The next level of a Gaussian pyramid of `src` (CV_32F, one channel): cv::pyrDown's image
+/// ((cols + 1) / 2 x (rows + 1) / 2, the kernel [1 4 6 4 1] / 16 each way at every other pixel,
+/// borders reflected as BORDER_REFLECT_101) to float rounding, computed on the calling thread.
+/// OpenCV 4.6 splits every pyrDown between its worker threads whatever the image's size, and
+/// for a search window's few thousand pixels waking a worker costs more CPU than it saves: the
+/// 1080p path tracker spent 107 ms of CPU per clip with pyrDown, 91 ms without
+/// (docs/benchmarks.md#tracking-at-1080p).
+void half_resolution(const cv::Mat& src, cv::Mat& dst);
+
 /// The largest template area (px) that normed_correlation() correlates by direct sums.
 inline constexpr int kDirectNccMaxArea = 225;
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace tribolab::video {
 namespace {
@@ -104,6 +105,24 @@ TEST(NormedCorrelation, AFlatPlacementIsZeroAndAFlatTemplateZeroEverywhere) {
   cv::minMaxLoc(r, &lo, &hi);
   EXPECT_EQ(lo, 0.0);
   EXPECT_EQ(hi, 0.0);
+}
+
+// half_resolution is cv::pyrDown's image, to float rounding, for every size down to a pixel
+// (odd and even sides: the reflected border on both), with texture up to the edges.
+TEST(HalfResolution, EqualsOpenCVsPyrDownForEverySize) {
+  for (const cv::Size size : {cv::Size(1, 1), cv::Size(1, 6), cv::Size(5, 1), cv::Size(2, 3), cv::Size(4, 4),
+                              cv::Size(7, 5), cv::Size(33, 20), cv::Size(101, 64), cv::Size(160, 121)}) {
+    cv::Mat img(size, CV_32F);
+    cv::RNG rng(static_cast<std::uint64_t>(size.area()));
+    rng.fill(img, cv::RNG::UNIFORM, 0, 255);
+    cv::Mat ours, theirs;
+    half_resolution(img, ours);
+    cv::pyrDown(img, theirs);
+    ASSERT_EQ(ours.size(), theirs.size()) << size;
+    // Float rounding of sums of grey levels up to 255 (~3e-5); a wrong tap or border is off by
+    // grey levels.
+    EXPECT_LT(cv::norm(ours, theirs, cv::NORM_INF), 1e-3) << size;
+  }
 }
 
 }  // namespace

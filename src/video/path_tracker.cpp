@@ -205,10 +205,37 @@ using detail::Look;
 using detail::turn_source_side;
 using detail::turned;
 
-// The anchors' search windows (each within reach of its anchor, clipped to the image) and their union, px.
+// The anchors' search windows (each within reach of its anchor, clipped to the image, with its
+// anchor's age) in groups, px: windows near each other are correlated over their union, and
+// windows far apart each over their own (a candidate hundreds of px from the object would
+// otherwise make the union span the empty picture between them).
 struct SearchWindows {
   std::vector<cv::Rect> wins;
-  cv::Rect uni;
+  std::vector<int> age;       // each window's anchor's age, steps
+  std::vector<int> group_of;  // each window's group
+  std::vector<cv::Rect> uni;  // each group's union
+  // The windows of anchors at most `max_age` steps back, in the same groups (each group's union
+  // the smaller one of its windows kept; a group with none kept is empty).
+  SearchWindows newest(int max_age) const;
+};
+
+// The grey images of a step's groups of windows: each group's union with a 2 px ring (a
+// sub-pixel peak rounds to at most a pixel outside its window), made only there.
+struct GroupImages {
+  std::vector<cv::Rect> region;
+  std::vector<cv::Mat> gray;
+  // The Gaussian pyramids (CV_32F, half_resolution) made, with the union each is of: every look
+  // searched in a step reads the one of its union.
+  mutable std::vector<std::pair<cv::Rect, std::vector<cv::Mat>>> pyr;
+  // Group g's pyramid of `uni` (inside its region) down to `level` (made once per union).
+  std::vector<cv::Mat> pyramid(int g, const cv::Rect& uni, int level) const;
+  // The group whose region holds the point (the first; -1: none).
+  int holding(cv::Point at) const {
+    for (std::size_t g = 0; g < region.size(); ++g) {
+      if (region[g].contains(at)) return static_cast<int>(g);
+    }
+    return -1;
+  }
 };
 
 // The correlation over the windows' union: at full resolution (`all`), or at the coarse level
@@ -350,7 +377,7 @@ struct PathTracker::Impl {
   double reach = 0;        // largest motion per frame, px
   Look start_look;         // the object at the click
   std::vector<Look> looks;  // the object at the user's marks (add_look), by frame
-  cv::Mat region_buf;      // the grey image of a step's windows (reused from step to step)
+  std::vector<cv::Mat> region_bufs;  // the grey images of a step's groups of windows (reused from step to step)
   // The candidates found in every step, steps[0] the start (the click): they do not depend on
   // the marks, so that finish() can be run again with other marks without a frame.
   std::vector<StepCandidates> steps;
@@ -458,23 +485,22 @@ struct PathTracker::Impl {
   // The looks searched in the frame `index`: the start's, then those of the nearest marks
   // before and after it.
   std::vector<Look*> looks_for(int index);
-  // The candidates of one look in the windows `w`; `gray` is the grey image of a rectangle at
-  // `origin` holding the windows' union and a pixel around it.
-  // Returns the best peak's correlation (-1: none).
-  double find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look, bool other_look,
-                    int suppress, FoundPeaks& found) const;
+  // The candidates of one look in the windows `w`; `img` holds the grey image of each group's
+  // union and a pixel around it. Returns the best peak's correlation (-1: none).
+  double find_peaks(const SearchWindows& w, const GroupImages& img, Look& look, bool other_look, int suppress,
+                    FoundPeaks& found) const;
   // The peaks of one look in each of the windows `w` (find_peaks without adding them).
-  std::vector<std::vector<Peak>> window_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin,
-                                              Look& look, int suppress) const;
-  // The correlation of `templ` around candidate `c` (within kRefinePx of it; `gray` the grey
-  // image of a rectangle at `origin`). With `take`, where it is better than c's, c moves to its
-  // peak and takes it. Returns that correlation (-1: none).
-  double rescore(const cv::Mat& gray, cv::Point origin, const cv::Mat& templ, Candidate& c, bool take) const;
-  // The anchors' windows in the image and their union.
+  std::vector<std::vector<Peak>> window_peaks(const SearchWindows& w, const GroupImages& img, Look& look,
+                                              int suppress) const;
+  // The correlation of `templ` around candidate `c` (within kRefinePx of it, in the grey image
+  // of the group holding it). With `take`, where it is better than c's, c moves to its peak
+  // and takes it. Returns that correlation (-1: none).
+  double rescore(const GroupImages& img, const cv::Mat& templ, Candidate& c, bool take) const;
+  // The anchors' windows in the image, in groups.
   SearchWindows search_windows(const std::vector<Anchor>& anchors) const;
-  // A look's correlation over the windows' union, `gray` its grey image (coarse for a large
-  // union; makes the look's coarse templates).
-  UnionCorrelation correlate_union(const cv::Mat& gray, Look& look) const;
+  // A look's correlation over `uni`, the union of some of group g's windows (coarse for a
+  // large union; makes the look's coarse templates).
+  UnionCorrelation correlate_union(const GroupImages& img, int g, const cv::Rect& uni, Look& look) const;
   // The best kPerWindow peaks of one window (`rrect` in the union's result) found coarse to fine.
   std::vector<Peak> coarse_peaks(UnionCorrelation& u, const cv::Rect& rrect, int suppress) const;
   // Adds a window's peaks as candidates, a peak already found from another window once (from
@@ -784,34 +810,86 @@ SearchWindows PathTracker::Impl::search_windows(const std::vector<Anchor>& ancho
                          cv::Rect(cv::Point(), size);
     if (win.width <= p + 2 || win.height <= p + 2) continue;
     w.wins.push_back(win);
-    w.uni = w.uni.area() == 0 ? win : (w.uni | win);
+    w.age.push_back(a.age);
+  }
+  // Groups: each window alone at first; two groups are joined while the union of both costs no
+  // more to correlate than the two apart (its area at most the sum of theirs).
+  std::vector<cv::Rect> groups(w.wins.begin(), w.wins.end());
+  std::vector<int> of(w.wins.size());
+  for (std::size_t i = 0; i < of.size(); ++i) of[i] = static_cast<int>(i);
+  for (bool joined = true; joined;) {
+    joined = false;
+    for (std::size_t a = 0; a < groups.size() && !joined; ++a) {
+      for (std::size_t b = a + 1; b < groups.size() && !joined; ++b) {
+        if (groups[a].area() == 0 || groups[b].area() == 0) continue;
+        const cv::Rect both = groups[a] | groups[b];
+        if (static_cast<double>(both.area()) > static_cast<double>(groups[a].area()) + groups[b].area()) continue;
+        groups[a] = both;
+        groups[b] = cv::Rect();
+        for (int& g : of) {
+          if (g == static_cast<int>(b)) g = static_cast<int>(a);
+        }
+        joined = true;
+      }
+    }
+  }
+  // Numbered in order of their first window.
+  std::vector<int> number(groups.size(), -1);
+  for (std::size_t i = 0; i < of.size(); ++i) {
+    if (number[of[i]] < 0) {
+      number[of[i]] = static_cast<int>(w.uni.size());
+      w.uni.push_back(groups[of[i]]);
+    }
+    w.group_of.push_back(number[of[i]]);
   }
   return w;
 }
 
-UnionCorrelation PathTracker::Impl::correlate_union(const cv::Mat& gray, Look& look) const {
+SearchWindows SearchWindows::newest(int max_age) const {
+  SearchWindows out;
+  out.uni.assign(uni.size(), cv::Rect());
+  for (std::size_t i = 0; i < wins.size(); ++i) {
+    if (age[i] > max_age) continue;
+    out.wins.push_back(wins[i]);
+    out.age.push_back(age[i]);
+    out.group_of.push_back(group_of[i]);
+    cv::Rect& u = out.uni[group_of[i]];
+    u = u.area() == 0 ? wins[i] : (u | wins[i]);
+  }
+  return out;
+}
+
+std::vector<cv::Mat> GroupImages::pyramid(int g, const cv::Rect& uni, int level) const {
+  auto made = std::find_if(pyr.begin(), pyr.end(), [&](const auto& m) { return m.first == uni; });
+  if (made == pyr.end()) {
+    pyr.emplace_back(uni, std::vector<cv::Mat>(1));
+    made = pyr.end() - 1;
+    gray[static_cast<std::size_t>(g)](uni - region[static_cast<std::size_t>(g)].tl()).convertTo(made->second[0], CV_32F);
+  }
+  std::vector<cv::Mat>& levels = made->second;
+  while (static_cast<int>(levels.size()) <= level) {
+    levels.emplace_back();
+    half_resolution(levels[levels.size() - 2], levels.back());
+  }
+  return levels;
+}
+
+UnionCorrelation PathTracker::Impl::correlate_union(const GroupImages& img, int g, const cv::Rect& uni,
+                                                    Look& look) const {
   UnionCorrelation u;
-  u.coarse = !gray.empty() && p >= kCoarseMinPatch &&
-             (gray.rows * gray.cols > kCoarseMinArea || size.area() >= kCoarseImageArea);
-  if (!gray.empty()) {
-    u.pyramid.resize(1);
-    gray.convertTo(u.pyramid[0], CV_32F);
-    if (u.coarse) {
-      u.level = p >= kQuarterMinPatch ? 2 : 1;
-      while (static_cast<int>(look.coarse.size()) < u.level) {
-        look.coarse.emplace_back();
-        cv::pyrDown(look.coarse.size() == 1 ? look.templ : look.coarse[look.coarse.size() - 2], look.coarse.back());
-      }
-      u.templ.push_back(look.templ);
-      for (int l = 1; l <= u.level; ++l) {
-        u.pyramid.emplace_back();
-        cv::pyrDown(u.pyramid[l - 1], u.pyramid[l]);
-        u.templ.push_back(look.coarse[l - 1]);
-      }
-      normed_correlation(u.pyramid[u.level], u.templ[u.level], u.coarse_res);
-    } else {
-      normed_correlation(u.pyramid[0], look.templ, u.all);
+  u.coarse = p >= kCoarseMinPatch && (uni.area() > kCoarseMinArea || size.area() >= kCoarseImageArea);
+  u.level = u.coarse ? (p >= kQuarterMinPatch ? 2 : 1) : 0;
+  u.pyramid = img.pyramid(g, uni, u.level);
+  if (u.coarse) {
+    while (static_cast<int>(look.coarse.size()) < u.level) {
+      look.coarse.emplace_back();
+      half_resolution(look.coarse.size() == 1 ? look.templ : look.coarse[look.coarse.size() - 2], look.coarse.back());
     }
+    u.templ.push_back(look.templ);
+    for (int l = 1; l <= u.level; ++l) u.templ.push_back(look.coarse[l - 1]);
+    normed_correlation(u.pyramid[u.level], u.templ[u.level], u.coarse_res);
+  } else {
+    normed_correlation(u.pyramid[0], look.templ, u.all);
   }
   return u;
 }
@@ -985,13 +1063,18 @@ void PathTracker::Impl::update(const Frame& f) {
   const int suppress = std::max(2, static_cast<int>(std::lround(radius)));
   FoundPeaks found;
   // The anchors' windows overlap (the oldest anchor's covers most of the image): the
-  // correlation is computed once over their union, and each window reads its part of it
-  // (the same values as correlating the window alone: the template inside the window).
+  // correlation is computed once over the union of each group of windows near each other,
+  // and each window reads its part of it (the same values as correlating the window alone:
+  // the template inside the window).
   const SearchWindows w = search_windows(anchors);
-  // Only the union's grey image is made, with a 2 px ring for the candidates' patches (a
-  // sub-pixel peak rounds to at most a pixel outside its window).
-  const cv::Rect region = (w.uni + cv::Point(-2, -2) + cv::Size(4, 4)) & cv::Rect(cv::Point(), size);
-  const cv::Mat gray = w.wins.empty() ? cv::Mat() : gray_region(f, region, region_buf);
+  // Only the groups' grey images are made, each with a 2 px ring for the candidates' patches
+  // (a sub-pixel peak rounds to at most a pixel outside its window).
+  GroupImages img;
+  if (region_bufs.size() < w.uni.size()) region_bufs.resize(w.uni.size());
+  for (std::size_t g = 0; g < w.uni.size(); ++g) {
+    img.region.push_back((w.uni[g] + cv::Point(-2, -2) + cv::Size(4, 4)) & cv::Rect(cv::Point(), size));
+    img.gray.push_back(gray_region(f, img.region.back(), region_bufs[g]));
+  }
   // Each look is searched in the windows: the start's, and the looks of the user's nearest
   // marks before and after this frame (a corrected frame shows the tracker the object as it
   // looks there, both ways). A candidate's correlation is its best look's.
@@ -1002,24 +1085,20 @@ void PathTracker::Impl::update(const Frame& f) {
   // A turned look is searched in the windows of the newest anchors only (a step's worth of
   // motion from the last step's candidates, not the older anchors' wide windows): a turning
   // object is one followed from step to step, and this bounds the search's cost.
-  std::vector<Anchor> newest;
-  for (const Anchor& a : anchors) {
-    if (a.age <= 1) newest.push_back(a);
-  }
-  const SearchWindows near = search_windows(newest);
+  const SearchWindows near = w.newest(1);
   double best = -1;
   std::vector<double> primary;  // each look's best, as taken or at its heading
   FoundPeaks at_heading;        // the peaks of the looks turned to their headings
   int heading_searches = 0;
   if (!w.wins.empty()) {
     for (Look* look : searched) {
-      primary.push_back(find_peaks(w, gray, region.tl(), *look, look != &start_look, suppress, found));
+      primary.push_back(find_peaks(w, img, *look, look != &start_look, suppress, found));
       // (Where the look as taken is found confidently, its heading is not searched.)
       // (A spinning object's heading is carried on at its turn rate: Look::expected.)
       const int expected = look->expected(n, kTurnStep);
       Look* at = expected % 360 != 0 && primary.back() < kConfident ? turned(*look, expected, p) : nullptr;
       if (at != nullptr && !near.wins.empty()) {
-        const double v = find_peaks(near, gray, region.tl(), *at, true, suppress, at_heading);
+        const double v = find_peaks(near, img, *at, true, suppress, at_heading);
         ++heading_searches;
         primary.back() = std::max(primary.back(), v);
         if (v >= kConfident) look->seen_at(at->deg, n, false);  // the expected turn confirmed
@@ -1081,7 +1160,7 @@ void PathTracker::Impl::update(const Frame& f) {
         Look* t = turned(*look, look->expected(n, kTurnStep) + d, p);
         if (t == nullptr) continue;
         for (std::size_t i : moving) {
-          const double v = rescore(gray, region.tl(), t->templ, out.c[i], false);
+          const double v = rescore(img, t->templ, out.c[i], false);
           if (v > taken.v || (v == taken.v && !taken.found)) taken = {v, t->deg, true};
         }
       }
@@ -1094,30 +1173,40 @@ void PathTracker::Impl::update(const Frame& f) {
         turned_frame = f.index;
       }
       const Look* t = turned(*look, taken.deg, p);  // (a turned copy's address changes as more are made)
-      for (std::size_t i : moving) rescore(gray, region.tl(), t->templ, out.c[i], true);
+      for (std::size_t i : moving) rescore(img, t->templ, out.c[i], true);
     }
   }
   steps.push_back(std::move(out));
 }
 
-std::vector<std::vector<Peak>> PathTracker::Impl::window_peaks(const SearchWindows& w, const cv::Mat& gray,
-                                                              cv::Point origin, Look& look, int suppress) const {
+std::vector<std::vector<Peak>> PathTracker::Impl::window_peaks(const SearchWindows& w, const GroupImages& img,
+                                                              Look& look, int suppress) const {
   // A large union with a template that survives halving is searched coarse to fine: the
   // correlation at half (a large template: quarter) resolution finds each window's peaks, each
   // refined within 3 px at every finer level (a quarter, or a sixteenth, of the work over the
-  // union; a peak seen from several windows is refined once).
-  UnionCorrelation u = correlate_union(gray(w.uni - origin), look);
+  // union; a peak seen from several windows is refined once). Each group of windows is
+  // correlated over its own union.
+  std::vector<UnionCorrelation> u(w.uni.size());
+  for (std::size_t g = 0; g < w.uni.size(); ++g) {
+    if (w.uni[g].area() > 0) u[g] = correlate_union(img, static_cast<int>(g), w.uni[g], look);
+  }
   std::vector<std::vector<Peak>> out;
-  for (const cv::Rect& win : w.wins) {
-    // The window in the union's result.
-    const cv::Rect rrect(win.x - w.uni.x, win.y - w.uni.y, win.width - p + 1, win.height - p + 1);
-    out.push_back(u.coarse ? coarse_peaks(u, rrect, suppress) : fine_peaks(u.all(rrect), suppress));
+  for (std::size_t i = 0; i < w.wins.size(); ++i) {
+    // The window in its union's result.
+    const cv::Rect& win = w.wins[i];
+    const cv::Rect& uni = w.uni[w.group_of[i]];
+    UnionCorrelation& c = u[w.group_of[i]];
+    const cv::Rect rrect(win.x - uni.x, win.y - uni.y, win.width - p + 1, win.height - p + 1);
+    out.push_back(c.coarse ? coarse_peaks(c, rrect, suppress) : fine_peaks(c.all(rrect), suppress));
   }
   return out;
 }
 
-double PathTracker::Impl::rescore(const cv::Mat& gray, cv::Point origin, const cv::Mat& templ, Candidate& c,
-                                  bool take) const {
+double PathTracker::Impl::rescore(const GroupImages& img, const cv::Mat& templ, Candidate& c, bool take) const {
+  const int g = img.holding(c.at);
+  if (g < 0) return -1;
+  const cv::Mat& gray = img.gray[g];
+  const cv::Point origin = img.region[g].tl();
   const cv::Point at = c.at - origin;
   const cv::Rect near = cv::Rect(at.x - h - kRefinePx, at.y - h - kRefinePx, p + 2 * kRefinePx, p + 2 * kRefinePx) &
                         cv::Rect(0, 0, gray.cols, gray.rows);
@@ -1139,11 +1228,12 @@ double PathTracker::Impl::rescore(const cv::Mat& gray, cv::Point origin, const c
   return v;
 }
 
-double PathTracker::Impl::find_peaks(const SearchWindows& w, const cv::Mat& gray, cv::Point origin, Look& look,
-                                     bool other_look, int suppress, FoundPeaks& found) const {
-  const std::vector<std::vector<Peak>> peaks = window_peaks(w, gray, origin, look, suppress);
+double PathTracker::Impl::find_peaks(const SearchWindows& w, const GroupImages& img, Look& look, bool other_look,
+                                     int suppress, FoundPeaks& found) const {
+  const std::vector<std::vector<Peak>> peaks = window_peaks(w, img, look, suppress);
   for (std::size_t i = 0; i < w.wins.size(); ++i) {
-    add_window_peaks(peaks[i], w.wins[i], gray, origin, suppress, other_look, found);
+    const int g = w.group_of[i];
+    add_window_peaks(peaks[i], w.wins[i], img.gray[g], img.region[g].tl(), suppress, other_look, found);
   }
   return best_peak(peaks);
 }

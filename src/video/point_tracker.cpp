@@ -204,14 +204,14 @@ struct PointTracker::Impl {
     return templ;
   }
 
-  // Half side of the half-resolution template (cv::pyrDown of the window and template).
+  // Half side of the half-resolution template (half_resolution of the window and template).
   int coarse_half() const { return (half() + 1) / 2; }
   // The template at half resolution: a full-resolution template two px wider than twice the
-  // coarse one, pyrDown (coarse pixel i at full pixel 2i, both centred), cropped so that no
+  // coarse one, halved (coarse pixel i at full pixel 2i, both centred), cropped so that no
   // coarse pixel depends on the pyramid's border rule.
   const cv::Mat& make_coarse_template(double angle) {
     const int hc = coarse_half();
-    cv::pyrDown(make_template(angle, 2 * hc + 2), coarse_scratch);
+    half_resolution(make_template(angle, 2 * hc + 2), coarse_scratch);
     coarse_scratch(cv::Rect(1, 1, 2 * hc + 1, 2 * hc + 1)).copyTo(coarse_templ);
     return coarse_templ;
   }
@@ -295,7 +295,7 @@ void PointTracker::Impl::coarse_to_fine(const std::vector<double>& angles, doubl
   }
   best_map.create(full, CV_32F);
   best_map.setTo(-1);
-  cv::pyrDown(window, window_coarse);
+  half_resolution(window, window_coarse);
   // Coarse angles: every other one (each angle within one step of a coarse one).
   std::vector<std::size_t> coarse_of;  // index into angles
   for (std::size_t i = 0; i < angles.size(); i += 2) coarse_of.push_back(i);
