@@ -11,7 +11,7 @@ that are confidently wrong (a position > 10 px from the mark). The figures come 
 `track video`'s own `vs_human` (src/video/track_video.cpp, compare_with_human).
 
     tools/track_eval.py [--tribolab build/bin/tribolab] [--markdown] [--mark-every N] [--corrections]
-                        [PROJECT...] [-- OPTIONS]
+                        [--marks-scatter] [PROJECT...] [-- OPTIONS]
 
 A user's corrections are measured with the human's own marks given as `--mark`:
   --mark-every N   the marks of every Nth frame after the start given; "to correct" and "wrong"
@@ -19,6 +19,14 @@ A user's corrections are measured with the human's own marks given as `--mark`:
   --corrections    a user who corrects the first frame to correct, tracks again and goes on
                    until none is left: "marks" is how many corrections that took (each with its
                    re-tracking, as the studio does).
+
+How far the human's own marks scatter (no tracking):
+  --marks-scatter  each mark against the cubic through the marks of the two frames before and
+                   the two after it (for an object moving smoothly over five frames that cubic
+                   is within a fraction of a px of the path; CarInLoop's car, turning ~20 degrees
+                   per frame round a ~200 px loop: ~0.5 px), printed as the median, 90th
+                   percentile and largest distance and the frames farthest off. A mark's own
+                   error enters 1.39 times (the cubic's weights -1/6, 2/3, 2/3, -1/6).
 """
 import argparse
 import glob
@@ -94,6 +102,39 @@ def between_marks(d, correct_px, given):
             "confidently_wrong": sum(1 for v in placed if v > 10)}
 
 
+def marks_scatter(marks):
+    """{frame: distance (px) of the mark from the cubic through the marks two frames either side}."""
+    out = {}
+    for f, (x, y) in marks.items():
+        near = [marks.get(f + d) for d in (-2, -1, 1, 2)]
+        if any(q is None for q in near):
+            continue
+        px = (-near[0][0] + 4 * near[1][0] + 4 * near[2][0] - near[3][0]) / 6
+        py = (-near[0][1] + 4 * near[1][1] + 4 * near[2][1] - near[3][1]) / 6
+        out[f] = math.hypot(x - px, y - py)
+    return out
+
+
+def print_marks_scatter(projects, tribolab):
+    print("{:28} {:12} {:>6} {:>8} {:>8} {:>8}  {}".format("project", "track", "marks", "median", "p90", "max",
+                                                         "farthest (frame: px)"))
+    for proj in projects:
+        imp, err = run_json([tribolab, "track", "import", proj, "--json"])
+        if imp is None:
+            print(f"{proj}: track import failed: {err}", file=sys.stderr)
+            continue
+        for name in imp["track_names"]:
+            d = marks_scatter(human_marks(proj, name))
+            if not d:
+                continue
+            v = sorted(d.values())
+            pick = lambda q: v[min(len(v) - 1, int(q * len(v)))]
+            far = sorted(d.items(), key=lambda kv: -kv[1])[:3]
+            print("{:28} {:12} {:>6} {:>8.2f} {:>8.2f} {:>8.2f}  {}".format(
+                os.path.basename(proj), name, len(v), pick(0.5), pick(0.9), v[-1],
+                " ".join(f"{f}: {x:.1f}" for f, x in far)))
+
+
 def run_json(cmd):
     p = subprocess.run(cmd, capture_output=True, text=True)
     try:
@@ -115,9 +156,13 @@ def main():
     ap.add_argument("--markdown", action="store_true", help="print a Markdown table")
     ap.add_argument("--mark-every", type=int, default=0, help="give the human's marks of every Nth frame")
     ap.add_argument("--corrections", action="store_true", help="count a user's corrections until none is left")
+    ap.add_argument("--marks-scatter", action="store_true", help="how far the human's marks scatter about a smooth path")
     ap.add_argument("projects", nargs="*")
     a = ap.parse_args(argv)
     projects = a.projects or sorted(glob.glob(os.path.join(root, "..", "shared", "data", "tracker", "*.trz")))
+    if a.marks_scatter:
+        print_marks_scatter(projects, a.tribolab)
+        return
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "t.csv")
