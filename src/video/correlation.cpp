@@ -137,7 +137,8 @@ void half_resolution(const cv::Mat& src, cv::Mat& dst) {
     int x = 0;
     for (; x + kLanes <= w; x += kLanes) {
       const cv::v_float32 mid = cv::vx_load(r1 + x) + cv::vx_load(r3 + x);
-      cv::v_store(v + x, cv::v_fma(cv::vx_load(r2 + x), six, cv::v_fma(mid, four, cv::vx_load(r0 + x) + cv::vx_load(r4 + x))));
+      const cv::v_float32 outer = cv::vx_load(r0 + x) + cv::vx_load(r4 + x);
+      cv::v_store(v + x, cv::v_fma(cv::vx_load(r2 + x), six, cv::v_fma(mid, four, outer)));
     }
     for (; x < w; ++x) v[x] = r2[x] * 6 + (r1[x] + r3[x]) * 4 + r0[x] + r4[x];
     float* d = dst.ptr<float>(y);

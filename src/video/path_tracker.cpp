@@ -864,7 +864,8 @@ std::vector<cv::Mat> GroupImages::pyramid(int g, const cv::Rect& uni, int level)
   if (made == pyr.end()) {
     pyr.emplace_back(uni, std::vector<cv::Mat>(1));
     made = pyr.end() - 1;
-    gray[static_cast<std::size_t>(g)](uni - region[static_cast<std::size_t>(g)].tl()).convertTo(made->second[0], CV_32F);
+    const std::size_t k = static_cast<std::size_t>(g);
+    gray[k](uni - region[k].tl()).convertTo(made->second[0], CV_32F);
   }
   std::vector<cv::Mat>& levels = made->second;
   while (static_cast<int>(levels.size()) <= level) {
