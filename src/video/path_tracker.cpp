@@ -215,7 +215,7 @@ struct SearchWindows {
   std::vector<int> group_of;  // each window's group
   std::vector<cv::Rect> uni;  // each group's union
   // The windows of anchors at most `max_age` steps back, in the same groups (each group's union
-  // the smaller one of its windows kept; a group with none kept is empty).
+  // that of its windows kept, inside the group's; empty where none is kept).
   SearchWindows newest(int max_age) const;
 };
 
