@@ -200,6 +200,26 @@ BENCHMARK(BM_NormedCorrelation)
     ->ArgsProduct({{7, 60, 140, 480}, {7, 13, 25}, {0, 1}})
     ->Unit(benchmark::kMicrosecond);
 
+/// The half-resolution image of a 1080p path tracker's union (~170 px square, CV_32F):
+/// video::half_resolution on the calling thread (0) against cv::pyrDown (1), which OpenCV 4.6
+/// splits between its worker threads at any size. CPU time is the calling thread's only: the
+/// worker's share (and its spinning afterwards) shows in bench/video1080_bench's cpu_all_ms.
+void BM_HalfResolution(benchmark::State& state) {
+  cv::Mat img(170, 170, CV_32F);
+  cv::RNG rng(2);
+  rng.fill(img, cv::RNG::UNIFORM, 0, 255);
+  cv::Mat d;
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      video::half_resolution(img, d);
+    } else {
+      cv::pyrDown(img, d);
+    }
+    benchmark::DoNotOptimize(d.data);
+  }
+}
+BENCHMARK(BM_HalfResolution)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();
