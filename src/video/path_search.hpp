@@ -38,6 +38,7 @@ struct Candidate {
   double ncc = 0;       // correlation with the first frame's template
   double cost = 0;      // unary cost
   double fg = 0;        // difference from the background, grey levels
+  double fg_quick = -1; // the same on about 8 x 8 pixels, against the background seen so far (-1: not judged)
   cv::Mat patch;        // CV_8U, template-sized grey patch at the rounded position
   cv::Point at;         // the patch's centre, px
   bool manual = false;  // the user's mark: the step's only candidate

@@ -93,6 +93,10 @@ constexpr double kFgHalf = 8;
 // A run of consecutive path points differing from the background by less than this share of
 // the path's median difference (medians over the run and over the path) is background (when that median is well above noise, 2 kFgHalf).
 constexpr double kFgShare = 0.15;
+// The background seen so far is trusted once it holds this many samples: their median leaves
+// out an object that covered a pixel in fewer than half of them. Before, where the object was
+// at the start reads as moving (its place in the first frames is in the samples).
+constexpr std::size_t kTrustedSamples = 8;
 // A user's click scatters about the object's point by this, px per 640 px of image width (at
 // least 1 px): half the correction distance (4 px per 640), so that a click a user would not
 // correct lies within 2 sigma. The acceleration through a mark allows for it (PathSearch::accel),
@@ -757,6 +761,18 @@ std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
     std::sort(best.begin(), best.end(), [](const Candidate* a, const Candidate* b) { return a->ncc > b->ncc; });
     const std::size_t take = used == 0 ? 3 : 1;
     for (std::size_t i = 0; i < best.size() && i < take; ++i) add_unless_near({best[i]->x, best[i]->y}, n - k);
+    if (used == 0 && samples.size() >= kTrustedSamples && steps[k].c.front().fg_quick >= 0) {
+      // And the newest step's best three by correlation and difference from the background
+      // together (the unary cost on the quick difference): still texture correlating 0.83 in
+      // every frame outranks a spinning sticker that correlates 0.69 in one, and would take
+      // the search away from it for good (grid throw 4).
+      const auto quick_cost = [](const Candidate* c) {
+        return (1 - c->ncc) / kNccScale + kFgWeight * (1 - c->fg_quick / (c->fg_quick + kFgHalf));
+      };
+      std::stable_sort(best.begin(), best.end(),
+                       [&](const Candidate* a, const Candidate* b) { return quick_cost(a) < quick_cost(b); });
+      for (std::size_t i = 0; i < best.size() && i < take; ++i) add_unless_near({best[i]->x, best[i]->y}, n - k);
+    }
     ++used;
   }
   // And where the last two confident sightings (best candidate correlating 0.9 or more)
@@ -1129,6 +1145,13 @@ void PathTracker::Impl::update(const Frame& f) {
       *same = std::move(c);
     }
   }
+  // Where no look is found confidently, each candidate's difference from the background seen so
+  // far, judged on about 8 x 8 pixels of the object's square (a quick look): the turns below
+  // and the next step's anchors use it.
+  if (best < kConfident) {
+    const int fg_stride = std::max(1, static_cast<int>(std::ceil(radius)) / 4);
+    for (Candidate& c : out.c) c.fg_quick = foreground(c, fg_stride);
+  }
   // A template that turns: where no look is found confidently, each is correlated turned a
   // little and a little more either way from its heading (+-kTurnStep, +-2 kTurnStep) around
   // each candidate kept (within kRefinePx). The best turn that matches a candidate kTurnGain
@@ -1141,10 +1164,9 @@ void PathTracker::Impl::update(const Frame& f) {
     // 8 x 8 pixels of the object's square: a quick look) take part: a turned look matches some
     // texture better than the look did (a heading turned by it moved the windows and the costs,
     // and a look-alike's path became certain).
-    const int stride = std::max(1, static_cast<int>(std::ceil(radius)) / 4);
     std::vector<std::size_t> moving;
     for (std::size_t i = 0; i < out.c.size(); ++i) {
-      if (foreground(out.c[i], stride) >= kFgHalf) moving.push_back(i);
+      if (out.c[i].fg_quick >= kFgHalf) moving.push_back(i);
     }
     struct Match {
       double v;

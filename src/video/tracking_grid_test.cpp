@@ -90,8 +90,10 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // background check measured against the object where it was clicked (a path of 34 still
 // texture points after 26 on the sticker had made the path's median the texture's: throw 4):
 // lost 12.5 % of the sticker's frames (115; throws 0 and 6 at 60 fps 28 -> 3 and 27 -> 17,
-// throw 4 61 -> 36), the centre's as before, none wrong. The lost shares below are regression
-// bounds, not goals.
+// throw 4 61 -> 36), the centre's as before, none wrong. With a step's best three by cost on
+// a quick difference from the background also anchors where nothing was confident (7 Dec
+// 2026): the sticker's 9.0 % (83; throw 4 36 -> 5, throw 10 5 -> 4), the centre's as before,
+// none wrong. The lost shares below are regression bounds, not goals.
 // GRID_ONLY=i runs throw i alone (the same throw: its parameters are drawn all the same; the
 // bounds are not checked then).
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
@@ -150,7 +152,7 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   std::printf("%d throws: sticker lost %d of %d (%.1f %%), centre lost %d of %d (%.1f %%), wrong %d\n", n, lost[0],
               frames[0], 100 * sticker_lost, lost[1], frames[1], 100 * centre_lost, wrong);
   if (n == 12 && !std::getenv("GRID_FRAME") && !std::getenv("GRID_ONLY")) {
-    EXPECT_LE(sticker_lost, 0.15);
+    EXPECT_LE(sticker_lost, 0.10);
     EXPECT_LE(centre_lost, 0.30);
   }
 }
