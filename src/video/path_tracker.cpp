@@ -762,10 +762,11 @@ std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
     const std::size_t take = used == 0 ? 3 : 1;
     for (std::size_t i = 0; i < best.size() && i < take; ++i) add_unless_near({best[i]->x, best[i]->y}, n - k);
     if (used == 0 && samples.size() >= kTrustedSamples && steps[k].c.front().fg_quick >= 0) {
-      // And the newest step's best three by correlation and difference from the background
-      // together (the unary cost on the quick difference): still texture correlating 0.83 in
-      // every frame outranks a spinning sticker that correlates 0.69 in one, and would take
-      // the search away from it for good (grid throw 4).
+      // And, where no look was found confidently in the newest step (its candidates' quick
+      // difference from the background is judged only then), its best three by correlation and
+      // that difference together (the unary cost on the quick difference): still texture
+      // correlating 0.83 in every frame outranks a spinning sticker that correlates 0.69 in
+      // one, and would take the search away from it for good (grid throw 4).
       const auto quick_cost = [](const Candidate* c) {
         return (1 - c->ncc) / kNccScale + kFgWeight * (1 - c->fg_quick / (c->fg_quick + kFgHalf));
       };
