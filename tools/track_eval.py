@@ -11,7 +11,7 @@ that are confidently wrong (a position > 10 px from the mark). The figures come 
 `track video`'s own `vs_human` (src/video/track_video.cpp, compare_with_human).
 
     tools/track_eval.py [--tribolab build/bin/tribolab] [--markdown] [--mark-every N] [--corrections]
-                        [--marks-scatter] [PROJECT...] [-- OPTIONS]
+                        [--frames] [--marks-scatter] [PROJECT...] [-- OPTIONS]
 
 A user's corrections are measured with the human's own marks given as `--mark`:
   --mark-every N   the marks of every Nth frame after the start given; "to correct" and "wrong"
@@ -19,6 +19,11 @@ A user's corrections are measured with the human's own marks given as `--mark`:
   --corrections    a user who corrects the first frame to correct, tracks again and goes on
                    until none is left: "marks" is how many corrections that took (each with its
                    re-tracking, as the studio does).
+
+Which frames (with any of the above):
+  --frames         after the table, each track's frames to correct or confidently wrong: the
+                   distance to the human's mark, px ("-": no position; "!": confidently wrong,
+                   > 10 px, which at 1920 px can lie within the 12 px correction distance).
 
 How far the human's own marks scatter (no tracking):
   --marks-scatter  each mark against the cubic through the marks of the two frames before and
@@ -157,6 +162,7 @@ def main():
     ap.add_argument("--mark-every", type=int, default=0, help="give the human's marks of every Nth frame")
     ap.add_argument("--corrections", action="store_true", help="count a user's corrections until none is left")
     ap.add_argument("--marks-scatter", action="store_true", help="how far the human's marks scatter about a smooth path")
+    ap.add_argument("--frames", action="store_true", help="list each track's frames to correct after the table")
     ap.add_argument("projects", nargs="*")
     a = ap.parse_args(argv)
     projects = a.projects or sorted(glob.glob(os.path.join(root, "..", "shared", "data", "tracker", "*.trz")))
@@ -164,6 +170,7 @@ def main():
         print_marks_scatter(projects, a.tribolab)
         return
     rows = []
+    listed = []  # (project, track, [(frame, distance or None)]) for --frames
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "t.csv")
         for proj in projects:
@@ -176,7 +183,7 @@ def main():
                     continue
                 base = os.path.basename(proj)
                 cmd = [a.tribolab, "track", "video", proj, "--from-track", name, "--out", out, "--json"] + extra
-                marks = human_marks(proj, name) if a.mark_every or a.corrections else {}
+                marks = human_marks(proj, name) if a.mark_every or a.corrections or a.frames else {}
                 start = min(marks) if marks else 0
                 given = [k for k in marks if k > start and (k - start) % a.mark_every == 0] if a.mark_every else []
                 j, err = run_json(cmd + mark_options(name, marks, given))
@@ -187,14 +194,18 @@ def main():
                         break
                     given.append(bad[0])
                     j, err = run_json(cmd + mark_options(name, marks, given))
+                correct_px = j["tracks"][name]["vs_human"]["correct_px"] if j is not None else 0
                 if j is not None and (a.mark_every or a.corrections):
                     # The given marks lie on the human's: the frames between them are what is measured.
-                    correct_px = j["tracks"][name]["vs_human"]["correct_px"]
                     j["tracks"][name]["vs_human"] = between_marks(distances(out, name, marks, start, given), correct_px, given)
                 if j is None:
                     rows.append((base, name, None, err.splitlines()[-1] if err else "failed"))
                     continue
                 rows.append((base, name, j["tracks"][name]["vs_human"], ""))
+                if a.frames:
+                    d = distances(out, name, marks, start, given)
+                    listed.append((base, name, [(k, v) for k, v in sorted(d.items())
+                                                if v is None or v > correct_px or v > 10]))
     fmt = "| {} | {} | {} | {} | {} | {} | {} | {} |" if a.markdown else "{:28} {:12} {:>6} {:>8} {:>8} {:>8} {:>10} {:>6}"
     head = "marks given" if a.mark_every or a.corrections else "marks"
     print(fmt.format("project", "track", head, "tracked", "median", "p90", "to correct", "wrong"))
@@ -214,6 +225,9 @@ def main():
         first = f"{h['given']} of {h['marks'] + h['given']}" if "given" in h else h["marks"]
         print(fmt.format(base, name, first, f"{100 * h['frames'] / m:.0f} %", dist[0], dist[1],
                          f"{100 * share:.1f} %", h["confidently_wrong"]))
+    for base, name, bad in listed:
+        shown = " ".join(f"{k}: -" if v is None else f"{k}: {v:.1f}{'!' if v > 10 else ''}" for k, v in bad)
+        print(f"{base} {name}: {len(bad)} frame(s) to correct or wrong{' (frame: px) ' + shown if bad else ''}")
     print(f"worst share to correct: {100 * worst:.1f} %", file=sys.stderr)
 
 
