@@ -50,6 +50,8 @@ import zipfile
 # Tracker puts pixel (j, i)'s centre at (j + 0.5, i + 0.5), tribolab (OpenCV) at (j, i):
 # src/video/source.hpp, kTrackerPixelOffset.
 TRACKER_PIXEL_OFFSET = 0.5
+# A position farther than this from the human's mark is confidently wrong (the issue's bar), px.
+WRONG_PX = 10
 
 
 def human_marks(project, track):
@@ -104,7 +106,7 @@ def between_marks(d, correct_px, given):
     q = lambda p: placed[min(len(placed) - 1, int(p * len(placed)))] if placed else 0.0
     return {"marks": len(d), "frames": len(placed), "median_px": q(0.5), "p90_px": q(0.9), "given": len(given),
             "to_correct": sum(1 for v in d.values() if v is None or v > correct_px),
-            "confidently_wrong": sum(1 for v in placed if v > 10)}
+            "confidently_wrong": sum(1 for v in placed if v > WRONG_PX)}
 
 
 def marks_scatter(marks):
@@ -205,7 +207,7 @@ def main():
                 if a.frames:
                     d = distances(out, name, marks, start, given)
                     listed.append((base, name, [(k, v) for k, v in sorted(d.items())
-                                                if v is None or v > correct_px or v > 10]))
+                                                if v is None or v > correct_px or v > WRONG_PX]))
     fmt = "| {} | {} | {} | {} | {} | {} | {} | {} |" if a.markdown else "{:28} {:12} {:>6} {:>8} {:>8} {:>8} {:>10} {:>6}"
     head = "marks given" if a.mark_every or a.corrections else "marks"
     print(fmt.format("project", "track", head, "tracked", "median", "p90", "to correct", "wrong"))
@@ -226,7 +228,7 @@ def main():
         print(fmt.format(base, name, first, f"{100 * h['frames'] / m:.0f} %", dist[0], dist[1],
                          f"{100 * share:.1f} %", h["confidently_wrong"]))
     for base, name, bad in listed:
-        shown = " ".join(f"{k}: -" if v is None else f"{k}: {v:.1f}{'!' if v > 10 else ''}" for k, v in bad)
+        shown = " ".join(f"{k}: -" if v is None else f"{k}: {v:.1f}{'!' if v > WRONG_PX else ''}" for k, v in bad)
         print(f"{base} {name}: {len(bad)} frame(s) to correct or wrong{' (frame: px) ' + shown if bad else ''}")
     print(f"worst share to correct: {100 * worst:.1f} %", file=sys.stderr)
 

@@ -93,6 +93,8 @@ constexpr double kFgHalf = 8;
 // A run of consecutive path points differing from the background by less than this share of
 // the path's median difference (medians over the run and over the path) is background (when that median is well above noise, 2 kFgHalf).
 constexpr double kFgShare = 0.15;
+// A candidate's unary cost (above) from its correlation and its difference from the background.
+double unary_cost(double ncc, double fg) { return (1 - ncc) / kNccScale + kFgWeight * (1 - fg / (fg + kFgHalf)); }
 // The background seen so far is trusted once it holds this many samples: their median leaves
 // out an object that covered a pixel in fewer than half of them. Before, where the object was
 // at the start reads as moving (its place in the first frames is in the samples).
@@ -767,11 +769,9 @@ std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
       // that difference together (the unary cost on the quick difference): still texture
       // correlating 0.83 in every frame outranks a spinning sticker that correlates 0.69 in
       // one, and would take the search away from it for good (grid throw 4).
-      const auto quick_cost = [](const Candidate* c) {
-        return (1 - c->ncc) / kNccScale + kFgWeight * (1 - c->fg_quick / (c->fg_quick + kFgHalf));
-      };
-      std::stable_sort(best.begin(), best.end(),
-                       [&](const Candidate* a, const Candidate* b) { return quick_cost(a) < quick_cost(b); });
+      std::stable_sort(best.begin(), best.end(), [](const Candidate* a, const Candidate* b) {
+        return unary_cost(a->ncc, a->fg_quick) < unary_cost(b->ncc, b->fg_quick);
+      });
       for (std::size_t i = 0; i < best.size() && i < take; ++i) add_unless_near({best[i]->x, best[i]->y}, n - k);
     }
     ++used;
@@ -1244,10 +1244,13 @@ double PathTracker::Impl::rescore(const GroupImages& img, const cv::Mat& templ, 
   double fitted = v;
   const cv::Point2d off = subpixel_peak(res, in, &fitted);
   if (take && std::min(1.0, fitted) > c.ncc) {
-    const double spread = c.spread;
+    // The same object within kRefinePx: its ridge and its quick difference from the background
+    // (judged on a few px of its square) stay.
+    const double spread = c.spread, fg_quick = c.fg_quick;
     c = make_candidate(gray, origin, origin.x + near.x + in.x + off.x + h, origin.y + near.y + in.y + off.y + h,
                        std::min(1.0, fitted));
     c.spread = spread;
+    c.fg_quick = fg_quick;
   }
   return v;
 }
@@ -1275,7 +1278,7 @@ void PathTracker::Impl::compute_unary_costs() {
     for (Candidate& c : this->steps[t].c) {
       c.fg = foreground(c, 1, &median, &known);
       if (t == 0) continue;
-      c.cost = (1 - c.ncc) / kNccScale + kFgWeight * (1 - c.fg / (c.fg + kFgHalf));
+      c.cost = unary_cost(c.ncc, c.fg);
     }
   }
   fg_done = true;
