@@ -6,6 +6,7 @@
 #include "video/correlation.hpp"
 #include "video/correlation_peak.hpp"
 #include "video/path_search.hpp"
+#include "video/scene_memory.hpp"
 #include "numerics/statistics.hpp"
 
 #include <opencv2/imgproc.hpp>
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 
 namespace tribolab::video {
 namespace {
@@ -79,10 +81,8 @@ constexpr double kWindowSpeeds = 2;
 // The automatic reach is a quarter of the image's smaller side per this much real time, s:
 // per frame at 30 fps (PathTrackerOptions::step_s).
 constexpr double kReachPeriodS = 1.0 / 30;
-// Background samples kept (grey frames spread over the clip, one per block of `stride`;
-// when full, every other one is dropped and the stride doubles): the temporal median of at
-// most 16 frames.
-constexpr std::size_t kMaxSamples = 16;
+// The background is the temporal median of the frames a SceneMemory keeps (at most 16, spread
+// over the clip, at least 1/30 s apart: start()).
 // Cost of a candidate: (1 - correlation) / kNccScale + kFgWeight * (1 - fg / (fg + kFgHalf)),
 // fg the mean absolute difference from the background over the object, grey levels. A
 // frame without the object costs kMissCost (video/path_search.hpp): a candidate correlating 0.7 with the object and
@@ -389,8 +389,7 @@ struct PathTracker::Impl {
   std::vector<StepCandidates> steps;
   std::map<int, ManualMark> marks;    // by frame index
   bool fg_done = false;               // the candidates' fg and cost are computed (at the first finish())
-  std::vector<cv::Mat> samples;       // background samples (grey)
-  int stride = 1, seen = 0;
+  SceneMemory background;             // background samples (grey frames spread over the clip)
   cv::Point2d lead[2];            // the last two confident sightings, px
   int lead_frames[2] = {-1, -1};  // their step indices (-1: none yet)
   // Loss causes counted by finish().
@@ -402,24 +401,6 @@ struct PathTracker::Impl {
   double ridge_max_px = 0;  // the longest ridge a reported point may have (finish())
   int turned_deg = 0, turned_frame = -1;  // the largest turn a look was seen at, and where (update())
   double turn_ncc = 1;  // the start's look against itself turned by 2 kTurnStep degrees (start())
-
-  void sample(const Frame& f) {
-    // One frame per block of `stride`, at a scrambled place in the block: a regular stride
-    // aliases with a periodic motion (a pendulum of period 15 frames sampled every 15 frames
-    // puts the bob into the background median). Only a sampled frame's grey image is made whole.
-    const unsigned block = static_cast<unsigned>(seen / stride);
-    const int place = static_cast<int>(((block * 2654435761u) >> 8) % static_cast<unsigned>(stride));
-    if (seen++ % stride != place) return;
-    cv::Mat own;
-    const cv::Mat g = gray_region(f, cv::Rect(cv::Point(), size), own);
-    samples.push_back(g.data == own.data ? own : g.clone());
-    if (samples.size() >= kMaxSamples) {
-      std::vector<cv::Mat> kept;
-      for (std::size_t i = 0; i < samples.size(); i += 2) kept.push_back(samples[i]);
-      samples = std::move(kept);
-      stride *= 2;
-    }
-  }
 
   // A candidate at (x, y) px; `gray` is the grey image of a rectangle at `origin` holding its
   // patch (or, where the patch leaves it, sharing that border with the image).
@@ -440,7 +421,7 @@ struct PathTracker::Impl {
   // samples that no longer change: finish()).
   double foreground(const Candidate& c, int stride = 1, cv::Mat* median = nullptr, cv::Mat* known = nullptr) const {
     const int r = std::clamp(static_cast<int>(std::ceil(radius)), 1, h);
-    std::vector<unsigned char> v(samples.size());
+    std::vector<unsigned char> v(background.size());
     double sum = 0;
     int n = 0;
     for (int y = -r; y <= r; y += stride) {
@@ -453,7 +434,7 @@ struct PathTracker::Impl {
         if (median != nullptr && known->at<unsigned char>(iy, ix) != 0) {
           bg = median->at<unsigned char>(iy, ix);
         } else {
-          for (std::size_t k = 0; k < samples.size(); ++k) v[k] = samples[k].at<unsigned char>(iy, ix);
+          for (std::size_t k = 0; k < background.size(); ++k) v[k] = background.gray(k).at<unsigned char>(iy, ix);
           std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
           bg = v[v.size() / 2];
           if (median != nullptr) {
@@ -641,12 +622,10 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   m.steps.clear();
   m.marks.clear();
   m.fg_done = false;
-  m.samples.clear();
   // At least 1/30 s of real time between samples: frames closer hold a moving object at
   // nearly the same place, so they add conversions of whole frames, not information (at 240 fps
   // the first 16 frames sampled one by one were the clip's first 1/15 s).
-  m.stride = m.opt.step_s > 0 ? std::max(1, static_cast<int>(kReachPeriodS / m.opt.step_s + 1e-9)) : 1;
-  m.seen = 0;
+  m.background.reset(m.opt.step_s > 0 ? std::max(1, static_cast<int>(kReachPeriodS / m.opt.step_s + 1e-9)) : 1);
   m.turned_deg = 0;
   m.turned_frame = -1;
   m.lead[1] = cv::Point2d(x_px, y_px);
@@ -658,7 +637,7 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   s.c.back().x = x_px;
   s.c.back().y = y_px;
   m.steps.push_back(std::move(s));
-  m.sample(first);
+  m.background.remember(first, std::nullopt);
   Observation o;
   o.frame = first.index;
   o.x_px = x_px;
@@ -763,7 +742,7 @@ std::vector<Anchor> PathTracker::Impl::find_anchors(int index) const {
     std::sort(best.begin(), best.end(), [](const Candidate* a, const Candidate* b) { return a->ncc > b->ncc; });
     const std::size_t take = used == 0 ? 3 : 1;
     for (std::size_t i = 0; i < best.size() && i < take; ++i) add_unless_near({best[i]->x, best[i]->y}, n - k);
-    if (used == 0 && samples.size() >= kTrustedSamples && steps[k].c.front().fg_quick >= 0) {
+    if (used == 0 && background.size() >= kTrustedSamples && steps[k].c.front().fg_quick >= 0) {
       // And, where no look was found confidently in the newest step (its candidates' quick
       // difference from the background is judged only then), its best three by correlation and
       // that difference together (the unary cost on the quick difference): still texture
@@ -1069,7 +1048,7 @@ void PathTracker::Impl::update(const Frame& f) {
   if (frame_size(f) != size || (f.bgr.empty() && f.gray.type() != CV_8UC1)) {
     throw InputError(name, "frame " + std::to_string(f.index) + " has no image of the start frame's size");
   }
-  sample(f);
+  background.remember(f, std::nullopt);
   // Where the object can be: within reach (times the frames elapsed) of the best three
   // candidates of the last step that had any and of the best one of the two such steps
   // before it (anchors). Each anchor's window gives its own best few peaks, so that junk

@@ -5,7 +5,8 @@
 // well as sharp, the correlation peak is refined to sub-pixel, and every point gets a score
 // (normalised correlation, 1 = perfect). Below the score threshold the point is lost: the
 // search widens along the motion model for a few frames (a hand passing) and the frames it
-// could not bridge are reported, never silently replaced by another object.
+// could not bridge are reported, never silently replaced by another object; a match that shows
+// what its place showed when the object was elsewhere (still texture) is lost too.
 #pragma once
 
 #include "video/frame.hpp"

@@ -28,12 +28,14 @@ struct GridRun {
   std::string hint;  // the tracker's loss hint
 };
 
-// Follows one point (`point` gives its truth per frame) over the film's frames.
-GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const std::vector<cv::Point2d>& truth) {
+// Follows one point (`truth` per frame) over the film's frames, with the path tracker (the
+// default) or the frame tracker (`frame_tracker`, track video's --point-tracker frame).
+GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const std::vector<cv::Point2d>& truth,
+               bool frame_tracker) {
   std::vector<Observation> obs;
   std::string hint;
   int patch = 0;
-  if (std::getenv("GRID_FRAME")) {
+  if (frame_tracker) {
     PointTracker tracker;
     try {
       tracker.start(frames[0], truth[0].x, truth[0].y, "point");
@@ -80,9 +82,8 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // tracker: no frame confidently wrong (farther than 10 px per 640 px of width); lost 38.0 % of
 // the sticker's frames (349 of 918: it spins 20-45 degrees per frame at 60 fps, beyond the
 // turns the path tracker searches) and 62.2 % of the centre's (571 of 918: a 91 px template of
-// a plain turning ellipse, the ellipse tracker's case). The frame tracker (GRID_FRAME=1, for
-// the comparison in docs/benchmarks.md) loses 3.9 % of the sticker's frames but places 3 of
-// them 70 px off. With a spinning look's turn rate (Look::expected, the same night): lost
+// a plain turning ellipse, the ellipse tracker's case). The frame tracker loses 3.9 % of the
+// sticker's frames but places 3 of them 70 px off. With a spinning look's turn rate (Look::expected, the same night): lost
 // 19.6 % of the sticker's frames (180 of 918; the 60 fps throws, 20-45 degrees per frame, still
 // mostly lost, and throw 4's 11 px sticker in all 61 frames, as before) and 27.5 % of the
 // centre's (252), none wrong. With the reach a speed (given the clip's time base, as track
@@ -93,14 +94,18 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // throw 4 61 -> 36), the centre's as before, none wrong. With a step's best three by cost on
 // a quick difference from the background also anchors where nothing was confident (7 Dec
 // 2026): the sticker's 9.0 % (83; throw 4 36 -> 5, throw 10 5 -> 4), the centre's as before,
-// none wrong. The lost shares below are regression bounds, not goals.
+// none wrong. The frame tracker (the tracker a lost sticker's hint names) follows the sticker
+// as well since that day: with still texture told from the object (SceneMemory: a match that
+// shows what its place showed when the object was elsewhere is lost), 4.4 % of the sticker's
+// frames lost (40), none wrong (3 wrong before, up to 71 px: throw 3). The lost shares below
+// are regression bounds, not goals.
 // GRID_ONLY=i runs throw i alone (the same throw: its parameters are drawn all the same; the
 // bounds are not checked then).
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   std::mt19937 rng(20261206);
   std::uniform_real_distribution<double> height(0.5, 1.2), theta(-60, 60), omega(-50, 50), vx(0.5, 2.5);
   const int fps_choice[] = {60, 120, 240};
-  int frames[2] = {0, 0}, lost[2] = {0, 0}, wrong = 0;
+  int frames[4] = {}, lost[4] = {}, wrong[4] = {};
   const int n = std::getenv("GRID_N") ? std::atoi(std::getenv("GRID_N")) : 12;
   for (int i = 0; i < n; ++i) {
     ThrowFilmOptions o;
@@ -131,29 +136,42 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
       centre.push_back({s.cx_px, s.cy_px});
       sticker.push_back({s.cx_px + s.mark_u_px * std::cos(s.angle_rad), s.cy_px - s.mark_u_px * std::sin(s.angle_rad)});
     }
-    for (const int which : {0, 1}) {
-      const GridRun r = follow(film, clip, which == 0 ? sticker : centre);
-      std::printf("throw %2d (%3.0f fps, h %.2f m, theta %5.1f deg, omega %5.1f rad/s, vx %.2f m/s) %s: %d frames, lost %d, wrong %d, worst %.2f px\n",
+    // Runs: the sticker and the centre by the path tracker, the sticker by the frame tracker
+    // (the tracker a lost sticker's hint names), and, with GRID_FRAME=1 (for the comparison in
+    // docs/benchmarks.md, not checked: a plain ball's centre is the ellipse tracker's case), the
+    // centre by the frame tracker.
+    const int runs = std::getenv("GRID_FRAME") ? 4 : 3;
+    for (int which = 0; which < runs; ++which) {
+      const bool on_sticker = which % 2 == 0, by_frame = which >= 2;
+      const GridRun r = follow(film, clip, on_sticker ? sticker : centre, by_frame);
+      std::printf("throw %2d (%3.0f fps, h %.2f m, theta %5.1f deg, omega %5.1f rad/s, vx %.2f m/s) %s%s: %d frames, lost %d, wrong %d, worst %.2f px\n",
                   i, o.render.fps, o.motion.height, o.motion.theta_deg, o.motion.omega, o.motion.vx,
-                  which == 0 ? "sticker" : "centre", r.frames, r.lost, r.wrong, r.worst_px);
+                  on_sticker ? "sticker" : "centre", by_frame ? " (frame tracker)" : "", r.frames, r.lost, r.wrong,
+                  r.worst_px);
       frames[which] += r.frames;
       lost[which] += r.lost;
-      wrong += r.wrong;
-      if (!std::getenv("GRID_FRAME")) {
-        EXPECT_EQ(r.wrong, 0) << "throw " << i << (which == 0 ? " sticker" : " centre");
-        // A spinning sticker lost in most frames: the hint names the tracker that follows it.
-        if (which == 0 && r.lost * 2 > r.frames) {
-          EXPECT_NE(plain_fields(r.hint).find("point_tracker frame"), std::string::npos) << plain_fields(r.hint);
-        }
+      wrong[which] += r.wrong;
+      if (which == 3) continue;
+      EXPECT_EQ(r.wrong, 0) << "throw " << i << (on_sticker ? " sticker" : " centre")
+                            << (by_frame ? " by the frame tracker" : "");
+      // A spinning sticker lost in most frames: the hint names the tracker that follows it.
+      if (which == 0 && r.lost * 2 > r.frames) {
+        EXPECT_NE(plain_fields(r.hint).find("point_tracker frame"), std::string::npos) << plain_fields(r.hint);
       }
     }
   }
-  const double sticker_lost = double(lost[0]) / frames[0], centre_lost = double(lost[1]) / frames[1];
-  std::printf("%d throws: sticker lost %d of %d (%.1f %%), centre lost %d of %d (%.1f %%), wrong %d\n", n, lost[0],
-              frames[0], 100 * sticker_lost, lost[1], frames[1], 100 * centre_lost, wrong);
-  if (n == 12 && !std::getenv("GRID_FRAME") && !std::getenv("GRID_ONLY")) {
-    EXPECT_LE(sticker_lost, 0.10);
-    EXPECT_LE(centre_lost, 0.30);
+  const char* name[4] = {"sticker", "centre", "sticker (frame tracker)", "centre (frame tracker)"};
+  std::printf("%d throws:", n);
+  for (int which = 0; which < 4; ++which) {
+    if (frames[which] == 0) continue;
+    std::printf("%s %s lost %d of %d (%.1f %%), wrong %d", which ? ";" : "", name[which], lost[which], frames[which],
+                100.0 * lost[which] / frames[which], wrong[which]);
+  }
+  std::printf("\n");
+  if (n == 12 && !std::getenv("GRID_ONLY")) {
+    EXPECT_LE(double(lost[0]) / frames[0], 0.10);
+    EXPECT_LE(double(lost[1]) / frames[1], 0.30);
+    EXPECT_LE(double(lost[2]) / frames[2], 0.06);
   }
 }
 
