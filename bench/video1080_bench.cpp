@@ -204,15 +204,15 @@ BENCHMARK(BM_TrackPathDecoded1080p)->Unit(benchmark::kMillisecond)->UseRealTime(
 
 /// Decoding and a streaming tracker (answering each frame) started at `at` in frame 0;
 /// `lost` reads its answer.
-template <class Tracker, class Lost>
-void decode_and_track(benchmark::State& state, cv::Point2d at, const char* name, Lost lost_of) {
+template <class Tracker, class Options, class Lost>
+void decode_and_track(benchmark::State& state, const Options& options, cv::Point2d at, const char* name, Lost lost_of) {
   const Clip1080& c = clip1080();
   const ProcessCpu cpu{state};
   std::int64_t frames = 0;
   int lost = 0;
   for (auto _ : state) {
     const auto cap = video::open_video_file(c.path);
-    Tracker tracker;
+    Tracker tracker(options);
     video::Frame f;
     bool started = false;
     lost = 0;
@@ -234,14 +234,16 @@ void decode_and_track(benchmark::State& state, cv::Point2d at, const char* name,
 
 /// Decoding and the frame-to-frame point tracker (`--point-tracker frame`) on the sticker.
 void BM_DecodeTrackFrame1080pH264(benchmark::State& state) {
-  decode_and_track<video::PointTracker>(state, clip1080().sticker, "sticker",
+  video::PointTrackerOptions o;
+  o.step_s = 1 / 240.0;  // as track video gives it from the clip's time base
+  decode_and_track<video::PointTracker>(state, o, clip1080().sticker, "sticker",
                                         [](const video::Observation& o) { return o.lost; });
 }
 BENCHMARK(BM_DecodeTrackFrame1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// Decoding and the ellipse tracker on the ball.
 void BM_DecodeTrackEllipse1080pH264(benchmark::State& state) {
-  decode_and_track<video::EllipseTracker>(state, clip1080().ball, "ball",
+  decode_and_track<video::EllipseTracker>(state, video::EllipseTrackerOptions{}, clip1080().ball, "ball",
                                           [](const video::EllipseObservation& o) { return o.centre.lost; });
 }
 BENCHMARK(BM_DecodeTrackEllipse1080pH264)->Unit(benchmark::kMillisecond)->UseRealTime();

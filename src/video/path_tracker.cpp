@@ -622,10 +622,8 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   m.steps.clear();
   m.marks.clear();
   m.fg_done = false;
-  // At least 1/30 s of real time between samples: frames closer hold a moving object at
-  // nearly the same place, so they add conversions of whole frames, not information (at 240 fps
-  // the first 16 frames sampled one by one were the clip's first 1/15 s).
-  m.background.reset(m.opt.step_s > 0 ? std::max(1, static_cast<int>(kReachPeriodS / m.opt.step_s + 1e-9)) : 1);
+  // At least 1/30 s of real time between samples (SceneMemory::stride_for).
+  m.background.reset(SceneMemory::stride_for(m.opt.step_s));
   m.turned_deg = 0;
   m.turned_frame = -1;
   m.lead[1] = cv::Point2d(x_px, y_px);

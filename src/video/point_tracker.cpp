@@ -136,6 +136,7 @@ std::string PointTrackerOptions::validate() const {
   if (max_gap_frames < 0) {
     return "max_gap_frames must be >= 0, got " + std::to_string(max_gap_frames);
   }
+  if (!(step_s >= 0 && std::isfinite(step_s))) return "step_s must be >= 0 (0: unknown), got " + message_number(step_s);
   return {};
 }
 
@@ -239,7 +240,18 @@ struct PointTracker::Impl {
     blur = len > cap ? b * (cap / len) : b;
   }
 
-  Observation lost_observation(int frame, const MotionState& pred, double score) {
+  // Why frames were lost (loss_hint()): the predicted place out of the image, nothing like the
+  // pattern within the gate, look-alikes near the prediction, a score far below the object's
+  // recent ones, the first match after the start below its bar, the still background; and the
+  // frames searched afresh.
+  enum class Loss { view, none, rival, score, first, still };
+  static constexpr int kLosses = 6;
+  int lost_by[kLosses] = {};
+  int searched_afresh = 0;
+
+  Observation lost_observation(int frame, const MotionState& pred, double score, Loss why) {
+    ++lost_by[static_cast<int>(why)];
+    if (gave_up) ++searched_afresh;
     Observation o;
     o.frame = frame;
     o.x_px = pred.x_px;
@@ -267,6 +279,7 @@ struct PointTracker::Impl {
   };
   struct PeakChoice {
     bool found = false;  // false: lost (no peak, rivals, or beyond the gate on re-acquisition)
+    bool rival = false;  // lost for rivals
     cv::Point at;        // the chosen peak in the correlation maps
     double score = 0;    // its score (lost: the score to report)
   };
@@ -439,7 +452,9 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
   m.innovation_px.clear();
   m.innovation_rad.clear();
   m.recent_scores.clear();
-  m.scene.reset();
+  m.scene.reset(SceneMemory::stride_for(m.opt.step_s));
+  std::fill(std::begin(m.lost_by), std::end(m.lost_by), 0);
+  m.searched_afresh = 0;
   m.scene.remember(first, cv::Point2d(x_px, y_px));
   Observation o;
   o.frame = first.index;
@@ -447,6 +462,60 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
   o.y_px = y_px;
   o.score = 1;
   return o;
+}
+
+std::string PointTracker::loss_hint() const {
+  const Impl& m = *impl_;
+  using Loss = Impl::Loss;
+  const auto lost = [&](Loss why) { return m.lost_by[static_cast<int>(why)]; };
+  int most = 0;
+  for (int i = 1; i < Impl::kLosses; ++i) {
+    if (m.lost_by[i] > m.lost_by[most]) most = i;
+  }
+  const int n = m.lost_by[most];
+  if (n == 0) return "";
+  const std::string frames = "in " + std::to_string(n) + " frame(s) ";
+  std::string hint;
+  switch (static_cast<Loss>(most)) {
+    case Loss::view:
+      hint = frames + "the point's predicted place was outside the image (it left the view)";
+      break;
+    case Loss::none:
+      hint = frames + "nothing within the search correlated " + field("min_score") + " (" +
+             message_number(m.opt.min_score) + ") with the pattern (hidden, blurred, turned by more than " +
+             field("max_turn_deg") + " in a frame, or moving farther than the search): a lower " +
+             field("min_score") + ", a larger " + field("max_turn_deg") + " or " + field("search") + "; or " +
+             field("mark") + " the point in one of those frames";
+      break;
+    case Loss::rival:
+      hint = frames + "a look-alike matched about as well near the predicted place, so the point was not guessed: " +
+             field("mark") + " it in one of those frames";
+      break;
+    case Loss::score:
+      hint = frames + "the best match scored far below what the point had scored just before (a hand over it, " +
+             "its look changing): " + field("mark") + " it in one of those frames";
+      break;
+    case Loss::first:
+      hint = frames + "the first match after the start scored below " + message_number(kFirstMatchScore) +
+             ", the least a first match must look like the start (a small point on texture: the template is " +
+             "mostly background): a smaller " + field("patch") + ", or " + field("point_tracker") +
+             " path (the default), which tells the object from the background";
+      break;
+    case Loss::still:
+      hint = frames + "the best match was the still background: the place looked as it did when the point was " +
+             "elsewhere (the point hidden, and texture there like it): a larger " + field("max_gap") +
+             " bridges a hidden point; or " + field("mark") + " it in one of those frames";
+      break;
+  }
+  if (most != static_cast<int>(Loss::still) && lost(Loss::still) > 0) {
+    hint += "; in " + std::to_string(lost(Loss::still)) + " frame(s) the best match was the still background";
+  }
+  if (m.searched_afresh > 0) {
+    hint += "; after more than " + field("max_gap") + " (" + std::to_string(m.opt.max_gap_frames) +
+            ") lost frames in a row the point was searched for afresh in " + std::to_string(m.searched_afresh) +
+            " frame(s), where only an unambiguous match within reach is taken";
+  }
+  return hint;
 }
 
 Observation PointTracker::update(const Frame& frame) {
@@ -595,11 +664,11 @@ PointTracker::Impl::PeakChoice PointTracker::Impl::choose_peak(const MotionState
     peaks.push_back({at, v, std::hypot(at.x - pred_in_map.x, at.y - pred_in_map.y)});
     cv::circle(scratch, at, h, cv::Scalar(-1), cv::FILLED);
   }
-  if (peaks.empty()) return {false, {}, top_score};
+  if (peaks.empty()) return {false, false, {}, top_score};
   std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.dist < b.dist; });
-  if (peaks.size() > 1 && peaks[1].dist < 2 * peaks[0].dist + 2) return {false, {}, peaks[0].score};
-  if (reacquire && peaks[0].dist > first_search) return {false, {}, peaks[0].score};
-  return {true, peaks[0].at, peaks[0].score};
+  if (peaks.size() > 1 && peaks[1].dist < 2 * peaks[0].dist + 2) return {false, true, {}, peaks[0].score};
+  if (reacquire && peaks[0].dist > first_search) return {false, false, {}, peaks[0].score};
+  return {true, false, peaks[0].at, peaks[0].score};
 }
 
 PointTracker::Impl::Refined PointTracker::Impl::refine(const cv::Mat& gray, cv::Point origin, const cv::Rect& win,
@@ -748,7 +817,7 @@ Observation PointTracker::Impl::follow(const Frame& frame) {
   const int cx = static_cast<int>(std::lround(pred.x_px)), cy = static_cast<int>(std::lround(pred.y_px));
   const cv::Rect want(cx - si - h, cy - si - h, 2 * (si + h) + 1, 2 * (si + h) + 1);
   const cv::Rect win = want & cv::Rect(cv::Point(), image_size);
-  if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0);
+  if (win.width < p + 2 || win.height < p + 2) return lost_observation(frame.index, pred, 0, Loss::view);
   // Only the window's grey image is made, and h + kRefineSlackPx px around it for the refinement.
   const int margin = h + kRefineSlackPx;
   const cv::Rect region =
@@ -766,7 +835,7 @@ Observation PointTracker::Impl::follow(const Frame& frame) {
   // as far (+2 px): two look-alikes near the prediction leave the point lost, not guessed.
   // Weaker peaks (part of the pattern matching part of the template) never compete.
   const PeakChoice peak = choose_peak(pred, win, reacquire, reach.first_search);
-  if (!peak.found) return lost_observation(frame.index, pred, peak.score);
+  if (!peak.found) return lost_observation(frame.index, pred, peak.score, peak.rival ? Loss::rival : Loss::none);
 
   // Refinement (docs/theory.md#point-tracking): the image is resampled (bilinear) on a
   // (patch + 4) px square centred on the current estimate, so the peak sits at the centre
@@ -784,8 +853,12 @@ Observation PointTracker::Impl::follow(const Frame& frame) {
   o.score = std::clamp(r.score, 0.0, 1.0);
   // A match showing what its place showed when the object was elsewhere is the still background
   // (docs/theory.md#point-tracking, "still texture"): lost, not a point on the wall.
-  if (r.score >= opt.min_score && still(gray, region.tl(), r.centre)) return lost_observation(frame.index, pred, r.score);
-  if (!score_accepted(r.score)) return lost_observation(frame.index, pred, r.score);
+  if (r.score >= opt.min_score && still(gray, region.tl(), r.centre)) {
+    return lost_observation(frame.index, pred, r.score, Loss::still);
+  }
+  if (!score_accepted(r.score)) {
+    return lost_observation(frame.index, pred, r.score, model.size() == 1 ? Loss::first : Loss::score);
+  }
   accept(o, pred, reacquire);
   return o;
 }

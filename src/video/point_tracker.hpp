@@ -23,6 +23,9 @@ struct PointTrackerOptions {
   double max_turn_deg = 40;   ///< largest pattern rotation searched per frame, degrees
   int max_gap_frames = 8;     ///< lost frames the motion model may bridge; beyond, the point is
                               ///< searched for afresh (wider, unambiguous matches only)
+  /// Real time between two tracked frames, s (0: unknown): the earlier frames kept for the
+  /// still-texture check are at least 1/30 s apart (SceneMemory::stride_for).
+  double step_s = 0;
   std::string validate() const;
 };
 
@@ -63,6 +66,9 @@ class PointTracker {
   /// template is kept; the motion model goes on through the mark when it lies where the model
   /// predicts the point (within its gate), else restarts from it (as after a start).
   Observation mark(const Frame& frame, double x_px, double y_px);
+  /// Why frames were lost since start() (for the message), "" when none was: the likely cause
+  /// and the option that helps.
+  std::string loss_hint() const;
 
  private:
   struct Impl;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -341,6 +342,7 @@ struct HiddenDisc {
   double fps = 240;
   int hand_from = 10, hand_to = 24;
   bool hand_stays = false;  // true: the hand never leaves
+  double alike_x = 230;     // the look-alike's centre, px (at y = 120, resting)
   ShapePose disc(double cx, double cy, double angle) const {
     ShapePose s;
     s.cx_px = cx;
@@ -357,7 +359,7 @@ struct HiddenDisc {
   Scene scene() const {
     return [*this](double t) {
       const int frame = static_cast<int>(std::lround(t * fps));
-      std::vector<ShapePose> s{disc(at(t).x, at(t).y, 0.3 + turn(t)), disc(230, 120, 0.3)};
+      std::vector<ShapePose> s{disc(at(t).x, at(t).y, 0.3 + turn(t)), disc(alike_x, 120, 0.3)};
       if (frame >= hand_from && (hand_stays || frame <= hand_to)) {
         ShapePose hand;
         hand.kind = ShapePose::Kind::rectangle;
@@ -428,6 +430,29 @@ TEST(PointTracker, NeverTakesTheLookAlikeWhileThePointStaysHidden) {
     }
   }
   EXPECT_GT(lost_from, 0);
+}
+
+TEST(PointTracker, TellsAStillLookAlikeInsideTheGateFromThePoint) {
+  // The look-alike rests 50 px from where ours is hidden for good: inside the gate that
+  // widens while the point is lost, and the only match there. It looks as its place looked
+  // while our disc was elsewhere: still background, so every frame from the loss on is lost
+  // (before the scene memory, the look-alike was taken from frame 19 on, 31-51 px from ours).
+  HiddenDisc d;
+  d.hand_stays = true;
+  d.alike_x = 150;
+  const RenderOptions o = small_point_video();
+  PointTracker tracker;
+  tracker.start(film(d.scene(), 0, o), d.at(0).x, d.at(0).y, "disc");
+  int lost_from = -1;
+  for (int i = 1; i < 40; ++i) {
+    const Observation ob = tracker.update(film(d.scene(), i, o));
+    if (ob.lost && lost_from < 0) lost_from = i;
+    if (lost_from > 0) {
+      EXPECT_TRUE(ob.lost) << "frame " << i << " found at (" << ob.x_px << ", " << ob.y_px << ")";
+    }
+  }
+  EXPECT_GT(lost_from, 0);
+  EXPECT_NE(tracker.loss_hint().find("still background"), std::string::npos) << tracker.loss_hint();
 }
 
 TEST(PointTracker, FollowsTheWheelMarkThroughTheCodec) {
@@ -573,6 +598,11 @@ TEST(PointTracker, ValidatesItsOptions) {
   // Regression (issue 26): 1e308 was echoed with 309 digits (std::to_string).
   o.max_turn_deg = 1e308;
   EXPECT_EQ(o.validate(), "max_turn_deg must lie in [0, 90], got 1e+308");
+  o = {};
+  o.step_s = -0.01;
+  EXPECT_EQ(o.validate(), "step_s must be >= 0 (0: unknown), got -0.01");
+  o.step_s = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(o.validate().find("step_s"), std::string::npos);
 }
 
 TEST(PointTracker, RejectsAStartOutsideTheImage) {

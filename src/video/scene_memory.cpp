@@ -7,6 +7,11 @@
 
 namespace tribolab::video {
 
+int SceneMemory::stride_for(double step_s) {
+  constexpr double kMinGapS = 1.0 / 30;
+  return step_s > 0 ? std::max(1, static_cast<int>(kMinGapS / step_s + 1e-9)) : 1;
+}
+
 void SceneMemory::reset(int stride) {
   kept_.clear();
   stride_ = std::max(1, stride);

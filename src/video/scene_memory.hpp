@@ -19,6 +19,11 @@ class SceneMemory {
   /// the stride between kept frames doubles, so they stay spread over the clip.
   static constexpr std::size_t kMaxSamples = 16;
 
+  /// The first stride for frames `step_s` s of real time apart (0: unknown, 1): at least 1/30 s
+  /// between kept frames. Frames closer hold a moving object at nearly the same place, so they
+  /// add conversions of whole frames, not information (at 240 fps the first 16 frames kept one by
+  /// one were the clip's first 1/15 s).
+  static int stride_for(double step_s);
   /// Forgets every frame (a new track); one frame per block of `stride` frames is kept at first.
   void reset(int stride = 1);
   /// Frame `f` was followed with the object at `object` (none: lost there, or not known). One

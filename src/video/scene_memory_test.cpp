@@ -80,5 +80,13 @@ TEST(SceneMemory, KeepsAtMostItsSamplesSpreadOverTheClip) {
   EXPECT_EQ(m.size(), 2U);  // one of each block of 4
 }
 
+TEST(SceneMemory, KeepsFramesAtLeastAThirtiethOfASecondApart) {
+  EXPECT_EQ(SceneMemory::stride_for(1 / 240.0), 8);
+  EXPECT_EQ(SceneMemory::stride_for(1 / 60.0), 2);
+  EXPECT_EQ(SceneMemory::stride_for(1 / 30.0), 1);
+  EXPECT_EQ(SceneMemory::stride_for(1 / 15.0), 1);
+  EXPECT_EQ(SceneMemory::stride_for(0), 1);  // the time base unknown: every frame at first
+}
+
 }  // namespace
 }  // namespace tribolab::video

@@ -311,6 +311,18 @@ bool TrackSession::empty() const { return !impl; }
 
 namespace {
 
+/// The real time between two tracked frames, s (a slow-motion clip's time scale included; 0 when
+/// the time base is unknown): the path tracker's reach is a speed, and both point trackers keep
+/// earlier frames at least 1/30 s apart.
+double step_s(const VideoInput& in) { return in.clip.step_size * in.time.real_frame_s(); }
+
+/// The frame tracker's options, given the clip's time base unless set.
+PointTrackerOptions point_options(const TrackVideoOptions& options, const VideoInput& in) {
+  PointTrackerOptions point = options.point;
+  if (point.step_s == 0) point.step_s = step_s(in);
+  return point;
+}
+
 /// The rows of `w` from frame `m`'s mark backward: a fresh tracker of the follower's kind started
 /// at the mark runs over the held frames in reverse (their indices mirrored, 2 m - k, so that
 /// they increase as the trackers expect), and replaces the forward rows until the two agree
@@ -333,7 +345,7 @@ void track_backward(Follower& w, const Frame& marked, const ManualMark& mk, cons
         if (back.back().centre.lost) break;
       }
     } else {
-      PointTracker t(options.point);
+      PointTracker t(point_options(options, in));
       EllipseObservation e;
       e.centre = t.start(mirrored(marked), mk.x_px, mk.y_px, w.target.name);
       back.push_back(e);
@@ -419,14 +431,12 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
   const VideoInput& in = result.input;
   std::vector<Follower> followers;
   for (const Target& t : options.targets) {
-    Follower w{t, 0, 0, 0, PointTracker(options.point), false, {}, {}, {}, 0, {}};
+    Follower w{t, 0, 0, 0, PointTracker(point_options(options, in)), false, {}, {}, {}, 0, {}};
     if (w.target.kind == Target::Kind::ellipse) {
       w.tracker = EllipseTracker(options.ellipse);
     } else if (options.offline_points) {
-      // The path tracker's reach is a speed: it needs the real time between two tracked frames
-      // (a slow-motion clip's time scale included; 0 when the time base is unknown).
       PathTrackerOptions path = options.path;
-      if (path.step_s == 0) path.step_s = in.clip.step_size * in.time.real_frame_s();
+      if (path.step_s == 0) path.step_s = step_s(in);
       w.tracker = PathTracker(path);
     }
     resolve_start(w, in);
@@ -531,7 +541,7 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
   const VideoInput& in = result.input;
   std::vector<Follower>& followers = session.followers;
   const std::string& input = session.input;
-  std::vector<std::string> hints;  // per follower: why a path track lost frames
+  std::vector<std::string> hints;  // per follower: why its track lost frames
   for (Follower& w : followers) {
     std::string hint;
     if (auto* path = std::get_if<PathTracker>(&w.tracker)) {
@@ -540,6 +550,8 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
       hint = path->loss_hint();
     } else if (const auto* ellipse = std::get_if<EllipseTracker>(&w.tracker)) {
       hint = ellipse->loss_hint();
+    } else if (const auto* point = std::get_if<PointTracker>(&w.tracker)) {
+      hint = point->loss_hint();
     }
     hints.push_back(hint);
   }

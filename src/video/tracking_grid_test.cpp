@@ -36,10 +36,13 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
   std::string hint;
   int patch = 0;
   if (frame_tracker) {
-    PointTracker tracker;
+    PointTrackerOptions fo;
+    fo.step_s = 1 / film.render.fps;  // as track video gives it
+    PointTracker tracker(fo);
     try {
       tracker.start(frames[0], truth[0].x, truth[0].y, "point");
       for (std::size_t k = 1; k < frames.size(); ++k) obs.push_back(tracker.update(frames[k]));
+      hint = tracker.loss_hint();
     } catch (const std::exception& e) {
       hint = e.what();
       for (std::size_t k = obs.size() + 1; k < frames.size(); ++k) {
@@ -152,6 +155,10 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
       lost[which] += r.lost;
       wrong[which] += r.wrong;
       if (which == 3) continue;
+      // Every tracker says why it lost frames.
+      if (r.lost > 0) {
+        EXPECT_FALSE(r.hint.empty()) << "throw " << i << " run " << which;
+      }
       EXPECT_EQ(r.wrong, 0) << "throw " << i << (on_sticker ? " sticker" : " centre")
                             << (by_frame ? " by the frame tracker" : "");
       // A spinning sticker lost in most frames: the hint names the tracker that follows it.
