@@ -264,6 +264,8 @@ struct PointTracker::Impl {
     return o;
   }
 
+  // The next frame's observation (follow()); the frame is then kept in `scene` where due, with
+  // where the object was in it.
   Observation update(const Frame& frame);
   Observation follow(const Frame& frame);
 
