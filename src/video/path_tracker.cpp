@@ -81,8 +81,6 @@ constexpr double kWindowSpeeds = 2;
 // The automatic reach is a quarter of the image's smaller side per this much real time, s:
 // per frame at 30 fps (PathTrackerOptions::step_s).
 constexpr double kReachPeriodS = 1.0 / 30;
-// The background is the temporal median of the frames a SceneMemory keeps (at most 16, spread
-// over the clip, at least 1/30 s apart: start()).
 // Cost of a candidate: (1 - correlation) / kNccScale + kFgWeight * (1 - fg / (fg + kFgHalf)),
 // fg the mean absolute difference from the background over the object, grey levels. A
 // frame without the object costs kMissCost (video/path_search.hpp): a candidate correlating 0.7 with the object and
@@ -389,7 +387,9 @@ struct PathTracker::Impl {
   std::vector<StepCandidates> steps;
   std::map<int, ManualMark> marks;    // by frame index
   bool fg_done = false;               // the candidates' fg and cost are computed (at the first finish())
-  SceneMemory background;             // background samples (grey frames spread over the clip)
+  // Background samples: grey frames spread over the clip, at most 16, at least 1/30 s apart
+  // (start()); the background is their per-pixel median.
+  SceneMemory background;
   cv::Point2d lead[2];            // the last two confident sightings, px
   int lead_frames[2] = {-1, -1};  // their step indices (-1: none yet)
   // Loss causes counted by finish().

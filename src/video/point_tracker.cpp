@@ -470,7 +470,6 @@ Observation PointTracker::start(const Frame& first, double x_px, double y_px,
 std::string PointTracker::loss_hint() const {
   const Impl& m = *impl_;
   using Loss = Impl::Loss;
-  const auto lost = [&](Loss why) { return m.lost_by[static_cast<int>(why)]; };
   int most = 0;
   for (int i = 1; i < Impl::kLosses; ++i) {
     if (m.lost_by[i] > m.lost_by[most]) most = i;
@@ -510,8 +509,9 @@ std::string PointTracker::loss_hint() const {
              " bridges a hidden point; or " + field("mark") + " it in one of those frames";
       break;
   }
-  if (most != static_cast<int>(Loss::still) && lost(Loss::still) > 0) {
-    hint += "; in " + std::to_string(lost(Loss::still)) + " frame(s) the best match was the still background";
+  const int still = m.lost_by[static_cast<int>(Loss::still)];
+  if (most != static_cast<int>(Loss::still) && still > 0) {
+    hint += "; in " + std::to_string(still) + " frame(s) the best match was the still background";
   }
   if (m.searched_afresh > 0) {
     hint += "; after more than " + field("max_gap") + " (" + std::to_string(m.opt.max_gap_frames) +

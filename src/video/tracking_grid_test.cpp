@@ -86,9 +86,10 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // the sticker's frames (349 of 918: it spins 20-45 degrees per frame at 60 fps, beyond the
 // turns the path tracker searches) and 62.2 % of the centre's (571 of 918: a 91 px template of
 // a plain turning ellipse, the ellipse tracker's case). The frame tracker loses 3.9 % of the
-// sticker's frames but places 3 of them 70 px off. With a spinning look's turn rate (Look::expected, the same night): lost
-// 19.6 % of the sticker's frames (180 of 918; the 60 fps throws, 20-45 degrees per frame, still
-// mostly lost, and throw 4's 11 px sticker in all 61 frames, as before) and 27.5 % of the
+// sticker's frames but places 3 of them 70 px off. With a spinning look's turn rate
+// (Look::expected, the same night): lost 19.6 % of the sticker's frames (180 of 918; the 60
+// fps throws, 20-45 degrees per frame, still mostly lost, and throw 4's 11 px sticker in all
+// 61 frames, as before) and 27.5 % of the
 // centre's (252), none wrong. With the reach a speed (given the clip's time base, as track
 // video gives it), the last confident sighting searched while the object is lost, and the
 // background check measured against the object where it was clicked (a path of 34 still
