@@ -35,6 +35,13 @@ using detail::kRivalMargin;
 constexpr int kCandidates = 8;
 // A start patch whose grey levels vary less than this (standard deviation) is flat.
 constexpr double kFlatSd = 3;
+// The least half-side of an automatic template, px (a 15 px square): a smaller one (9-11 px
+// around a 2-4 px blob) holds too few pixels to be told from texture once the object blurs.
+// On the 36-throw grid a blurred spinning sticker's 9-11 px template fell to 0.8 while still
+// texture correlated 0.9; with this floor 305 of 2839 sticker frames are lost instead of 435.
+// Real film bounds it: a 17 px floor loses 2 of the 6 px rolling ball's 18 frames (its rail
+// fills the square), 15 px none (docs/benchmarks.md, "A template's least size").
+constexpr double kMinHalfSidePx = 7;
 // Peaks taken from each anchor's window (the candidates of a step come from up to five).
 constexpr int kPerWindow = 3;
 // Candidates kept per frame for each look of a mark searched there (add_look).
@@ -580,9 +587,9 @@ Observation PathTracker::start(const Frame& first, double x_px, double y_px, con
   const int small_side = std::min(gray.cols, gray.rows);
   m.radius = blob_radius(gray, {x_px, y_px});
   // The template holds the object and a ring of its surroundings (1.5 radii): enough contrast
-  // for a plain object, little background for a small one.
+  // for a plain object, little background for a small one, and never fewer than 15 px a side.
   int p = m.opt.patch_px;
-  if (p == 0) p = 2 * static_cast<int>(std::ceil(std::max(4.0, 1.5 * m.radius))) + 1;
+  if (p == 0) p = 2 * static_cast<int>(std::ceil(std::max(kMinHalfSidePx, 1.5 * m.radius))) + 1;
   p = std::min(p, 2 * (small_side / 8) + 1);
   m.p = std::max(p, 7);
   m.h = m.p / 2;

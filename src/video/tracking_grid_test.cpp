@@ -101,8 +101,10 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // none wrong. The frame tracker (the tracker a lost sticker's hint names) follows the sticker
 // as well since that day: with still texture told from the object (SceneMemory: a match that
 // shows what its place showed when the object was elsewhere is lost), 4.4 % of the sticker's
-// frames lost (40), none wrong (3 wrong before, up to 71 px: throw 3). The lost shares below
-// are regression bounds, not goals.
+// frames lost (40), none wrong (3 wrong before, up to 71 px: throw 3). With a path tracker's
+// template never under 15 px a side (the blurred sticker's 9-11 px ones lost to still
+// texture), the sticker's 7.0 % (64; throw 3 at 60 fps 21 -> 2, throw 4 5 -> 7), none wrong.
+// The lost shares below are regression bounds, not goals.
 // GRID_ONLY=i runs throw i alone (the same throw: its parameters are drawn all the same; the
 // bounds are not checked then).
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
@@ -177,7 +179,7 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   }
   std::printf("\n");
   if (n == 12 && !std::getenv("GRID_ONLY")) {
-    EXPECT_LE(double(lost[0]) / frames[0], 0.10);
+    EXPECT_LE(double(lost[0]) / frames[0], 0.08);
     EXPECT_LE(double(lost[1]) / frames[1], 0.30);
     EXPECT_LE(double(lost[2]) / frames[2], 0.06);
   }
