@@ -106,13 +106,16 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
 // texture), the sticker's 7.0 % (64; throw 3 at 60 fps 21 -> 2, throw 4 5 -> 7), none wrong.
 // The lost shares below are regression bounds, not goals.
 // GRID_ONLY=i runs throw i alone (the same throw: its parameters are drawn all the same; the
-// bounds are not checked then).
+// bounds are not checked then); GRID_FPS=f films every throw at f frames per second (the
+// bounds are not checked then either: at 30 fps both trackers lose most sticker frames,
+// docs/benchmarks.md, "A template's least size").
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   std::mt19937 rng(20261206);
   std::uniform_real_distribution<double> height(0.5, 1.2), theta(-60, 60), omega(-50, 50), vx(0.5, 2.5);
   const int fps_choice[] = {60, 120, 240};
   int frames[4] = {}, lost[4] = {}, wrong[4] = {};
   const int n = std::getenv("GRID_N") ? std::atoi(std::getenv("GRID_N")) : 12;
+  const double fps = std::getenv("GRID_FPS") ? std::atof(std::getenv("GRID_FPS")) : 0;
   for (int i = 0; i < n; ++i) {
     ThrowFilmOptions o;
     o.motion.height = height(rng);
@@ -122,7 +125,7 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
     if (std::getenv("GRID_ONLY") && i != std::atoi(std::getenv("GRID_ONLY"))) continue;
     o.motion.after = 0.15;
     o.motion.seed = static_cast<std::uint64_t>(i + 1);
-    o.render.fps = fps_choice[i % 3];
+    o.render.fps = fps ? fps : fps_choice[i % 3];
     o.render.width = 480;
     o.render.height = 360;
     o.render.background = RenderOptions::Background::texture;
@@ -178,7 +181,7 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
                 100.0 * lost[which] / frames[which], wrong[which]);
   }
   std::printf("\n");
-  if (n == 12 && !std::getenv("GRID_ONLY")) {
+  if (n == 12 && !std::getenv("GRID_ONLY") && fps == 0) {
     EXPECT_LE(double(lost[0]) / frames[0], 0.08);
     EXPECT_LE(double(lost[1]) / frames[1], 0.30);
     EXPECT_LE(double(lost[2]) / frames[2], 0.06);
