@@ -528,6 +528,14 @@ std::string PathTracker::Impl::reach_said() const {
   return said + ")";
 }
 
+namespace {
+// The remedy for a lost mark on a ball, whose look spins and smears: the ball's own tracker
+// (docs/benchmarks.md, "A template's least size, the ellipse's fit bar").
+std::string on_a_ball() {
+  return "for a mark on a ball, " + field("ellipse") + " follows the ball itself, its centre and its turn";
+}
+}  // namespace
+
 std::string PathTracker::Impl::main_loss_hint() const {
   const Impl& m = *this;
   if (m.lost_none + m.lost_rival + m.lost_score + m.lost_background == 0) return "";
@@ -555,7 +563,7 @@ std::string PathTracker::Impl::main_loss_hint() const {
            " frame(s) left "
            "(the object left the view or was hidden, moved more than " + reach_said() +
            ", or turned or changed its look): a larger " + field("search") + " or " + field("max_gap") +
-           "; for an object that turns, " + field("point_tracker") + " frame; or " + field("mark") +
+           "; for an object that turns, " + field("point_tracker") + " frame (" + on_a_ball() + "); or " + field("mark") +
            " the object in one of those frames: the frames around a mark are searched for its look there";
   }
   return "the object was not found in " + std::to_string(m.lost_none) +
@@ -1450,18 +1458,21 @@ std::string PathTracker::loss_hint() const {
   // changes with a turn: the frame tracker searches every turn from frame to frame (a sticker
   // on a ball spinning 20-45 degrees per frame at 60 fps, which the path tracker's turns of 15
   // and 30 degrees about its heading carried on at its turn rate still miss:
-  // docs/benchmarks.md#a-spinning-looks-turn-rate).
+  // docs/benchmarks.md#a-spinning-looks-turn-rate). A mark on a ball: the ellipse tracker follows
+  // the ball itself, its centre and its turn, where at 30 fps both point trackers lose the
+  // smeared sticker (docs/benchmarks.md, "A template's least size, the ellipse's fit bar").
   if (!hint.empty() && hint.find(field("point_tracker")) == std::string::npos) {
+    const std::string ball = "; " + on_a_ball();
     if (m.turned_deg != 0) {
       add("the object turns (its look matched best turned by " + std::to_string(m.turned_deg) + " degrees at frame " +
           std::to_string(m.turned_frame) + "): " + field("point_tracker") + " frame searches every turn from frame "
-          "to frame");
+          "to frame" + ball);
     } else if (m.turn_ncc < kTurnSensitive) {
       char ncc[32];
       std::snprintf(ncc, sizeof ncc, "%.2f", m.turn_ncc);
       add("if the object turns (a mark on a spinning ball or a wheel), " + field("point_tracker") +
           " frame searches every turn from frame to frame (this look turned by " + std::to_string(2 * kTurnStep) +
-          " degrees correlates " + ncc + " with itself)");
+          " degrees correlates " + ncc + " with itself)" + ball);
     }
   }
   return hint;

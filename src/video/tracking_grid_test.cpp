@@ -212,9 +212,11 @@ TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
       }
       EXPECT_EQ(r.wrong, 0) << "throw " << i << (on_sticker ? " sticker" : " centre")
                             << (by_frame ? " by the frame tracker" : "");
-      // A spinning sticker lost in most frames: the hint names the tracker that follows it.
+      // A spinning sticker lost in most frames: the hint names the trackers that follow it, or
+      // the ball it is on.
       if (which == 0 && r.lost * 2 > r.frames) {
         EXPECT_NE(plain_fields(r.hint).find("point_tracker frame"), std::string::npos) << plain_fields(r.hint);
+        EXPECT_NE(plain_fields(r.hint).find("a mark on a ball, ellipse"), std::string::npos) << plain_fields(r.hint);
       }
     }
     // The ball by the ellipse tracker: never confidently wrong, and says why it lost frames.
