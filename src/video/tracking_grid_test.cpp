@@ -97,8 +97,9 @@ GridRun follow_ball(const ThrowFilm& film, const std::vector<Frame>& frames, con
     r.hint = tracker.loss_hint();
   } catch (const std::exception& e) {
     r.hint = e.what();
+    const std::size_t done = obs.size();
     obs.resize(frames.size() - 1);
-    for (EllipseObservation& e : obs) e.centre.lost = true;
+    for (std::size_t k = done; k < obs.size(); ++k) obs[k].centre.lost = true;
   }
   const double wrong_px = 10.0 * film.render.width / 640.0;
   for (std::size_t k = 0; k < obs.size(); ++k) {
