@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace tribolab::app {
@@ -99,17 +100,16 @@ TEST_F(InclineRender, TruthIsTheModelBPathAtEachFrameTime) {
   EXPECT_NEAR(j["disc_start_px"][0].get<double>(), ox + pts[0].x / s, 1e-9);
 }
 
-// Render -> track video (the printed calibration and start) -> incline analyze: the tracked centre
-// within 0.25 px of the truth in every frame (the ellipse fit's error on rendered film with motion
-// blur and noise 2 is ~0.05-0.1 px, src/video/ellipse_tracker_test.cpp), and mu, v0, t0 within 3
-// of their sigmas of the launch. Observed for this seed (the default exposure 0.5, whose centroid
-// offset a (s/fps)^2/24 is ~0.02 px here, docs/theory.md#rendering): z(mu) = -1.96,
-// z(v0) = -1.34, z(t0) = +0.88; 3 leaves room for other platforms' codecs without hiding a bias
-// of several sigma.
-TEST_F(InclineRender, TrackedFilmGivesBackTheLaunch) {
-  InclineRenderOptions o = small();
-  o.size = "640x480";
-  o.seed = 4;
+// Render -> track video (the printed calibration and start) -> incline analyze: the tracked
+// centre's largest distance from the truth (px), the frames lost, and z = (fitted - truth) / sigma
+// of mu, v0 and t0.
+struct TrackedLaunch {
+  double worst_px = 0;
+  int lost = 0;
+  std::map<std::string, double> z;
+};
+
+TrackedLaunch track_and_analyse(const InclineRenderOptions& o, const fs::path& dir) {
   const json film = incline_render(o).json;
   TrackVideoOptions t;
   t.input = o.out;
@@ -119,31 +119,75 @@ TEST_F(InclineRender, TrackedFilmGivesBackTheLaunch) {
   t.ellipse = {fmt::format("disc={},{}@0", film["disc_start_px"][0].get<double>(), film["disc_start_px"][1].get<double>())};
   const TrackVideoResult tracked = track_video(t);
   const auto centre = std::find_if(tracked.series.begin(), tracked.series.end(), [](const auto& x) { return x.name == "disc"; });
-  ASSERT_NE(centre, tracked.series.end());
+  TrackedLaunch out;
+  if (centre == tracked.series.end()) {
+    ADD_FAILURE() << "no disc track";
+    return out;
+  }
   std::ifstream truth_in(o.truth);
   const auto truth = io::parse_tidy_csv(std::string(std::istreambuf_iterator<char>(truth_in), {}), o.truth);
   const auto& rows = centre->rows;
   const auto& want = truth.find("disc").points;
-  ASSERT_EQ(rows.size(), want.size());
+  EXPECT_EQ(rows.size(), want.size());
   const double s = film["scale_m_per_px"];
-  double worst = 0;
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    worst = std::max({worst, std::abs(rows[k].x - want[k].x) / s, std::abs(rows[k].y - want[k].y) / s});
+  for (std::size_t k = 0; k < rows.size() && k < want.size(); ++k) {
+    if (rows[k].lost) {
+      ++out.lost;
+      continue;
+    }
+    out.worst_px = std::max({out.worst_px, std::abs(rows[k].x - want[k].x) / s, std::abs(rows[k].y - want[k].y) / s});
   }
-  EXPECT_LT(worst, 0.25) << "px";
+  std::printf("centre: %d frames lost, the others within %.3f px of the truth\n", out.lost, out.worst_px);
   InclineAnalyzeOptions a;
   a.files = {t.out};
-  a.phi_deg = {20};
+  a.phi_deg = {*o.launch.phi_deg};
   a.no_model_a = true;
   a.input.track = "disc";
   const json r = incline_analyze(a).json;
   const json& truth_json = film["truth"];
   for (const char* k : {"mu", "v0", "t0"}) {
-    const double z = (r[k].get<double>() - truth_json[k].get<double>()) / r[std::string("sigma_") + k].get<double>();
-    EXPECT_LT(std::abs(z), 3) << k << " = " << r[k] << " +- " << r[std::string("sigma_") + k] << ", truth " << truth_json[k];
+    out.z[k] = (r[k].get<double>() - truth_json[k].get<double>()) / r[std::string("sigma_") + k].get<double>();
     std::printf("%s: fitted %.6g +- %.2g, truth %.6g, z = %+.2f\n", k, r[k].get<double>(),
-                r[std::string("sigma_") + k].get<double>(), truth_json[k].get<double>(), z);
+                r[std::string("sigma_") + k].get<double>(), truth_json[k].get<double>(), out.z[k]);
   }
+  return out;
+}
+
+// The tracked centre within 0.25 px of the truth in every frame (the ellipse fit's error on
+// rendered film with motion blur and noise 2 is ~0.05-0.1 px, src/video/ellipse_tracker_test.cpp),
+// and mu, v0, t0 within 3 of their sigmas of the launch. Observed for this seed (the default
+// exposure 0.5, whose centroid offset a (s/fps)^2/24 is ~0.02 px here, docs/theory.md#rendering):
+// z(mu) = -1.96, z(v0) = -1.34, z(t0) = +0.88; 3 leaves room for other platforms' codecs without
+// hiding a bias of several sigma.
+TEST_F(InclineRender, TrackedFilmGivesBackTheLaunch) {
+  InclineRenderOptions o = small();
+  o.size = "640x480";
+  o.seed = 4;
+  const TrackedLaunch r = track_and_analyse(o, dir);
+  EXPECT_EQ(r.lost, 0);
+  EXPECT_LT(r.worst_px, 0.25) << "px";
+  for (const auto& [k, z] : r.z) EXPECT_LT(std::abs(z), 3) << k;
+}
+
+// A disc filmed in motion from its first frame: at 30 fps on texture the launch blurs the disc's
+// 25 px radius edge by ~20 px, wider than a sharp edge's profiles reach. The start was refused
+// ("not an ellipse with a clear edge", score 0.42) before the start fit allowed blur
+// (docs/theory.md#ellipse-tracking, item 3); now every frame is tracked and the launch given back.
+// Measured: the centre 2.1 px from the truth in the blurred first frame, within 0.8 px after;
+// z(mu) = -0.13, z(v0) = -0.60, z(t0) = +0.80.
+TEST_F(InclineRender, ADiscBlurredInItsFirstFrameIsStarted) {
+  InclineRenderOptions o = small();
+  o.launch.mu = 0.328;
+  o.launch.phi_deg = 12.1;
+  o.launch.v0 = 1.51;
+  o.fps = 30;
+  o.size = "640x480";
+  o.background = "texture";
+  o.seed = 1;
+  const TrackedLaunch r = track_and_analyse(o, dir);
+  EXPECT_EQ(r.lost, 0);
+  EXPECT_LT(r.worst_px, 3) << "px";
+  for (const auto& [k, z] : r.z) EXPECT_LT(std::abs(z), 3) << k;
 }
 
 TEST_F(InclineRender, BadOptionsNameTheFieldAndWriteNothing) {
