@@ -153,6 +153,13 @@ TrackedLaunch track_and_analyse(const InclineRenderOptions& o, const fs::path& d
   return out;
 }
 
+// Every frame tracked, within `worst_px` of the truth, and mu, v0, t0 within 3 sigma of the launch.
+void expect_given_back(const TrackedLaunch& r, double worst_px) {
+  EXPECT_EQ(r.lost, 0);
+  EXPECT_LT(r.worst_px, worst_px) << "px";
+  for (const auto& [k, z] : r.z) EXPECT_LT(std::abs(z), 3) << k;
+}
+
 // The tracked centre within 0.25 px of the truth in every frame (the ellipse fit's error on
 // rendered film with motion blur and noise 2 is ~0.05-0.1 px, src/video/ellipse_tracker_test.cpp),
 // and mu, v0, t0 within 3 of their sigmas of the launch. Observed for this seed (the default
@@ -163,16 +170,13 @@ TEST_F(InclineRender, TrackedFilmGivesBackTheLaunch) {
   InclineRenderOptions o = small();
   o.size = "640x480";
   o.seed = 4;
-  const TrackedLaunch r = track_and_analyse(o, dir);
-  EXPECT_EQ(r.lost, 0);
-  EXPECT_LT(r.worst_px, 0.25) << "px";
-  for (const auto& [k, z] : r.z) EXPECT_LT(std::abs(z), 3) << k;
+  expect_given_back(track_and_analyse(o, dir), 0.25);
 }
 
 // A disc filmed in motion from its first frame: at 30 fps on texture the launch blurs the disc's
 // 25 px radius edge by ~20 px, wider than a sharp edge's profiles reach. The start was refused
 // ("not an ellipse with a clear edge", score 0.42) before the start fit allowed blur
-// (docs/theory.md#ellipse-tracking, item 3); now every frame is tracked and the launch given back.
+// (docs/theory.md#ellipse-tracking, item 1); now every frame is tracked and the launch given back.
 // Measured: the centre 2.1 px from the truth in the blurred first frame, within 0.8 px after;
 // z(mu) = -0.13, z(v0) = -0.60, z(t0) = +0.80.
 TEST_F(InclineRender, ADiscBlurredInItsFirstFrameIsStarted) {
@@ -184,10 +188,7 @@ TEST_F(InclineRender, ADiscBlurredInItsFirstFrameIsStarted) {
   o.size = "640x480";
   o.background = "texture";
   o.seed = 1;
-  const TrackedLaunch r = track_and_analyse(o, dir);
-  EXPECT_EQ(r.lost, 0);
-  EXPECT_LT(r.worst_px, 3) << "px";
-  for (const auto& [k, z] : r.z) EXPECT_LT(std::abs(z), 3) << k;
+  expect_given_back(track_and_analyse(o, dir), 3);
 }
 
 TEST_F(InclineRender, BadOptionsNameTheFieldAndWriteNothing) {
