@@ -334,8 +334,9 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
                static_cast<int>(2 * init.a + 21), static_cast<int>(2 * init.a + 21)) & image_rect;
   EdgeFitOptions eo = s.edge_options({0, 0}, 0);
   eo.known_a = eo.known_b = 0;  // the shape is what the first frame measures
+  const auto edge_score = [](const EdgeFit& f) { return f.ok ? static_cast<double>(f.inliers) / f.profiles : 0.0; };
   EdgeFit fit = fit_ellipse_edges(colour_distance(first, fit_roi, s.colour), fit_roi.tl(), init, eo);
-  double score = fit.ok ? static_cast<double>(fit.inliers) / fit.profiles : 0;
+  double score = edge_score(fit);
   // A start frame taken in motion (a disc launched fast, filmed at 30 fps) has edges blurred
   // wider than a sharp edge's profiles reach: fitted again allowing a quarter, half and all of
   // the minor semi-axis of blur of unknown direction (as the first step after a start does), in
@@ -347,8 +348,10 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
     const cv::Rect roi = cv::Rect(static_cast<int>(init.cx) - half, static_cast<int>(init.cy) - half, 2 * half + 1,
                                   2 * half + 1) & image_rect;
     const EdgeFit again = fit_ellipse_edges(colour_distance(first, roi, s.colour), roi.tl(), init, blurred);
-    const double again_score = again.ok ? static_cast<double>(again.inliers) / again.profiles : 0;
-    if (again_score > score) fit = again, score = again_score;
+    if (edge_score(again) > score) {
+      fit = again;
+      score = edge_score(again);
+    }
   }
   if (!fit.ok || score < s.options.min_score || fit.ellipse.b < 2) {
     throw InputError(where, "the object around the start point " + fmt_point(x_px, y_px) +
