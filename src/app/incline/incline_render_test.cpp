@@ -173,10 +173,11 @@ TEST_F(InclineRender, TrackedFilmGivesBackTheLaunch) {
   expect_given_back(track_and_analyse(o, dir), 0.25);
 }
 
-// A disc filmed in motion from its first frame: at 30 fps on texture the launch blurs the disc's
-// 25 px radius edge by ~20 px, wider than a sharp edge's profiles reach. The start was refused
-// ("not an ellipse with a clear edge", score 0.42) before the start fit allowed blur
-// (docs/theory.md#ellipse-tracking, item 1); now every frame is tracked and the launch given back.
+// A disc filmed in motion from its first frame: at 30 fps on texture the launch blurs the edge of
+// the 25 px radius disc by ~30 px (the 0.5 exposure of its 63 px travel per frame), wider than a
+// sharp edge's profiles reach. The start was refused ("not an ellipse with a clear edge", score
+// 0.42) before the start fit allowed blur (docs/theory.md#ellipse-tracking, item 1); now every
+// frame is tracked and the launch given back.
 // Measured: the centre 2.1 px from the truth in the blurred first frame, within 0.8 px after;
 // z(mu) = -0.13, z(v0) = -0.60, z(t0) = +0.80.
 TEST_F(InclineRender, ADiscBlurredInItsFirstFrameIsStarted) {
