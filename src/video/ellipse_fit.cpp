@@ -249,6 +249,7 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
     const int m = static_cast<int>(std::floor(std::min(inner + outer, 1e4) / ds)) + 1;
     const double c = std::cos(e.psi), s = std::sin(e.psi);
     std::vector<cv::Point2d> pts;
+    int off_image = 0;
     std::vector<double> prof(static_cast<std::size_t>(m));
     const int plateau = std::max(2, m / 8);
     for (int k = 0; k < n; ++k) {
@@ -264,7 +265,10 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
         const double r = -inner + i * ds;
         inside_image = sample(contrast, px + r * nx, py + r * ny, prof[static_cast<std::size_t>(i)]);
       }
-      if (!inside_image) continue;
+      if (!inside_image) {
+        ++off_image;
+        continue;
+      }
       double lo = 0, hi = 0;
       for (int i = 0; i < plateau; ++i) {
         lo += prof[static_cast<std::size_t>(i)];
@@ -280,6 +284,7 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
       pts.emplace_back(px + r_edge * nx + offset.x, py + r_edge * ny + offset.y);
     }
     fit.profiles = n;
+    fit.off_image = off_image;
     if (options.known_a > 0 && options.known_b > 0 && pts.size() >= 6) {
       // Known shape: robust geometric fit, the axes free within a prior of 5 % (a blurred or
       // turning object changes its outline; a hidden part must not bend it).

@@ -49,6 +49,7 @@ struct EdgeFit {
   bool ok = false;            ///< false: too few usable edge points
   int profiles = 0;           ///< normals sampled in the last round
   int inliers = 0;            ///< edge points kept by the robust fit in the last round
+  int off_image = 0;          ///< normals of the last round that left the image
   double rms_px = 0;          ///< rms distance of the inliers from the ellipse, px
   std::vector<cv::Point2d> points;  ///< inlier edge points (image px), last round
 };

@@ -30,6 +30,9 @@ constexpr double kConfidentScore = 0.9;   ///< a fit from the prediction this go
 /// whole travel then hold tens of pixels of background texture and lose most edge points
 /// (docs/theory.md#ellipse-tracking, item 8).
 constexpr double kExposures[] = {1.0, 0.5, 0.25, 0.125};
+// The least share of the outline's normals a score is taken over: those that ran off the image
+// are not counted against a fit, up to a quarter of them (docs/theory.md#ellipse-tracking).
+constexpr double kLeastInView = 0.75;
 
 /// Distance of every pixel of `roi` to `colour` (per channel, grey levels): low inside the
 /// object, |background - object| outside, linear in the mixing fraction across an edge.
@@ -386,7 +389,10 @@ cv::Rect FrameFit::window(double pad) const {
 
 double FrameFit::score_of(const EdgeFit& fit) const {
   const double shape = std::max(std::abs(fit.ellipse.a / a_ref - 1), std::abs(fit.ellipse.b / b_ref - 1));
-  return static_cast<double>(fit.inliers) / fit.profiles * std::clamp(1 - 3 * shape, 0.0, 1.0);
+  // Normals that ran off the image are no evidence against the fit: not counted, as long as
+  // kLeastInView of the outline's are (a ball leaving the view, a throw's top above it).
+  const double in_view = std::max<double>(fit.profiles - fit.off_image, kLeastInView * fit.profiles);
+  return std::min(1.0, fit.inliers / in_view) * std::clamp(1 - 3 * shape, 0.0, 1.0);
 }
 
 void FrameFit::try_fit(const cv::Mat& dist, cv::Point origin, const Ellipse& init, const EdgeFitOptions& opt,
