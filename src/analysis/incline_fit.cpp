@@ -191,6 +191,16 @@ bool model_b_residuals(const std::vector<track::TrackPoint>& pts, const std::vec
   return true;
 }
 
+// Residuals r[0..n) (x) and r[n..2n) (y), each in time order: correlated in time (a tracker's
+// smooth error, a model that misses part of the motion), they widen the covariance
+// (docs/theory.md#fitting, "Serially correlated residuals").
+void widen_for_correlated_residuals(numerics::FitResult& f, int n) {
+  const auto& r = f.residuals;
+  if (r.size() != static_cast<std::size_t>(2 * n)) return;
+  const std::vector<std::vector<double>> series{{r.begin(), r.begin() + n}, {r.begin() + n, r.end()}};
+  numerics::widen_for_serial_correlation(f, numerics::serial_correlation_factor(series));
+}
+
 }  // namespace
 
 ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
@@ -243,6 +253,7 @@ ModelBFit fit_model_b(const track::Track& track, const InclineFitOptions& o) {
   }
   if (!best.ok())
     numerics::throw_fit_failure(best, where(track), "model B cannot be fitted: " + best.message);
+  widen_for_correlated_residuals(best, n);
   ModelBFit r;
   r.fit = best;
   r.mu = estimate(best, 0, o.level);
@@ -306,8 +317,9 @@ ModelAFit fit_model_a(const track::Track& track, const InclineFitOptions& o, con
   fo.parameter_tolerance = 1e-9;
   fo.gradient_tolerance = 1e-12;
   fo.max_iterations = 100;
-  const numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params, fo);
+  numerics::FitResult f = numerics::fit_least_squares(residuals, 2 * n, params, fo);
   if (!f.ok()) numerics::throw_fit_failure(f, where(track), "model A cannot be fitted: " + f.message);
+  widen_for_correlated_residuals(f, n);
   ModelAFit r;
   r.fit = f;
   r.mu = estimate(f, 0, o.level);
@@ -730,6 +742,11 @@ InclineAnalysis analyze_incline_run(const track::Track& tracked, const InclineFi
     // from the factor the message names (issue 27).
     throw InputError(where(track), w + " (model B with g = " + message_number(o.g, 4) + " m/s^2 and phi = " + message_number(to_deg(o.phi), 4) +
                                        " deg does not fit these data)");
+  }
+  if (a.model_b.fit.serial_factor > 1.5) {
+    a.notes.push_back("the residuals are correlated in time (a tracker's smooth error, or motion the model misses): "
+                      "the uncertainties are widened " + message_number(std::sqrt(a.model_b.fit.serial_factor), 2) +
+                      " times (model B)");
   }
   a.data = track.points;
   track::KinematicsOptions ko;

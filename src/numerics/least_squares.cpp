@@ -8,6 +8,7 @@
 
 #include <boost/math/distributions/students_t.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -27,6 +28,48 @@ double FitResult::ci_half_width(std::size_t i, double level) const {
   if (dof <= 0 || i >= sigma.size()) return std::numeric_limits<double>::quiet_NaN();
   const boost::math::students_t t(dof);
   return boost::math::quantile(boost::math::complement(t, (1.0 - level) / 2.0)) * sigma[i];
+}
+
+double serial_correlation_factor(const std::vector<std::vector<double>>& series) {
+  // Autocovariances pooled over the series, each about its own mean.
+  std::vector<std::vector<double>> centred;
+  std::size_t n = 0, longest = 0;
+  for (const auto& s : series) {
+    if (s.size() < 3) continue;
+    double mean = 0;
+    for (double v : s) mean += v;
+    mean /= static_cast<double>(s.size());
+    std::vector<double> c(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) c[i] = s[i] - mean;
+    n += s.size();
+    longest = std::max(longest, s.size());
+    centred.push_back(std::move(c));
+  }
+  const auto autocovariance = [&](std::size_t lag) {
+    double sum = 0;
+    for (const auto& c : centred) {
+      for (std::size_t i = lag; i < c.size(); ++i) sum += c[i] * c[i - lag];
+    }
+    return sum / static_cast<double>(n);
+  };
+  const double c0 = n > 0 ? autocovariance(0) : 0;
+  if (!(c0 > 0)) return 1.0;
+  const double rho1 = std::clamp(autocovariance(1) / c0, -0.97, 0.97);
+  const double alpha = 4 * rho1 * rho1 / ((1 - rho1) * (1 - rho1) * (1 + rho1) * (1 + rho1));
+  const std::size_t bandwidth = std::min<std::size_t>(
+      longest / 2, static_cast<std::size_t>(std::floor(1.1447 * std::cbrt(alpha * static_cast<double>(n)))));
+  double factor = 1;
+  for (std::size_t lag = 1; lag <= bandwidth; ++lag) {
+    factor += 2 * (1 - static_cast<double>(lag) / static_cast<double>(bandwidth + 1)) * autocovariance(lag) / c0;
+  }
+  return std::max(1.0, factor);
+}
+
+void widen_for_serial_correlation(FitResult& f, double factor) {
+  if (!(factor > 1)) return;
+  f.covariance *= factor;
+  for (double& s : f.sigma) s *= std::sqrt(factor);
+  f.serial_factor = factor;
 }
 
 std::size_t FitResult::index(const std::string& name) const {

@@ -88,6 +88,9 @@ struct FitResult {
   double rms = 0.0;                   ///< sqrt(sum r_i^2 / N)
   int dof = 0;                        ///< N - number of free parameters
   double noise_scale = 1.0;           ///< s used to scale the covariance (gauss_newton; informative with sandwich)
+  /// The factor the covariance was widened by for serially correlated residuals (1: not
+  /// widened; see widen_for_serial_correlation).
+  double serial_factor = 1.0;
 
   bool ok() const { return status == FitStatus::converged; }
   /// Half-width of the two-sided confidence interval at `level` (e.g. 0.95) for parameter i.
@@ -97,6 +100,19 @@ struct FitResult {
   double value(const std::string& name) const { return values[index(name)]; }
   double sigma_of(const std::string& name) const { return sigma[index(name)]; }
 };
+
+/// How much residuals that are correlated in time widen the parameters' variance
+/// (docs/theory.md#fitting, "Serially correlated residuals"): the long-run variance of the
+/// residuals over their variance, 1 + 2 sum_{l=1..L} (1 - l/(L+1)) rho_l (Newey & West 1987,
+/// Bartlett weights), rho_l the lag-l autocorrelation pooled over `series` (each one residual
+/// series in time order, its mean taken away), the bandwidth L from Andrews' (1991) AR(1)
+/// plug-in 1.1447 (alpha n)^(1/3), alpha = 4 rho_1^2 / ((1 - rho_1)^2 (1 + rho_1)^2), rho_1
+/// at most 0.97. At least 1: independent noise leaves a covariance as it is.
+double serial_correlation_factor(const std::vector<std::vector<double>>& series);
+
+/// Widens `f`'s covariance by `factor` (its sigmas by the square root) and records it in
+/// f.serial_factor; a factor of at most 1 leaves `f` as it is.
+void widen_for_serial_correlation(FitResult& f, double factor);
 
 /// Throws for a fit that is not ok() (the convention of numerics/error.hpp): InputError when
 /// the data cannot support the fit (too_few_points, not_identifiable), SolverError when the

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <random>
@@ -270,6 +271,57 @@ TEST(PolyFit, RejectsDegenerateData) {
   EXPECT_THROW(fit_polynomial(x, y, 1), InputError);
   const std::vector<double> x2{1, 2}, y2{1, 2};
   EXPECT_THROW(fit_polynomial(x2, y2, 1), InputError);
+}
+
+// Serially correlated residuals (docs/theory.md#fitting, "Serially correlated residuals").
+std::vector<double> ar1_series(double rho, int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> z(0.0, 1.0);
+  std::vector<double> e(static_cast<std::size_t>(n));
+  double prev = z(rng) / std::sqrt(1 - rho * rho);
+  for (double& v : e) v = prev = rho * prev + z(rng);
+  return e;
+}
+
+TEST(SerialCorrelation, FactorIsTheLongRunVarianceRatio) {
+  // Independent noise: about 1 (at least 1 by construction); AR(1) noise: the long-run
+  // variance ratio (1 + rho) / (1 - rho), 3 at rho = 0.5 and 9 at rho = 0.8. Measured over
+  // seeds 1-5 at 2000 points: 1.000-1.012, 2.49-3.08 and 6.65-9.30 (the Bartlett estimate is
+  // biased low and scatters with the series).
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    const double white = serial_correlation_factor({ar1_series(0.0, 2000, seed), ar1_series(0.0, 2000, seed + 100)});
+    EXPECT_GE(white, 1.0);
+    EXPECT_LE(white, 1.05) << "seed " << seed;
+    EXPECT_NEAR(serial_correlation_factor({ar1_series(0.5, 2000, seed)}), 3.0, 0.7) << "seed " << seed;
+    EXPECT_NEAR(serial_correlation_factor({ar1_series(0.8, 2000, seed)}), 9.0, 3.0) << "seed " << seed;
+  }
+  // Too short to estimate anything: left as it is.
+  EXPECT_EQ(serial_correlation_factor({{1.0, 2.0}}), 1.0);
+  EXPECT_EQ(serial_correlation_factor({}), 1.0);
+}
+
+TEST(SerialCorrelation, WidenedIntervalsCoverTheTruth) {
+  // A straight line through AR(1) noise (rho 0.7): the slope's 95 % interval from the
+  // independent-noise covariance covers the truth far too rarely; widened, about 95 %.
+  const int runs = 300, n = 200;
+  int covered = 0, covered_widened = 0;
+  for (int k = 0; k < runs; ++k) {
+    const std::vector<double> e = ar1_series(0.7, n, 1000 + static_cast<unsigned>(k));
+    auto residuals = [&](const double* p, double* r) {
+      for (int i = 0; i < n; ++i) r[i] = p[0] + p[1] * (i / double(n)) - (1.0 + 2.0 * (i / double(n)) + e[i]);
+      return true;
+    };
+    FitResult f = fit_least_squares(residuals, n, {param("a", 0.0), param("b", 0.0)});
+    ASSERT_TRUE(f.ok()) << f.message;
+    covered += std::abs(f.value("b") - 2.0) <= f.ci_half_width(1) ? 1 : 0;
+    widen_for_serial_correlation(f, serial_correlation_factor({f.residuals}));
+    covered_widened += std::abs(f.value("b") - 2.0) <= f.ci_half_width(1) ? 1 : 0;
+  }
+  // Measured 164 of 300 (55 %) and, widened, 268 (89 %): the long-run variance estimated
+  // from 200 points is biased low, so the widened interval still covers a little too rarely.
+  std::printf("coverage of the slope's 95 %% interval: %d of %d, widened %d\n", covered, runs, covered_widened);
+  EXPECT_LT(covered, 0.7 * runs);
+  EXPECT_GT(covered_widened, 0.85 * runs);
 }
 
 }  // namespace

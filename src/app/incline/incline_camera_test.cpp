@@ -181,10 +181,12 @@ TEST(InclineAnalyze, WarnsWhenAFrameHeldAlignedIsTurned) {
   for (double psi : {0.5, -0.5}) {
     const Counts k = analyse_turned(psi > 0 ? "none_plus" : "none_minus", runs, psi > 0 ? 33000 : 34000, psi, "none");
     ASSERT_EQ(k.runs, runs);
-    // The bias is ~13 sd: every fit misses mu by more than its sd, and its mean is off by more
-    // than 10 sd in the direction of the turn (a documented defect of the option, not noise).
+    // The bias is ~6 sd: every fit misses mu by more than its sd, and its mean is off by more
+    // than 4 sd in the direction of the turn (a documented defect of the option, not noise).
+    // The turned frame leaves residuals correlated in time, which widen the sd about 2 times
+    // (the bias was ~13 sd of the independent-noise sd; docs/theory.md#fitting).
     EXPECT_EQ(k.mu_b_in_1sd, 0);
-    EXPECT_GT(psi * (k.sum_mu_b / runs - kMu), 10 * 0.5 * k.sum_sigma_mu_b / runs);
+    EXPECT_GT(psi * (k.sum_mu_b / runs - kMu), 4 * 0.5 * k.sum_sigma_mu_b / runs);
     EXPECT_EQ(k.present, runs);
     // psi held at 0 is refitted free with model A as a check (sd ~0.067 deg there, against
     // model B's 0.028: A's psi shares the path's bending with f_N/m): a 0.5 deg turn is ~7.5 sd,
