@@ -8,6 +8,7 @@
 #include "track/outliers.hpp"
 
 #include "numerics/error.hpp"
+#include "numerics/least_squares.hpp"
 #include "numerics/roots.hpp"
 #include "numerics/units.hpp"
 #include "numerics/statistics.hpp"
@@ -89,6 +90,20 @@ void fit_segment(const std::vector<track::RigidBodyRow>& rows, SegmentFit& seg, 
   seg.x_line = numerics::fit_polynomial(s, x, 1, std::string(what) + " x(t)");
   seg.y_parabola = seg.given_c2 ? fit_parabola_with_curvature(s, y, *seg.given_c2, std::string(what) + " y(t)")
                                 : numerics::fit_polynomial(s, y, 2, std::string(what) + " y(t)");
+  // Residuals correlated in time (a tracker's smooth error) widen both fits' covariances
+  // (docs/theory.md#fitting, "Serially correlated residuals").
+  std::vector<std::vector<double>> residuals(2);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    residuals[0].push_back(x[i] - seg.x_line(s[i]));
+    residuals[1].push_back(y[i] - seg.y_parabola(s[i]));
+  }
+  const double f = numerics::serial_correlation_factor(residuals);
+  for (numerics::PolyFit* p : {&seg.x_line, &seg.y_parabola}) {
+    if (f > 1) {
+      p->covariance *= f;
+      for (double& sd : p->sigma) sd *= std::sqrt(f);
+    }
+  }
 }
 
 /// Apex of y = c0 + c1 s + c2 s^2 (c2 < 0): s* = -c1 / (2 c2), y* = c0 - c1^2 / (4 c2).
