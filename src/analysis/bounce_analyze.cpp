@@ -258,6 +258,24 @@ std::string no_rebound_reason(const track::Track& centre, double noise) {
          "or a higher frame rate is needed";
 }
 
+/// When the track's lowest point lies within its last kMinPoints - 1 points (the ball left
+/// the view, or the film ended, just after the bounce), why no rebound can be measured; ""
+/// otherwise (the impact detector's windows need points on both sides of a jump, so such a
+/// bounce shows none).
+std::string ends_after_lowest(const track::Track& centre) {
+  const auto& p = centre.points;
+  if (p.size() < static_cast<std::size_t>(2 * kMinPoints)) return {};
+  const auto low = static_cast<std::size_t>(
+      std::min_element(p.begin(), p.end(), [](const auto& u, const auto& v) { return u.y < v.y; }) - p.begin());
+  const std::size_t after = p.size() - 1 - low;
+  if (after >= static_cast<std::size_t>(kMinPoints) || low < static_cast<std::size_t>(kMinPoints)) return {};
+  char t[32];
+  std::snprintf(t, sizeof t, "%.3f s", p[low].t);
+  return "the track ends " + std::to_string(after) + " point(s) after its lowest one (t = " + t +
+         "): a post-impact flight needs at least " + std::to_string(kMinPoints) +
+         "; keep the ball in view (and filming) longer after it bounces";
+}
+
 /// The impact options.impact of the centre track and the flights on either side of it, less
 /// options.exclude points next to it (docs/theory.md#bounce-analysis). Fills r.impacts,
 /// r.impact_used, r.pre and r.post's ranges; throws InputError when there is no such impact
@@ -265,6 +283,9 @@ std::string no_rebound_reason(const track::Track& centre, double noise) {
 track::Impact choose_impact(const track::Track& a, const track::Track& b, const BounceAnalyzeOptions& options,
                             BounceAnalysis& r) {
   r.impacts = track::detect_impacts(r.centre, options.impacts);
+  // The floor can only push the ball up: a "jump" that makes it fall faster (dvy < 0) is the
+  // detector's windows reaching across a bounce at the track's end, not an impact with the floor.
+  std::erase_if(r.impacts.impacts, [](const track::Impact& i) { return !(i.dvy > 0); });
   // A contact of many frames or a noisy track shows no jump between adjacent windows: look
   // across a gap of contact frames with wider windows (detail::find_impact_across_gap).
   std::size_t first_post = 0;
@@ -275,7 +296,8 @@ track::Impact choose_impact(const track::Track& a, const track::Track& b, const 
     }
   }
   if (r.impacts.impacts.empty()) {
-    const std::string why = no_rebound_reason(r.centre, r.impacts.noise_y);
+    std::string why = ends_after_lowest(r.centre);
+    if (why.empty()) why = no_rebound_reason(r.centre, r.impacts.noise_y);
     throw InputError("no impact found in the centre track of '" + a.name + "' and '" + b.name + "' (" +
                      (why.empty() ? "no significant velocity jump; position noise ~" +
                                         std::to_string(r.impacts.noise_y * 1000).substr(0, 5) + " mm"
@@ -312,10 +334,14 @@ track::Impact choose_impact(const track::Track& a, const track::Track& b, const 
   r.post.n_points = static_cast<int>(r.post.end - r.post.begin);
   for (const auto* seg : {&r.pre, &r.post}) {
     if (seg->n_points < kMinPoints) {
+      const bool track_ends = seg == &r.post && seg->end == r.centre.points.size();
       throw InputError(std::string(seg == &r.pre ? "pre" : "post") + "-impact segment has " +
                        std::to_string(seg->n_points) + " usable point(s) (after excluding " +
                        std::to_string(options.exclude) + " next to the impact); at least " +
-                       std::to_string(kMinPoints) + " are needed for a y-t parabola");
+                       std::to_string(kMinPoints) + " are needed for a y-t parabola" +
+                       (track_ends ? std::string("; the track ends there: keep the ball in view (and filming) longer "
+                                                 "after it bounces")
+                                   : std::string()));
     }
   }
   if (first == last) return found[first];
