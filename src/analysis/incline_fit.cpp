@@ -407,6 +407,7 @@ std::optional<GravityCheck> gravity_refit(const track::Track& track, const Incli
     if (have && best.rms < 2.0 * noise) break;
   }
   if (!have) return std::nullopt;
+  widen_for_correlated_residuals(best, n);
   return make_check(estimate(best, 6, o.level), best.rms, o);
 }
 
