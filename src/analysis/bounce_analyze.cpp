@@ -98,12 +98,8 @@ void fit_segment(const std::vector<track::RigidBodyRow>& rows, SegmentFit& seg, 
     residuals[1].push_back(y[i] - seg.y_parabola(s[i]));
   }
   const double f = numerics::serial_correlation_factor(residuals);
-  for (numerics::PolyFit* p : {&seg.x_line, &seg.y_parabola}) {
-    if (f > 1) {
-      p->covariance *= f;
-      for (double& sd : p->sigma) sd *= std::sqrt(f);
-    }
-  }
+  numerics::widen_for_serial_correlation(seg.x_line, f);
+  numerics::widen_for_serial_correlation(seg.y_parabola, f);
 }
 
 /// Apex of y = c0 + c1 s + c2 s^2 (c2 < 0): s* = -c1 / (2 c2), y* = c0 - c1^2 / (4 c2).

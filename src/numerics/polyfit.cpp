@@ -22,6 +22,12 @@ double PolyFit::ci_half_width(int k, double level) const {
   return boost::math::quantile(boost::math::complement(t, (1.0 - level) / 2.0)) * sigma.at(k);
 }
 
+void widen_for_serial_correlation(PolyFit& f, double factor) {
+  if (!(factor > 1)) return;
+  f.covariance *= factor;
+  for (double& sd : f.sigma) sd *= std::sqrt(factor);
+}
+
 PolyFit fit_polynomial(std::span<const double> x, std::span<const double> y, int degree,
                        const std::string& what) {
   TRIBOLAB_ASSERT(x.size() == y.size(), "x and y sizes differ");

@@ -27,6 +27,11 @@ struct PolyFit {
   double ci_half_width(int k, double level = 0.95) const;
 };
 
+/// Widens `f`'s covariance by `factor` (its sigmas by the square root), as
+/// numerics::widen_for_serial_correlation does a least-squares fit's; a factor of at most 1
+/// leaves it as it is (docs/theory.md#fitting, "Serially correlated residuals").
+void widen_for_serial_correlation(PolyFit& f, double factor);
+
 /// Fits a polynomial of `degree` to (x, y). Throws InputError when fewer than degree + 2
 /// points are given (no noise estimate) or when the x values cannot determine the
 /// coefficients (e.g. all equal). `what` names the data in the message.
