@@ -16,8 +16,9 @@
 namespace tribolab::video {
 
 struct EllipseTrackerOptions {
-  double min_score = 0.55;     ///< below this edge-fit quality (fraction of edge points kept
-                               ///< times shape agreement, in [0, 1]) the object is lost
+  double min_score = 0.55;     ///< below this edge-fit quality (fraction of the normals in
+                               ///< view giving a kept edge point, times shape agreement, in
+                               ///< [0, 1]) the object is lost
   int max_gap_frames = 8;      ///< frames the motion model may bridge before giving up
   std::string validate() const;
 };
