@@ -80,6 +80,9 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
     }
     const cv::Point2d t = truth[static_cast<std::size_t>(o.frame)];
     const double d = std::hypot(o.x_px - t.x, o.y_px - t.y);
+    if (std::getenv("GRID_VERBOSE"))
+      std::printf("    frame %2d: (%.1f, %.1f) truth (%.1f, %.1f) %.1f px, score %.3f\n", o.frame, o.x_px, o.y_px, t.x,
+                  t.y, d, o.score);
     r.worst_px = std::max(r.worst_px, d);
     if (d > wrong_px) ++r.wrong;
   }
@@ -183,7 +186,8 @@ GridRun follow_ball(const ThrowFilm& film, const std::vector<Frame>& frames, con
 // GRID_ONLY=i runs throw i alone (the same throw: its parameters are drawn all the same; the
 // bounds are not checked then); GRID_FPS=f films every throw at f frames per second and
 // GRID_H264=1 passes every clip through H.264 (the bounds are not checked then either: at 30
-// fps both trackers lose most sticker frames; docs/benchmarks.md, "A template's least size").
+// fps both trackers lose most sticker frames; docs/benchmarks.md, "A template's least size");
+// GRID_VERBOSE=1 prints every reported point against the truth, with its score.
 TEST(TrackingGrid, OrdinaryThrowsAreFollowedAndNeverConfidentlyWrong) {
   std::mt19937 rng(20261206);
   std::uniform_real_distribution<double> height(0.5, 1.2), theta(-60, 60), omega(-50, 50), vx(0.5, 2.5);
