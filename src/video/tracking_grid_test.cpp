@@ -129,6 +129,7 @@ GridRun follow_ball(const ThrowFilm& film, const std::vector<Frame>& frames, con
     tracker.start(frames[0], centre[0].x, centre[0].y, "ball");
     for (std::size_t k = 1; k < frames.size(); ++k) obs.push_back(tracker.update(frames[k]));
     r.hint = tracker.loss_hint();
+    if (std::getenv("GRID_VERBOSE")) std::printf("    ball exposure read %.3f\n", tracker.exposure());
   } catch (const std::exception& e) {
     r.hint = e.what();
     const std::size_t done = obs.size();
@@ -149,7 +150,9 @@ GridRun follow_ball(const ThrowFilm& film, const std::vector<Frame>& frames, con
     if (d > wrong_px) ++r.wrong;
     if (e.round) continue;
     const double truth_rad = film.scene(frames[k + 1].t).front().angle_rad;
-    r.worst_deg = std::max(r.worst_deg, to_deg(std::abs(std::remainder(e.centre.angle_rad - truth_rad, kPi))));
+    const double off_deg = to_deg(std::abs(std::remainder(e.centre.angle_rad - truth_rad, kPi)));
+    if (std::getenv("GRID_VERBOSE")) std::printf("    ball frame %2zu: %.2f px, orientation %.2f deg\n", k + 1, d, off_deg);
+    r.worst_deg = std::max(r.worst_deg, off_deg);
   }
   if (r.lost * 2 > r.frames) std::printf("  hint: %s\n", plain_fields(r.hint).c_str());
   return r;
