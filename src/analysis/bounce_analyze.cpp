@@ -637,6 +637,48 @@ void require_plausible_floor(const std::vector<track::RigidBodyRow>& rows, const
   }
 }
 
+/// A spin near half a turn per frame is ambiguous. A ball seen as an ellipse looks the same
+/// after half a turn, so its ends' tracks, with A and B exchanged in every other frame, fit a
+/// spin of omega - sign(omega) pi / dt as well: a tracker (or a person clicking the tips) takes
+/// the smaller turn, and across the bounce the turn nearest the one before. Warns when a flight
+/// turns more than kAmbiguousTurnDeg per frame, or the spin changes by more than that across
+/// the impact: the other reading then turns at most 1.5 times as fast, as plausible a spin
+/// (docs/theory.md#plausibility-checks, "Spin near half a turn per frame").
+void check_spin_aliasing(double frame_dt, BounceAnalysis& r) {
+  constexpr double kAmbiguousTurnDeg = 72;
+  if (!(frame_dt > 0)) return;
+  const double fps = 1 / frame_dt, half_turn = kPi / frame_dt;  // rad/s
+  const auto deg_per_frame = [&](double omega) { return std::abs(omega) * frame_dt * 180 / kPi; };
+  const auto other = [&](double omega) { return omega - std::copysign(half_turn, omega); };
+  // The frame rate that keeps either reading under 60 degrees per frame.
+  const auto remedy = [&](double one, double another) {
+    const double fps_needed = std::max(std::abs(one), std::abs(another)) * 180 / kPi / 60;
+    return "if the ball may spin that fast, film at " + std::to_string(static_cast<int>(std::ceil(fps_needed))) +
+           " frames per second or more (under 60 degrees per frame), or put a mark on the ball";
+  };
+  char buf[600];
+  for (const auto& [flight, name] : {std::pair{&r.pre, "before"}, std::pair{&r.post, "after"}}) {
+    if (deg_per_frame(flight->omega) <= kAmbiguousTurnDeg) continue;
+    std::snprintf(buf, sizeof buf,
+                  "the ball turns %.0f degrees per frame %s the impact (omega %.1f rad/s at %.0f frames per second): a "
+                  "ball seen as an ellipse looks the same after half a turn, so its tips' tracks fit a spin of %.1f rad/s "
+                  "(%.0f degrees per frame the other way) as well, and the smaller turn was taken; ",
+                  deg_per_frame(flight->omega), name, flight->omega, fps, other(flight->omega),
+                  deg_per_frame(other(flight->omega)));
+    r.warnings.push_back(buf + remedy(flight->omega, other(flight->omega)));
+  }
+  const double change = r.post.omega - r.pre.omega;
+  if (deg_per_frame(change) > kAmbiguousTurnDeg) {
+    std::snprintf(buf, sizeof buf,
+                  "the spin changes at the impact by %.0f degrees per frame (from %.1f to %.1f rad/s at %.0f frames per "
+                  "second): a ball seen as an ellipse looks the same after half a turn, and across the bounce each "
+                  "frame's turn is taken nearest the one before, so a spin after the impact of %.1f rad/s fits its "
+                  "tips' tracks as well; ",
+                  deg_per_frame(change), r.pre.omega, r.post.omega, fps, r.pre.omega + other(change));
+    r.warnings.push_back(buf + remedy(r.post.omega, r.pre.omega + other(change)));
+  }
+}
+
 }  // namespace
 
 BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip_b,
@@ -705,6 +747,7 @@ BounceAnalysis analyze_bounce(const track::Track& tip_a, const track::Track& tip
     r.warnings.push_back(buf);
   }
   check_gravity(rows, r);
+  check_spin_aliasing(frame_dt, r);
   check_bounce_plausibility(options.ball, r);  // docs/theory.md#plausibility-checks
   if (!glitches.times.empty()) {
     char buf[400];

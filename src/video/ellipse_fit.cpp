@@ -164,23 +164,14 @@ std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, 
   return kept;
 }
 
-/// An edge along a profile: its position and the length of its ramp, px (NaN: none).
-struct EdgePlace {
-  double r = std::nan("");
-  double ramp = std::nan("");
-};
-
-/// Edge along a profile (prof[i] at r = -inner + i ds). The crossing of the mid-level between
-/// the far plateaus `lo` (inside) and `hi` (outside) nearest r = 0 places a window of
-/// half-width w = 1.5 px + ramp/2 (the blur's half-length) around the edge; inside it, the
-/// first moment of the object's occupancy (hi' - D)/(hi' - lo'), with lo', hi' the means of the
-/// 1.5 px just beyond each end of the window, is the mean edge position over the exposure.
-/// Local levels keep a textured or graded background from biasing the edge. The ramp's length
-/// is twice the span between the occupancy's three-quarter and quarter crossings (a linear
-/// ramp's middle half).
-EdgePlace edge_position(const std::vector<double>& prof, int m, double lo, double hi, double inner, double ds,
-                        double ramp_px) {
-  EdgePlace out;
+/// Edge position along a profile (prof[i] at r = -inner + i ds), or NaN. The crossing of the
+/// mid-level between the far plateaus `lo` (inside) and `hi` (outside) nearest r = 0 places a
+/// window of half-width w = 1.5 px + ramp/2 (the blur's half-length) around the edge; inside
+/// it, the first moment of the object's occupancy (hi' - D)/(hi' - lo'), with lo', hi' the means
+/// of the 1.5 px just beyond each end of the window, is the mean edge position over the
+/// exposure. Local levels keep a textured or graded background from biasing the edge.
+double edge_position(const std::vector<double>& prof, int m, double lo, double hi, double inner, double ds,
+                     double ramp_px) {
   const double mid = 0.5 * (lo + hi);
   const auto at = [&](int i) { return prof[static_cast<std::size_t>(i)]; };
   int cross = -1;  // the edge lies between samples cross and cross + 1
@@ -191,65 +182,20 @@ EdgePlace edge_position(const std::vector<double>& prof, int m, double lo, doubl
       if (std::abs(r) < best) best = std::abs(r), cross = i;
     }
   }
-  if (cross < 0) return out;
+  if (cross < 0) return std::nan("");
   const int w = static_cast<int>(std::ceil((1.5 + 0.5 * std::min(ramp_px, 1e4)) / ds));
   const int k = static_cast<int>(std::ceil(1.5 / ds));  // samples per local level
   const int first = std::max(k, cross - w + 1), last = std::min(m - 1 - k, cross + w);  // window
-  if (last - first < 2) return out;
+  if (last - first < 2) return std::nan("");
   double lo_l = 0, hi_l = 0;
   for (int j = 1; j <= k; ++j) lo_l += at(first - j), hi_l += at(last + j);
   lo_l /= k, hi_l /= k;
-  if (hi_l - lo_l < 0.5 * (hi - lo)) return out;  // no clear step at this place
-  const auto occ = [&](int i) { return (hi_l - at(i)) / (hi_l - lo_l); };
+  if (hi_l - lo_l < 0.5 * (hi - lo)) return std::nan("");  // no clear step at this place
   double occupancy = 0;
-  for (int i = first; i <= last; ++i) occupancy += occ(i);
+  for (int i = first; i <= last; ++i) occupancy += (hi_l - at(i)) / (hi_l - lo_l);
   const double r_edge = -inner + (first - 0.5) * ds + occupancy * ds;
-  if (r_edge < -inner + first * ds || r_edge > -inner + last * ds) return out;
-  out.r = r_edge;
-  int o = cross + 1, n = cross;  // the first samples past the quarter and three-quarter crossings
-  while (o < last && occ(o) > 0.25) ++o;
-  while (n > first && occ(n) < 0.75) --n;
-  if (o < last && n > first && occ(o - 1) > occ(o) && occ(n) > occ(n + 1)) {
-    const double r_quarter = (o - 1) + (occ(o - 1) - 0.25) / (occ(o - 1) - occ(o));
-    const double r_three = n + (occ(n) - 0.75) / (occ(n) - occ(n + 1));
-    out.ramp = 2 * (r_quarter - r_three) * ds;
-  }
-  return out;
-}
-
-/// Where the line p + r n crosses the outline of `e` nearest r = 0 on its outer side (the
-/// larger root), or NaN when the line misses the ellipse.
-double outer_crossing(const Ellipse& e, cv::Point2d p, cv::Point2d n) {
-  const double c = std::cos(e.psi), s = std::sin(e.psi);
-  const double dx = p.x - e.cx, dy = p.y - e.cy;
-  const double u0 = c * dx + s * dy, v0 = -s * dx + c * dy;
-  const double du = c * n.x + s * n.y, dv = -s * n.x + c * n.y;
-  const double ia = 1 / (e.a * e.a), ib = 1 / (e.b * e.b);
-  const double qa = du * du * ia + dv * dv * ib, qb = 2 * (u0 * du * ia + v0 * dv * ib);
-  const double qc = u0 * u0 * ia + v0 * v0 * ib - 1;
-  const double disc = qb * qb - 4 * qa * qc;
-  if (!(disc >= 0) || !(qa > 0)) return std::nan("");
-  return (-qb + std::sqrt(disc)) / (2 * qa);
-}
-
-/// How far the mean over the exposure of the moving outline's crossing of the normal line
-/// p + r n lies beyond the crossing of `e` itself (the ellipse at mid-exposure): the ellipse
-/// moved by t (bx, by) + t^2 (hx, hy) and turned by t bpsi for t from -1/2 to 1/2 across the
-/// exposure, averaged over 16 sub-poses. Zero without motion; NaN when a sub-pose misses the line.
-double exposure_offset(const Ellipse& e, cv::Point2d p, cv::Point2d n, double bx, double by, double hx, double hy,
-                       double bpsi) {
-  constexpr int kSubPoses = 16;
-  const double r0 = outer_crossing(e, p, n);
-  double sum = 0;
-  for (int k = 0; k < kSubPoses; ++k) {
-    const double t = (k + 0.5) / kSubPoses - 0.5;
-    Ellipse q = e;
-    q.cx += t * bx + t * t * hx, q.cy += t * by + t * t * hy, q.psi += t * bpsi;
-    const double r = outer_crossing(q, p, n);
-    if (!std::isfinite(r)) return std::nan("");
-    sum += r;
-  }
-  return sum / kSubPoses - r0;
+  if (r_edge < -inner + first * ds || r_edge > -inner + last * ds) return std::nan("");
+  return r_edge;
 }
 
 }  // namespace
@@ -303,7 +249,6 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
     const int m = static_cast<int>(std::floor(std::min(inner + outer, 1e4) / ds)) + 1;
     const double c = std::cos(e.psi), s = std::sin(e.psi);
     std::vector<cv::Point2d> pts;
-    std::vector<double> ramps;  // ramp / travel per frame, of the normals crossed head-on
     int off_image = 0;
     std::vector<double> prof(static_cast<std::size_t>(m));
     const int plateau = std::max(2, m / 8);
@@ -334,31 +279,12 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
       // Blur along this normal: travel of this boundary point along n in one frame.
       const double rx = c * u - s * v, ry = s * u + c * v;  // from the centre, image axes
       const double vn = (options.vx_px - options.dpsi_rad * ry) * nx + (options.vy_px + options.dpsi_rad * rx) * ny;
-      const EdgePlace edge =
-          edge_position(prof, m, lo, hi, inner, ds, std::min(std::abs(vn) + options.blur_px, options.max_blur_px));
-      if (!std::isfinite(edge.r)) continue;
-      // The exposure from the ramps of normals that the motion crosses head-on (a linear ramp
-      // as long as the exposure's travel).
-      const double fvx = options.frame_vx_px - options.frame_dpsi_rad * ry;
-      const double fvy = options.frame_vy_px + options.frame_dpsi_rad * rx;
-      const double fvn = fvx * nx + fvy * ny;
-      if (std::abs(fvn) >= 8 && std::abs(fvn) >= 0.9 * std::hypot(fvx, fvy) && std::isfinite(edge.ramp)) {
-        ramps.push_back(edge.ramp / std::abs(fvn));
-      }
-      double r_edge = edge.r;
-      if (options.exposure > 0) {
-        const cv::Point2d p(px + offset.x, py + offset.y), dir(nx, ny);
-        const double x = options.exposure;
-        const double shift = exposure_offset(e, p, dir, x * options.frame_vx_px, x * options.frame_vy_px,
-                                             0.5 * x * x * options.frame_ax_px, 0.5 * x * x * options.frame_ay_px,
-                                             x * options.frame_dpsi_rad);
-        if (std::isfinite(shift)) r_edge -= shift;
-      }
+      const double r_edge = edge_position(prof, m, lo, hi, inner, ds, std::min(std::abs(vn) + options.blur_px, options.max_blur_px));
+      if (!std::isfinite(r_edge)) continue;
       pts.emplace_back(px + r_edge * nx + offset.x, py + r_edge * ny + offset.y);
     }
     fit.profiles = n;
     fit.off_image = off_image;
-    fit.exposure_seen = ramps.size() >= 5 ? median(ramps) : std::nan("");
     if (options.known_a > 0 && options.known_b > 0 && pts.size() >= 6) {
       // Known shape: robust geometric fit, the axes free within a prior of 5 % (a blurred or
       // turning object changes its outline; a hidden part must not bend it).

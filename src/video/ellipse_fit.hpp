@@ -5,7 +5,6 @@
 
 #include <opencv2/core.hpp>
 
-#include <limits>
 #include <vector>
 
 namespace tribolab::video {
@@ -35,20 +34,6 @@ struct EdgeFitOptions {
   double dpsi_rad = 0;          ///< turn per frame in image axes (y down), rad
   double blur_px = 0;           ///< blur allowed along every normal besides, px (unknown motion)
   double max_blur_px = 1e4;     ///< cap on the blur allowed along a normal, px
-  /// The object's whole motion in one frame period (image axes; velocity_px per frame, turn
-  /// rad per frame), not scaled by an exposure: read with each edge ramp to measure the
-  /// exposure (EdgeFit::exposure_seen), and with `exposure` to correct the edge points.
-  double frame_vx_px = 0, frame_vy_px = 0, frame_dpsi_rad = 0;
-  /// The object's acceleration, px per frame squared (image axes): a falling ball's exposure
-  /// spans a piece of parabola, whose mean lies below its middle by g T^2 / 24.
-  double frame_ax_px = 0, frame_ay_px = 0;
-  /// The exposure as a fraction of the frame period, when measured (0: none). A profile's edge
-  /// is the mean over the exposure of where the moving outline crosses that fixed normal line:
-  /// where the outline slides along itself (the tips of a ball falling past them) that lies
-  /// inside the mid-exposure ellipse. Each edge point is moved by the difference, computed on
-  /// the ellipse being refined, so the fit is the ellipse at the frame's time
-  /// (docs/theory.md#ellipse-tracking, item 4).
-  double exposure = 0;
   double step_px = 0.5;       ///< sampling step along the profile, px
   double min_contrast = 20;   ///< smallest outside - inside level of a usable profile
   double max_inside = 1e9;    ///< largest inside level of a usable profile (object-like)
@@ -67,10 +52,6 @@ struct EdgeFit {
   int off_image = 0;          ///< normals of the last round that left the image
   double rms_px = 0;          ///< rms distance of the inliers from the ellipse, px
   std::vector<cv::Point2d> points;  ///< inlier edge points (image px), last round
-  /// The exposure read from the edge ramps, a fraction of the frame period: the median over
-  /// the normals moving along themselves by 8 px or more per frame (frame_* motion) of the
-  /// ramp's length over that travel. NaN: fewer than 5 such normals, or no motion given.
-  double exposure_seen = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Refines `init` on `contrast` (CV_32F, low inside the object, high outside; its pixel (0, 0)

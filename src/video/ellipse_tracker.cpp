@@ -12,9 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <limits>
 #include <numbers>
-#include <optional>
 #include <sstream>
 
 namespace tribolab::video {
@@ -32,10 +30,6 @@ constexpr double kConfidentScore = 0.9;   ///< a fit from the prediction this go
 /// whole travel then hold tens of pixels of background texture and lose most edge points
 /// (docs/theory.md#ellipse-tracking, item 8).
 constexpr double kExposures[] = {1.0, 0.5, 0.25, 0.125};
-/// The least edge shift the exposure correction is made for, px (correct_for_exposure).
-constexpr double kLeastShiftPx = 0.01;
-/// Frames whose exposure readings (EdgeFit::exposure_seen) are pooled by their median.
-constexpr std::size_t kExposureFrames = 15;
 // The least share of the outline's normals a score is taken over: those that ran off the image
 // are not counted against a fit, up to a quarter of them (docs/theory.md#ellipse-tracking).
 constexpr double kLeastInView = 0.75;
@@ -120,8 +114,7 @@ std::string fmt_point(double x, double y) {
 struct Motion {
   int steps = 1;
   bool moving = false;
-  cv::Point2d velocity;  // px per frame, since the last good centre
-  cv::Point2d at_frame;  // px per frame, the motion model's at this frame (the exposure's middle)
+  cv::Point2d velocity;
   double omega = 0;
 };
 
@@ -133,14 +126,9 @@ struct FrameFit {
   double gate = 0;            // px
   double a_ref = 0, b_ref = 0;  // the running semi-axes, px
   double score = 0, rms = 0;
-  double exposure_seen = std::numeric_limits<double>::quiet_NaN();  // the found fit's (EdgeFit)
   Ellipse found;
-  // The found ellipse corrected for the blurred outline: the pose at the frame's time, the one
-  // reported (EllipseTracker::Impl::correct_for_exposure).
-  std::optional<Ellipse> at_frame_time;
-  // The square reaching `pad` px from the prediction (or `at`) each way, clipped to the image.
+  // The square reaching `pad` px from the prediction each way, clipped to the image.
   cv::Rect window(double pad) const;
-  cv::Rect window(cv::Point2d at, double pad) const;
   // Score: fraction of normals giving a kept edge point, times agreement of the axes with the
   // running ones (a merged or partly hidden object changes shape).
   double score_of(const EdgeFit& fit) const;
@@ -173,12 +161,6 @@ struct EllipseTracker::Impl {
   int lost_run = 0;            ///< consecutive lost frames
   bool gave_up = false;
   double exposure = 1;         ///< exposure as a fraction of the frame period (learned, sticky)
-  /// The exposure read from the edge ramps of the last accepted frames (EdgeFit::exposure_seen);
-  /// their median corrects the edge points for the blurred outline (measured_exposure()).
-  std::deque<double> exposures_seen;
-  /// The motion model's last acceleration, px per frame squared: gravity's, kept across a
-  /// bounce's restart of the parabola.
-  cv::Point2d accel_last{0, 0};
   int short_exposure_frames = 0;  ///< accepted frames whose best fit assumed exposure < 1
   int weak_frames = 0;         ///< lost frames with an ellipse found in the gate but a weak fit
   int empty_frames = 0;        ///< lost frames with nothing of the object's outline found
@@ -196,50 +178,6 @@ struct EllipseTracker::Impl {
     const int degree = centres.size() >= 3 ? 2 : 1;  // flight is a parabola
     const double at = index - last.index;
     return {poly_predict(s, x, degree, at), poly_predict(s, y, degree, at)};
-  }
-
-  /// The centre's acceleration from the motion model, px per frame squared (the parabola's;
-  /// none before three centres).
-  std::optional<cv::Point2d> acceleration() const {
-    if (centres.size() < 3) return std::nullopt;
-    const Centre& last = centres.back();
-    std::vector<double> s, x, y;
-    for (const auto& c : centres) {
-      s.push_back(c.index - last.index);
-      x.push_back(c.x);
-      y.push_back(c.y);
-    }
-    const auto second = [&](const std::vector<double>& v) {
-      return poly_predict(s, v, 2, 1) - 2 * poly_predict(s, v, 2, 0) + poly_predict(s, v, 2, -1);
-    };
-    return cv::Point2d(second(x), second(y));
-  }
-
-  /// The centre's velocity at frame `index` from the motion model, px per frame (the parabola's
-  /// slope there; zero with one centre).
-  cv::Point2d velocity_at(int index) const {
-    const Centre& last = centres.back();
-    if (centres.size() == 1) return {0, 0};
-    std::vector<double> s, x, y;
-    for (const auto& c : centres) {
-      s.push_back(c.index - last.index);
-      x.push_back(c.x);
-      y.push_back(c.y);
-    }
-    const int degree = centres.size() >= 3 ? 2 : 1;
-    const double at = index - last.index;
-    return {poly_predict(s, x, degree, at + 0.5) - poly_predict(s, x, degree, at - 0.5),
-            poly_predict(s, y, degree, at + 0.5) - poly_predict(s, y, degree, at - 0.5)};
-  }
-
-  /// The exposure the edge points are corrected for: the median of the last frames' readings
-  /// and `now` (this frame's, when it gave one), so that the first frame with a reading is
-  /// corrected too (0 without any: no correction).
-  double measured_exposure(double now = std::numeric_limits<double>::quiet_NaN()) const {
-    std::vector<double> seen(exposures_seen.begin(), exposures_seen.end());
-    if (std::isfinite(now)) seen.push_back(now);
-    if (seen.empty()) return 0;
-    return std::clamp(median(std::move(seen)), 0.0, 1.0);
   }
 
   double spin_per_frame() const {
@@ -287,7 +225,6 @@ struct EllipseTracker::Impl {
     eo.vx_px = exposure_fraction * velocity.x, eo.vy_px = exposure_fraction * velocity.y;
     eo.dpsi_rad = -exposure_fraction * spin_per_frame;  // screen counter-clockwise is clockwise in image axes
     eo.blur_px = exposure_fraction * blur_px;
-    eo.frame_vx_px = velocity.x, eo.frame_vy_px = velocity.y, eo.frame_dpsi_rad = -spin_per_frame;
     // Blur beyond about the minor axis leaves no ellipse to fit (docs/theory.md#ellipse-tracking),
     // and a short exposure leaves a fast object sharp: the reach stops at 2 b of travel.
     const double travel = std::hypot(velocity.x, velocity.y) + a_ref * std::abs(spin_per_frame) + blur_px;
@@ -304,9 +241,6 @@ struct EllipseTracker::Impl {
   void fit_from_segment(FrameFit& fit, const Frame& frame, const EdgeFitOptions& eo) const;
   // Refits from the ellipse found (the measured motion, other exposures); the exposure of the fit kept.
   double refit(FrameFit& fit, const Frame& frame, const Motion& m) const;
-  // The found pose corrected for the blurred outline (update()).
-  void correct_for_exposure(FrameFit& fit, const Frame& frame, const Motion& m, double speed,
-                            double exposure_used) const;
   // Takes an accepted fit into the motion and spin models and the running axes.
   EllipseObservation accept(int index, const FrameFit& fit, double phi_pred, double speed, double exposure_used);
 };
@@ -446,13 +380,11 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
 
 namespace {
 
-cv::Rect FrameFit::window(double pad) const { return window(pred, pad); }
-
-cv::Rect FrameFit::window(cv::Point2d at, double pad) const {
+cv::Rect FrameFit::window(double pad) const {
   // Clamped before the conversion to int: a prediction far outside the image stays defined.
   const auto clamp_px = [](double v) { return static_cast<int>(std::clamp(v, -1e6, 1e6)); };
   const int size = clamp_px(2 * pad + 2);
-  return cv::Rect(clamp_px(std::floor(at.x - pad)), clamp_px(std::floor(at.y - pad)), size, size) & image_rect;
+  return cv::Rect(clamp_px(std::floor(pred.x - pad)), clamp_px(std::floor(pred.y - pad)), size, size) & image_rect;
 }
 
 double FrameFit::score_of(const EdgeFit& fit) const {
@@ -468,9 +400,7 @@ void FrameFit::try_fit(const cv::Mat& dist, cv::Point origin, const Ellipse& ini
   const EdgeFit fit = fit_ellipse_edges(dist, origin, init, opt);
   if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) return;
   const double sc = score_of(fit);
-  if (sc > score || (ties && sc >= score)) {
-    score = sc, found = fit.ellipse, rms = fit.rms_px, exposure_seen = fit.exposure_seen;
-  }
+  if (sc > score || (ties && sc >= score)) score = sc, found = fit.ellipse, rms = fit.rms_px;
 }
 
 }  // namespace
@@ -516,8 +446,7 @@ double EllipseTracker::Impl::refit(FrameFit& fit, const Frame& frame, const Moti
       }
       if (!weak) break;
     }
-    EdgeFitOptions eo2 = edge_options(v, m.omega, 0, fraction);
-    if (m.moving) eo2.frame_vx_px = m.at_frame.x, eo2.frame_vy_px = m.at_frame.y;
+    const EdgeFitOptions eo2 = edge_options(v, m.omega, 0, fraction);
     if (const cv::Rect roi = fit.window(a_ref + d_found + eo2.reach_px + 3); roi.width >= 3 && roi.height >= 3) {
       const double before = fit.score;
       fit.try_fit(colour_distance(frame, roi, colour), roi.tl(), from, eo2, motion_refit);
@@ -527,52 +456,24 @@ double EllipseTracker::Impl::refit(FrameFit& fit, const Frame& frame, const Moti
   return exposure_used;
 }
 
-void EllipseTracker::Impl::correct_for_exposure(FrameFit& fit, const Frame& frame, const Motion& m, double speed,
-                                                double exposure_used) const {
-  const double x = measured_exposure(fit.exposure_seen);
-  const Ellipse& e = fit.found;
-  if (!(x > 0) || e.a - e.b < std::max(kRoundRatio * e.a, kRoundPx)) return;
-  // The velocity at this frame: the motion model's when the centre found continues it; right
-  // after a restart (a bounce), the step from the last centre (the velocity half a frame back).
-  cv::Point2d v = m.at_frame;
-  if (!m.moving) {
-    v = (cv::Point2d(fit.found.cx, fit.found.cy) - cv::Point2d(centres.back().x, centres.back().y)) / m.steps;
-  } else if (std::hypot(fit.found.cx - fit.pred.x, fit.found.cy - fit.pred.y) > 3 + 0.25 * speed) {
-    return;
-  }
-  // Not worth a fit where the largest shift is under 0.01 px: the slide over the exposure
-  // along the sharpest bend of the outline (radius b^2/a), (x travel)^2 / (24 rho), and the
-  // parabola's sag, x^2 |acc| / 24.
-  const double travel = x * (std::hypot(v.x, v.y) + e.a * std::abs(m.omega));
-  if (travel * travel / (24 * e.b * e.b / e.a) < kLeastShiftPx &&
-      x * x * std::hypot(accel_last.x, accel_last.y) / 24 < kLeastShiftPx) {
-    return;
-  }
-  EdgeFitOptions eo = edge_options(m.moving ? m.velocity : v, m.omega, 0, exposure_used);
-  eo.frame_vx_px = v.x, eo.frame_vy_px = v.y;
-  eo.frame_ax_px = accel_last.x, eo.frame_ay_px = accel_last.y;
-  eo.iterations = 1;  // from the ellipse found: one round of edge points
-  eo.exposure = x;
-  const cv::Rect roi = fit.window({e.cx, e.cy}, e.a + eo.reach_px + 3);
-  if (roi.width < 3 || roi.height < 3) return;
-  const EdgeFit again = fit_ellipse_edges(colour_distance(frame, roi, colour), roi.tl(), fit.found, eo);
-  if (again.ok) fit.at_frame_time = again.ellipse;
-}
-
 EllipseObservation EllipseTracker::Impl::accept(int index, const FrameFit& fit, double phi_pred, double speed,
                                                 double exposure_used) {
   const Ellipse& found = fit.found;
   const bool round = found.a - found.b < std::max(kRoundRatio * found.a, kRoundPx);
   const double phi = round ? phi_pred : phi_pred + std::remainder(-found.psi - phi_pred, kPi);
-  // Motion model: a centre far off the prediction (a bounce) restarts the parabola.
+  // Motion model: a centre far off the prediction (a bounce) restarts the parabola, and the
+  // spin model with it: a bounce changes the spin too (a rugby ball's from 45 to -19 rad/s), and
+  // each next frame's turn, taken nearest the old spin's prediction, was read half a turn per
+  // frame off (+75 rad/s, docs/theory.md#ellipse-tracking, item 7). From this frame on the
+  // spin is learned afresh, the next turn taken as the smaller one, as at the start.
   const double innovation = std::hypot(found.cx - fit.pred.x, found.cy - fit.pred.y);
   if (centres.size() >= 2 && innovation > 3 + 0.25 * speed) {
     speed_hint = std::max(speed, 1.0);
     centres.clear();
+    turns.clear();
   }
   centres.push_back({index, found.cx, found.cy});
   while (centres.size() > kMotionPoints) centres.pop_front();
-  if (const auto acc = acceleration()) accel_last = *acc;
   if (!round) {
     turns.push_back({index, phi});
     while (turns.size() > kSpinPoints) turns.pop_front();
@@ -584,15 +485,7 @@ EllipseObservation EllipseTracker::Impl::accept(int index, const FrameFit& fit, 
   lost_run = 0;
   exposure = exposure_used;
   if (exposure_used < 1) ++short_exposure_frames;
-  if (std::isfinite(fit.exposure_seen)) {
-    exposures_seen.push_back(fit.exposure_seen);
-    while (exposures_seen.size() > kExposureFrames) exposures_seen.pop_front();
-  }
-  // Reported: the pose at the frame's time (correct_for_exposure), when it was corrected; the
-  // models above keep following the fits that decide the frames.
-  const Ellipse& at = fit.at_frame_time ? *fit.at_frame_time : found;
-  const double phi_at = round ? phi : phi_pred + std::remainder(-at.psi - phi_pred, kPi);
-  return observe(index, at, phi_at, fit.score, false, round, fit.rms);
+  return observe(index, found, phi, fit.score, false, round, fit.rms);
 }
 
 EllipseObservation EllipseTracker::update(const Frame& frame) {
@@ -620,10 +513,8 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
   const double gate = 4 + 0.5 * s.b_ref + 2.2 * speed + 3.0 * s.lost_run;
   // Without a velocity, allow for blur up to the minor semi-axis (a longer smear is no ellipse
   // any more); the fit is redone below with the motion measured.
-  m.at_frame = m.moving ? s.velocity_at(index) : cv::Point2d(0, 0);
-  EdgeFitOptions eo =
+  const EdgeFitOptions eo =
       s.edge_options(m.velocity, m.omega, m.moving ? 0 : std::min(s.speed_hint, s.b_ref), m.moving ? s.exposure : 1);
-  eo.frame_vx_px = m.at_frame.x, eo.frame_vy_px = m.at_frame.y;
   FrameFit fit;
   fit.image_rect = cv::Rect(0, 0, img.cols, img.rows);
   fit.pred = pred;
@@ -650,17 +541,9 @@ EllipseObservation EllipseTracker::update(const Frame& frame) {
     if (s.lost_run > s.options.max_gap_frames) s.gave_up = true;
     return s.observe(index, pred_e, phi_pred, fit.score, true, false, 0);
   }
-  // Accepted. The pose at the frame's time: the fit redone once from the ellipse found with
-  // its edge points corrected for the blurred outline (EdgeFitOptions::exposure), with the
-  // exposure measured on the last frames and the motion model's velocity at this frame, when
-  // the centre found continues that motion (not across a bounce, where that velocity is
-  // wrong). The score stays the one that decided the frame (docs/theory.md#ellipse-tracking).
-  s.correct_for_exposure(fit, frame, m, speed, exposure_used);
-  // Orientation: the end of the major axis nearest the predicted A direction.
+  // Accepted. Orientation: the end of the major axis nearest the predicted A direction.
   return s.accept(index, fit, phi_pred, speed, exposure_used);
 }
-
-double EllipseTracker::exposure() const { return impl_->measured_exposure(); }
 
 std::string EllipseTracker::loss_hint() const {
   const Impl& s = *impl_;

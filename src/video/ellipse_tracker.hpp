@@ -54,11 +54,6 @@ class EllipseTracker {
   /// goes on through the mark when it lies where the model predicts the centre (as an accepted
   /// centre would), else restarts from it (a lost object is searched for there again).
   EllipseObservation mark(const Frame& frame, double x_px, double y_px);
-  /// The exposure read from the blurred edges of the last frames, a fraction of the frame
-  /// period (0: not yet read: fewer than three frames with the object moving 8 px or more per
-  /// frame). The reported poses are corrected for it: the ellipse at the frame's time, not the
-  /// blurred outline's mean (docs/theory.md#ellipse-tracking, item 4).
-  double exposure() const;
 
  private:
   struct Impl;

@@ -129,7 +129,6 @@ GridRun follow_ball(const ThrowFilm& film, const std::vector<Frame>& frames, con
     tracker.start(frames[0], centre[0].x, centre[0].y, "ball");
     for (std::size_t k = 1; k < frames.size(); ++k) obs.push_back(tracker.update(frames[k]));
     r.hint = tracker.loss_hint();
-    if (std::getenv("GRID_VERBOSE")) std::printf("    ball exposure read %.3f\n", tracker.exposure());
   } catch (const std::exception& e) {
     r.hint = e.what();
     const std::size_t done = obs.size();
