@@ -80,9 +80,10 @@ GridRun follow(const ThrowFilm& film, const std::vector<Frame>& frames, const st
     }
     const cv::Point2d t = truth[static_cast<std::size_t>(o.frame)];
     const double d = std::hypot(o.x_px - t.x, o.y_px - t.y);
-    if (std::getenv("GRID_VERBOSE"))
+    if (std::getenv("GRID_VERBOSE")) {
       std::printf("    frame %2d: (%.1f, %.1f) truth (%.1f, %.1f) %.1f px, score %.3f\n", o.frame, o.x_px, o.y_px, t.x,
                   t.y, d, o.score);
+    }
     r.worst_px = std::max(r.worst_px, d);
     if (d > wrong_px) ++r.wrong;
   }
