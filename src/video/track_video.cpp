@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <numbers>
 #include <cstdio>
 #include <cmath>
 #include <deque>
@@ -601,6 +602,32 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
     result.warnings.push_back("track '" + s.name + "': lost at frame(s) " + frames + " (rows with empty positions)" +
                               (refound.empty() ? "" : "; found again at frame(s) " + refound) +
                               (hints[wi].empty() ? "" : "; " + hints[wi]));
+  }
+  // A ball seen as an ellipse looks the same after half a turn: a turn near 90 degrees per
+  // frame cannot be told from the other way round (the tracker takes the smaller one, across a
+  // bounce the one nearest the turn before). Above kAmbiguousTurnDeg the other reading turns at
+  // most 1.5 times as fast (docs/theory.md#plausibility-checks, "Spin near half a turn per frame").
+  constexpr double kAmbiguousTurnDeg = 72;
+  for (const Follower& w : followers) {
+    if (w.target.kind != Target::Kind::ellipse) continue;
+    const TrackedSeries& s = result.series[w.series[0]];
+    const int step = std::max(1, result.input.clip.step_size);
+    double most = 0;
+    int at = 0;
+    for (std::size_t i = 1; i < s.rows.size(); ++i) {
+      if (s.rows[i].lost || s.rows[i - 1].lost || s.rows[i].frame - s.rows[i - 1].frame != step) continue;
+      const double turn = std::abs(s.angle_rad[i] - s.angle_rad[i - 1]) * 180 / std::numbers::pi;
+      if (turn > most) most = turn, at = s.rows[i].frame;
+    }
+    if (!(most > kAmbiguousTurnDeg)) continue;
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "track '%s' turns up to %.0f degrees per frame (frame %d): a ball seen as an ellipse looks the "
+                  "same after half a turn, so %.0f degrees the other way fits as well and the ends A, B may be "
+                  "swapped from frame to frame; if the ball may spin that fast, film at a higher frame rate or put "
+                  "a mark on the ball",
+                  s.name.c_str(), most, at, 180 - most);
+    result.warnings.push_back(buf);
   }
   // The project's own marks are an independent check: a track far from them has followed
   // something else (an edge sliding along itself, a look-alike) even where its score held.

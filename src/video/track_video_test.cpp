@@ -175,6 +175,40 @@ TEST(TrackVideo, PointAndEllipseInOnePassFromTheirOwnStartFrames) {
   EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
 }
 
+// A ball turning 80 degrees per frame is followed (the smaller turn), but 100 degrees the other
+// way would look the same: the warning says so. The scenery's ball, 7 degrees per frame, has
+// no such warning.
+TEST(TrackVideo, AnEllipseTurningNearlyHalfATurnPerFrameIsSaidToBeAmbiguous) {
+  const std::string dir = temp_dir("halfturn");
+  const std::string path = dir + "/spin.avi";
+  const Scene fast = [](double t) {
+    ShapePose e;
+    e.cx_px = 80 + 4 * t * kFps;
+    e.cy_px = 120;
+    e.a_px = 30;
+    e.b_px = 16;
+    e.angle_rad = 0.2 + 1.4 * t * kFps;  // 80 degrees per frame
+    e.colour = cv::Scalar(40, 40, 210);
+    return std::vector<ShapePose>{e};
+  };
+  RenderOptions ro = film_options();
+  ro.shutter_fraction = 0.1;
+  write_video(path, fast, 20, ro);
+  TrackVideoOptions o;
+  o.targets = {ellipse("ball", {80, 120})};
+  const TrackVideoResult r = track_video(path, o);
+  int said = 0;
+  for (const std::string& w : r.warnings) said += w.find("looks the same after half a turn") != std::string::npos;
+  EXPECT_EQ(said, 1);
+  EXPECT_EQ(r.series[0].tracked, 20);
+  const Scenery s;
+  TrackVideoOptions slow;
+  slow.targets = {ellipse("ball", s.ball(0))};
+  for (const std::string& w : track_video(film_in(dir), slow).warnings) {
+    EXPECT_EQ(w.find("half a turn"), std::string::npos) << w;
+  }
+}
+
 TEST(TrackVideo, ThePathTrackersReachFollowsTheClipsTimeBase) {
   // A disc crossing 50 px per frame of a 480 px textured picture. The container says 240 fps:
   // that is 12 000 px/s, beyond the automatic reach (a quarter of the smaller side per 1/30 s),
