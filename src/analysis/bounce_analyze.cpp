@@ -6,6 +6,7 @@
 #include "analysis/bounce_plausibility.hpp"
 #include "analysis/bounce_touch.hpp"
 #include "track/outliers.hpp"
+#include "track/rigid_body.hpp"
 
 #include "numerics/error.hpp"
 #include "numerics/least_squares.hpp"
@@ -641,11 +642,10 @@ void require_plausible_floor(const std::vector<track::RigidBodyRow>& rows, const
 /// after half a turn, so its ends' tracks, with A and B exchanged in every other frame, fit a
 /// spin of omega - sign(omega) pi / dt as well: a tracker (or a person clicking the tips) takes
 /// the smaller turn, and across the bounce the turn nearest the one before. Warns when a flight
-/// turns more than kAmbiguousTurnDeg per frame, or the spin changes by more than that across
-/// the impact: the other reading then turns at most 1.5 times as fast, as plausible a spin
-/// (docs/theory.md#plausibility-checks, "Spin near half a turn per frame").
+/// turns more than track::kAmbiguousTurnDeg per frame, or the spin changes by more than that
+/// across the impact (docs/theory.md#plausibility-checks, "Spin near half a turn per frame").
 void check_spin_aliasing(double frame_dt, BounceAnalysis& r) {
-  constexpr double kAmbiguousTurnDeg = 72;
+  using track::kAmbiguousTurnDeg;
   if (!(frame_dt > 0)) return;
   const double fps = 1 / frame_dt, half_turn = kPi / frame_dt;  // rad/s
   const auto deg_per_frame = [&](double omega) { return std::abs(omega) * frame_dt * 180 / kPi; };

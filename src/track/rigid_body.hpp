@@ -31,6 +31,12 @@ struct RigidBodyRow {
   double sigma_omega = 0;     ///< its standard error, rad/s
 };
 
+/// The turn per frame, degrees, above which a spin read from two ends that look alike (a ball's
+/// tips seen as an ellipse) is ambiguous: half a turn looks the same, so the other reading,
+/// 180 degrees minus this the other way, turns at most 1.5 times as fast. `bounce analyze` and
+/// `track video --ellipse` warn above it (docs/theory.md#plausibility-checks).
+inline constexpr double kAmbiguousTurnDeg = 72;
+
 /// Linear fit theta = theta_ref + omega (t - t_ref) over a range of rows.
 struct SpinFit {
   double omega = 0;        ///< rad/s, counter-clockwise positive

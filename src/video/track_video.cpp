@@ -2,6 +2,8 @@
 // followed by its own tracker from its own start frame.
 #include "video/track_video.hpp"
 
+#include "track/rigid_body.hpp"
+
 #include "io/text.hpp"
 #include "numerics/error.hpp"
 #include "numerics/units.hpp"
@@ -605,9 +607,8 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
   }
   // A ball seen as an ellipse looks the same after half a turn: a turn near 90 degrees per
   // frame cannot be told from the other way round (the tracker takes the smaller one, across a
-  // bounce the one nearest the turn before). Above kAmbiguousTurnDeg the other reading turns at
-  // most 1.5 times as fast (docs/theory.md#plausibility-checks, "Spin near half a turn per frame").
-  constexpr double kAmbiguousTurnDeg = 72;
+  // bounce the one nearest the turn before): warned above track::kAmbiguousTurnDeg
+  // (docs/theory.md#plausibility-checks, "Spin near half a turn per frame").
   for (const Follower& w : followers) {
     if (w.target.kind != Target::Kind::ellipse) continue;
     const TrackedSeries& s = result.series[w.series[0]];
@@ -619,7 +620,7 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
       const double turn = std::abs(s.angle_rad[i] - s.angle_rad[i - 1]) * 180 / std::numbers::pi;
       if (turn > most) most = turn, at = s.rows[i].frame;
     }
-    if (!(most > kAmbiguousTurnDeg)) continue;
+    if (!(most > track::kAmbiguousTurnDeg)) continue;
     char buf[400];
     std::snprintf(buf, sizeof buf,
                   "track '%s' turns up to %.0f degrees per frame (frame %d): a ball seen as an ellipse looks the "
