@@ -45,15 +45,15 @@ bool sample(const cv::Mat& img, double x, double y, double& value) {
 
 /// Algebraic fit (OpenCV's AMS, Taubin-like, low bias) on points centred first so that
 /// single precision loses nothing; false when the points do not make an ellipse.
-bool fit_points(const std::vector<cv::Point2d>& pts, Ellipse& out) {
+bool fit_points(const std::vector<EdgePoint>& pts, Ellipse& out) {
   if (pts.size() < 6) return false;
   double mx = 0, my = 0;
-  for (const auto& p : pts) mx += p.x, my += p.y;
+  for (const auto& p : pts) mx += p.at.x, my += p.at.y;
   mx /= static_cast<double>(pts.size());
   my /= static_cast<double>(pts.size());
   std::vector<cv::Point2f> centred;
   centred.reserve(pts.size());
-  for (const auto& p : pts) centred.emplace_back(static_cast<float>(p.x - mx), static_cast<float>(p.y - my));
+  for (const auto& p : pts) centred.emplace_back(static_cast<float>(p.at.x - mx), static_cast<float>(p.at.y - my));
   const cv::RotatedRect box = cv::fitEllipseAMS(centred);
   Ellipse e = ellipse_from_box(box);
   if (!std::isfinite(e.cx) || !std::isfinite(e.cy) || !std::isfinite(e.a) || !std::isfinite(e.b) ||
@@ -67,17 +67,17 @@ bool fit_points(const std::vector<cv::Point2d>& pts, Ellipse& out) {
 }
 
 /// Robust refit: fit, drop points farther than 3 robust sds (at least 0.25 px), refit.
-bool robust_fit(std::vector<cv::Point2d> pts, EdgeFit& fit) {
+bool robust_fit(std::vector<EdgePoint> pts, EdgeFit& fit) {
   Ellipse e;
   if (!fit_points(pts, e)) return false;
   for (int round = 0; round < 2; ++round) {
     std::vector<double> absd;
     absd.reserve(pts.size());
     const Prepared q(e);
-    for (const auto& p : pts) absd.push_back(std::abs(q.distance(p.x, p.y)));
+    for (const auto& p : pts) absd.push_back(std::abs(q.distance(p.at.x, p.at.y)));
     const double sd = kMadToSd * upper_median(absd);
     const double cut = std::max(3 * sd, 0.25);
-    std::vector<cv::Point2d> kept;
+    std::vector<EdgePoint> kept;
     for (std::size_t i = 0; i < pts.size(); ++i) {
       if (absd[i] <= cut) kept.push_back(pts[i]);
     }
@@ -89,7 +89,7 @@ bool robust_fit(std::vector<cv::Point2d> pts, EdgeFit& fit) {
   }
   double ss = 0;
   for (const auto& p : pts) {
-    const double d = ellipse_distance(e, p.x, p.y);
+    const double d = ellipse_distance(e, p.at.x, p.at.y);
     ss += d * d;
   }
   fit.ellipse = e;
@@ -105,13 +105,13 @@ bool robust_fit(std::vector<cv::Point2d> pts, EdgeFit& fit) {
 /// width from the residuals' robust sd, 4.685 sd (the start may be a few px off), then pose and
 /// axes with the width narrowed to 1.2 px so that points on an occluder or a touching object
 /// drop out completely. Returns the points within 3 robust sds (at least 0.3 px) of the result.
-std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, Ellipse& e, double a0, double b0,
-                                           double shape_sd_px) {
+std::vector<EdgePoint> geometric_inliers(const std::vector<EdgePoint>& pts, Ellipse& e, double a0, double b0,
+                                         double shape_sd_px) {
   const std::size_t n = pts.size();
   std::vector<double> d(n), absd(n);
   const auto residuals = [&] {
     const Prepared q(e);
-    for (std::size_t i = 0; i < n; ++i) absd[i] = std::abs(d[i] = q.distance(pts[i].x, pts[i].y));
+    for (std::size_t i = 0; i < n; ++i) absd[i] = std::abs(d[i] = q.distance(pts[i].at.x, pts[i].at.y));
   };
   using Vec5 = cv::Vec<double, 5>;
   // One Gauss-Newton step with Tukey weights of width c; false when converged or singular.
@@ -128,7 +128,7 @@ std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, 
       if (absd[i] >= c) continue;
       const double u = d[i] / c, w = (1 - u * u) * (1 - u * u);
       Vec5 J;
-      for (int k = 0; k < 5; ++k) J[k] = (q[static_cast<std::size_t>(k)].distance(pts[i].x, pts[i].y) - d[i]) / h;
+      for (int k = 0; k < 5; ++k) J[k] = (q[static_cast<std::size_t>(k)].distance(pts[i].at.x, pts[i].at.y) - d[i]) / h;
       H += w * J * J.t();
       g += w * d[i] * J;
     }
@@ -157,21 +157,50 @@ std::vector<cv::Point2d> geometric_inliers(const std::vector<cv::Point2d>& pts, 
     if (a < 1.2) near.push_back(a);
   }
   const double cut = std::max(3 * kMadToSd * (near.empty() ? 0.0 : upper_median(near)), 0.3);
-  std::vector<cv::Point2d> kept;
+  std::vector<EdgePoint> kept;
   for (std::size_t i = 0; i < n; ++i) {
     if (absd[i] <= cut) kept.push_back(pts[i]);
   }
   return kept;
 }
 
-/// Edge position along a profile (prof[i] at r = -inner + i ds), or NaN. The crossing of the
-/// mid-level between the far plateaus `lo` (inside) and `hi` (outside) nearest r = 0 places a
-/// window of half-width w = 1.5 px + ramp/2 (the blur's half-length) around the edge; inside
-/// it, the first moment of the object's occupancy (hi' - D)/(hi' - lo'), with lo', hi' the means
-/// of the 1.5 px just beyond each end of the window, is the mean edge position over the
-/// exposure. Local levels keep a textured or graded background from biasing the edge.
-double edge_position(const std::vector<double>& prof, int m, double lo, double hi, double inner, double ds,
-                     double ramp_px) {
+/// The ellipse refitted to `pts` from `e` with its semi-axes tied to (a0, b0) by a prior of
+/// 5 % (fit_ellipse_edges' fit of a known shape); false when fewer than `least` points are
+/// kept or the result is not finite.
+bool known_shape_fit(const std::vector<EdgePoint>& pts, Ellipse e, double a0, double b0, int least, EdgeFit& fit) {
+  if (static_cast<int>(pts.size()) < std::max(least, 6)) return false;
+  std::vector<EdgePoint> kept = geometric_inliers(pts, e, a0, b0, std::max(0.05 * a0, 0.3));
+  if (static_cast<int>(kept.size()) < least || !std::isfinite(e.cx) || !std::isfinite(e.cy) || !std::isfinite(e.psi) ||
+      !(e.a < 1e5)) {
+    return false;
+  }
+  double ss = 0;
+  const Prepared q(e);
+  for (const auto& p : kept) ss += q.distance(p.at.x, p.at.y) * q.distance(p.at.x, p.at.y);
+  fit.ellipse = e;
+  fit.inliers = static_cast<int>(kept.size());
+  fit.rms_px = std::sqrt(ss / static_cast<double>(kept.size()));
+  fit.points = std::move(kept);
+  return true;
+}
+
+/// An edge along a profile: its position and the length of its ramp, px (NaN: none).
+struct EdgePlace {
+  double r = std::nan("");
+  double ramp = std::nan("");
+};
+
+/// Edge along a profile (prof[i] at r = -inner + i ds). The crossing of the mid-level between
+/// the far plateaus `lo` (inside) and `hi` (outside) nearest r = 0 places a window of
+/// half-width w = 1.5 px + ramp/2 (the blur's half-length) around the edge; inside it, the
+/// first moment of the object's occupancy (hi' - D)/(hi' - lo'), with lo', hi' the means of the
+/// 1.5 px just beyond each end of the window, is the mean edge position over the exposure.
+/// Local levels keep a textured or graded background from biasing the edge. The ramp's length
+/// is twice the span between the occupancy's three-quarter and quarter crossings (a linear
+/// ramp's middle half).
+EdgePlace edge_position(const std::vector<double>& prof, int m, double lo, double hi, double inner, double ds,
+                        double ramp_px) {
+  EdgePlace out;
   const double mid = 0.5 * (lo + hi);
   const auto at = [&](int i) { return prof[static_cast<std::size_t>(i)]; };
   int cross = -1;  // the edge lies between samples cross and cross + 1
@@ -182,20 +211,67 @@ double edge_position(const std::vector<double>& prof, int m, double lo, double h
       if (std::abs(r) < best) best = std::abs(r), cross = i;
     }
   }
-  if (cross < 0) return std::nan("");
+  if (cross < 0) return out;
   const int w = static_cast<int>(std::ceil((1.5 + 0.5 * std::min(ramp_px, 1e4)) / ds));
   const int k = static_cast<int>(std::ceil(1.5 / ds));  // samples per local level
   const int first = std::max(k, cross - w + 1), last = std::min(m - 1 - k, cross + w);  // window
-  if (last - first < 2) return std::nan("");
+  if (last - first < 2) return out;
   double lo_l = 0, hi_l = 0;
   for (int j = 1; j <= k; ++j) lo_l += at(first - j), hi_l += at(last + j);
   lo_l /= k, hi_l /= k;
-  if (hi_l - lo_l < 0.5 * (hi - lo)) return std::nan("");  // no clear step at this place
+  if (hi_l - lo_l < 0.5 * (hi - lo)) return out;  // no clear step at this place
+  const auto occ = [&](int i) { return (hi_l - at(i)) / (hi_l - lo_l); };
   double occupancy = 0;
-  for (int i = first; i <= last; ++i) occupancy += (hi_l - at(i)) / (hi_l - lo_l);
+  for (int i = first; i <= last; ++i) occupancy += occ(i);
   const double r_edge = -inner + (first - 0.5) * ds + occupancy * ds;
-  if (r_edge < -inner + first * ds || r_edge > -inner + last * ds) return std::nan("");
-  return r_edge;
+  if (r_edge < -inner + first * ds || r_edge > -inner + last * ds) return out;
+  out.r = r_edge;
+  int o = cross + 1, n = cross;  // the first samples past the quarter and three-quarter crossings
+  while (o < last && occ(o) > 0.25) ++o;
+  while (n > first && occ(n) < 0.75) --n;
+  if (o < last && n > first && occ(o - 1) > occ(o) && occ(n) > occ(n + 1)) {
+    const double r_quarter = (o - 1) + (occ(o - 1) - 0.25) / (occ(o - 1) - occ(o));
+    const double r_three = n + (occ(n) - 0.75) / (occ(n) - occ(n + 1));
+    out.ramp = 2 * (r_quarter - r_three) * ds;
+  }
+  return out;
+}
+
+/// Where the line p + r n crosses the outline of `e` on its outer side (the larger root), or
+/// NaN when the line misses the ellipse.
+double outer_crossing(const Ellipse& e, cv::Point2d p, cv::Point2d n) {
+  const double c = std::cos(e.psi), s = std::sin(e.psi);
+  const double dx = p.x - e.cx, dy = p.y - e.cy;
+  const double u0 = c * dx + s * dy, v0 = -s * dx + c * dy;
+  const double du = c * n.x + s * n.y, dv = -s * n.x + c * n.y;
+  const double ia = 1 / (e.a * e.a), ib = 1 / (e.b * e.b);
+  const double qa = du * du * ia + dv * dv * ib, qb = 2 * (u0 * du * ia + v0 * dv * ib);
+  const double qc = u0 * u0 * ia + v0 * v0 * ib - 1;
+  const double disc = qb * qb - 4 * qa * qc;
+  if (!(disc >= 0) || !(qa > 0)) return std::nan("");
+  return (-qb + std::sqrt(disc)) / (2 * qa);
+}
+
+/// How far the mean over the exposure of the moving outline's crossing of the normal line
+/// p + r n lies beyond the crossing of `e` itself (the ellipse at mid-exposure): the ellipse
+/// moved by t x v + t^2 x^2 acc / 2 and turned by t x turn for t from -1/2 to 1/2 across an
+/// exposure of x frame periods, averaged over 16 sub-poses. Zero without motion; NaN when a
+/// sub-pose misses the line.
+double exposure_offset(const Ellipse& e, cv::Point2d p, cv::Point2d n, const FrameMotion& m, double x) {
+  constexpr int kSubPoses = 16;
+  const double r0 = outer_crossing(e, p, n);
+  double sum = 0;
+  for (int k = 0; k < kSubPoses; ++k) {
+    const double t = (k + 0.5) / kSubPoses - 0.5;
+    Ellipse q = e;
+    q.cx += t * x * m.velocity.x + 0.5 * t * t * x * x * m.acceleration.x;
+    q.cy += t * x * m.velocity.y + 0.5 * t * t * x * x * m.acceleration.y;
+    q.psi += t * x * m.turn_rad;
+    const double r = outer_crossing(q, p, n);
+    if (!std::isfinite(r)) return std::nan("");
+    sum += r;
+  }
+  return sum / kSubPoses - r0;
 }
 
 }  // namespace
@@ -248,7 +324,7 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
     const double ds = options.step_px;
     const int m = static_cast<int>(std::floor(std::min(inner + outer, 1e4) / ds)) + 1;
     const double c = std::cos(e.psi), s = std::sin(e.psi);
-    std::vector<cv::Point2d> pts;
+    std::vector<EdgePoint> pts;
     int off_image = 0;
     std::vector<double> prof(static_cast<std::size_t>(m));
     const int plateau = std::max(2, m / 8);
@@ -279,30 +355,18 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
       // Blur along this normal: travel of this boundary point along n in one frame.
       const double rx = c * u - s * v, ry = s * u + c * v;  // from the centre, image axes
       const double vn = (options.vx_px - options.dpsi_rad * ry) * nx + (options.vy_px + options.dpsi_rad * rx) * ny;
-      const double r_edge = edge_position(prof, m, lo, hi, inner, ds, std::min(std::abs(vn) + options.blur_px, options.max_blur_px));
-      if (!std::isfinite(r_edge)) continue;
-      pts.emplace_back(px + r_edge * nx + offset.x, py + r_edge * ny + offset.y);
+      const EdgePlace edge =
+          edge_position(prof, m, lo, hi, inner, ds, std::min(std::abs(vn) + options.blur_px, options.max_blur_px));
+      if (!std::isfinite(edge.r)) continue;
+      pts.push_back({{px + edge.r * nx + offset.x, py + edge.r * ny + offset.y}, {nx, ny}, edge.ramp});
     }
     fit.profiles = n;
     fit.off_image = off_image;
     if (options.known_a > 0 && options.known_b > 0 && pts.size() >= 6) {
       // Known shape: robust geometric fit, the axes free within a prior of 5 % (a blurred or
       // turning object changes its outline; a hidden part must not bend it).
-      Ellipse g = e;
-      std::vector<cv::Point2d> kept =
-          geometric_inliers(pts, g, options.known_a, options.known_b, std::max(0.05 * options.known_a, 0.3));
-      if (static_cast<int>(kept.size()) < std::max(8, n / 4) || !std::isfinite(g.cx) || !std::isfinite(g.cy) ||
-          !std::isfinite(g.psi) || !(g.a < 1e5)) {
-        return fit;
-      }
-      double ss = 0;
-      const Prepared q(g);
-      for (const auto& p : kept) ss += q.distance(p.x, p.y) * q.distance(p.x, p.y);
-      fit.ellipse = g;
-      fit.inliers = static_cast<int>(kept.size());
-      fit.rms_px = std::sqrt(ss / static_cast<double>(kept.size()));
-      fit.points = std::move(kept);
-      e = g;
+      if (!known_shape_fit(pts, e, options.known_a, options.known_b, std::max(8, n / 4), fit)) return fit;
+      e = fit.ellipse;
       fit.ok = true;
       continue;
     }
@@ -318,6 +382,40 @@ EdgeFit fit_ellipse_edges(const cv::Mat& contrast, cv::Point offset, const Ellip
     fit.ok = true;
   }
   return fit;
+}
+
+void read_exposure(const std::vector<EdgePoint>& points, const Ellipse& e, const FrameMotion& m,
+                   std::vector<double>& out) {
+  constexpr double kLeastTravelPx = 8;  // a shorter ramp is mostly the edge's own width
+  constexpr double kHeadOn = 0.9;       // share of the point's travel along the normal
+  for (const EdgePoint& p : points) {
+    if (!std::isfinite(p.ramp_px)) continue;
+    const double rx = p.at.x - e.cx, ry = p.at.y - e.cy;
+    const double vx = m.velocity.x - m.turn_rad * ry, vy = m.velocity.y + m.turn_rad * rx;
+    const double along = std::abs(vx * p.normal.x + vy * p.normal.y);
+    if (along >= kLeastTravelPx && along >= kHeadOn * std::hypot(vx, vy)) out.push_back(p.ramp_px / along);
+  }
+}
+
+bool fit_at_frame_time(const std::vector<EdgePoint>& points, const Ellipse& found, double a0, double b0,
+                       const FrameMotion& m, double exposure, Ellipse& out) {
+  Ellipse e = found;
+  for (int round = 0; round < 2; ++round) {
+    std::vector<EdgePoint> moved;
+    moved.reserve(points.size());
+    for (const EdgePoint& p : points) {
+      const double shift = exposure_offset(e, p.at, p.normal, m, exposure);
+      if (!std::isfinite(shift)) continue;
+      EdgePoint q = p;
+      q.at -= shift * p.normal;
+      moved.push_back(q);
+    }
+    EdgeFit fit;
+    if (!known_shape_fit(moved, e, a0, b0, std::max(8, static_cast<int>(points.size()) / 2), fit)) return false;
+    e = fit.ellipse;
+  }
+  out = e;
+  return true;
 }
 
 }  // namespace tribolab::video

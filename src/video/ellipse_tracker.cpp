@@ -4,6 +4,7 @@
 
 #include "numerics/error.hpp"
 #include "video/ellipse_fit.hpp"
+#include "video/frame_time.hpp"
 #include "numerics/units.hpp"
 #include "numerics/statistics.hpp"
 
@@ -127,6 +128,7 @@ struct FrameFit {
   double a_ref = 0, b_ref = 0;  // the running semi-axes, px
   double score = 0, rms = 0;
   Ellipse found;
+  std::vector<EdgePoint> edges;  // the found ellipse's inlier edge points
   // The square reaching `pad` px from the prediction each way, clipped to the image.
   cv::Rect window(double pad) const;
   // Score: fraction of normals giving a kept edge point, times agreement of the axes with the
@@ -165,6 +167,11 @@ struct EllipseTracker::Impl {
   int weak_frames = 0;         ///< lost frames with an ellipse found in the gate but a weak fit
   int empty_frames = 0;        ///< lost frames with nothing of the object's outline found
   int given_up_frames = 0;     ///< frames after more than max_gap_frames lost in a row
+  /// Every accepted frame goes to the pass that puts the frames at their time (at_frame_time),
+  /// with the motion model's piece it belongs to (counted up at each restart: a bounce, a mark
+  /// off the model) and the edge points its fit was made from.
+  FrameTimePass pass;
+  int piece = 0;
 
   cv::Point2d predict_centre(int index) const {
     const Centre& last = centres.back();
@@ -372,6 +379,7 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
   s.index_last = first.index;
   s.centres.push_back({first.index, e.cx, e.cy});
   if (!round) s.turns.push_back({first.index, phi});
+  s.pass.add({first.index, 0, e, e.a, e.b, phi, score, fit.rms_px, round, fit.points});
   // First step: no velocity is known yet, so allow a fast throw: a tenth of the image diagonal
   // per frame (a 15 fps video of a toss moves the ball 70 px per frame at 640x480).
   s.speed_hint = std::max(15 + 0.5 * e.a, 0.1 * std::hypot(img.cols, img.rows));
@@ -400,7 +408,7 @@ void FrameFit::try_fit(const cv::Mat& dist, cv::Point origin, const Ellipse& ini
   const EdgeFit fit = fit_ellipse_edges(dist, origin, init, opt);
   if (!fit.ok || std::hypot(fit.ellipse.cx - pred.x, fit.ellipse.cy - pred.y) > gate) return;
   const double sc = score_of(fit);
-  if (sc > score || (ties && sc >= score)) score = sc, found = fit.ellipse, rms = fit.rms_px;
+  if (sc > score || (ties && sc >= score)) score = sc, found = fit.ellipse, rms = fit.rms_px, edges = fit.points;
 }
 
 }  // namespace
@@ -471,7 +479,9 @@ EllipseObservation EllipseTracker::Impl::accept(int index, const FrameFit& fit, 
     speed_hint = std::max(speed, 1.0);
     centres.clear();
     turns.clear();
+    ++piece;
   }
+  pass.add({index, piece, found, a_ref, b_ref, phi, fit.score, fit.rms, round, fit.edges});
   centres.push_back({index, found.cx, found.cy});
   while (centres.size() > kMotionPoints) centres.pop_front();
   if (!round) {
@@ -566,6 +576,17 @@ std::string EllipseTracker::loss_hint() const {
   return hint;
 }
 
+EllipseTracker::AtFrameTime EllipseTracker::at_frame_time() const {
+  const Impl& s = *impl_;
+  const FrameTimePass::Result r = s.pass.result();
+  AtFrameTime out;
+  out.exposure = r.exposure;
+  for (const RetimedFrame& f : r.frames) {
+    out.poses.push_back(s.observe(f.frame.index, f.at, f.phi, f.frame.score, false, false, f.frame.rms));
+  }
+  return out;
+}
+
 EllipseObservation EllipseTracker::mark(const Frame& frame, double x_px, double y_px) {
   Impl& s = *impl_;
   TRIBOLAB_ASSERT(!s.centres.empty(), std::string("EllipseTracker::mark before start"));
@@ -588,7 +609,10 @@ EllipseObservation EllipseTracker::mark(const Frame& frame, double x_px, double 
   const bool continues = s.centres.size() >= 2 && !s.gave_up && s.lost_run == 0 &&
                          std::hypot(x_px - pred.x, y_px - pred.y) <= 3 + 0.25 * speed;
   s.speed_hint = std::max({s.speed_hint, speed, 1.0});
-  if (!continues) s.centres.clear();
+  if (!continues) {
+    s.centres.clear();
+    ++s.piece;
+  }
   s.centres.push_back({frame.index, x_px, y_px});
   while (s.centres.size() > kMotionPoints) s.centres.pop_front();
   s.phi_last = phi;

@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace tribolab::video {
 
@@ -54,6 +55,19 @@ class EllipseTracker {
   /// goes on through the mark when it lies where the model predicts the centre (as an accepted
   /// centre would), else restarts from it (a lost object is searched for there again).
   EllipseObservation mark(const Frame& frame, double x_px, double y_px);
+  /// After the last frame: the accepted frames at their time (mid-exposure) rather than as
+  /// their blurred outlines show them, for the frames that move by 0.01 px or more, and the
+  /// exposure read (FrameTimePass, fed with every accepted frame as it comes: the motion at
+  /// each frame from its neighbours on both sides within its flight, the exposure from the
+  /// edge ramps of all frames, each elongated frame refitted from its edge points). No poses
+  /// when the exposure cannot be read (a slow or round object, whose blur biases no velocity).
+  /// update() reports what decided each frame; these replace it in the track
+  /// (docs/theory.md#ellipse-tracking, item 4).
+  struct AtFrameTime {
+    double exposure = 0;                   ///< read from the edge ramps, frame periods (0: not read)
+    std::vector<EllipseObservation> poses;  ///< the frames that changed
+  };
+  AtFrameTime at_frame_time() const;
 
  private:
   struct Impl;

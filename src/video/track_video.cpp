@@ -90,6 +90,7 @@ struct Follower {
   // re-tracked backward from it when it is reached; and the last frame they may reach back to.
   std::deque<Frame> recent;
   int reach_back_to = 0;
+  std::set<int> retracked;  // frames whose rows a backward tracking from a mark replaced
   // PathTracker with marks: the grey image around each mark (PathTracker::look_crop) and the
   // mark in it, read before the tracking (read_mark_looks) and given at the start (add_look).
   std::vector<std::pair<ManualMark, cv::Mat>> looks;
@@ -382,6 +383,7 @@ void track_backward(Follower& w, const Frame& marked, const ManualMark& mk, cons
     TrackedRow& f = centre.rows[row];
     if (b.lost) break;
     if (!f.lost && std::hypot(f.x_px - b.x_px, f.y_px - b.y_px) <= kAgreePx) break;
+    w.retracked.insert(f.frame);
     Frame meta;
     meta.index = f.frame;
     meta.t = f.t;
@@ -393,6 +395,31 @@ void track_backward(Follower& w, const Frame& marked, const ManualMark& mk, cons
       out[w.series[s]].angle_rad[row] = b.angle_rad + turn;
       auto& refound = out[w.series[s]].refound_frames;
       refound.erase(std::remove(refound.begin(), refound.end(), f.frame), refound.end());
+    }
+  }
+}
+
+/// The ellipse tracker's poses at each frame's time (EllipseTracker::at_frame_time) in place of
+/// the rows its frames reported: not where a mark or a backward tracking from one wrote the row.
+void retime(const Follower& w, const std::vector<EllipseObservation>& poses, const VideoInput& in,
+            std::vector<TrackedSeries>& out) {
+  const std::vector<TrackedRow>& rows = out[w.series[0]].rows;
+  for (const EllipseObservation& e : poses) {
+    const auto it = std::lower_bound(rows.begin(), rows.end(), e.centre.frame,
+                                     [](const TrackedRow& r, int frame) { return r.frame < frame; });
+    if (it == rows.end() || it->frame != e.centre.frame || it->lost || it->manual ||
+        w.retracked.count(e.centre.frame) != 0) {
+      continue;
+    }
+    const auto row = static_cast<std::size_t>(it - rows.begin());
+    Frame meta;
+    meta.index = it->frame;
+    meta.t = it->t;
+    const double score = it->score;
+    const double pos[3][2] = {{e.centre.x_px, e.centre.y_px}, {e.ax_px, e.ay_px}, {e.bx_px, e.by_px}};
+    for (std::size_t s = 0; s < w.series.size() && s < 3; ++s) {
+      out[w.series[s]].rows[row] = make_row(meta, in, pos[s][0], pos[s][1], score, false);
+      out[w.series[s]].angle_rad[row] = e.centre.angle_rad;
     }
   }
 }
@@ -434,7 +461,7 @@ void stream(TrackSession::Impl& session, const std::string& input, const TrackVi
   const VideoInput& in = result.input;
   std::vector<Follower> followers;
   for (const Target& t : options.targets) {
-    Follower w{t, 0, 0, 0, PointTracker(point_options(options, in)), false, {}, {}, {}, 0, {}};
+    Follower w{t, 0, 0, 0, PointTracker(point_options(options, in)), false, {}, {}, {}, 0, {}, {}};
     if (w.target.kind == Target::Kind::ellipse) {
       w.tracker = EllipseTracker(options.ellipse);
     } else if (options.offline_points) {
@@ -552,6 +579,7 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
       for (std::size_t i = 0; i < obs.size() && i < w.pending.size(); ++i) record(w, w.pending[i], in, result.series, obs[i]);
       hint = path->loss_hint();
     } else if (const auto* ellipse = std::get_if<EllipseTracker>(&w.tracker)) {
+      retime(w, ellipse->at_frame_time().poses, in, result.series);
       hint = ellipse->loss_hint();
     } else if (const auto* point = std::get_if<PointTracker>(&w.tracker)) {
       hint = point->loss_hint();
