@@ -14,6 +14,7 @@
 #include <cmath>
 #include <deque>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 namespace tribolab::video {
@@ -172,6 +173,13 @@ struct EllipseTracker::Impl {
   /// off the model) and the edge points its fit was made from.
   FrameTimePass pass;
   int piece = 0;
+  /// The start frame, held back from the pass until the next accepted frame gives the motion:
+  /// it was fitted with edge windows for a sharp edge, and is refitted once (refit_start) from
+  /// `start_contrast` (the colour distance around it, pixel (0, 0) at `start_origin`) with
+  /// windows as long as its blur.
+  std::optional<FittedFrame> start_frame;
+  cv::Mat start_contrast;
+  cv::Point start_origin;
 
   cv::Point2d predict_centre(int index) const {
     const Centre& last = centres.back();
@@ -248,6 +256,9 @@ struct EllipseTracker::Impl {
   void fit_from_segment(FrameFit& fit, const Frame& frame, const EdgeFitOptions& eo) const;
   // Refits from the ellipse found (the measured motion, other exposures); the exposure of the fit kept.
   double refit(FrameFit& fit, const Frame& frame, const Motion& m) const;
+  // The start frame refitted with the motion from it to the frame accepted at `index` (`found`,
+  // orientation `phi`), and handed to the pass (start_frame).
+  void refit_start(int index, const Ellipse& found, double phi, double exposure_used);
   // Takes an accepted fit into the motion and spin models and the running axes.
   EllipseObservation accept(int index, const FrameFit& fit, double phi_pred, double speed, double exposure_used);
 };
@@ -379,7 +390,15 @@ EllipseObservation EllipseTracker::start(const Frame& first, double x_px, double
   s.index_last = first.index;
   s.centres.push_back({first.index, e.cx, e.cy});
   if (!round) s.turns.push_back({first.index, phi});
-  s.pass.add({first.index, 0, e, e.a, e.b, phi, score, fit.rms_px, round, fit.points});
+  s.start_frame = FittedFrame{first.index, 0, e, e.a, e.b, phi, score, fit.rms_px, round, fit.points};
+  {
+    // Room for the profiles of the longest blur the tracker fits (a travel of 2 b).
+    const int half = static_cast<int>(std::ceil(e.a + 4 + 1.2 * e.b + 3));
+    const cv::Rect roi = cv::Rect(static_cast<int>(e.cx) - half, static_cast<int>(e.cy) - half, 2 * half + 1,
+                                  2 * half + 1) & image_rect;
+    s.start_contrast = colour_distance(first, roi, s.colour);
+    s.start_origin = roi.tl();
+  }
   // First step: no velocity is known yet, so allow a fast throw: a tenth of the image diagonal
   // per frame (a 15 fps video of a toss moves the ball 70 px per frame at 640x480).
   s.speed_hint = std::max(15 + 0.5 * e.a, 0.1 * std::hypot(img.cols, img.rows));
@@ -464,6 +483,27 @@ double EllipseTracker::Impl::refit(FrameFit& fit, const Frame& frame, const Moti
   return exposure_used;
 }
 
+void EllipseTracker::Impl::refit_start(int index, const Ellipse& found, double phi, double exposure_used) {
+  FittedFrame f = std::move(*start_frame);
+  start_frame.reset();
+  const double steps = std::max(1, index - f.index);
+  const cv::Point2d v((found.cx - f.found.cx) / steps, (found.cy - f.found.cy) / steps);
+  EdgeFitOptions eo = edge_options(v, (phi - f.phi) / steps, 0, exposure_used);
+  eo.known_a = f.found.a, eo.known_b = f.found.b;
+  const EdgeFit again = fit_ellipse_edges(start_contrast, start_origin, f.found, eo);
+  start_contrast.release();
+  // Kept when it holds as well as the start's own fit did (the same score), and stays on it.
+  const double score = again.ok ? static_cast<double>(again.inliers) / again.profiles : 0.0;
+  if (score >= std::min(f.score, options.min_score) &&
+      std::hypot(again.ellipse.cx - f.found.cx, again.ellipse.cy - f.found.cy) <= 0.5 * f.found.b) {
+    f.found = again.ellipse;
+    f.phi = f.phi + std::remainder(-again.ellipse.psi - f.phi, kPi);
+    f.rms = again.rms_px;
+    f.edges = again.points;
+  }
+  pass.add(std::move(f));
+}
+
 EllipseObservation EllipseTracker::Impl::accept(int index, const FrameFit& fit, double phi_pred, double speed,
                                                 double exposure_used) {
   const Ellipse& found = fit.found;
@@ -481,6 +521,7 @@ EllipseObservation EllipseTracker::Impl::accept(int index, const FrameFit& fit, 
     turns.clear();
     ++piece;
   }
+  if (start_frame) refit_start(index, found, phi, exposure_used);
   pass.add({index, piece, found, a_ref, b_ref, phi, fit.score, fit.rms, round, fit.edges});
   centres.push_back({index, found.cx, found.cy});
   while (centres.size() > kMotionPoints) centres.pop_front();
@@ -578,7 +619,14 @@ std::string EllipseTracker::loss_hint() const {
 
 EllipseTracker::AtFrameTime EllipseTracker::at_frame_time() const {
   const Impl& s = *impl_;
-  const FrameTimePass::Result r = s.pass.result();
+  FrameTimePass::Result r;
+  if (s.start_frame) {  // no frame accepted after the start
+    FrameTimePass with_start = s.pass;
+    with_start.add(*s.start_frame);
+    r = with_start.result();
+  } else {
+    r = s.pass.result();
+  }
   AtFrameTime out;
   out.exposure = r.exposure;
   for (const RetimedFrame& f : r.frames) {
@@ -609,6 +657,10 @@ EllipseObservation EllipseTracker::mark(const Frame& frame, double x_px, double 
   const bool continues = s.centres.size() >= 2 && !s.gave_up && s.lost_run == 0 &&
                          std::hypot(x_px - pred.x, y_px - pred.y) <= 3 + 0.25 * speed;
   s.speed_hint = std::max({s.speed_hint, speed, 1.0});
+  if (s.start_frame) {  // no frame accepted since the start: no motion to refit it with
+    s.pass.add(std::move(*s.start_frame));
+    s.start_frame.reset();
+  }
   if (!continues) {
     s.centres.clear();
     ++s.piece;

@@ -247,7 +247,7 @@ TEST(TrackVideo, ABlurredBallAt30FpsIsWrittenAtEachFramesTime) {
   ASSERT_EQ(r.series.size(), 3u);
   ASSERT_EQ(r.series[0].tracked, kFrames30);
   double worst_length = 0, worst_deg = 0;
-  for (std::size_t i = 1; i < r.series[0].rows.size(); ++i) {  // frame 0: fitted before any motion is known
+  for (std::size_t i = 0; i < r.series[0].rows.size(); ++i) {
     const ShapePose truth = fall(r.series[0].rows[i].t).front();
     const TrackedRow &a = r.series[1].rows[i], &b = r.series[2].rows[i];
     worst_length = std::max(worst_length, std::abs(std::hypot(a.x_px - b.x_px, a.y_px - b.y_px) - 2 * truth.a_px));
