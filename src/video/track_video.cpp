@@ -401,10 +401,13 @@ void track_backward(Follower& w, const Frame& marked, const ManualMark& mk, cons
 
 /// The ellipse tracker's poses at each frame's time (EllipseTracker::at_frame_time) in place of
 /// the rows its frames reported: not where a mark or a backward tracking from one wrote the row.
-void retime(const Follower& w, const std::vector<EllipseObservation>& poses, const VideoInput& in,
+void retime(const Follower& w, const EllipseTracker::AtFrameTime& at, const VideoInput& in,
             std::vector<TrackedSeries>& out) {
+  if (at.exposure > 0) {
+    for (const std::size_t s : w.series) out[s].exposure = at.exposure;
+  }
   const std::vector<TrackedRow>& rows = out[w.series[0]].rows;
-  for (const EllipseObservation& e : poses) {
+  for (const EllipseObservation& e : at.poses) {
     const auto it = std::lower_bound(rows.begin(), rows.end(), e.centre.frame,
                                      [](const TrackedRow& r, int frame) { return r.frame < frame; });
     if (it == rows.end() || it->frame != e.centre.frame || it->lost || it->manual ||
@@ -579,7 +582,7 @@ TrackVideoResult conclude(TrackSession::Impl& session) {
       for (std::size_t i = 0; i < obs.size() && i < w.pending.size(); ++i) record(w, w.pending[i], in, result.series, obs[i]);
       hint = path->loss_hint();
     } else if (const auto* ellipse = std::get_if<EllipseTracker>(&w.tracker)) {
-      retime(w, ellipse->at_frame_time().poses, in, result.series);
+      retime(w, ellipse->at_frame_time(), in, result.series);
       hint = ellipse->loss_hint();
     } else if (const auto* point = std::get_if<PointTracker>(&w.tracker)) {
       hint = point->loss_hint();

@@ -95,6 +95,10 @@ struct TrackedSeries {
   std::vector<int> manual_frames;      ///< frames of the user's marks (Target::marks)
   double median_score = 0;
   std::optional<HumanComparison> vs_human;
+  /// Ellipse: the exposure read from the blurred edges, a fraction of the frame period, which
+  /// put the frames at their time (EllipseTracker::at_frame_time); none when it was not read
+  /// (the object moved under 8 px per frame, or is round) or for a point.
+  std::optional<double> exposure;
 };
 
 /// A small image of one frame with every track drawn, for the report.

@@ -257,6 +257,10 @@ TEST(TrackVideo, ABlurredBallAt30FpsIsWrittenAtEachFramesTime) {
               worst_deg);
   EXPECT_LT(worst_length, 0.35);
   EXPECT_LT(worst_deg, 0.6);
+  for (const TrackedSeries& s : r.series) {  // the exposure that put them there, on all three
+    ASSERT_TRUE(s.exposure.has_value()) << s.name;
+    EXPECT_NEAR(*s.exposure, 0.75, 0.03) << s.name;
+  }
 }
 
 TEST(TrackVideo, ThePathTrackersReachFollowsTheClipsTimeBase) {

@@ -204,7 +204,8 @@ nlohmann::json summary(const video::TrackVideoResult& r, const TrackVideoOptions
                         {"lost_ranges", lost},
                         {"refound_frames", s.refound_frames},
                         {"manual_frames", s.manual_frames},
-                        {"median_score", s.median_score}};
+                        {"median_score", s.median_score},
+                        {"exposure", s.exposure ? nlohmann::json(*s.exposure) : nlohmann::json(nullptr)}};
     if (s.vs_human) {
       // No marked frame with a position: no distance to state (0 px would read as a perfect track).
       const auto px = [&](double v) { return s.vs_human->frames > 0 ? nlohmann::json(v) : nlohmann::json(nullptr); };
@@ -468,6 +469,7 @@ const ResultKeys& track_video_result_keys() {
       {"track_names", "", ""}, {"tracks.*.kind", "", ""}, {"tracks.*.start_frame", "", ""}, {"tracks.*.rows", "", ""},
       {"tracks.*.tracked", "", ""}, {"tracks.*.lost", "", ""}, {"tracks.*.lost_ranges", "", "[first, last] frames"},
       {"tracks.*.refound_frames", "", ""}, {"tracks.*.manual_frames", "", "frames of the --mark corrections"}, {"tracks.*.median_score", "", ""},
+      {"tracks.*.exposure", "", "ellipse: the shutter's fraction of the frame period, read from the blurred edges; null when not read"},
       {"tracks.*.vs_human.frames", "", ""}, {"tracks.*.vs_human.median_px", "px", ""},
       {"tracks.*.vs_human.max_px", "px", ""}, {"tracks.*.vs_human.p90_px", "px", ""},
       {"tracks.*.vs_human.correct_px", "px", "a user corrects a point farther than this"},

@@ -60,6 +60,7 @@ TEST(TrackVideo, RowsBesideTheJsonEqualTheCsv) {
   ASSERT_EQ(rows.size(), static_cast<std::size_t>(kFrames));
   EXPECT_EQ(r.json["frames"], kFrames);
   EXPECT_EQ(r.json["tracks"]["mark"]["tracked"], kFrames);
+  EXPECT_TRUE(r.json["tracks"]["mark"]["exposure"].is_null());  // read for an ellipse only
   EXPECT_EQ(r.json["calibration"]["unit"], "m");
   EXPECT_EQ(r.json["out"], o.out);
   EXPECT_TRUE(r.json["report"].is_null());
