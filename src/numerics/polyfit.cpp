@@ -90,4 +90,19 @@ PolyFit fit_polynomial(std::span<const double> x, std::span<const double> y, int
   return f;
 }
 
+std::vector<double> least_squares_polynomial(std::span<const double> x, std::span<const double> y, int degree) {
+  TRIBOLAB_ASSERT(x.size() == y.size(), "x and y sizes differ");
+  TRIBOLAB_ASSERT(degree >= 0 && x.size() >= static_cast<std::size_t>(degree) + 1, "too few points for the degree");
+  const auto n = static_cast<Eigen::Index>(x.size());
+  Eigen::MatrixXd A(n, degree + 1);
+  Eigen::VectorXd b(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double xk = 1.0;
+    for (int k = 0; k <= degree; ++k, xk *= x[static_cast<std::size_t>(i)]) A(i, k) = xk;
+    b(i) = y[static_cast<std::size_t>(i)];
+  }
+  const Eigen::VectorXd c = A.colPivHouseholderQr().solve(b);
+  return {c.data(), c.data() + c.size()};
+}
+
 }  // namespace tribolab::numerics

@@ -38,4 +38,10 @@ void widen_for_serial_correlation(PolyFit& f, double factor);
 PolyFit fit_polynomial(std::span<const double> x, std::span<const double> y, int degree,
                        const std::string& what = "data");
 
+/// The coefficients c0..c_degree of the least-squares polynomial through (x, y) alone, with no
+/// statistics and as few as degree + 1 points (an exact fit): for the short fits a tracker's
+/// motion model makes every frame (a parabola through the last centres). x must hold at least
+/// degree + 1 values; with fewer distinct ones the solution is one of the least-squares ones.
+std::vector<double> least_squares_polynomial(std::span<const double> x, std::span<const double> y, int degree);
+
 }  // namespace tribolab::numerics

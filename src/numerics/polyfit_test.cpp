@@ -45,5 +45,20 @@ TEST(Polyfit, ScalingKeepsCoefficientsAndCovarianceInTheUnitsOfX) {
   EXPECT_NEAR(f(0.5), 1 + 1 - 0.75 + 0.5 - 0.3125, 1e-8);
 }
 
+TEST(Polyfit, LeastSquaresPolynomialAloneFitsExactlyAndAgreesWithTheFullFit) {
+  // Three points give the parabola through them (fit_polynomial needs one more, for its noise).
+  const std::vector<double> t{-2, -1, 0}, y{7, 3, 1};  // 1 - t + t^2
+  const std::vector<double> c = least_squares_polynomial(t, y, 2);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_NEAR(c[0], 1, 1e-12);
+  EXPECT_NEAR(c[1], -1, 1e-12);
+  EXPECT_NEAR(c[2], 1, 1e-12);
+  // Over more points it is the same least-squares solution as the fit with statistics.
+  const std::vector<double> s{-7, -6, -5, -4, -3, -2, -1, 0}, v{3.1, 2.2, 1.6, 0.9, 0.5, 0.4, 0.2, 0.3};
+  const std::vector<double> d = least_squares_polynomial(s, v, 2);
+  const PolyFit f = fit_polynomial(s, v, 2);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(d[static_cast<std::size_t>(k)], f.coef[static_cast<std::size_t>(k)], 1e-12);
+}
+
 }  // namespace
 }  // namespace tribolab::numerics

@@ -6,6 +6,7 @@
 #include "video/ellipse_fit.hpp"
 #include "video/frame_time.hpp"
 #include "numerics/units.hpp"
+#include "numerics/polyfit.hpp"
 #include "numerics/statistics.hpp"
 
 #include <opencv2/imgproc.hpp>
@@ -60,15 +61,9 @@ cv::Mat colour_distance(const Frame& frame, const cv::Rect& roi, const cv::Vec3d
 
 /// Least-squares polynomial (degree <= 2) through (s, v), evaluated at s = x.
 double poly_predict(const std::vector<double>& s, const std::vector<double>& v, int degree, double x) {
-  const int n = static_cast<int>(s.size());
-  cv::Mat A(n, degree + 1, CV_64F), b(n, 1, CV_64F), coef;
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j <= degree; ++j) A.at<double>(i, j) = std::pow(s[static_cast<std::size_t>(i)], j);
-    b.at<double>(i) = v[static_cast<std::size_t>(i)];
-  }
-  cv::solve(A, b, coef, cv::DECOMP_QR);
+  const std::vector<double> c = numerics::least_squares_polynomial(s, v, degree);
   double y = 0;
-  for (int j = 0; j <= degree; ++j) y += coef.at<double>(j) * std::pow(x, j);
+  for (std::size_t j = c.size(); j-- > 0;) y = y * x + c[j];
   return y;
 }
 

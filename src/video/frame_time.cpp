@@ -1,8 +1,7 @@
 #include "video/frame_time.hpp"
 
+#include "numerics/polyfit.hpp"
 #include "numerics/statistics.hpp"
-
-#include <opencv2/core.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,19 +18,6 @@ constexpr std::size_t kMostReadings = 1000;  ///< more do not change their media
 /// (an object that moves too slowly for the exposure to be read blurs too little to matter).
 constexpr std::size_t kMostWaiting = 240;
 constexpr double kLeastShiftPx = 0.01;
-
-/// Coefficients c0..c_degree of the least-squares polynomial through (t, v).
-std::vector<double> poly_fit(const std::vector<double>& t, const std::vector<double>& v, int degree) {
-  const int n = static_cast<int>(t.size());
-  cv::Mat A(n, degree + 1, CV_64F), b(n, 1, CV_64F), coef;
-  for (int i = 0; i < n; ++i) {
-    double p = 1;
-    for (int j = 0; j <= degree; ++j, p *= t[static_cast<std::size_t>(i)]) A.at<double>(i, j) = p;
-    b.at<double>(i) = v[static_cast<std::size_t>(i)];
-  }
-  cv::solve(A, b, coef, cv::DECOMP_QR);
-  return {coef.begin<double>(), coef.end<double>()};
-}
 
 /// Up to `side` entries of `pos` each side of position `at` (sorted positions), more on one
 /// side where the other has fewer, up to 2 side + 1 in all.
@@ -91,7 +77,8 @@ bool FrameTimePass::motion_of(std::size_t i, bool track_ended) {
     y.push_back(held_[j].f.found.cy);
   }
   const int degree = near.size() >= 3 ? 2 : 1;
-  const std::vector<double> cx = poly_fit(t, x, degree), cy = poly_fit(t, y, degree);
+  const std::vector<double> cx = numerics::least_squares_polynomial(t, x, degree);
+  const std::vector<double> cy = numerics::least_squares_polynomial(t, y, degree);
   h.motion.velocity = {cx[1], cy[1]};
   if (degree == 2) h.motion.acceleration = {2 * cx[2], 2 * cy[2]};
   if (!h.f.round) {
@@ -102,7 +89,7 @@ bool FrameTimePass::motion_of(std::size_t i, bool track_ended) {
       phi.push_back(held_[j].f.phi);
     }
     // Screen counter-clockwise is clockwise in image axes.
-    if (t.size() >= 2) h.motion.turn_rad = -poly_fit(t, phi, 1)[1];
+    if (t.size() >= 2) h.motion.turn_rad = -numerics::least_squares_polynomial(t, phi, 1)[1];
   }
   if (!h.f.edges.empty() && readings_.size() < kMostReadings) read_exposure(h.f.edges, h.f.found, h.motion, readings_);
   return true;
@@ -115,7 +102,10 @@ void FrameTimePass::advance(bool track_ended) {
     held_[i].read = true;
   }
   const auto waiting = [](const Held& h) { return h.read && !h.f.edges.empty(); };
-  if (readings_.size() >= kLeastReadings) {
+  const bool any_waiting = std::any_of(held_.begin(), held_.end(), waiting);
+  if (any_waiting && readings_.size() >= kLeastReadings) {
+    // The exposure read so far: a flight's first frames are refitted with the median of the
+    // readings of the frames up to a few after them (10 or more), the later ones with more.
     const double x = std::clamp(median(readings_), 0.0, 1.0);
     for (Held& h : held_) {
       if (!waiting(h)) continue;
@@ -136,7 +126,7 @@ void FrameTimePass::advance(bool track_ended) {
       }
       h.f.edges.clear();
     }
-  } else {
+  } else if (any_waiting) {
     std::size_t n = static_cast<std::size_t>(std::count_if(held_.begin(), held_.end(), waiting));
     for (Held& h : held_) {
       if (n <= kMostWaiting) break;
